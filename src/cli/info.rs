@@ -1,0 +1,51 @@
+use anyhow::Context as _;
+use bidir::vk::{self, ContextOptions};
+
+#[derive(clap::Args, Debug)]
+pub struct InfoArgs {}
+
+fn gib(bytes: u64) -> String {
+    format!("{:.1} GiB", bytes as f64 / (1u64 << 30) as f64)
+}
+
+pub fn run(_args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    let devices = vk::list_devices().context("cannot list Vulkan devices")?;
+    if devices.is_empty() {
+        return Err(vk::VkError::NoDevice.into());
+    }
+    let chosen = vk::choose_device(&devices, opts.device.as_deref());
+    for d in &devices {
+        let mark = match &chosen {
+            Ok(i) if devices[*i].index == d.index => "  <- bidir uses this one",
+            _ => "",
+        };
+        println!("device {}: {} ({}){mark}", d.index, d.name, d.type_name());
+        println!("  driver:        {} {}", d.driver_name, d.driver_info);
+        println!("  Vulkan:        {}", d.api_string());
+        let sg_range = if d.min_subgroup_size != d.max_subgroup_size {
+            format!(" (size control {}..{})", d.min_subgroup_size, d.max_subgroup_size)
+        } else {
+            String::new()
+        };
+        println!("  subgroup:      size {}{sg_range}; ops: {}", d.subgroup_size, d.subgroup_ops.names().join(" "));
+        let heaps: Vec<String> = d
+            .memory_heaps
+            .iter()
+            .map(|h| format!("{}{}", gib(h.bytes), if h.device_local { " device-local" } else { " host" }))
+            .collect();
+        println!("  memory heaps:  {}", heaps.join(", "));
+        println!(
+            "  limits:        storage buffer {} MiB, shared memory {} KiB, workgroup {} invocations, timestamps {} bits @ {} ns",
+            d.max_storage_buffer_range / (1 << 20),
+            d.max_shared_memory / 1024,
+            d.max_workgroup_invocations,
+            d.timestamp_valid_bits,
+            d.timestamp_period_ns
+        );
+        if !d.usable() {
+            println!("  not usable:    lacks {}", d.missing.join(", "));
+        }
+    }
+    chosen.context("no device can be used")?;
+    Ok(())
+}

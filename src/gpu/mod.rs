@@ -1,0 +1,6 @@
+//! The GPU ABI (shared with GLSL) and the embedded SPIR-V of every kernel.
+
+pub mod abi;
+pub mod kernels;
+
+pub use abi::{FieldLayout, GpuStruct};

@@ -1,0 +1,10 @@
+//! bidir: a bidirectional path tracer that runs entirely on the GPU through Vulkan compute.
+//!
+//! Layers, from the bottom (see docs/architecture.md):
+//! - [`vk`]: the only place with `unsafe` Vulkan: context, memory, kernels, submission.
+//! - [`gpu`]: the ABI shared with GLSL (structs, bindings, workgroup sizes) and the SPIR-V.
+//! - [`compute`]: small reusable GPU algorithms (reduction, prefix sum).
+
+pub mod compute;
+pub mod gpu;
+pub mod vk;

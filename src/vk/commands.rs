@@ -1,0 +1,332 @@
+//! Recording and submitting GPU work: one-shot command buffers with a fence and a timeout,
+//! dispatches with push descriptors and automatic barriers, timestamp queries.
+
+use super::{
+    context::{Context, Shared},
+    error::{Result, VkError, VkResultExt},
+    kernel::Kernel,
+    memory::{color_range, Buffer, Image},
+};
+use ash::vk;
+use std::sync::{atomic::Ordering, Arc};
+
+/// A resource bound to a kernel binding index (an index from `gpu::abi`).
+#[derive(Clone, Copy)]
+pub struct Bind<'a> {
+    pub index: u32,
+    pub resource: Resource<'a>,
+}
+
+#[derive(Clone, Copy)]
+pub enum Resource<'a> {
+    Buffer(&'a Buffer),
+    StorageImage(&'a Image),
+}
+
+impl<'a> Bind<'a> {
+    pub fn buffer(index: u32, buffer: &'a Buffer) -> Self {
+        Bind { index, resource: Resource::Buffer(buffer) }
+    }
+    pub fn image(index: u32, image: &'a Image) -> Self {
+        Bind { index, resource: Resource::StorageImage(image) }
+    }
+}
+
+/// Records commands into one command buffer. Every dispatch, copy and fill is followed by a
+/// full compute/transfer memory barrier, so consecutive commands see each other's writes.
+pub struct Recorder<'a> {
+    shared: &'a Shared,
+    cmd: vk::CommandBuffer,
+}
+
+impl<'a> Recorder<'a> {
+    fn barrier(&mut self) {
+        let stages = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER;
+        let mb = [vk::MemoryBarrier::default()
+            .src_access_mask(vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE)
+            .dst_access_mask(
+                vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE,
+            )];
+        // SAFETY: recording into a command buffer in the recording state.
+        unsafe { self.shared.device.cmd_pipeline_barrier(self.cmd, stages, stages, vk::DependencyFlags::empty(), &mb, &[], &[]) };
+    }
+
+    /// Dispatches `kernel` over `groups` workgroups with `binds` and push constants `push`.
+    /// Every binding the kernel uses must be given; extra ones (optimised away) are ignored.
+    pub fn dispatch(&mut self, kernel: &Kernel, binds: &[Bind], push: &[u8], groups: [u32; 3]) -> Result<()> {
+        let kerr = |msg: String| VkError::Kernel { kernel: kernel.name().into(), msg };
+        if push.len() as u32 != kernel.push_size() {
+            return Err(kerr(format!("push constants of {} bytes given, the kernel declares {}", push.len(), kernel.push_size())));
+        }
+        let mut buffer_infos = Vec::with_capacity(binds.len());
+        let mut image_infos = Vec::with_capacity(binds.len());
+        for b in kernel.bindings() {
+            let given: Vec<&Bind> = binds.iter().filter(|x| x.index == b.binding).collect();
+            let bind = match given.as_slice() {
+                [one] => *one,
+                [] => return Err(kerr(format!("binding {} ({:?}) was not given", b.binding, b.descriptor_type))),
+                _ => return Err(kerr(format!("binding {} was given more than once", b.binding))),
+            };
+            match (bind.resource, b.descriptor_type) {
+                (Resource::Buffer(buf), vk::DescriptorType::STORAGE_BUFFER) => {
+                    buffer_infos.push((b.binding, vk::DescriptorBufferInfo { buffer: buf.raw, offset: 0, range: vk::WHOLE_SIZE }));
+                }
+                (Resource::StorageImage(img), vk::DescriptorType::STORAGE_IMAGE) => {
+                    image_infos.push((
+                        b.binding,
+                        vk::DescriptorImageInfo { sampler: vk::Sampler::null(), image_view: img.view, image_layout: vk::ImageLayout::GENERAL },
+                    ));
+                }
+                (_, ty) => return Err(kerr(format!("binding {} expects {ty:?}, a different resource was given", b.binding))),
+            }
+        }
+        let mut writes = Vec::with_capacity(buffer_infos.len() + image_infos.len());
+        for (binding, info) in &buffer_infos {
+            writes.push(
+                vk::WriteDescriptorSet::default()
+                    .dst_binding(*binding)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .buffer_info(std::slice::from_ref(info)),
+            );
+        }
+        for (binding, info) in &image_infos {
+            writes.push(
+                vk::WriteDescriptorSet::default()
+                    .dst_binding(*binding)
+                    .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+                    .image_info(std::slice::from_ref(info)),
+            );
+        }
+        let d = &self.shared.device;
+        // SAFETY: recording state; every handle is live for the submission (the caller's
+        // borrows outlive `Context::submit`, which waits for completion).
+        unsafe {
+            d.cmd_bind_pipeline(self.cmd, vk::PipelineBindPoint::COMPUTE, kernel.pipeline);
+            if !writes.is_empty() {
+                self.shared.push_descriptor.cmd_push_descriptor_set(self.cmd, vk::PipelineBindPoint::COMPUTE, kernel.pipeline_layout, 0, &writes);
+            }
+            if !push.is_empty() {
+                d.cmd_push_constants(self.cmd, kernel.pipeline_layout, vk::ShaderStageFlags::COMPUTE, 0, push);
+            }
+            d.cmd_dispatch(self.cmd, groups[0], groups[1], groups[2]);
+        }
+        self.barrier();
+        Ok(())
+    }
+
+    /// Copies `bytes` from the start of `src` to the start of `dst`.
+    pub fn copy_buffer(&mut self, src: &Buffer, dst: &Buffer, bytes: u64) {
+        let region = [vk::BufferCopy { src_offset: 0, dst_offset: 0, size: bytes }];
+        // SAFETY: recording state, live buffers.
+        unsafe { self.shared.device.cmd_copy_buffer(self.cmd, src.raw, dst.raw, &region) };
+        self.barrier();
+    }
+
+    /// Fills a whole buffer with a repeated u32.
+    pub fn fill_buffer(&mut self, buffer: &Buffer, value: u32) {
+        // SAFETY: recording state, live buffer.
+        unsafe { self.shared.device.cmd_fill_buffer(self.cmd, buffer.raw, 0, vk::WHOLE_SIZE, value) };
+        self.barrier();
+    }
+
+    /// Fills `bytes` bytes of `buffer` from byte `offset` with a repeated u32.
+    pub fn fill_buffer_range(&mut self, buffer: &Buffer, offset: u64, bytes: u64, value: u32) {
+        // SAFETY: recording state, live buffer.
+        unsafe { self.shared.device.cmd_fill_buffer(self.cmd, buffer.raw, offset, bytes, value) };
+        self.barrier();
+    }
+
+    /// Moves `image` from layout `old` to `new`, ordering all compute and transfer work
+    /// before against all after.
+    fn transition(&mut self, image: &Image, old: vk::ImageLayout, new: vk::ImageLayout) {
+        let all = vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE;
+        let src_access = if old == vk::ImageLayout::UNDEFINED { vk::AccessFlags::empty() } else { all };
+        let b = [vk::ImageMemoryBarrier::default()
+            .image(image.raw)
+            .old_layout(old)
+            .new_layout(new)
+            .src_access_mask(src_access)
+            .dst_access_mask(all)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .subresource_range(color_range())];
+        let stages = vk::PipelineStageFlags::TRANSFER | vk::PipelineStageFlags::COMPUTE_SHADER;
+        // SAFETY: recording state, live image currently in layout `old`.
+        unsafe { self.shared.device.cmd_pipeline_barrier(self.cmd, stages, stages, vk::DependencyFlags::empty(), &[], &[], &b) };
+    }
+
+    pub(crate) fn init_image(&mut self, image: &Image) {
+        self.transition(image, vk::ImageLayout::UNDEFINED, vk::ImageLayout::GENERAL);
+    }
+
+    /// Sets every texel of `image` to zero.
+    pub fn clear_image(&mut self, image: &Image) {
+        let zero = vk::ClearColorValue { float32: [0.0; 4] };
+        // SAFETY: recording state; the image is in GENERAL layout.
+        unsafe { self.shared.device.cmd_clear_color_image(self.cmd, image.raw, vk::ImageLayout::GENERAL, &zero, &[color_range()]) };
+        self.barrier();
+    }
+
+    fn image_copy(image: &Image) -> [vk::BufferImageCopy; 1] {
+        [vk::BufferImageCopy {
+            buffer_offset: 0,
+            buffer_row_length: 0,
+            buffer_image_height: 0,
+            image_subresource: vk::ImageSubresourceLayers { aspect_mask: vk::ImageAspectFlags::COLOR, mip_level: 0, base_array_layer: 0, layer_count: 1 },
+            image_offset: vk::Offset3D::default(),
+            image_extent: vk::Extent3D { width: image.width(), height: image.height(), depth: 1 },
+        }]
+    }
+
+    /// Copies tightly packed texels from `src` into the whole image.
+    pub fn copy_buffer_to_image(&mut self, src: &Buffer, image: &Image) {
+        let dst_layout = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
+        self.transition(image, vk::ImageLayout::GENERAL, dst_layout);
+        // SAFETY: recording state; the image is in TRANSFER_DST layout and the buffer large enough.
+        unsafe { self.shared.device.cmd_copy_buffer_to_image(self.cmd, src.raw, image.raw, dst_layout, &Self::image_copy(image)) };
+        self.transition(image, dst_layout, vk::ImageLayout::GENERAL);
+    }
+
+    /// Copies the whole image into `dst` as tightly packed texels.
+    pub fn copy_image_to_buffer(&mut self, image: &Image, dst: &Buffer) {
+        let src_layout = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
+        self.transition(image, vk::ImageLayout::GENERAL, src_layout);
+        // SAFETY: recording state; the image is in TRANSFER_SRC layout and the buffer holds it.
+        unsafe { self.shared.device.cmd_copy_image_to_buffer(self.cmd, image.raw, src_layout, dst.raw, &Self::image_copy(image)) };
+        self.transition(image, src_layout, vk::ImageLayout::GENERAL);
+    }
+
+    /// Writes a GPU timestamp into query `index` of `timer` once all previous commands finish.
+    pub fn timestamp(&mut self, timer: &Timer, index: u32) {
+        assert!(index < timer.count, "timestamp index {index} out of range (timer has {})", timer.count);
+        // SAFETY: recording state; the query was reset by `reset_timer` in this buffer.
+        unsafe { self.shared.device.cmd_write_timestamp(self.cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, timer.pool, index) };
+    }
+
+    /// Resets every query of `timer`; record before the timestamps.
+    pub fn reset_timer(&mut self, timer: &Timer) {
+        // SAFETY: recording state, live query pool.
+        unsafe { self.shared.device.cmd_reset_query_pool(self.cmd, timer.pool, 0, timer.count) };
+    }
+}
+
+impl Context {
+    /// Records commands with `record`, submits them and waits (up to the context's GPU
+    /// timeout). Resources borrowed by the recording stay valid because this waits.
+    pub fn submit<F>(&self, what: &str, record: F) -> Result<()>
+    where
+        F: FnOnce(&mut Recorder) -> Result<()>,
+    {
+        let s = &*self.shared;
+        let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
+        let alloc = vk::CommandBufferAllocateInfo::default().command_pool(*pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
+        // SAFETY: the pool is externally synchronised by its mutex, held through recording.
+        let cmd = unsafe { s.device.allocate_command_buffers(&alloc) }.ctx(|| format!("allocate command buffer for {what}"))?[0];
+        s.name(cmd, what);
+        let free = |cmd| unsafe { s.device.free_command_buffers(*pool, &[cmd]) };
+        // SAFETY: fresh command buffer.
+        if let Err(result) = unsafe { s.device.begin_command_buffer(cmd, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT)) } {
+            free(cmd);
+            return Err(VkError::Vk { what: format!("begin {what}"), result });
+        }
+        let mut rec = Recorder { shared: s, cmd };
+        let recorded = record(&mut rec);
+        // SAFETY: recording state.
+        let ended = unsafe { s.device.end_command_buffer(cmd) };
+        if let Err(e) = recorded {
+            free(cmd);
+            return Err(e);
+        }
+        if let Err(result) = ended {
+            free(cmd);
+            return Err(VkError::Vk { what: format!("end {what}"), result });
+        }
+        // SAFETY: live device.
+        let fence = match unsafe { s.device.create_fence(&vk::FenceCreateInfo::default(), None) } {
+            Ok(f) => f,
+            Err(result) => {
+                free(cmd);
+                return Err(VkError::Vk { what: format!("fence for {what}"), result });
+            }
+        };
+        s.name(fence, &format!("{what}.fence"));
+        let cmds = [cmd];
+        let submit = [vk::SubmitInfo::default().command_buffers(&cmds)];
+        let queue = s.queue.lock().unwrap_or_else(|e| e.into_inner());
+        // SAFETY: the queue is externally synchronised by its mutex.
+        let submitted = unsafe { s.device.queue_submit(*queue, &submit, fence) };
+        drop(queue);
+        if let Err(result) = submitted {
+            unsafe { s.device.destroy_fence(fence, None) };
+            free(cmd);
+            return Err(VkError::Vk { what: format!("submit {what}"), result });
+        }
+        let timeout_ns = s.gpu_timeout.as_nanos().min(u64::MAX as u128) as u64;
+        // SAFETY: waiting on a fence of this device.
+        match unsafe { s.device.wait_for_fences(&[fence], true, timeout_ns) } {
+            Ok(()) => {
+                unsafe { s.device.destroy_fence(fence, None) };
+                free(cmd);
+                Ok(())
+            }
+            Err(vk::Result::TIMEOUT) => {
+                // The GPU may still run this work: leak rather than destroy in-flight objects.
+                s.poisoned.store(true, Ordering::SeqCst);
+                Err(VkError::Timeout(what.into(), s.gpu_timeout))
+            }
+            Err(result) => {
+                s.poisoned.store(true, Ordering::SeqCst);
+                Err(VkError::Vk { what: format!("wait for {what}"), result })
+            }
+        }
+    }
+
+    /// Creates `count` timestamp queries.
+    pub fn create_timer(&self, name: &str, count: u32) -> Result<Timer> {
+        let s = &self.shared;
+        if s.info.timestamp_valid_bits == 0 {
+            return Err(VkError::Usage { name: name.into(), msg: format!("{} has no timestamps on its compute queue", s.info.name) });
+        }
+        let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(count);
+        // SAFETY: live device.
+        let pool = unsafe { s.device.create_query_pool(&info, None) }.ctx(|| format!("query pool {name}"))?;
+        s.name(pool, name);
+        Ok(Timer { shared: s.clone(), pool, count, period_ns: s.info.timestamp_period_ns as f64, valid_bits: s.info.timestamp_valid_bits })
+    }
+}
+
+/// GPU timestamps (a query pool).
+pub struct Timer {
+    shared: Arc<Shared>,
+    pool: vk::QueryPool,
+    count: u32,
+    period_ns: f64,
+    valid_bits: u32,
+}
+
+impl Timer {
+    /// Nanoseconds between timestamps `a` and `b` of the last completed submission.
+    pub fn elapsed_ns(&self, a: u32, b: u32) -> Result<f64> {
+        let mut data = vec![0u64; self.count as usize];
+        // SAFETY: the submission that wrote them has completed (submit waits).
+        unsafe {
+            self.shared
+                .device
+                .get_query_pool_results(self.pool, 0, &mut data, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
+        }
+        .ctx(|| "read timestamps".into())?;
+        let mask = if self.valid_bits >= 64 { u64::MAX } else { (1u64 << self.valid_bits) - 1 };
+        let ticks = (data[b as usize] & mask).wrapping_sub(data[a as usize] & mask) & mask;
+        Ok(ticks as f64 * self.period_ns)
+    }
+}
+
+impl Drop for Timer {
+    fn drop(&mut self) {
+        if self.shared.poisoned.load(Ordering::SeqCst) {
+            return;
+        }
+        // SAFETY: no pending submission uses it (submit waits).
+        unsafe { self.shared.device.destroy_query_pool(self.pool, None) };
+    }
+}

@@ -1,0 +1,294 @@
+//! The logical device and everything that lives as long as it: queue, command pool,
+//! allocator. `Context` is the safe handle the rest of bidir holds.
+
+use super::{
+    error::{Result, VkError, VkResultExt},
+    instance::{self, DeviceInfo, ValidationLog},
+};
+use ash::vk;
+use gpu_allocator::vulkan::{Allocator, AllocatorCreateDesc};
+use std::{
+    ffi::{CStr, CString},
+    mem::ManuallyDrop,
+    sync::{
+        atomic::{AtomicBool, Ordering},
+        Arc, Mutex,
+    },
+    time::Duration,
+};
+
+/// How to create a [`Context`].
+#[derive(Clone, Debug)]
+pub struct ContextOptions {
+    /// Enable VK_LAYER_KHRONOS_validation (with synchronisation validation) and collect its
+    /// messages; an error if the layer is not installed.
+    pub validation: bool,
+    /// `--device`: an index from `bidir info` or a name substring.
+    pub device: Option<String>,
+    /// How long one submission may run before it is reported as a hung GPU.
+    pub gpu_timeout: Duration,
+    /// Extra instance extensions (surface extensions for the viewer).
+    pub instance_extensions: Vec<&'static CStr>,
+    /// Extra device extensions (the swapchain for the viewer).
+    pub device_extensions: Vec<&'static CStr>,
+}
+
+impl Default for ContextOptions {
+    fn default() -> Self {
+        ContextOptions {
+            validation: false,
+            device: None,
+            gpu_timeout: Duration::from_secs(60),
+            instance_extensions: vec![],
+            device_extensions: vec![],
+        }
+    }
+}
+
+impl ContextOptions {
+    /// Defaults, with `BIDIR_VALIDATION=1` turning validation on, `BIDIR_DEVICE` choosing the
+    /// device and `BIDIR_GPU_TIMEOUT_S` the submission timeout.
+    pub fn from_env() -> Self {
+        let mut o = ContextOptions::default();
+        o.validation = std::env::var("BIDIR_VALIDATION").is_ok_and(|v| v == "1" || v.eq_ignore_ascii_case("true"));
+        o.device = std::env::var("BIDIR_DEVICE").ok().filter(|s| !s.is_empty());
+        if let Some(s) = std::env::var("BIDIR_GPU_TIMEOUT_S").ok().and_then(|s| s.parse::<f64>().ok()) {
+            o.gpu_timeout = Duration::from_secs_f64(s.max(0.001));
+        }
+        o
+    }
+}
+
+/// The device-wide state shared (through `Arc`) by every GPU object, so that each object
+/// can free itself on drop and the device is destroyed only after the last of them.
+pub(crate) struct Shared {
+    /// Keeps the loader library loaded while the instance lives.
+    _entry: ash::Entry,
+    pub instance: ash::Instance,
+    debug_utils: Option<ash::ext::debug_utils::Instance>,
+    messenger: vk::DebugUtilsMessengerEXT,
+    pub device: ash::Device,
+    debug_device: Option<ash::ext::debug_utils::Device>,
+    pub push_descriptor: ash::khr::push_descriptor::Device,
+    pub allocator: ManuallyDrop<Mutex<Allocator>>,
+    pub queue: Mutex<vk::Queue>,
+    pub command_pool: Mutex<vk::CommandPool>,
+    pub info: DeviceInfo,
+    pub gpu_timeout: Duration,
+    /// Set when a submission timed out: the device may still be executing, so nothing is
+    /// destroyed (destroying in-flight objects is undefined behaviour).
+    pub poisoned: AtomicBool,
+    _log: Arc<ValidationLog>,
+}
+
+impl Shared {
+    /// Gives a Vulkan object a debug name (shown by validation messages and GPU debuggers).
+    pub fn name<H: vk::Handle>(&self, handle: H, name: &str) {
+        if let Some(du) = &self.debug_device {
+            let cname = CString::new(name.replace('\0', " ")).unwrap_or_default();
+            let info = vk::DebugUtilsObjectNameInfoEXT::default().object_handle(handle).object_name(&cname);
+            // SAFETY: `handle` is a live object of this device; naming is advisory.
+            let _ = unsafe { du.set_debug_utils_object_name(&info) };
+        }
+    }
+}
+
+impl Drop for Shared {
+    fn drop(&mut self) {
+        if self.poisoned.load(Ordering::SeqCst) {
+            return; // see `poisoned`
+        }
+        // SAFETY: this is the last reference; every child object has been dropped (each holds
+        // an Arc<Shared>), so destroying in reverse creation order is sound.
+        unsafe {
+            let _ = self.device.device_wait_idle();
+            ManuallyDrop::drop(&mut self.allocator);
+            self.device.destroy_command_pool(*self.command_pool.get_mut().unwrap_or_else(|e| e.into_inner()), None);
+            self.device.destroy_device(None);
+            if let Some(du) = &self.debug_utils {
+                if self.messenger != vk::DebugUtilsMessengerEXT::null() {
+                    du.destroy_debug_utils_messenger(self.messenger, None);
+                }
+            }
+            self.instance.destroy_instance(None);
+        }
+    }
+}
+
+/// A Vulkan device ready for compute work. Cheap to clone (an `Arc`).
+#[derive(Clone)]
+pub struct Context {
+    pub(crate) shared: Arc<Shared>,
+    log: Arc<ValidationLog>,
+    devices: Arc<Vec<DeviceInfo>>,
+}
+
+impl Context {
+    /// Creates an instance and a device as `opts` says.
+    pub fn new(opts: &ContextOptions) -> Result<Context> {
+        let log = Arc::new(ValidationLog::default());
+        let parts = instance::create_instance(opts.validation, &opts.instance_extensions, &log)?;
+        let destroy_instance = |parts: &instance::InstanceParts| unsafe {
+            // SAFETY: only called on early-error paths, before any device exists.
+            if let Some(du) = &parts.debug_utils {
+                if parts.messenger != vk::DebugUtilsMessengerEXT::null() {
+                    du.destroy_debug_utils_messenger(parts.messenger, None);
+                }
+            }
+            parts.instance.destroy_instance(None);
+        };
+        let described = match instance::describe_devices(&parts.instance) {
+            Ok(d) => d,
+            Err(e) => {
+                destroy_instance(&parts);
+                return Err(e);
+            }
+        };
+        let infos: Vec<DeviceInfo> = described.iter().map(|(_, d)| d.clone()).collect();
+        let chosen = match instance::choose_device(&infos, opts.device.as_deref()) {
+            Ok(c) => c,
+            Err(e) => {
+                destroy_instance(&parts);
+                return Err(e);
+            }
+        };
+        let (physical, info) = described[chosen].clone();
+        match create_device(&parts, physical, &info, opts) {
+            Ok((device, queue, pool, allocator)) => {
+                let debug_device = parts.debug_utils.as_ref().map(|_| ash::ext::debug_utils::Device::new(&parts.instance, &device));
+                let push_descriptor = ash::khr::push_descriptor::Device::new(&parts.instance, &device);
+                let shared = Shared {
+                    _entry: parts.entry,
+                    instance: parts.instance,
+                    debug_utils: parts.debug_utils,
+                    messenger: parts.messenger,
+                    device,
+                    debug_device,
+                    push_descriptor,
+                    allocator: ManuallyDrop::new(Mutex::new(allocator)),
+                    queue: Mutex::new(queue),
+                    command_pool: Mutex::new(pool),
+                    info,
+                    gpu_timeout: opts.gpu_timeout,
+                    poisoned: AtomicBool::new(false),
+                    _log: log.clone(),
+                };
+                shared.name(queue, "bidir.queue");
+                shared.name(pool, "bidir.command_pool");
+                Ok(Context { shared: Arc::new(shared), log, devices: Arc::new(infos) })
+            }
+            Err(e) => {
+                destroy_instance(&parts);
+                Err(e)
+            }
+        }
+    }
+
+    /// The chosen device.
+    pub fn info(&self) -> &DeviceInfo {
+        &self.shared.info
+    }
+
+    /// Every device the instance saw (the chosen one is `info().index`).
+    pub fn devices(&self) -> &[DeviceInfo] {
+        &self.devices
+    }
+
+    /// Validation-layer warnings and errors so far (empty without validation).
+    pub fn validation_messages(&self) -> Vec<String> {
+        self.log.messages()
+    }
+
+    /// Destroys the device and instance now and returns every validation message, including
+    /// those emitted during destruction (leaked objects). Fails if GPU objects made from this
+    /// context are still alive.
+    pub fn close(self) -> Result<Vec<String>> {
+        let Context { shared, log, .. } = self;
+        match Arc::try_unwrap(shared) {
+            Ok(shared) => drop(shared),
+            Err(shared) => return Err(VkError::LiveObjects(Arc::strong_count(&shared) - 1)),
+        }
+        Ok(log.messages())
+    }
+}
+
+type DeviceParts = (ash::Device, vk::Queue, vk::CommandPool, Allocator);
+
+fn create_device(
+    parts: &instance::InstanceParts,
+    physical: vk::PhysicalDevice,
+    info: &DeviceInfo,
+    opts: &ContextOptions,
+) -> Result<DeviceParts> {
+    let instance = &parts.instance;
+    let family = info.queue_family.expect("usable devices have a compute queue");
+    let priorities = [1.0f32];
+    let queue_info = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
+    let mut ext_ptrs: Vec<*const i8> = vec![ash::khr::push_descriptor::NAME.as_ptr()];
+    ext_ptrs.extend(opts.device_extensions.iter().map(|e| e.as_ptr()));
+
+    // Enable the optional features bidir's kernels use where the device has them.
+    let mut f13 = vk::PhysicalDeviceVulkan13Features::default();
+    let mut f12 = vk::PhysicalDeviceVulkan12Features::default();
+    // SAFETY: feature query on a live physical device.
+    let supported = unsafe {
+        let mut q = vk::PhysicalDeviceFeatures2::default().push_next(&mut f12);
+        if info.api_version >= vk::API_VERSION_1_3 {
+            q = q.push_next(&mut f13);
+        }
+        instance.get_physical_device_features2(physical, &mut q);
+        q.features
+    };
+    let core = vk::PhysicalDeviceFeatures::default().shader_int64(supported.shader_int64 == vk::TRUE);
+    let mut e12 = vk::PhysicalDeviceVulkan12Features::default()
+        .scalar_block_layout(f12.scalar_block_layout == vk::TRUE)
+        .host_query_reset(f12.host_query_reset == vk::TRUE)
+        .shader_float16(f12.shader_float16 == vk::TRUE)
+        .storage_buffer8_bit_access(f12.storage_buffer8_bit_access == vk::TRUE)
+        .shader_int8(f12.shader_int8 == vk::TRUE);
+    let mut e13 = vk::PhysicalDeviceVulkan13Features::default()
+        .subgroup_size_control(f13.subgroup_size_control == vk::TRUE)
+        .compute_full_subgroups(f13.compute_full_subgroups == vk::TRUE);
+    let mut create = vk::DeviceCreateInfo::default()
+        .queue_create_infos(&queue_info)
+        .enabled_extension_names(&ext_ptrs)
+        .enabled_features(&core)
+        .push_next(&mut e12);
+    if info.api_version >= vk::API_VERSION_1_3 {
+        create = create.push_next(&mut e13);
+    }
+    // SAFETY: every pointer in `create` outlives the call.
+    let device = unsafe { instance.create_device(physical, &create, None) }.ctx(|| format!("vkCreateDevice ({})", info.name))?;
+    // SAFETY: the queue family and index were requested above.
+    let queue = unsafe { device.get_device_queue(family, 0) };
+    let pool_info = vk::CommandPoolCreateInfo::default()
+        .queue_family_index(family)
+        .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER | vk::CommandPoolCreateFlags::TRANSIENT);
+    // SAFETY: live device.
+    let pool = match unsafe { device.create_command_pool(&pool_info, None) } {
+        Ok(p) => p,
+        Err(result) => {
+            unsafe { device.destroy_device(None) };
+            return Err(VkError::Vk { what: "vkCreateCommandPool".into(), result });
+        }
+    };
+    let allocator = match Allocator::new(&AllocatorCreateDesc {
+        instance: instance.clone(),
+        device: device.clone(),
+        physical_device: physical,
+        debug_settings: Default::default(),
+        buffer_device_address: false,
+        allocation_sizes: Default::default(),
+    }) {
+        Ok(a) => a,
+        Err(e) => {
+            // SAFETY: nothing else was created from this device.
+            unsafe {
+                device.destroy_command_pool(pool, None);
+                device.destroy_device(None);
+            }
+            return Err(VkError::Usage { name: "gpu-allocator".into(), msg: e.to_string() });
+        }
+    };
+    Ok((device, queue, pool, allocator))
+}

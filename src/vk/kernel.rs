@@ -1,0 +1,160 @@
+//! Compute pipelines whose descriptor-set layout, push-constant range and workgroup size
+//! are read from their own SPIR-V: a kernel's bindings are declared once, in GLSL, with the
+//! indices from `gpu::abi`. Resources are bound with push descriptors, so no pools or sets
+//! are managed per pass.
+
+use super::{
+    context::{Context, Shared},
+    error::{Result, VkError, VkResultExt},
+    reflect::{Module, ReflectedBinding},
+};
+use crate::gpu::kernels::KernelSource;
+use ash::vk;
+use std::sync::Arc;
+
+/// A compiled compute pipeline.
+pub struct Kernel {
+    shared: Arc<Shared>,
+    name: String,
+    pub(crate) set_layout: vk::DescriptorSetLayout,
+    pub(crate) pipeline_layout: vk::PipelineLayout,
+    pub(crate) pipeline: vk::Pipeline,
+    bindings: Vec<ReflectedBinding>,
+    push_size: u32,
+    local_size: [u32; 3],
+}
+
+impl Kernel {
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// Descriptor bindings the kernel uses (reflected from its SPIR-V).
+    pub fn bindings(&self) -> &[ReflectedBinding] {
+        &self.bindings
+    }
+    /// Push-constant bytes the kernel expects.
+    pub fn push_size(&self) -> u32 {
+        self.push_size
+    }
+    /// `local_size_{x,y,z}` of the kernel.
+    pub fn local_size(&self) -> [u32; 3] {
+        self.local_size
+    }
+    /// Workgroups needed to cover `n` invocations along x.
+    pub fn groups_for(&self, n: u32) -> u32 {
+        n.div_ceil(self.local_size[0].max(1))
+    }
+}
+
+impl Drop for Kernel {
+    fn drop(&mut self) {
+        if self.shared.poisoned.load(std::sync::atomic::Ordering::SeqCst) {
+            return;
+        }
+        // SAFETY: submissions complete before returning; nothing uses the pipeline now.
+        unsafe {
+            self.shared.device.destroy_pipeline(self.pipeline, None);
+            self.shared.device.destroy_pipeline_layout(self.pipeline_layout, None);
+            self.shared.device.destroy_descriptor_set_layout(self.set_layout, None);
+        }
+    }
+}
+
+/// A specialisation constant: `layout(constant_id = id) const uint NAME = default;`.
+#[derive(Clone, Copy, Debug)]
+pub struct Spec {
+    pub id: u32,
+    pub value: u32,
+}
+
+impl Context {
+    /// Builds the pipeline for an embedded kernel, with specialisation constants.
+    pub fn create_kernel(&self, source: &KernelSource, specs: &[Spec]) -> Result<Kernel> {
+        let s = &self.shared;
+        let kerr = |msg: String| VkError::Kernel { kernel: source.name.into(), msg };
+        let words = source.spirv_words();
+        let module = Module::parse(&words).map_err(kerr)?;
+        let bindings = module.bindings().map_err(kerr)?;
+        let push_size = module.push_constant_size();
+        let local_size = module.local_size().unwrap_or([1, 1, 1]);
+
+        let layout_bindings: Vec<_> = bindings
+            .iter()
+            .map(|b| {
+                vk::DescriptorSetLayoutBinding::default()
+                    .binding(b.binding)
+                    .descriptor_type(b.descriptor_type)
+                    .descriptor_count(b.count)
+                    .stage_flags(vk::ShaderStageFlags::COMPUTE)
+            })
+            .collect();
+        let set_info = vk::DescriptorSetLayoutCreateInfo::default()
+            .flags(vk::DescriptorSetLayoutCreateFlags::PUSH_DESCRIPTOR_KHR)
+            .bindings(&layout_bindings);
+        // SAFETY: live device, valid create infos; every object is destroyed by Kernel::drop
+        // or on the error paths below.
+        unsafe {
+            let set_layout = s.device.create_descriptor_set_layout(&set_info, None).ctx(|| format!("descriptor set layout of {}", source.name))?;
+            let ranges = [vk::PushConstantRange { stage_flags: vk::ShaderStageFlags::COMPUTE, offset: 0, size: push_size }];
+            let set_layouts = [set_layout];
+            let mut pl_info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
+            if push_size > 0 {
+                pl_info = pl_info.push_constant_ranges(&ranges);
+            }
+            let pipeline_layout = match s.device.create_pipeline_layout(&pl_info, None) {
+                Ok(l) => l,
+                Err(result) => {
+                    s.device.destroy_descriptor_set_layout(set_layout, None);
+                    return Err(VkError::Vk { what: format!("pipeline layout of {}", source.name), result });
+                }
+            };
+            let shader = match s.device.create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None) {
+                Ok(m) => m,
+                Err(result) => {
+                    s.device.destroy_pipeline_layout(pipeline_layout, None);
+                    s.device.destroy_descriptor_set_layout(set_layout, None);
+                    return Err(VkError::Vk { what: format!("shader module of {}", source.name), result });
+                }
+            };
+            let entries: Vec<vk::SpecializationMapEntry> = specs
+                .iter()
+                .enumerate()
+                .map(|(i, sp)| vk::SpecializationMapEntry { constant_id: sp.id, offset: (i * 4) as u32, size: 4 })
+                .collect();
+            let data: Vec<u8> = specs.iter().flat_map(|sp| sp.value.to_le_bytes()).collect();
+            let spec_info = vk::SpecializationInfo::default().map_entries(&entries).data(&data);
+            let entry = c"main";
+            let mut stage = vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::COMPUTE)
+                .module(shader)
+                .name(entry);
+            if !specs.is_empty() {
+                stage = stage.specialization_info(&spec_info);
+            }
+            let info = [vk::ComputePipelineCreateInfo::default().stage(stage).layout(pipeline_layout)];
+            let result = s.device.create_compute_pipelines(vk::PipelineCache::null(), &info, None);
+            s.device.destroy_shader_module(shader, None);
+            let pipeline = match result {
+                Ok(p) => p[0],
+                Err((_, result)) => {
+                    s.device.destroy_pipeline_layout(pipeline_layout, None);
+                    s.device.destroy_descriptor_set_layout(set_layout, None);
+                    return Err(VkError::Vk { what: format!("compute pipeline {}", source.name), result });
+                }
+            };
+            s.name(pipeline, source.name);
+            s.name(pipeline_layout, &format!("{}.layout", source.name));
+            s.name(set_layout, &format!("{}.set_layout", source.name));
+            Ok(Kernel {
+                shared: s.clone(),
+                name: source.name.into(),
+                set_layout,
+                pipeline_layout,
+                pipeline,
+                bindings,
+                push_size,
+                local_size,
+            })
+        }
+    }
+}

@@ -1,0 +1,44 @@
+//! The GPU ABI: every struct declared in `src/gpu/abi.rs` must have, in the SPIR-V the GLSL
+//! compiler produced, the same member names, offsets and array stride as in Rust. This
+//! catches std430 surprises (a vec3 followed by a vec3, a vec4 after a scalar) before they
+//! become wrong pixels.
+
+use bidir::gpu::{abi, kernels};
+use bidir::vk::reflect::Module;
+
+#[test]
+fn rust_structs_match_their_glsl_layout() {
+    let module = Module::parse(&kernels::ABI_LAYOUT.spirv_words()).expect("abi_layout.spv parses");
+    let layouts = abi::struct_layouts();
+    assert!(!layouts.is_empty());
+    for (name, size, fields) in layouts {
+        let (members, stride) = module.struct_layout(name).unwrap_or_else(|| panic!("struct {name} missing from abi_layout.spv"));
+        assert_eq!(members.len(), fields.len(), "{name}: member count");
+        for (m, f) in members.iter().zip(fields) {
+            assert_eq!(m.name, f.name, "{name}: member order");
+            assert_eq!(m.offset as usize, f.offset, "{name}.{}: GLSL std430 offset {} but Rust offset {}", f.name, m.offset, f.offset);
+        }
+        assert_eq!(stride, Some(size as u32), "{name}: GLSL array stride vs Rust size_of");
+    }
+}
+
+#[test]
+fn every_kernel_reflects() {
+    for k in kernels::ALL {
+        let m = Module::parse(&k.spirv_words()).unwrap_or_else(|e| panic!("{}: {e}", k.file));
+        m.bindings().unwrap_or_else(|e| panic!("{}: {e}", k.file));
+        assert!(m.local_size().is_some(), "{}: workgroup size must be literal", k.file);
+    }
+    let reduce = Module::parse(&kernels::REDUCE_SUM.spirv_words()).unwrap();
+    let b: Vec<u32> = reduce.bindings().unwrap().iter().map(|b| b.binding).collect();
+    assert_eq!(b, vec![abi::REDUCE_BIND_INPUT, abi::REDUCE_BIND_OUTPUT]);
+    assert_eq!(reduce.push_constant_size() as usize, std::mem::size_of::<abi::ScanPush>());
+    assert_eq!(reduce.local_size(), Some([abi::SCAN_WG_SIZE, 1, 1]));
+}
+
+#[test]
+fn generated_header_carries_every_constant() {
+    let h = abi::header_glsl();
+    assert!(h.contains(&format!("#define SCAN_WG_SIZE {}u", abi::SCAN_WG_SIZE)));
+    assert!(h.contains("struct ImageAffinePush {"));
+}

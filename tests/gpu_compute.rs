@@ -1,0 +1,183 @@
+//! Real kernels on whatever Vulkan device is present (lavapipe in CI), checked against the
+//! CPU, validation-clean.
+
+mod common;
+
+use bidir::compute::Scan;
+use bidir::gpu::{abi, kernels};
+use bidir::vk::{Bind, Format, Memory};
+use common::{finish, gpu, Pcg};
+
+/// Sizes around the edges of one block, one block of blocks, and odd sizes in between.
+const SIZES: &[u32] = &[1, 2, 7, 255, 256, 257, 1000, 4099, 65_535, 65_536, 65_537, 100_003, 1_000_001];
+
+#[test]
+fn subgroup_reduction_matches_cpu() {
+    let ctx = gpu();
+    let scan = Scan::new(&ctx).unwrap();
+    let mut rng = Pcg::new(1);
+    for &n in SIZES {
+        let values: Vec<u32> = (0..n).map(|_| rng.below(4096)).collect();
+        let input = ctx.upload_buffer("reduce.in", &values).unwrap();
+        let expect = values.iter().fold(0u32, |a, &v| a.wrapping_add(v));
+        assert_eq!(scan.sum(&ctx, &input, n).unwrap(), expect, "sum of {n} values");
+        // Only the first `count` elements count.
+        if n > 3 {
+            let partial = values[..n as usize - 3].iter().fold(0u32, |a, &v| a.wrapping_add(v));
+            assert_eq!(scan.sum(&ctx, &input, n - 3).unwrap(), partial, "sum of the first {} of {n}", n - 3);
+        }
+    }
+    drop(scan);
+    finish(ctx);
+}
+
+#[test]
+fn subgroup_prefix_sum_matches_cpu() {
+    let ctx = gpu();
+    let scan = Scan::new(&ctx).unwrap();
+    let mut rng = Pcg::new(2);
+    for &n in SIZES {
+        let values: Vec<u32> = (0..n).map(|_| rng.below(1000)).collect();
+        let data = ctx.upload_buffer("scan.data", &values).unwrap();
+        scan.exclusive_scan(&ctx, &data, n).unwrap();
+        let got: Vec<u32> = ctx.read_buffer(&data).unwrap();
+        let mut acc = 0u32;
+        for (i, &v) in values.iter().enumerate() {
+            assert_eq!(got[i], acc, "exclusive scan of {n} values differs at index {i}");
+            acc = acc.wrapping_add(v);
+        }
+    }
+    drop(scan);
+    finish(ctx);
+}
+
+#[test]
+fn shader_subgroup_size_matches_device_report() {
+    let ctx = gpu();
+    let k = ctx.create_kernel(&kernels::SUBGROUP_PROBE, &[]).unwrap();
+    let n = abi::SCAN_WG_SIZE * 3;
+    let out = ctx.create_buffer("probe.out", n as u64 * 16, Memory::Device).unwrap();
+    ctx.submit("probe", |rec| rec.dispatch(&k, &[Bind::buffer(abi::PROBE_BIND_OUT, &out)], &[], [3, 1, 1])).unwrap();
+    let probes: Vec<abi::SubgroupProbe> = ctx.read_buffer(&out).unwrap();
+    let reported = ctx.info().subgroup_size;
+    for (i, p) in probes.iter().enumerate() {
+        assert!(
+            p.subgroup_size >= ctx.info().min_subgroup_size && p.subgroup_size <= ctx.info().max_subgroup_size,
+            "invocation {i}: shader subgroup size {} outside the device's {}..{}",
+            p.subgroup_size,
+            ctx.info().min_subgroup_size,
+            ctx.info().max_subgroup_size
+        );
+        assert_eq!(p.num_subgroups, abi::SCAN_WG_SIZE.div_ceil(p.subgroup_size), "invocation {i}");
+        assert!(p.invocation_id < p.subgroup_size && p.subgroup_id < p.num_subgroups);
+    }
+    // Without a required size the default must be the one the device reports.
+    assert_eq!(probes[0].subgroup_size, reported, "default subgroup size");
+    drop((k, out));
+    finish(ctx);
+}
+
+#[test]
+fn buffer_round_trip() {
+    let ctx = gpu();
+    let mut rng = Pcg::new(3);
+    for n in [1usize, 3, 1024, 333_333] {
+        let data: Vec<u32> = (0..n).map(|_| rng.next_u32()).collect();
+        let buf = ctx.upload_buffer("round_trip", &data).unwrap();
+        assert_eq!(ctx.read_buffer::<u32>(&buf).unwrap()[..n], data[..], "{n} words");
+        // And through a host-visible buffer written directly.
+        let mut up = ctx.create_buffer("round_trip.upload", n as u64 * 4, Memory::Upload).unwrap();
+        up.write(0, &data).unwrap();
+        let dev = ctx.create_buffer("round_trip.device", n as u64 * 4, Memory::Device).unwrap();
+        ctx.submit("copy", |rec| {
+            rec.copy_buffer(&up, &dev, n as u64 * 4);
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(ctx.read_buffer::<u32>(&dev).unwrap()[..n], data[..]);
+    }
+    finish(ctx);
+}
+
+#[test]
+fn image_round_trip_and_kernel() {
+    let ctx = gpu();
+    let mut rng = Pcg::new(4);
+    for (w, h) in [(1u32, 1u32), (13, 7), (256, 256), (321, 123)] {
+        let texels: Vec<f32> = (0..w * h * 4).map(|_| rng.next_f32() * 100.0 - 50.0).collect();
+        let src = ctx.create_image("img.src", w, h, Format::R32G32B32A32_SFLOAT).unwrap();
+        ctx.write_image(&src, &texels).unwrap();
+        assert_eq!(ctx.read_image::<f32>(&src).unwrap(), texels, "{w}x{h} round trip");
+
+        let dst = ctx.create_image("img.dst", w, h, Format::R32G32B32A32_SFLOAT).unwrap();
+        let k = ctx.create_kernel(&kernels::IMAGE_AFFINE, &[]).unwrap();
+        let push = abi::ImageAffinePush {
+            scale: glam::Vec4::new(2.0, -1.0, 0.5, 0.0),
+            offset: glam::Vec4::new(1.0, 0.0, -3.0, 7.0),
+            size: glam::UVec4::new(w, h, 0, 0),
+        };
+        let wg = abi::IMAGE_WG_SIZE;
+        ctx.submit("affine", |rec| {
+            rec.dispatch(
+                &k,
+                &[Bind::image(abi::IMAGE_AFFINE_BIND_SRC, &src), Bind::image(abi::IMAGE_AFFINE_BIND_DST, &dst)],
+                bytemuck::bytes_of(&push),
+                [w.div_ceil(wg), h.div_ceil(wg), 1],
+            )
+        })
+        .unwrap();
+        let got: Vec<f32> = ctx.read_image(&dst).unwrap();
+        for (i, (g, s)) in got.iter().zip(&texels).enumerate() {
+            let c = i % 4;
+            let expect = s * push.scale[c] + push.offset[c];
+            assert!((g - expect).abs() <= 1e-5 * expect.abs().max(1.0), "{w}x{h} texel {i}: {g} != {expect}");
+        }
+    }
+    finish(ctx);
+}
+
+#[test]
+fn dispatch_rejects_wrong_bindings_and_push_constants() {
+    let ctx = gpu();
+    let k = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
+    let buf = ctx.create_buffer("b", 64, Memory::Device).unwrap();
+    let img = ctx.create_image("i", 4, 4, Format::R32G32B32A32_SFLOAT).unwrap();
+    let push = abi::ScanPush::default();
+    let missing = ctx.submit("missing", |rec| rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf)], bytemuck::bytes_of(&push), [1, 1, 1]));
+    assert!(missing.unwrap_err().to_string().contains("binding 1"), "a missing binding is named");
+    let wrong = ctx.submit("wrong", |rec| {
+        rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf), Bind::image(abi::REDUCE_BIND_OUTPUT, &img)], bytemuck::bytes_of(&push), [1, 1, 1])
+    });
+    assert!(wrong.unwrap_err().to_string().contains("expects"), "a wrong resource type is named");
+    let short = ctx.submit("short", |rec| {
+        rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &buf)], &[0u8; 4], [1, 1, 1])
+    });
+    assert!(short.unwrap_err().to_string().contains("push constants"));
+    drop((k, buf, img));
+    finish(ctx);
+}
+
+#[test]
+fn timestamps_measure_gpu_work() {
+    let ctx = gpu();
+    let scan = Scan::new(&ctx).unwrap();
+    let timer = ctx.create_timer("t", 2).unwrap();
+    let data = ctx.upload_buffer("t.data", &vec![1u32; 1 << 20]).unwrap();
+    let k = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
+    let out = ctx.create_buffer("t.out", 4, Memory::Device).unwrap();
+    let push = abi::ScanPush { count: 1 << 20, ..Default::default() };
+    ctx.submit("timed", |rec| {
+        rec.reset_timer(&timer);
+        rec.fill_buffer(&out, 0);
+        rec.timestamp(&timer, 0);
+        rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &data), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &out)], bytemuck::bytes_of(&push), [64, 1, 1])?;
+        rec.timestamp(&timer, 1);
+        Ok(())
+    })
+    .unwrap();
+    let ns = timer.elapsed_ns(0, 1).unwrap();
+    assert!(ns > 0.0 && ns < 10e9, "elapsed {ns} ns");
+    assert_eq!(ctx.read_buffer::<u32>(&out).unwrap()[0], 1 << 20);
+    drop((scan, timer, data, k, out));
+    finish(ctx);
+}
