@@ -7,4 +7,5 @@
 
 pub mod compute;
 pub mod gpu;
+pub mod scene;
 pub mod vk;

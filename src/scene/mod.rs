@@ -1,0 +1,101 @@
+//! The scene model: only what the renderer reads. Loaders (OBJ+MTL, glTF 2.0) and the
+//! built-in Cornell box produce a [`Scene`]; the BVH and the GPU upload consume it.
+//!
+//! "Model no more than a scene needs": normals, UVs and textures are `None`/empty when the
+//! file has none, and [`Scene::features`] tells kernels what they can skip.
+
+use glam::{Vec2, Vec3};
+
+/// Indexed triangles with a material per triangle.
+#[derive(Clone, Debug, Default)]
+pub struct Scene {
+    /// Where it came from (file path, or `builtin:cornell-box`), for messages.
+    pub source: String,
+    pub positions: Vec<Vec3>,
+    /// Per-vertex shading normals, only where the file has them.
+    pub normals: Option<Vec<Vec3>>,
+    /// Per-vertex texture coordinates, only where the file has them.
+    pub uvs: Option<Vec<Vec2>>,
+    /// Vertex indices, counter-clockwise seen from the front.
+    pub triangles: Vec<[u32; 3]>,
+    /// Index into `materials`, one per triangle.
+    pub material_ids: Vec<u32>,
+    pub materials: Vec<Material>,
+    pub textures: Vec<Texture>,
+    pub cameras: Vec<Camera>,
+    /// Degenerate (zero-area or non-finite) triangles dropped while loading.
+    pub dropped_degenerate: usize,
+}
+
+/// The thesis' material model: diffuse albedo (colour or texture), emission, a fraction of
+/// perfect mirror and a fraction of smooth dielectric.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    pub name: String,
+    /// Linear RGB diffuse albedo (multiplied with the texture where there is one).
+    pub albedo: Vec3,
+    pub albedo_texture: Option<u32>,
+    /// Emitted radiance, linear RGB, from the front face only.
+    pub emission: Vec3,
+    /// Fraction of perfect mirror reflection (0..1).
+    pub reflectivity: f32,
+    /// Fraction of smooth dielectric transmission/reflection (0..1).
+    pub refractivity: f32,
+    /// Index of refraction for the dielectric part.
+    pub ior: f32,
+    /// Alpha-tested cut-out: texels with alpha below the cutoff are holes.
+    pub alpha: Option<AlphaMask>,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            name: String::new(),
+            albedo: Vec3::splat(0.8),
+            albedo_texture: None,
+            emission: Vec3::ZERO,
+            reflectivity: 0.0,
+            refractivity: 0.0,
+            ior: 1.5,
+            alpha: None,
+        }
+    }
+}
+
+impl Material {
+    pub fn is_emissive(&self) -> bool {
+        self.emission.max_element() > 0.0
+    }
+}
+
+/// Where an alpha-tested material reads its alpha.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AlphaMask {
+    pub texture: u32,
+    pub cutoff: f32,
+}
+
+/// A decoded texture: RGBA8, rows top to bottom.
+#[derive(Clone, Debug)]
+pub struct Texture {
+    pub name: String,
+    pub width: u32,
+    pub height: u32,
+    /// RGBA8 texels, `width * height * 4` bytes.
+    pub rgba8: Vec<u8>,
+    /// Colour data is sRGB-encoded and must be linearised when sampled.
+    pub srgb: bool,
+}
+
+/// A pinhole camera.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    pub name: String,
+    pub eye: Vec3,
+    pub target: Vec3,
+    pub up: Vec3,
+    /// Vertical field of view in degrees.
+    pub fov_y_deg: f32,
+    pub width: u32,
+    pub height: u32,
+}
