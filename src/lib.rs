@@ -6,6 +6,8 @@
 //! - [`compute`]: small reusable GPU algorithms (reduction, prefix sum).
 
 pub mod compute;
+pub mod bvh;
 pub mod gpu;
 pub mod scene;
+pub mod trace;
 pub mod vk;

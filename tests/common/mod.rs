@@ -1,5 +1,7 @@
-//! Shared helpers for integration tests: a validated Vulkan context and a small RNG.
+//! Shared helpers for integration tests: a validated Vulkan context, a small RNG, geometry.
 #![allow(dead_code)]
+
+pub mod geometry;
 
 use bidir::vk::{Context, ContextOptions};
 

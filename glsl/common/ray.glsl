@@ -1,0 +1,49 @@
+// Ray helpers shared by every kernel that spawns rays.
+#ifndef BIDIR_RAY_GLSL
+#define BIDIR_RAY_GLSL
+
+const float PI = 3.14159265358979323846;
+
+// Moves a surface point off its surface along the geometric normal `n` (pointing to the side
+// the new ray leaves on), by a few ulps of the coordinate far from the origin and by a tiny
+// absolute amount near it: no scene-scale epsilon. After Wächter & Binder, "A Fast and
+// Robust Method for Avoiding Self-Intersection", Ray Tracing Gems (2019), ch. 6.
+vec3 offset_ray_origin(vec3 p, vec3 n) {
+    const float near_origin = 1.0 / 32.0;
+    const float float_scale = 1.0 / 65536.0;
+    const float int_scale = 256.0;
+    ivec3 of_i = ivec3(int_scale * n);
+    vec3 p_i = intBitsToFloat(floatBitsToInt(p) + ivec3(p.x < 0.0 ? -of_i.x : of_i.x,
+                                                       p.y < 0.0 ? -of_i.y : of_i.y,
+                                                       p.z < 0.0 ? -of_i.z : of_i.z));
+    return vec3(abs(p.x) < near_origin ? p.x + float_scale * n.x : p_i.x,
+                abs(p.y) < near_origin ? p.y + float_scale * n.y : p_i.y,
+                abs(p.z) < near_origin ? p.z + float_scale * n.z : p_i.z);
+}
+
+// Orthonormal basis around a unit vector (Duff et al. 2017, "Building an Orthonormal Basis,
+// Revisited", listing 3).
+void onb(vec3 n, out vec3 t, out vec3 b) {
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float c = n.x * n.y * a;
+    t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+    b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+// Cosine-weighted direction about unit `n` (Malley's method): pdf_w = cos(theta) / pi.
+vec3 sample_cosine_hemisphere(vec3 n, float u1, float u2) {
+    float r = sqrt(u1);
+    float phi = 2.0 * PI * u2;
+    vec3 t, b;
+    onb(n, t, b);
+    return normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(max(0.0, 1.0 - u1)) * n);
+}
+
+// Primary ray direction through image position `p` (pixels, row 0 on top) of camera `cam`.
+vec3 camera_direction(GpuCamera cam, vec2 p) {
+    vec2 ndc = vec2(2.0 * p.x / float(cam.size.x) - 1.0, 1.0 - 2.0 * p.y / float(cam.size.y));
+    return normalize(cam.forward.xyz + ndc.x * cam.right.xyz + ndc.y * cam.up.xyz);
+}
+
+#endif

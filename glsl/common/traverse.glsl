@@ -1,0 +1,112 @@
+// BVH traversal: Aila & Laine 2009, "Understanding the Efficiency of Ray Traversal on GPUs",
+// the "speculative while-while" kernel. An inner-node loop and a leaf loop; a ray that
+// reaches a leaf postpones it and keeps descending until every active lane of its subgroup
+// holds a leaf (a subgroup vote, as the paper's warp __any), so the leaf loop runs with the
+// subgroup converged. Correct for any subgroup size: the vote only steers scheduling.
+//
+// Needs GL_KHR_shader_subgroup_vote and the ABI header. Declares the node and triangle
+// buffers at BIND_NODES / BIND_TRIS.
+#ifndef BIDIR_TRAVERSE_GLSL
+#define BIDIR_TRAVERSE_GLSL
+
+#include "intersect.glsl"
+
+layout(std430, binding = BIND_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
+layout(std430, binding = BIND_TRIS) readonly buffer BvhTris { GpuTri bvh_tris[]; };
+
+layout(constant_id = SPEC_STATS) const uint TRAVERSAL_STATS = 0u;
+
+// Slightly widens a box's exit distance so rounding in the slab test never culls a box the
+// ray touches (cf. Ize 2013, "Robust BVH Ray Traversal").
+const float BOX_EXIT_SCALE = 1.0000004;
+
+// Result of a query. `prim` is the leaf-order triangle index (bvh_tris), NO_HIT if none.
+struct TraceHit {
+    float t;
+    uint prim;
+    vec2 bary;
+};
+
+// Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
+// nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
+TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+    PreparedRay pr = prepare_ray(o, d, tmin);
+    // Reciprocal direction with zero components replaced by tiny ones of the same sign.
+    vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
+    vec3 idir = 1.0 / dd;
+    vec3 ood = o * idir;
+
+    TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
+    int stack[TRAVERSAL_STACK_SIZE];
+    int sp = 0;
+    stack[0] = int(TRAVERSAL_SENTINEL);
+    int node = 0;   // root
+    int leaf = 0;   // postponed leaf (< 0), none if >= 0
+
+    while (node != int(TRAVERSAL_SENTINEL)) {
+        // Inner nodes: descend until this lane holds a leaf and every active lane does.
+        while (uint(node) < TRAVERSAL_SENTINEL) {
+            BvhNode n = bvh_nodes[node];
+            if (TRAVERSAL_STATS != 0u) {
+                stats.x++;
+            }
+            vec4 t0xy = vec4(n.c0_xy.xy * idir.x, n.c0_xy.zw * idir.y) - ood.xxyy;
+            vec4 t1xy = vec4(n.c1_xy.xy * idir.x, n.c1_xy.zw * idir.y) - ood.xxyy;
+            vec4 tz = n.c01_z * idir.z - ood.zzzz;
+            float c0min = max(max(min(t0xy.x, t0xy.y), min(t0xy.z, t0xy.w)), max(min(tz.x, tz.y), tmin));
+            float c0max = min(min(max(t0xy.x, t0xy.y), max(t0xy.z, t0xy.w)), min(max(tz.x, tz.y), hit.t));
+            float c1min = max(max(min(t1xy.x, t1xy.y), min(t1xy.z, t1xy.w)), max(min(tz.z, tz.w), tmin));
+            float c1max = min(min(max(t1xy.x, t1xy.y), max(t1xy.z, t1xy.w)), min(max(tz.z, tz.w), hit.t));
+            bool hit0 = c0min <= c0max * BOX_EXIT_SCALE;
+            bool hit1 = c1min <= c1max * BOX_EXIT_SCALE;
+            if (!hit0 && !hit1) {
+                node = stack[sp--];
+            } else {
+                node = hit0 ? n.children.x : n.children.y;
+                if (hit0 && hit1) {
+                    int far_child = n.children.y;
+                    if (c1min < c0min) {
+                        far_child = n.children.x;
+                        node = n.children.y;
+                    }
+                    stack[++sp] = far_child;
+                }
+            }
+            // Postpone a leaf and keep descending (speculative traversal).
+            if (node < 0 && leaf >= 0) {
+                leaf = node;
+                node = stack[sp--];
+            }
+            if (subgroupAll(leaf < 0)) {
+                break;
+            }
+        }
+        // Leaves: this lane's postponed leaf, then `node` if it is a leaf too.
+        while (leaf < 0) {
+            uint first = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);
+            uint count = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;
+            for (uint i = first; i < first + count; i++) {
+                if (TRAVERSAL_STATS != 0u) {
+                    stats.y++;
+                }
+                float t;
+                vec2 bary;
+                if (intersect_tri(pr, bvh_tris[i], hit.t, t, bary)) {
+                    hit = TraceHit(t, i, bary);
+                    if (any_hit) {
+                        return hit;
+                    }
+                }
+            }
+            leaf = node;
+            if (node < 0) {
+                node = stack[sp--];
+            }
+        }
+    }
+    return hit;
+}
+
+#endif

@@ -1,0 +1,64 @@
+//! The CPU reference traversal: obvhs' own BVH2 traversal (independent of the GPU layout and
+//! kernels) with the same triangle tests as the GPU. Tests compare the GPU against it.
+
+use super::{
+    intersect::{self, PreparedRay, TriHit, TriTest},
+    Bvh,
+};
+use crate::gpu::abi::GpuTri;
+use glam::Vec3;
+use obvhs::ray::{Ray, RayHit};
+
+/// Closest-hit and any-hit queries on the CPU.
+pub struct CpuTracer<'a> {
+    bvh: &'a Bvh,
+    /// Encoded triangles by original index.
+    tris: Vec<GpuTri>,
+    test: TriTest,
+}
+
+impl<'a> CpuTracer<'a> {
+    pub fn new(bvh: &'a Bvh, positions: &[Vec3], triangles: &[[u32; 3]]) -> Self {
+        let tris = triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|v| positions[v as usize]);
+                intersect::encode(bvh.tri_test, a, b, c)
+            })
+            .collect();
+        CpuTracer { bvh, tris, test: bvh.tri_test }
+    }
+
+    /// Closest hit in (tmin, tmax): original triangle index and hit.
+    pub fn closest(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32) -> Option<(u32, TriHit)> {
+        let pr = PreparedRay::new(origin, dir, tmin);
+        let ray = Ray::new(origin.into(), dir.into(), tmin, tmax);
+        let mut best: Option<(u32, TriHit)> = None;
+        let mut hit = RayHit::none();
+        let src = &self.bvh.source;
+        src.ray_traverse(ray, &mut hit, |r, id| {
+            let orig = src.primitive_indices[id];
+            match intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax) {
+                Some(h) => {
+                    if best.is_none_or(|(_, b)| h.t < b.t) {
+                        best = Some((orig, h));
+                    }
+                    h.t
+                }
+                None => f32::INFINITY,
+            }
+        });
+        best
+    }
+
+    /// Whether anything is hit in (tmin, tmax).
+    pub fn any(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32) -> bool {
+        let pr = PreparedRay::new(origin, dir, tmin);
+        let ray = Ray::new(origin.into(), dir.into(), tmin, tmax);
+        let src = &self.bvh.source;
+        !src.ray_traverse_miss(ray, |r, id| {
+            let orig = src.primitive_indices[id];
+            intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax).map_or(f32::INFINITY, |h| h.t)
+        })
+    }
+}

@@ -1,0 +1,119 @@
+//! The bounding volume hierarchy: built on the CPU with obvhs (PLOC + reinsertion, optional
+//! spatial pre-splits), converted to the GPU layout of Aila & Laine (2009) — each inner node
+//! holds both children's boxes — with triangles stored in leaf order for the chosen
+//! intersection test.
+//!
+//! ```
+//! use bidir::bvh::{Bvh, BuildOptions};
+//! use glam::Vec3;
+//! let positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y];
+//! let bvh = Bvh::build(&positions, &[[0, 1, 2]], &BuildOptions::default()).unwrap();
+//! assert_eq!(bvh.tri_ids, vec![0]);
+//! ```
+
+mod cpu;
+pub mod intersect;
+mod layout;
+
+pub use cpu::CpuTracer;
+pub use intersect::TriTest;
+
+use crate::gpu::abi::{BvhNode, GpuTri};
+use glam::Vec3;
+use std::time::{Duration, Instant};
+
+/// How to build.
+#[derive(Clone, Copy, Debug)]
+pub struct BuildOptions {
+    /// Intersection test the triangles are encoded for.
+    pub tri_test: TriTest,
+    /// obvhs quality preset: 0 fastest .. 4 very slow.
+    pub quality: u32,
+    /// Split large triangles' boxes before building (the role the thesis' SBVH spatial splits
+    /// play); a triangle can then sit in several leaves.
+    pub pre_split: bool,
+    /// Most triangles in a leaf (1..=16).
+    pub max_leaf_tris: u32,
+}
+
+impl Default for BuildOptions {
+    fn default() -> Self {
+        BuildOptions { tri_test: TriTest::Watertight, quality: 2, pre_split: true, max_leaf_tris: 4 }
+    }
+}
+
+/// Why a BVH could not be built.
+#[derive(Debug, thiserror::Error)]
+pub enum BvhError {
+    #[error("the scene has no triangles")]
+    Empty,
+    #[error("triangle {tri} indexes vertex {index}, but there are only {count} vertices")]
+    BadIndex { tri: usize, index: u32, count: usize },
+    #[error("the BVH is {depth} levels deep, the GPU traversal stack holds {max}: the scene is degenerate (many coincident triangles?)")]
+    TooDeep { depth: usize, max: u32 },
+    #[error("{0} triangles exceed what the GPU layout can address (2^27)")]
+    TooMany(usize),
+}
+
+/// A BVH in GPU layout.
+#[derive(Clone)]
+pub struct Bvh {
+    /// Inner nodes; the root is node 0.
+    pub nodes: Vec<BvhNode>,
+    /// Triangles in leaf order.
+    pub tris: Vec<GpuTri>,
+    /// Original triangle index of each entry of `tris`.
+    pub tri_ids: Vec<u32>,
+    pub tri_test: TriTest,
+    /// Longest root-to-leaf path (edges).
+    pub depth: usize,
+    pub leaves: usize,
+    pub build_time: Duration,
+    /// The obvhs tree it came from (the CPU reference traverses it).
+    pub(crate) source: obvhs::bvh2::Bvh2,
+}
+
+impl Bvh {
+    /// Builds over indexed triangles.
+    pub fn build(positions: &[Vec3], triangles: &[[u32; 3]], opts: &BuildOptions) -> Result<Bvh, BvhError> {
+        if triangles.is_empty() {
+            return Err(BvhError::Empty);
+        }
+        if triangles.len() >= 1 << crate::gpu::abi::LEAF_FIRST_BITS {
+            return Err(BvhError::TooMany(triangles.len()));
+        }
+        for (tri, t) in triangles.iter().enumerate() {
+            if let Some(&index) = t.iter().find(|&&i| i as usize >= positions.len()) {
+                return Err(BvhError::BadIndex { tri, index, count: positions.len() });
+            }
+        }
+        let start = Instant::now();
+        let obvhs_tris: Vec<obvhs::triangle::Triangle> = triangles
+            .iter()
+            .map(|t| obvhs::triangle::Triangle {
+                v0: positions[t[0] as usize].into(),
+                v1: positions[t[1] as usize].into(),
+                v2: positions[t[2] as usize].into(),
+            })
+            .collect();
+        let mut params = match opts.quality {
+            0 => obvhs::BvhBuildParams::fastest_build(),
+            1 => obvhs::BvhBuildParams::fast_build(),
+            2 => obvhs::BvhBuildParams::medium_build(),
+            3 => obvhs::BvhBuildParams::slow_build(),
+            _ => obvhs::BvhBuildParams::very_slow_build(),
+        };
+        params.pre_split = opts.pre_split;
+        params.max_prims_per_leaf = opts.max_leaf_tris.clamp(1, crate::gpu::abi::LEAF_MAX_TRIS);
+        let mut core = Duration::ZERO;
+        let bvh2 = obvhs::bvh2::builder::build_bvh2_from_tris(&obvhs_tris, params, &mut core);
+        let mut bvh = layout::convert(bvh2, positions, triangles, opts.tri_test)?;
+        bvh.build_time = start.elapsed();
+        Ok(bvh)
+    }
+
+    /// Bytes the BVH takes on the GPU (nodes, triangles, index map).
+    pub fn gpu_bytes(&self) -> u64 {
+        (self.nodes.len() * std::mem::size_of::<BvhNode>() + self.tris.len() * std::mem::size_of::<GpuTri>() + self.tri_ids.len() * 4) as u64
+    }
+}

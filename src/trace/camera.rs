@@ -1,0 +1,43 @@
+use crate::gpu::abi::GpuCamera;
+use crate::scene::Camera;
+use glam::UVec4;
+
+/// The kernel form of a pinhole camera, with the conventions of
+/// `shared/scenes/cornell-box/README.md`: right = forward x up, row 0 on top, vertical field
+/// of view, square pixels.
+pub fn gpu_camera(cam: &Camera) -> GpuCamera {
+    let forward = (cam.target - cam.eye).normalize();
+    let right = forward.cross(cam.up).normalize();
+    let up = right.cross(forward);
+    let tan_half = (cam.fov_y_deg.to_radians() * 0.5).tan();
+    let aspect = cam.width as f32 / cam.height as f32;
+    GpuCamera {
+        eye: cam.eye.extend(0.0),
+        forward: forward.extend(0.0),
+        right: (right * tan_half * aspect).extend(0.0),
+        up: (up * tan_half).extend(0.0),
+        size: UVec4::new(cam.width, cam.height, 0, 0),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn cornell_camera_right_is_minus_x() {
+        let cam = Camera {
+            name: "c".into(),
+            eye: Vec3::new(278.0, 273.0, -800.0),
+            target: Vec3::new(278.0, 273.0, -799.0),
+            up: Vec3::Y,
+            fov_y_deg: 39.3077,
+            width: 256,
+            height: 256,
+        };
+        let g = gpu_camera(&cam);
+        assert!(g.right.x < 0.0 && g.right.y.abs() < 1e-6, "right = forward x up = -x");
+        assert!((g.up.y - (39.3077f32.to_radians() / 2.0).tan()).abs() < 1e-6);
+    }
+}

@@ -1,0 +1,171 @@
+//! Ray queries on the GPU: the BVH uploaded, closest-hit and any-hit traversal over ray
+//! buffers, and ray generation (primary, shadow, diffuse) with compaction. Integrators call
+//! the same GLSL traversal inline; this module serves the tests and the benchmark.
+
+mod camera;
+
+pub use camera::gpu_camera;
+
+use crate::bvh::{Bvh, TriTest};
+use crate::compute::Scan;
+use crate::gpu::{
+    abi::{self, GpuCamera, GpuHit, GpuRay, SecondaryPush, TracePush},
+    kernels,
+};
+use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
+
+/// A BVH in GPU memory.
+pub struct GpuBvh {
+    pub nodes: Buffer,
+    pub tris: Buffer,
+    pub tri_test: TriTest,
+    pub bytes: u64,
+}
+
+impl GpuBvh {
+    pub fn upload(ctx: &Context, bvh: &Bvh) -> Result<GpuBvh> {
+        Ok(GpuBvh {
+            nodes: ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
+            tris: ctx.upload_buffer("bvh.tris", &bvh.tris)?,
+            tri_test: bvh.tri_test,
+            bytes: (std::mem::size_of_val(bvh.nodes.as_slice()) + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
+        })
+    }
+}
+
+/// Which secondary rays to spawn from hits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Secondary {
+    /// Toward a point light.
+    Shadow,
+    /// Cosine-distributed about the geometric normal.
+    Diffuse,
+}
+
+/// Trace and ray-generation kernels specialised for one triangle test.
+pub struct Tracer {
+    closest: Kernel,
+    any: Kernel,
+    gen_primary: Kernel,
+    gen_shadow: Kernel,
+    gen_diffuse: Kernel,
+    compact: Kernel,
+    scan: Scan,
+    tri_test: TriTest,
+}
+
+impl Tracer {
+    /// `stats`: count nodes and triangles tested (slower; for reports, not timing).
+    pub fn new(ctx: &Context, tri_test: TriTest, stats: bool) -> Result<Tracer> {
+        let base = [Spec { id: abi::SPEC_TRI_TEST, value: tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: stats as u32 }];
+        let with = |id, value| {
+            let mut s = base.to_vec();
+            s.push(Spec { id, value });
+            s
+        };
+        Ok(Tracer {
+            closest: ctx.create_kernel(&kernels::TRACE, &with(abi::SPEC_ANY_HIT, 0))?,
+            any: ctx.create_kernel(&kernels::TRACE, &with(abi::SPEC_ANY_HIT, 1))?,
+            gen_primary: ctx.create_kernel(&kernels::GEN_PRIMARY, &[])?,
+            gen_shadow: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 0 }])?,
+            gen_diffuse: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 1 }])?,
+            compact: ctx.create_kernel(&kernels::COMPACT_RAYS, &[])?,
+            scan: Scan::new(ctx)?,
+            tri_test,
+        })
+    }
+
+    pub fn tri_test(&self) -> TriTest {
+        self.tri_test
+    }
+
+    /// Records a trace of `count` rays into `hits` (one `GpuHit` each). `stats` receives two
+    /// u32 counters (nodes, triangles) when the tracer counts them.
+    pub fn record_trace(&self, rec: &mut Recorder, bvh: &GpuBvh, rays: &Buffer, hits: &Buffer, stats: &Buffer, count: u32, any_hit: bool) -> Result<()> {
+        let k = if any_hit { &self.any } else { &self.closest };
+        let push = TracePush { count, ..Default::default() };
+        rec.dispatch(
+            k,
+            &[
+                Bind::buffer(abi::BIND_NODES, &bvh.nodes),
+                Bind::buffer(abi::BIND_TRIS, &bvh.tris),
+                Bind::buffer(abi::BIND_RAYS, rays),
+                Bind::buffer(abi::BIND_HITS, hits),
+                Bind::buffer(abi::BIND_STATS, stats),
+            ],
+            bytemuck::bytes_of(&push),
+            [k.groups_for(count), 1, 1],
+        )
+    }
+
+    /// Traces host rays and returns their hits (for tests and tools).
+    pub fn trace(&self, ctx: &Context, bvh: &GpuBvh, rays: &[GpuRay], any_hit: bool) -> Result<Vec<GpuHit>> {
+        let count = rays.len() as u32;
+        let ray_buf = ctx.upload_buffer("trace.rays", rays)?;
+        let hits = ctx.create_buffer("trace.hits", rays.len() as u64 * 16, Memory::Device)?;
+        let stats = ctx.create_buffer("trace.stats", 8, Memory::Device)?;
+        ctx.submit("trace", |rec| {
+            rec.fill_buffer(&stats, 0);
+            self.record_trace(rec, bvh, &ray_buf, &hits, &stats, count, any_hit)
+        })?;
+        ctx.read_buffer(&hits)
+    }
+
+    /// Records camera rays through pixel centres into `rays` (width * height of them).
+    pub fn record_primary(&self, rec: &mut Recorder, cam: &GpuCamera, rays: &Buffer) -> Result<()> {
+        let n = cam.size.x * cam.size.y;
+        rec.dispatch(&self.gen_primary, &[Bind::buffer(abi::BIND_RAYS_OUT, rays)], bytemuck::bytes_of(cam), [self.gen_primary.groups_for(n), 1, 1])
+    }
+
+    /// Spawns secondary rays from `hits` of `rays` and compacts the valid ones to the front
+    /// of `out`; returns how many there are. `scratch` needs `count` rays, `flags` count + 1
+    /// u32s.
+    #[allow(clippy::too_many_arguments)]
+    pub fn secondary(
+        &self,
+        ctx: &Context,
+        bvh: &GpuBvh,
+        kind: Secondary,
+        light: glam::Vec3,
+        seed: u32,
+        rays: &Buffer,
+        hits: &Buffer,
+        count: u32,
+        scratch: &Buffer,
+        flags: &Buffer,
+        out: &Buffer,
+    ) -> Result<u32> {
+        let k = match kind {
+            Secondary::Shadow => &self.gen_shadow,
+            Secondary::Diffuse => &self.gen_diffuse,
+        };
+        let push = SecondaryPush { light: light.extend(0.0), count, seed, ..Default::default() };
+        ctx.submit("secondary rays", |rec| {
+            rec.fill_buffer(flags, 0);
+            rec.dispatch(
+                k,
+                &[
+                    Bind::buffer(abi::BIND_TRIS, &bvh.tris),
+                    Bind::buffer(abi::BIND_RAYS, rays),
+                    Bind::buffer(abi::BIND_HITS, hits),
+                    Bind::buffer(abi::BIND_RAYS_OUT, scratch),
+                    Bind::buffer(abi::BIND_FLAGS, flags),
+                ],
+                bytemuck::bytes_of(&push),
+                [k.groups_for(count), 1, 1],
+            )
+        })?;
+        self.scan.exclusive_scan(ctx, flags, count + 1)?;
+        let push = TracePush { count, ..Default::default() };
+        ctx.submit("compact rays", |rec| {
+            rec.dispatch(
+                &self.compact,
+                &[Bind::buffer(abi::BIND_RAYS, scratch), Bind::buffer(abi::BIND_FLAGS, flags), Bind::buffer(abi::BIND_RAYS_OUT, out)],
+                bytemuck::bytes_of(&push),
+                [self.compact.groups_for(count), 1, 1],
+            )
+        })?;
+        let offsets: Vec<u32> = ctx.read_buffer(flags)?;
+        Ok(offsets[count as usize])
+    }
+}
