@@ -6,8 +6,11 @@
 //! - [`compute`]: small reusable GPU algorithms (reduction, prefix sum).
 
 pub mod compute;
+pub mod bench;
 pub mod bvh;
+pub mod film;
 pub mod gpu;
+pub mod render;
 pub mod scene;
 pub mod trace;
 pub mod vk;

@@ -20,6 +20,11 @@ layout(constant_id = SPEC_STATS) const uint TRAVERSAL_STATS = 0u;
 // ray touches (cf. Ize 2013, "Robust BVH Ray Traversal").
 const float BOX_EXIT_SCALE = 1.0000004;
 
+#ifdef TRAVERSE_WITH_ALPHA
+// Defined by the includer (scene.glsl): false where an alpha-tested triangle has a hole.
+bool traverse_alpha_hit(uint prim, vec2 bary);
+#endif
+
 // Result of a query. `prim` is the leaf-order triangle index (bvh_tris), NO_HIT if none.
 struct TraceHit {
     float t;
@@ -94,6 +99,11 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                 float t;
                 vec2 bary;
                 if (intersect_tri(pr, bvh_tris[i], hit.t, t, bary)) {
+#ifdef TRAVERSE_WITH_ALPHA
+                    if (HAS_ALPHA != 0u && !traverse_alpha_hit(i, bary)) {
+                        continue;
+                    }
+#endif
                     hit = TraceHit(t, i, bary);
                     if (any_hit) {
                         return hit;

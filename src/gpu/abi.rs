@@ -59,6 +59,25 @@ gpu_consts! {
     pub const BIND_RAYS_OUT: u32 = 6;
     pub const BIND_FLAGS: u32 = 7;
 
+    // ---- Scene and integrator bindings (glsl/common/scene.glsl) ----------------------------
+    pub const BIND_PRIM_INFO: u32 = 8;
+    pub const BIND_MATERIALS: u32 = 9;
+    pub const BIND_EMITTERS: u32 = 10;
+    pub const BIND_ALIAS: u32 = 11;
+    pub const BIND_NORMALS: u32 = 12;
+    pub const BIND_UVS: u32 = 13;
+    pub const BIND_TEXTURES: u32 = 14;
+    pub const BIND_TEXELS: u32 = 15;
+    pub const BIND_ACCUM: u32 = 16;
+    pub const BIND_RENDER_STATS: u32 = 17;
+    /// Invocations per workgroup of the integrator kernels (PT_WG_SIZE x 1).
+    pub const PT_WG_SIZE: u32 = 64;
+    /// `GpuTexture::flags` bit: texels are sRGB-encoded.
+    pub const TEXTURE_SRGB: u32 = 1;
+    /// Counters in the render stats buffer.
+    pub const STAT_NAN_SAMPLES: u32 = 0;
+    pub const STAT_COUNT: u32 = 4;
+
     // ---- Specialisation-constant ids ----------------------------------------------------
     /// Triangle test: TRI_TEST_WATERTIGHT or TRI_TEST_WOOP.
     pub const SPEC_TRI_TEST: u32 = 0;
@@ -68,6 +87,16 @@ gpu_consts! {
     pub const SPEC_ANY_HIT: u32 = 2;
     /// Secondary ray kind for gen_secondary.comp: 0 shadow, 1 diffuse.
     pub const SPEC_SECONDARY_KIND: u32 = 3;
+    /// 1: next-event estimation with MIS (pt-nee); 0: plain path tracing.
+    pub const SPEC_NEE: u32 = 4;
+    /// What the scene has: 1 if it carries per-vertex normals / UVs / textures / mirrors /
+    /// glass; kernels skip the code of what it lacks.
+    pub const SPEC_HAS_NORMALS: u32 = 5;
+    pub const SPEC_HAS_UVS: u32 = 6;
+    pub const SPEC_HAS_TEXTURES: u32 = 7;
+    pub const SPEC_HAS_MIRROR: u32 = 8;
+    pub const SPEC_HAS_GLASS: u32 = 9;
+    pub const SPEC_HAS_ALPHA: u32 = 10;
 }
 
 gpu_structs! {
@@ -151,6 +180,63 @@ gpu_structs! {
         pub seed: u32,
         pub pad0: u32,
         pub pad1: u32,
+    }
+
+    /// A material (thesis model): diffuse albedo, emission, mirror and glass fractions.
+    pub struct GpuMaterial (64 bytes) {
+        /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested).
+        pub albedo: Vec4,
+        /// Emitted radiance (rgb), front face only; w: its luminance.
+        pub emission: Vec4,
+        /// (reflectivity, refractivity, ior, 0).
+        pub params: Vec4,
+        /// (albedo texture + 1, alpha texture + 1, 0, 0); 0 = none.
+        pub tex: UVec4,
+    }
+
+    /// An emissive triangle for light sampling.
+    pub struct GpuEmitter (64 bytes) {
+        /// v0 (xyz), area (w).
+        pub p0: Vec4,
+        /// v1 - v0 (xyz), w unused.
+        pub e1: Vec4,
+        /// v2 - v0 (xyz), w unused.
+        pub e2: Vec4,
+        /// Emitted radiance (rgb); w: probability of choosing this emitter.
+        pub radiance: Vec4,
+    }
+
+    /// One cell of Walker's alias table over emitters (Vose's construction).
+    pub struct GpuAlias (8 bytes) {
+        pub prob: f32,
+        pub alias: u32,
+    }
+
+    /// A texture inside the texel buffer (RGBA8 packed in u32, rows top to bottom).
+    pub struct GpuTexture (16 bytes) {
+        pub offset: u32,
+        pub width: u32,
+        pub height: u32,
+        pub flags: u32,
+    }
+
+    /// Push constants of the path-tracing kernels.
+    pub struct PtPush (112 bytes) {
+        pub camera: GpuCamera,
+        /// Index of the first sample of this pass (per pixel).
+        pub sample_base: u32,
+        /// Samples per pixel in this pass.
+        pub spp: u32,
+        pub seed: u32,
+        pub emitter_count: u32,
+        /// Sum over emitters of luminance(Le) * area: pdf_a of light sampling at an emitter
+        /// point is luminance(Le) / this.
+        pub emitter_power: f32,
+        /// 0: unbounded (Russian roulette ends paths).
+        pub max_depth: u32,
+        /// First bounce at which Russian roulette applies.
+        pub rr_depth: u32,
+        pub pad0: u32,
     }
 
     /// What one invocation of `subgroup_probe.comp` saw.

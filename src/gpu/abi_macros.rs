@@ -60,6 +60,10 @@ macro_rules! gpu_structs {
                 concat!("GPU struct ", stringify!($name), " changed size: update its declared size and every user")
             );
 
+            impl GlslType for $name {
+                const GLSL: &'static str = stringify!($name);
+            }
+
             impl GpuStruct for $name {
                 const NAME: &'static str = stringify!($name);
                 const FIELDS: &'static [FieldLayout] = &[$(FieldLayout {

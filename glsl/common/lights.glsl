@@ -1,0 +1,44 @@
+// Light sampling: an emissive triangle chosen in proportion to its power (luminance(Le) *
+// area) through Walker's alias table, then a uniform point on it.
+#ifndef BIDIR_LIGHTS_GLSL
+#define BIDIR_LIGHTS_GLSL
+
+layout(std430, binding = BIND_EMITTERS) readonly buffer Emitters { GpuEmitter emitters[]; };
+layout(std430, binding = BIND_ALIAS) readonly buffer Alias { GpuAlias alias_table[]; };
+
+struct LightSample {
+    vec3 p;         // point on the emitter
+    vec3 n;         // its unit front normal
+    vec3 le;        // emitted radiance
+};
+
+// O(1) alias-table choice from one uniform number (its fraction picks within the cell).
+uint choose_emitter(float u, uint count) {
+    float x = u * float(count);
+    uint i = min(uint(x), count - 1u);
+    GpuAlias a = alias_table[i];
+    return (x - float(i)) < a.prob ? i : a.alias;
+}
+
+// Uniform point on the chosen triangle by the square-root warp (Turk, "Generating Random
+// Points in Triangles", Graphics Gems, 1990): (1 - su, u2 su, su (1 - u2)) is uniform over
+// the barycentric simplex for su = sqrt(u1); any permutation of it is too.
+LightSample sample_emitter(uint count, float u0, float u1, float u2) {
+    GpuEmitter e = emitters[choose_emitter(u0, count)];
+    float su = sqrt(u1);
+    float b1 = u2 * su;        // weight of v1
+    float b2 = 1.0 - su;       // weight of v2 (v0 gets su (1 - u2))
+    LightSample s;
+    s.p = e.p0.xyz + b1 * e.e1.xyz + b2 * e.e2.xyz;
+    s.n = normalize(cross(e.e1.xyz, e.e2.xyz));
+    s.le = e.radiance.rgb;
+    return s;
+}
+
+// Area pdf of light sampling at a point of an emitter with emission luminance `lum`:
+// (lum * area / total) * (1 / area).
+float light_pdf_a(float lum, float total_power) {
+    return lum / total_power;
+}
+
+#endif

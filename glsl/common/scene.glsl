@@ -1,0 +1,104 @@
+// The scene as the integrators see it: traversal, per-triangle data, materials, vertex
+// attributes and textures (only what the scene has: see the HAS_* constants), and the
+// surface record at a hit.
+#ifndef BIDIR_SCENE_GLSL
+#define BIDIR_SCENE_GLSL
+
+layout(constant_id = SPEC_HAS_NORMALS) const uint HAS_NORMALS = 0u;
+layout(constant_id = SPEC_HAS_UVS) const uint HAS_UVS = 0u;
+layout(constant_id = SPEC_HAS_TEXTURES) const uint HAS_TEXTURES = 0u;
+layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
+layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 0u;
+layout(constant_id = SPEC_HAS_ALPHA) const uint HAS_ALPHA = 0u;
+
+#define TRAVERSE_WITH_ALPHA
+#include "traverse.glsl"
+
+// (vertex 0, vertex 1, vertex 2, material) of each triangle, in leaf order.
+layout(std430, binding = BIND_PRIM_INFO) readonly buffer PrimInfo { uvec4 prim_info[]; };
+layout(std430, binding = BIND_MATERIALS) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, binding = BIND_NORMALS) readonly buffer Normals { float vertex_normals[]; };
+layout(std430, binding = BIND_UVS) readonly buffer Uvs { vec2 vertex_uvs[]; };
+layout(std430, binding = BIND_TEXTURES) readonly buffer Textures { GpuTexture textures[]; };
+layout(std430, binding = BIND_TEXELS) readonly buffer Texels { uint texels[]; };
+
+vec3 srgb_to_linear(vec3 c) {
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
+}
+
+vec4 texel_fetch(GpuTexture t, int x, int y) {
+    int w = int(t.width), h = int(t.height);
+    x = ((x % w) + w) % w; // repeat
+    y = ((y % h) + h) % h;
+    vec4 c = unpackUnorm4x8(texels[t.offset + uint(y * w + x)]);
+    if ((t.flags & TEXTURE_SRGB) != 0u) {
+        c.rgb = srgb_to_linear(c.rgb);
+    }
+    return c;
+}
+
+// Bilinear, repeat wrap; uv (0, 0) is the top-left corner of the image.
+vec4 sample_texture(uint index, vec2 uv) {
+    GpuTexture t = textures[index];
+    vec2 p = uv * vec2(t.width, t.height) - 0.5;
+    vec2 f = p - floor(p);
+    ivec2 i = ivec2(floor(p));
+    vec4 a = mix(texel_fetch(t, i.x, i.y), texel_fetch(t, i.x + 1, i.y), f.x);
+    vec4 b = mix(texel_fetch(t, i.x, i.y + 1), texel_fetch(t, i.x + 1, i.y + 1), f.x);
+    return mix(a, b, f.y);
+}
+
+vec2 interpolate_uv(uvec4 info, vec2 bary) {
+    return (1.0 - bary.x - bary.y) * vertex_uvs[info.x] + bary.x * vertex_uvs[info.y] + bary.y * vertex_uvs[info.z];
+}
+
+bool traverse_alpha_hit(uint prim, vec2 bary) {
+    uvec4 info = prim_info[prim];
+    GpuMaterial m = materials[info.w];
+    if (m.tex.y == 0u) {
+        return true;
+    }
+    return sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a >= m.albedo.w;
+}
+
+// What shading needs at a hit.
+struct Surface {
+    vec3 p;
+    vec3 ng;      // unit geometric normal, CCW front
+    vec3 ns;      // unit shading normal, in ng's hemisphere
+    vec2 uv;
+    uint material;
+    bool front;   // the ray arrived at the front face
+};
+
+Surface surface_at(vec3 o, vec3 d, TraceHit h) {
+    Surface s;
+    uvec4 info = prim_info[h.prim];
+    s.p = o + h.t * d;
+    s.ng = normalize(tri_geometric_normal(bvh_tris[h.prim]));
+    s.ns = s.ng;
+    if (HAS_NORMALS != 0u) {
+        vec3 n0 = vec3(vertex_normals[3u * info.x], vertex_normals[3u * info.x + 1u], vertex_normals[3u * info.x + 2u]);
+        vec3 n1 = vec3(vertex_normals[3u * info.y], vertex_normals[3u * info.y + 1u], vertex_normals[3u * info.y + 2u]);
+        vec3 n2 = vec3(vertex_normals[3u * info.z], vertex_normals[3u * info.z + 1u], vertex_normals[3u * info.z + 2u]);
+        vec3 n = (1.0 - h.bary.x - h.bary.y) * n0 + h.bary.x * n1 + h.bary.y * n2;
+        if (dot(n, n) > 0.0) {
+            n = normalize(n);
+            s.ns = dot(n, s.ng) < 0.0 ? -n : n;
+        }
+    }
+    s.uv = HAS_UVS != 0u ? interpolate_uv(info, h.bary) : vec2(0.0);
+    s.material = info.w;
+    s.front = dot(s.ng, d) < 0.0;
+    return s;
+}
+
+vec3 material_albedo(GpuMaterial m, vec2 uv) {
+    vec3 a = m.albedo.rgb;
+    if (HAS_TEXTURES != 0u && m.tex.x != 0u) {
+        a *= sample_texture(m.tex.x - 1u, uv).rgb;
+    }
+    return a;
+}
+
+#endif

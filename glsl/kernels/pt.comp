@@ -1,0 +1,152 @@
+#version 460
+// The thesis' megakernel path tracer: one invocation per pixel, `spp` paths each, summed
+// into the film. With NEE (pt-nee, the thesis' "explicit sampling") every diffuse vertex
+// also samples an emitter by power and traces a shadow ray; emission found by BSDF sampling
+// is then weighted with the power heuristic (Veach 1997, eq. 9.13) so nothing counts twice.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#include "bidir_abi.glsl"
+#include "ray.glsl"
+#include "rng.glsl"
+#include "scene.glsl"
+#include "bsdf.glsl"
+#include "lights.glsl"
+
+layout(local_size_x = PT_WG_SIZE) in;
+layout(constant_id = SPEC_NEE) const uint NEE = 1u;
+layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
+layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
+layout(push_constant) uniform Push { PtPush pc; };
+
+float max3(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
+// Power heuristic with beta = 2 for two strategies.
+float power_heuristic(float pdf_a, float pdf_b) {
+    float a = pdf_a * pdf_a;
+    return a / (a + pdf_b * pdf_b);
+}
+
+// One path's radiance estimate for image position `pixel` (pixels, row 0 on top).
+vec3 trace_path(vec2 pixel, inout Rng rng) {
+    uvec2 stats = uvec2(0u);
+    vec3 o = pc.camera.eye.xyz;
+    vec3 d = camera_direction(pc.camera, pixel);
+    vec3 throughput = vec3(1.0);
+    vec3 radiance = vec3(0.0);
+    bool specular = true;      // the last bounce was a delta lobe (or the camera)
+    float prev_pdf_w = 0.0;    // solid-angle pdf of the last diffuse bounce
+    for (uint depth = 1u;; depth++) {
+        TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
+        if (h.prim == NO_HIT) {
+            break;
+        }
+        Surface s = surface_at(o, d, h);
+        GpuMaterial m = materials[s.material];
+
+        // Emission seen by this segment: front faces only.
+        if (m.emission.w > 0.0 && s.front) {
+            float w = 1.0;
+            if (NEE != 0u && !specular && pc.emitter_count > 0u) {
+                float cos_l = -dot(s.ng, d);
+                float pdf_light_w = light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
+                w = power_heuristic(prev_pdf_w, pdf_light_w);
+            }
+            radiance += throughput * m.emission.rgb * w;
+        }
+        if (pc.max_depth != 0u && depth >= pc.max_depth) {
+            break;
+        }
+
+        // Normals facing the side the ray came from.
+        vec3 ng_f = s.front ? s.ng : -s.ng;
+        vec3 ns_f = s.front ? s.ns : -s.ns;
+        uint lobe = choose_lobe(m, rng_next(rng));
+        if (lobe == LOBE_MIRROR) {
+            d = reflect(d, ns_f);
+            o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+            specular = true;
+        } else if (lobe == LOBE_GLASS) {
+            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float scale;
+            bool refracted;
+            d = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
+            throughput *= scale;
+            o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+            specular = true;
+        } else {
+            vec3 albedo = material_albedo(m, s.uv);
+            vec3 p_off = offset_ray_origin(s.p, ng_f);
+            // Next-event estimation: an emitter point by power, one shadow ray.
+            if (NEE != 0u && pc.emitter_count > 0u && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
+                LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+                vec3 to_l = ls.p - p_off;
+                float dist2 = dot(to_l, to_l);
+                float dist = sqrt(dist2);
+                vec3 wi = to_l / dist;
+                float cos_s = dot(wi, ns_f);
+                float cos_l = -dot(wi, ls.n);
+                if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0) {
+                    vec3 target = offset_ray_origin(ls.p, ls.n);
+                    vec3 to_t = target - p_off;
+                    float t_len = length(to_t);
+                    TraceHit sh = trace_ray(p_off, to_t / t_len, 0.0, t_len, true, stats);
+                    if (sh.prim == NO_HIT) {
+                        float pdf_light_w = light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
+                        float pdf_bsdf_w = cos_s / PI;
+                        float w = power_heuristic(pdf_light_w, pdf_bsdf_w);
+                        radiance += throughput * (albedo / PI) * ls.le * (cos_s * w / pdf_light_w);
+                    }
+                }
+            }
+            // Cosine-weighted continuation: f cos / pdf_w = albedo.
+            d = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
+            if (dot(d, ng_f) <= 0.0) {
+                break; // below the geometric surface (shading-normal artefact)
+            }
+            prev_pdf_w = dot(d, ns_f) / PI;
+            throughput *= albedo;
+            o = p_off;
+            specular = false;
+        }
+
+        // Russian roulette on throughput.
+        if (depth >= pc.rr_depth) {
+            float q = min(max3(throughput), 0.95);
+            if (q <= 0.0 || rng_next(rng) >= q) {
+                break;
+            }
+            throughput /= q;
+        }
+    }
+    return radiance;
+}
+
+void main() {
+    uint w = pc.camera.size.x;
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= w * pc.camera.size.y) {
+        return;
+    }
+    vec2 xy = vec2(float(pixel % w), float(pixel / w));
+    vec3 sum = vec3(0.0);
+    float count = 0.0;
+    uint bad = 0u;
+    for (uint s = 0u; s < pc.spp; s++) {
+        Rng rng = rng_init(pixel, pc.sample_base + s, pc.seed);
+        vec2 jitter = vec2(rng_next(rng), rng_next(rng));
+        vec3 l = trace_path(xy + jitter, rng);
+        if (any(isnan(l)) || any(isinf(l))) {
+            bad++;
+            continue; // never reaches the film; counted and reported
+        }
+        sum += l;
+        count += 1.0;
+    }
+    accum[pixel] += vec4(sum, count);
+    if (bad > 0u) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], bad);
+    }
+}

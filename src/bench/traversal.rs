@@ -1,0 +1,258 @@
+//! `bidir bench traversal`: rays generated on the GPU (primary through pixel centres; shadow
+//! from each primary hit toward a point light high above the scene's centre; diffuse,
+//! cosine-distributed about the geometric normal at each primary hit), then only the
+//! traversal kernel timed with GPU timestamps: warm-up runs, then repetitions, median.
+
+use super::median;
+use crate::bvh::{BuildOptions, Bvh, TriTest};
+use crate::gpu::abi::GpuCamera;
+use crate::trace::{GpuBvh, Secondary, Tracer};
+use crate::bvh::BvhError;
+use crate::vk::{Buffer, Context, Memory, VkError};
+use glam::Vec3;
+use std::time::Instant;
+
+/// The ray sets the benchmark can time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RayKind {
+    Primary,
+    Shadow,
+    Diffuse,
+}
+
+impl RayKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            RayKind::Primary => "primary",
+            RayKind::Shadow => "shadow",
+            RayKind::Diffuse => "diffuse",
+        }
+    }
+    pub const ALL: [RayKind; 3] = [RayKind::Primary, RayKind::Shadow, RayKind::Diffuse];
+}
+
+/// Benchmark settings.
+#[derive(Clone, Debug)]
+pub struct Options {
+    pub kinds: Vec<RayKind>,
+    pub warmup: usize,
+    pub repetitions: usize,
+    pub build: BuildOptions,
+    /// Point light for shadow rays; default: above the centre of the bounds by their height.
+    pub light: Option<Vec3>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { kinds: RayKind::ALL.to_vec(), warmup: 3, repetitions: 9, build: BuildOptions::default(), light: None }
+    }
+}
+
+/// One ray kind's measurement.
+#[derive(Clone, Debug)]
+pub struct KindResult {
+    pub kind: RayKind,
+    pub rays: u32,
+    pub times_ms: Vec<f64>,
+    pub median_ms: f64,
+    pub mrays_per_s: f64,
+    pub nodes_per_ray: f64,
+    pub tris_per_ray: f64,
+    pub hit_fraction: f64,
+}
+
+/// The whole report.
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub device: String,
+    pub triangles: usize,
+    pub tri_test: TriTest,
+    pub bvh_build_ms: f64,
+    pub bvh_nodes: usize,
+    pub bvh_leaves: usize,
+    pub bvh_depth: usize,
+    pub bvh_bytes: u64,
+    pub width: u32,
+    pub height: u32,
+    pub light: Vec3,
+    pub results: Vec<KindResult>,
+}
+
+/// Why the benchmark could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    #[error(transparent)]
+    Bvh(#[from] BvhError),
+    #[error(transparent)]
+    Vk(#[from] VkError),
+    #[error("no {0} rays: the camera sees no geometry (check --camera / --eye / --target)")]
+    NoRays(&'static str),
+}
+
+/// Runs the benchmark on a triangle mesh seen through `camera`.
+pub fn run(ctx: &Context, positions: &[Vec3], triangles: &[[u32; 3]], camera: &GpuCamera, opts: &Options) -> Result<Report, BenchError> {
+    let t0 = Instant::now();
+    let bvh = Bvh::build(positions, triangles, &opts.build)?;
+    let build_ms = t0.elapsed().as_secs_f64() * 1e3;
+    let gbvh = GpuBvh::upload(ctx, &bvh)?;
+    let timing = Tracer::new(ctx, opts.build.tri_test, false)?;
+    let counting = Tracer::new(ctx, opts.build.tri_test, true)?;
+
+    let (lo, hi) = positions.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+    let light = opts.light.unwrap_or(Vec3::new((lo.x + hi.x) * 0.5, hi.y + (hi.y - lo.y), (lo.z + hi.z) * 0.5));
+
+    let n = camera.size.x * camera.size.y;
+    let ray_bytes = n as u64 * 32;
+    let primary = ctx.create_buffer("bench.primary_rays", ray_bytes, Memory::Device)?;
+    let primary_hits = ctx.create_buffer("bench.primary_hits", n as u64 * 16, Memory::Device)?;
+    let secondary = ctx.create_buffer("bench.secondary_rays", ray_bytes, Memory::Device)?;
+    let scratch = ctx.create_buffer("bench.scratch_rays", ray_bytes, Memory::Device)?;
+    let flags = ctx.create_buffer("bench.flags", (n as u64 + 1) * 4, Memory::Device)?;
+    let hits = ctx.create_buffer("bench.hits", n as u64 * 16, Memory::Device)?;
+    let stats = ctx.create_buffer("bench.stats", 8, Memory::Device)?;
+    let timer = ctx.create_timer("bench.timer", 2)?;
+
+    // Primary rays and their hits (the origin of the secondary rays).
+    ctx.submit("bench primary", |rec| {
+        timing.record_primary(rec, camera, &primary)?;
+        rec.fill_buffer(&stats, 0);
+        timing.record_trace(rec, &gbvh, &primary, &primary_hits, &stats, n, false)
+    })?;
+
+    let mut results = Vec::new();
+    for &kind in &opts.kinds {
+        let (rays, count, any_hit): (&Buffer, u32, bool) = match kind {
+            RayKind::Primary => (&primary, n, false),
+            RayKind::Shadow => {
+                let c = timing.secondary(ctx, &gbvh, Secondary::Shadow, light, 1, &primary, &primary_hits, n, &scratch, &flags, &secondary)?;
+                (&secondary, c, true)
+            }
+            RayKind::Diffuse => {
+                let c = timing.secondary(ctx, &gbvh, Secondary::Diffuse, light, 2, &primary, &primary_hits, n, &scratch, &flags, &secondary)?;
+                (&secondary, c, false)
+            }
+        };
+        if count == 0 {
+            return Err(BenchError::NoRays(kind.name()));
+        }
+        let mut times = Vec::new();
+        for rep in 0..opts.warmup + opts.repetitions {
+            ctx.submit("bench trace", |rec| {
+                rec.reset_timer(&timer);
+                rec.timestamp(&timer, 0);
+                timing.record_trace(rec, &gbvh, rays, &hits, &stats, count, any_hit)?;
+                rec.timestamp(&timer, 1);
+                Ok(())
+            })?;
+            if rep >= opts.warmup {
+                times.push(timer.elapsed_ns(0, 1)? * 1e-6);
+            }
+        }
+        // One more pass with counters for node/triangle tests per ray.
+        ctx.submit("bench count", |rec| {
+            rec.fill_buffer(&stats, 0);
+            counting.record_trace(rec, &gbvh, rays, &hits, &stats, count, any_hit)
+        })?;
+        let s: Vec<u32> = ctx.read_buffer(&stats)?;
+        let h: Vec<crate::gpu::abi::GpuHit> = ctx.read_buffer(&hits)?;
+        let hit_count = h[..count as usize].iter().filter(|x| x.tri != crate::gpu::abi::NO_HIT).count();
+        let med = median(&times);
+        results.push(KindResult {
+            kind,
+            rays: count,
+            median_ms: med,
+            mrays_per_s: count as f64 / (med * 1e-3) / 1e6,
+            times_ms: times,
+            nodes_per_ray: s[0] as f64 / count as f64,
+            tris_per_ray: s[1] as f64 / count as f64,
+            hit_fraction: hit_count as f64 / count as f64,
+        });
+    }
+    Ok(Report {
+        device: ctx.info().name.clone(),
+        triangles: triangles.len(),
+        tri_test: opts.build.tri_test,
+        bvh_build_ms: build_ms,
+        bvh_nodes: bvh.nodes.len(),
+        bvh_leaves: bvh.leaves,
+        bvh_depth: bvh.depth,
+        bvh_bytes: gbvh.bytes,
+        width: camera.size.x,
+        height: camera.size.y,
+        light,
+        results,
+    })
+}
+
+impl Report {
+    pub fn to_json(&self) -> super::json::Json {
+        use super::json::Json;
+        Json::obj(vec![
+            ("device", Json::Str(self.device.clone())),
+            ("triangles", Json::Int(self.triangles as i64)),
+            ("tri_test", Json::Str(self.tri_test.name().into())),
+            ("width", Json::Int(self.width as i64)),
+            ("height", Json::Int(self.height as i64)),
+            ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
+            (
+                "bvh",
+                Json::obj(vec![
+                    ("build_ms", Json::Num(self.bvh_build_ms)),
+                    ("nodes", Json::Int(self.bvh_nodes as i64)),
+                    ("leaves", Json::Int(self.bvh_leaves as i64)),
+                    ("depth", Json::Int(self.bvh_depth as i64)),
+                    ("bytes", Json::Int(self.bvh_bytes as i64)),
+                ]),
+            ),
+            (
+                "results",
+                Json::Arr(
+                    self.results
+                        .iter()
+                        .map(|r| {
+                            Json::obj(vec![
+                                ("rays", Json::Str(r.kind.name().into())),
+                                ("count", Json::Int(r.rays as i64)),
+                                ("median_ms", Json::Num(r.median_ms)),
+                                ("mrays_per_s", Json::Num(r.mrays_per_s)),
+                                ("nodes_per_ray", Json::Num(r.nodes_per_ray)),
+                                ("tris_per_ray", Json::Num(r.tris_per_ray)),
+                                ("hit_fraction", Json::Num(r.hit_fraction)),
+                                ("times_ms", Json::Arr(r.times_ms.iter().map(|&t| Json::Num(t)).collect())),
+                            ])
+                        })
+                        .collect(),
+                ),
+            ),
+        ])
+    }
+
+    pub fn print(&self) {
+        println!(
+            "device {} | {} triangles | {} test | {}x{} | BVH {:.1} ms build, {} nodes, {} leaves, depth {}, {:.1} MiB",
+            self.device,
+            self.triangles,
+            self.tri_test.name(),
+            self.width,
+            self.height,
+            self.bvh_build_ms,
+            self.bvh_nodes,
+            self.bvh_leaves,
+            self.bvh_depth,
+            self.bvh_bytes as f64 / (1 << 20) as f64
+        );
+        println!("{:<8} {:>10} {:>10} {:>12} {:>11} {:>10} {:>6}", "rays", "count", "median ms", "Mrays/s", "nodes/ray", "tris/ray", "hit %");
+        for r in &self.results {
+            println!(
+                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>10.1} {:>6.1}",
+                r.kind.name(),
+                r.rays,
+                r.median_ms,
+                r.mrays_per_s,
+                r.nodes_per_ray,
+                r.tris_per_ray,
+                100.0 * r.hit_fraction
+            );
+        }
+    }
+}

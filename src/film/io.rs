@@ -1,0 +1,87 @@
+use super::RgbImage;
+use std::path::{Path, PathBuf};
+
+/// Why an image could not be read or written.
+#[derive(Debug, thiserror::Error)]
+pub enum ImageIoError {
+    #[error("{path}: unsupported image extension (use .exr or .png)")]
+    Extension { path: PathBuf },
+    #[error("{path}: {msg}")]
+    Write { path: PathBuf, msg: String },
+    #[error("{path}: cannot read EXR: {msg}")]
+    Read { path: PathBuf, msg: String },
+}
+
+/// Writes `img` as EXR (linear float RGB) or PNG (8-bit sRGB of `exposure`-scaled values,
+/// clamped), chosen by extension. The file appears complete or not at all.
+pub fn write_image(path: &Path, img: &RgbImage, exposure: f32) -> Result<(), ImageIoError> {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    let werr = |msg: String| ImageIoError::Write { path: path.to_path_buf(), msg };
+    let file_name = path.file_name().ok_or_else(|| werr("not a file path".into()))?;
+    let mut tmp_name = std::ffi::OsString::from(".");
+    tmp_name.push(file_name);
+    tmp_name.push(format!(".{}.tmp", std::process::id()));
+    let tmp = path.with_file_name(tmp_name);
+    let result = match ext.as_deref() {
+        Some("exr") => write_exr(&tmp, img).map_err(|e| werr(e.to_string())),
+        Some("png") => write_png(&tmp, img, exposure).map_err(werr),
+        _ => return Err(ImageIoError::Extension { path: path.to_path_buf() }),
+    };
+    if let Err(e) = result {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(e);
+    }
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        werr(e.to_string())
+    })
+}
+
+fn write_exr(path: &Path, img: &RgbImage) -> exr::error::Result<()> {
+    let w = img.width as usize;
+    exr::prelude::write_rgb_file(path, w, img.height as usize, |x, y| {
+        let i = (y * w + x) * 3;
+        (img.data[i], img.data[i + 1], img.data[i + 2])
+    })
+}
+
+/// sRGB transfer function (IEC 61966-2-1).
+pub fn linear_to_srgb(x: f32) -> f32 {
+    if x <= 0.003_130_8 {
+        12.92 * x
+    } else {
+        1.055 * x.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+fn write_png(path: &Path, img: &RgbImage, exposure: f32) -> Result<(), String> {
+    let scale = 2f32.powf(exposure);
+    let bytes: Vec<u8> = img
+        .data
+        .iter()
+        .map(|&v| {
+            let v = if v.is_finite() { v * scale } else { 0.0 };
+            (linear_to_srgb(v.clamp(0.0, 1.0)) * 255.0 + 0.5) as u8
+        })
+        .collect();
+    image::save_buffer_with_format(path, &bytes, img.width, img.height, image::ColorType::Rgb8, image::ImageFormat::Png).map_err(|e| e.to_string())
+}
+
+/// Reads the first RGB(A) layer of an EXR file as linear RGB.
+pub fn read_exr(path: &Path) -> Result<RgbImage, ImageIoError> {
+    use exr::prelude::*;
+    let rerr = |msg: String| ImageIoError::Read { path: path.to_path_buf(), msg };
+    let image = read_first_rgba_layer_from_file(
+        path,
+        |res, _| (res.width(), res.height(), vec![0f32; res.width() * res.height() * 3]),
+        |(w, _, data): &mut (usize, usize, Vec<f32>), pos, (r, g, b, _a): (f32, f32, f32, f32)| {
+            let i = (pos.y() * *w + pos.x()) * 3;
+            data[i] = r;
+            data[i + 1] = g;
+            data[i + 2] = b;
+        },
+    )
+    .map_err(|e| rerr(e.to_string()))?;
+    let (w, h, data) = image.layer_data.channel_data.pixels;
+    Ok(RgbImage { width: w as u32, height: h as u32, data })
+}

@@ -1,0 +1,37 @@
+//! Images on the host: the resolved film, EXR/PNG files (written to a temporary file and
+//! renamed, so a crash never leaves half an image), and error metrics against references.
+
+mod io;
+pub mod metrics;
+
+pub use io::{read_exr, write_image, ImageIoError};
+
+/// A linear RGB float image, rows top to bottom.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RgbImage {
+    pub width: u32,
+    pub height: u32,
+    /// `width * height * 3` floats.
+    pub data: Vec<f32>,
+}
+
+impl RgbImage {
+    pub fn new(width: u32, height: u32) -> Self {
+        RgbImage { width, height, data: vec![0.0; (width * height * 3) as usize] }
+    }
+    pub fn pixel(&self, x: u32, y: u32) -> [f32; 3] {
+        let i = ((y * self.width + x) * 3) as usize;
+        [self.data[i], self.data[i + 1], self.data[i + 2]]
+    }
+    /// Mean of each channel.
+    pub fn mean(&self) -> [f64; 3] {
+        let mut m = [0.0f64; 3];
+        for p in self.data.chunks_exact(3) {
+            for c in 0..3 {
+                m[c] += p[c] as f64;
+            }
+        }
+        let n = (self.width * self.height).max(1) as f64;
+        m.map(|x| x / n)
+    }
+}

@@ -1,0 +1,186 @@
+//! The scene in GPU memory, modelling no more than the scene has: vertex normals, UVs and
+//! textures are uploaded only when present (a 4-byte placeholder is bound otherwise) and the
+//! kernels are specialised on [`SceneFeatures`] so they run no code for what is absent.
+
+use super::lights::{luminance, LightTable};
+use crate::bvh::Bvh;
+use crate::gpu::abi::{self, GpuMaterial, GpuTexture};
+use crate::scene::{Scene, Texture};
+use crate::trace::GpuBvh;
+use crate::vk::{Bind, Buffer, Context, Memory, Result, Spec};
+use glam::{UVec4, Vec4};
+
+/// What a scene uses; each is a specialisation constant of the integrator kernels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SceneFeatures {
+    pub normals: bool,
+    pub uvs: bool,
+    pub textures: bool,
+    pub mirror: bool,
+    pub glass: bool,
+    pub alpha: bool,
+}
+
+impl SceneFeatures {
+    pub fn of(scene: &Scene) -> SceneFeatures {
+        let m = &scene.materials;
+        SceneFeatures {
+            normals: scene.normals.is_some(),
+            uvs: scene.uvs.is_some(),
+            textures: scene.uvs.is_some() && !scene.textures.is_empty() && m.iter().any(|m| m.albedo_texture.is_some() || m.alpha.is_some()),
+            mirror: m.iter().any(|m| m.reflectivity > 0.0),
+            glass: m.iter().any(|m| m.refractivity > 0.0),
+            alpha: scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some()),
+        }
+    }
+
+    pub fn specs(&self) -> Vec<Spec> {
+        vec![
+            Spec { id: abi::SPEC_HAS_NORMALS, value: self.normals as u32 },
+            Spec { id: abi::SPEC_HAS_UVS, value: self.uvs as u32 },
+            Spec { id: abi::SPEC_HAS_TEXTURES, value: self.textures as u32 },
+            Spec { id: abi::SPEC_HAS_MIRROR, value: self.mirror as u32 },
+            Spec { id: abi::SPEC_HAS_GLASS, value: self.glass as u32 },
+            Spec { id: abi::SPEC_HAS_ALPHA, value: self.alpha as u32 },
+        ]
+    }
+}
+
+/// Every buffer the integrators read.
+pub struct GpuScene {
+    pub bvh: GpuBvh,
+    pub prim_info: Buffer,
+    pub materials: Buffer,
+    pub emitters: Buffer,
+    pub alias: Buffer,
+    pub normals: Buffer,
+    pub uvs: Buffer,
+    pub textures: Buffer,
+    pub texels: Buffer,
+    pub features: SceneFeatures,
+    pub emitter_count: u32,
+    pub emitter_power: f32,
+    /// Total bytes uploaded.
+    pub bytes: u64,
+    /// Textures were halved this many times to fit the device's storage-buffer limit.
+    pub texture_downsamples: u32,
+}
+
+impl GpuScene {
+    pub fn upload(ctx: &Context, scene: &Scene, bvh: &Bvh) -> Result<GpuScene> {
+        let features = SceneFeatures::of(scene);
+        let gbvh = GpuBvh::upload(ctx, bvh)?;
+        let prim_info: Vec<UVec4> = bvh
+            .tri_ids
+            .iter()
+            .map(|&t| {
+                let [a, b, c] = scene.triangles[t as usize];
+                UVec4::new(a, b, c, scene.material_ids[t as usize])
+            })
+            .collect();
+        let materials: Vec<GpuMaterial> = scene
+            .materials
+            .iter()
+            .map(|m| GpuMaterial {
+                albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff)),
+                emission: m.emission.extend(luminance(m.emission)),
+                params: Vec4::new(m.reflectivity, m.refractivity, m.ior, 0.0),
+                tex: UVec4::new(m.albedo_texture.map_or(0, |t| t + 1), m.alpha.map_or(0, |a| a.texture + 1), 0, 0),
+            })
+            .collect();
+        let lights = LightTable::build(scene);
+        let placeholder = |name: &str| ctx.create_buffer(name, 4, Memory::Device);
+        let normals = match (&scene.normals, features.normals) {
+            (Some(n), true) => ctx.upload_buffer("scene.normals", &n.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?,
+            _ => placeholder("scene.normals (none)")?,
+        };
+        let uvs = match (&scene.uvs, features.uvs) {
+            (Some(uv), true) => ctx.upload_buffer("scene.uvs", uv)?,
+            _ => placeholder("scene.uvs (none)")?,
+        };
+        let (table, texels, downsamples) = if features.textures {
+            pack_textures(&scene.textures, ctx.info().max_storage_buffer_range as u64)
+        } else {
+            (Vec::new(), Vec::new(), 0)
+        };
+        if downsamples > 0 {
+            log::warn!("textures halved {downsamples} time(s) to fit {} MiB storage buffers on {}", ctx.info().max_storage_buffer_range >> 20, ctx.info().name);
+        }
+        let textures = if table.is_empty() { placeholder("scene.textures (none)")? } else { ctx.upload_buffer("scene.textures", &table)? };
+        let texels = if texels.is_empty() { placeholder("scene.texels (none)")? } else { ctx.upload_buffer("scene.texels", &texels)? };
+        let emitters = if lights.emitters.is_empty() { placeholder("scene.emitters (none)")? } else { ctx.upload_buffer("scene.emitters", &lights.emitters)? };
+        let alias = if lights.alias.is_empty() { placeholder("scene.alias (none)")? } else { ctx.upload_buffer("scene.alias", &lights.alias)? };
+        let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
+        let materials = ctx.upload_buffer("scene.materials", &materials)?;
+        let bytes = [&prim_info, &materials, &emitters, &alias, &normals, &uvs, &textures, &texels].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
+        Ok(GpuScene {
+            bvh: gbvh,
+            prim_info,
+            materials,
+            emitters,
+            alias,
+            normals,
+            uvs,
+            textures,
+            texels,
+            features,
+            emitter_count: lights.emitters.len() as u32,
+            emitter_power: lights.total_power,
+            bytes,
+            texture_downsamples: downsamples,
+        })
+    }
+
+    /// Bindings of every scene buffer (glsl/common/scene.glsl).
+    pub fn binds(&self) -> Vec<Bind<'_>> {
+        vec![
+            Bind::buffer(abi::BIND_NODES, &self.bvh.nodes),
+            Bind::buffer(abi::BIND_TRIS, &self.bvh.tris),
+            Bind::buffer(abi::BIND_PRIM_INFO, &self.prim_info),
+            Bind::buffer(abi::BIND_MATERIALS, &self.materials),
+            Bind::buffer(abi::BIND_EMITTERS, &self.emitters),
+            Bind::buffer(abi::BIND_ALIAS, &self.alias),
+            Bind::buffer(abi::BIND_NORMALS, &self.normals),
+            Bind::buffer(abi::BIND_UVS, &self.uvs),
+            Bind::buffer(abi::BIND_TEXTURES, &self.textures),
+            Bind::buffer(abi::BIND_TEXELS, &self.texels),
+        ]
+    }
+}
+
+/// Concatenates textures as packed RGBA8 words, halving all of them until they fit `limit`
+/// bytes. Returns the table, the texels and how many times they were halved.
+fn pack_textures(textures: &[Texture], limit: u64) -> (Vec<GpuTexture>, Vec<u32>, u32) {
+    let mut level: Vec<(u32, u32, Vec<u8>)> = textures.iter().map(|t| (t.width, t.height, t.rgba8.clone())).collect();
+    let mut halvings = 0;
+    while level.iter().map(|(w, h, _)| *w as u64 * *h as u64 * 4).sum::<u64>() > limit {
+        level = level.into_iter().map(|(w, h, p)| halve(w, h, &p)).collect();
+        halvings += 1;
+    }
+    let mut table = Vec::new();
+    let mut texels = Vec::new();
+    for (t, (w, h, p)) in textures.iter().zip(level) {
+        table.push(GpuTexture { offset: texels.len() as u32, width: w, height: h, flags: if t.srgb { abi::TEXTURE_SRGB } else { 0 } });
+        texels.extend(p.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])));
+    }
+    (table, texels, halvings)
+}
+
+/// 2x2 box downsample of RGBA8 (averaging encoded values; good enough to fit memory).
+fn halve(w: u32, h: u32, p: &[u8]) -> (u32, u32, Vec<u8>) {
+    let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
+    let mut out = vec![0u8; (nw * nh * 4) as usize];
+    for y in 0..nh {
+        for x in 0..nw {
+            for c in 0..4 {
+                let mut s = 0u32;
+                for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    let (sx, sy) = ((2 * x + dx).min(w - 1), (2 * y + dy).min(h - 1));
+                    s += p[((sy * w + sx) * 4 + c) as usize] as u32;
+                }
+                out[((y * nw + x) * 4 + c) as usize] = ((s + 2) / 4) as u8;
+            }
+        }
+    }
+    (nw, nh, out)
+}

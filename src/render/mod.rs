@@ -1,0 +1,211 @@
+//! Integrators on the GPU and the progressive film they accumulate into.
+//!
+//! ```no_run
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! use bidir::render::{Integrator, RenderSettings, Renderer};
+//! let ctx = bidir::vk::Context::new(&bidir::vk::ContextOptions::from_env())?;
+//! let scene = bidir::scene::builtin_cornell_box();
+//! let camera = scene.cameras[0].clone();
+//! let mut r = Renderer::new(&ctx, &scene, &camera, RenderSettings::new(Integrator::PtNee))?;
+//! r.render_spp(64, |_| {})?;
+//! let image = r.image()?;
+//! # Ok(()) }
+//! ```
+
+mod film;
+pub mod gpu_scene;
+pub mod lights;
+mod pt;
+
+pub use film::Film;
+pub use gpu_scene::{GpuScene, SceneFeatures};
+pub use pt::PathTracer;
+
+use crate::bvh::{BuildOptions, Bvh, BvhError};
+use crate::film::RgbImage;
+use crate::gpu::abi::{GpuCamera, PtPush};
+use crate::scene::{Camera, Scene};
+use crate::vk::{Context, VkError};
+use std::time::{Duration, Instant};
+
+/// Which estimator renders the image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Integrator {
+    /// Path tracing with BSDF sampling only.
+    Pt,
+    /// Path tracing with next-event estimation and MIS (the thesis' explicit sampling).
+    PtNee,
+}
+
+impl Integrator {
+    pub fn name(self) -> &'static str {
+        match self {
+            Integrator::Pt => "pt",
+            Integrator::PtNee => "pt-nee",
+        }
+    }
+}
+
+impl std::str::FromStr for Integrator {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "pt" => Ok(Integrator::Pt),
+            "pt-nee" => Ok(Integrator::PtNee),
+            _ => Err(format!("unknown integrator '{s}' (pt | pt-nee)")),
+        }
+    }
+}
+
+/// How to render.
+#[derive(Clone, Debug)]
+pub struct RenderSettings {
+    pub integrator: Integrator,
+    /// Most path segments (0: unbounded, Russian roulette ends paths).
+    pub max_depth: u32,
+    /// First bounce at which Russian roulette may end a path.
+    pub rr_depth: u32,
+    pub seed: u32,
+    /// GPU time one submission should take (passes are sized to it; keeps lavapipe
+    /// responsive and far from the GPU timeout).
+    pub pass_target: Duration,
+    pub bvh: BuildOptions,
+}
+
+impl RenderSettings {
+    pub fn new(integrator: Integrator) -> Self {
+        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
+    }
+}
+
+/// Why rendering failed.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    #[error(transparent)]
+    Vk(#[from] VkError),
+    #[error("building the BVH: {0}")]
+    Bvh(#[from] BvhError),
+    #[error("camera '{0}' has an empty image ({1}x{2})")]
+    EmptyImage(String, u32, u32),
+}
+
+/// A scene on the GPU with an integrator and a film.
+pub struct Renderer {
+    ctx: Context,
+    scene: GpuScene,
+    film: Film,
+    pt: PathTracer,
+    camera: GpuCamera,
+    settings: RenderSettings,
+    /// Samples per pixel accumulated so far.
+    samples: u32,
+    /// Samples per pixel per submission, adapted to `pass_target`.
+    pass_spp: u32,
+}
+
+/// Progress after a pass.
+#[derive(Clone, Copy, Debug)]
+pub struct Progress {
+    pub samples: u32,
+    pub elapsed: Duration,
+}
+
+impl Renderer {
+    pub fn new(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings) -> Result<Renderer, RenderError> {
+        if camera.width == 0 || camera.height == 0 {
+            return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
+        }
+        let bvh = Bvh::build(&scene.positions, &scene.triangles, &settings.bvh)?;
+        let gscene = GpuScene::upload(ctx, scene, &bvh)?;
+        let film = Film::new(ctx, camera.width, camera.height)?;
+        let pt = PathTracer::new(ctx, &gscene, settings.integrator == Integrator::PtNee)?;
+        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, pt, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1 })
+    }
+
+    pub fn gpu_scene(&self) -> &GpuScene {
+        &self.scene
+    }
+    pub fn samples(&self) -> u32 {
+        self.samples
+    }
+    pub fn settings(&self) -> &RenderSettings {
+        &self.settings
+    }
+
+    /// Clears the film (e.g. after the camera moved).
+    pub fn reset(&mut self, camera: Option<&Camera>) -> Result<(), RenderError> {
+        if let Some(c) = camera {
+            self.camera = crate::trace::gpu_camera(c);
+        }
+        self.film.clear(&self.ctx)?;
+        self.samples = 0;
+        Ok(())
+    }
+
+    /// Renders `spp` more samples per pixel in one submission.
+    pub fn pass(&mut self, spp: u32) -> Result<(), RenderError> {
+        let push = PtPush {
+            camera: self.camera,
+            sample_base: self.samples,
+            spp,
+            seed: self.settings.seed,
+            emitter_count: self.scene.emitter_count,
+            emitter_power: self.scene.emitter_power,
+            max_depth: self.settings.max_depth,
+            rr_depth: self.settings.rr_depth,
+            pad0: 0,
+        };
+        self.ctx.submit("render pass", |rec| self.pt.record(rec, &self.scene, &self.film, &push))?;
+        self.samples += spp;
+        Ok(())
+    }
+
+    /// One adaptive pass (sized to `pass_target`), at most `max_spp` samples.
+    fn adaptive_pass(&mut self, max_spp: u32) -> Result<u32, RenderError> {
+        let spp = self.pass_spp.min(max_spp).max(1);
+        let t = Instant::now();
+        self.pass(spp)?;
+        let took = t.elapsed().as_secs_f64();
+        let target = self.settings.pass_target.as_secs_f64();
+        let scale = (target / took.max(1e-6)).clamp(0.25, 4.0);
+        self.pass_spp = ((spp as f64 * scale) as u32).clamp(1, 4096);
+        Ok(spp)
+    }
+
+    /// Renders until `spp` samples per pixel in total.
+    pub fn render_spp(&mut self, spp: u32, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
+        let start = Instant::now();
+        while self.samples < spp {
+            self.adaptive_pass(spp - self.samples)?;
+            progress(Progress { samples: self.samples, elapsed: start.elapsed() });
+        }
+        Ok(())
+    }
+
+    /// Renders passes until `time` has passed (at least one sample).
+    pub fn render_time(&mut self, time: Duration, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
+        let start = Instant::now();
+        loop {
+            let left = time.saturating_sub(start.elapsed());
+            if self.samples > 0 && left.is_zero() {
+                break;
+            }
+            // Shrink the pass so it ends near the deadline.
+            let per_spp = self.settings.pass_target.as_secs_f64() / self.pass_spp.max(1) as f64;
+            let cap = if self.samples == 0 { 1 } else { ((left.as_secs_f64() / per_spp.max(1e-9)) as u32).max(1) };
+            self.adaptive_pass(cap)?;
+            progress(Progress { samples: self.samples, elapsed: start.elapsed() });
+        }
+        Ok(())
+    }
+
+    /// The film's current estimate.
+    pub fn image(&self) -> Result<RgbImage, RenderError> {
+        Ok(self.film.resolve(&self.ctx)?)
+    }
+
+    /// Samples that came out NaN or infinite and were dropped.
+    pub fn nan_samples(&self) -> Result<u32, RenderError> {
+        Ok(self.film.nan_samples(&self.ctx)?)
+    }
+}

@@ -1,0 +1,26 @@
+use super::{film::Film, gpu_scene::GpuScene};
+use crate::gpu::{abi, abi::PtPush, kernels};
+use crate::vk::{Bind, Context, Kernel, Recorder, Result, Spec};
+
+/// The megakernel path tracer (`glsl/kernels/pt.comp`), specialised for the scene.
+pub struct PathTracer {
+    kernel: Kernel,
+}
+
+impl PathTracer {
+    pub fn new(ctx: &Context, scene: &GpuScene, nee: bool) -> Result<PathTracer> {
+        let mut specs = scene.features.specs();
+        specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
+        specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
+        Ok(PathTracer { kernel: ctx.create_kernel(&kernels::PT, &specs)? })
+    }
+
+    /// Records one pass: `push.spp` samples for every pixel.
+    pub fn record(&self, rec: &mut Recorder, scene: &GpuScene, film: &Film, push: &PtPush) -> Result<()> {
+        let mut binds = scene.binds();
+        binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
+        binds.push(Bind::buffer(abi::BIND_RENDER_STATS, &film.stats));
+        let n = film.width * film.height;
+        rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(push), [self.kernel.groups_for(n), 1, 1])
+    }
+}
