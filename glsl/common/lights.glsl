@@ -10,6 +10,8 @@ struct LightSample {
     vec3 p;         // point on the emitter
     vec3 n;         // its unit front normal
     vec3 le;        // emitted radiance
+    float pick;     // probability of having chosen this emitter
+    float area;     // its area
 };
 
 // O(1) alias-table choice from one uniform number (its fraction picks within the cell).
@@ -32,6 +34,8 @@ LightSample sample_emitter(uint count, float u0, float u1, float u2) {
     s.p = e.p0.xyz + b1 * e.e1.xyz + b2 * e.e2.xyz;
     s.n = normalize(cross(e.e1.xyz, e.e2.xyz));
     s.le = e.radiance.rgb;
+    s.pick = e.radiance.w;
+    s.area = e.p0.w;
     return s;
 }
 

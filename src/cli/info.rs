@@ -42,6 +42,7 @@ pub fn run(_args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
             d.timestamp_valid_bits,
             d.timestamp_period_ns
         );
+        println!("  features:      atomic float add {}, int64 {}", if d.atomic_float_add { "yes" } else { "no" }, if d.shader_int64 { "yes" } else { "no" });
         if !d.usable() {
             println!("  not usable:    lacks {}", d.missing.join(", "));
         }

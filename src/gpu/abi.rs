@@ -70,6 +70,12 @@ gpu_consts! {
     pub const BIND_TEXELS: u32 = 15;
     pub const BIND_ACCUM: u32 = 16;
     pub const BIND_RENDER_STATS: u32 = 17;
+    pub const BIND_LIGHT_VERTICES: u32 = 18;
+    pub const BIND_LIGHT_COUNTS: u32 = 19;
+    pub const BIND_SPLAT: u32 = 20;
+    /// BDPT joins (BdptPush::join).
+    pub const JOIN_FULL: u32 = 0;
+    pub const JOIN_K: u32 = 1;
     /// Invocations per workgroup of the integrator kernels (PT_WG_SIZE x 1).
     pub const PT_WG_SIZE: u32 = 64;
     /// `GpuTexture::flags` bit: texels are sRGB-encoded.
@@ -237,6 +243,44 @@ gpu_structs! {
         /// First bounce at which Russian roulette applies.
         pub rr_depth: u32,
         pub pad0: u32,
+    }
+
+    /// A stored light-subpath vertex (a diffuse-capable hit), for BDPT connections. MIS
+    /// quantities follow Georgiev 2012 ("Implementing Vertex Connection and Merging"),
+    /// power heuristic.
+    pub struct LightVertex (80 bytes) {
+        /// Position (xyz), dVCM (w).
+        pub pos: Vec4,
+        /// Shading normal facing the side light arrived from (xyz), dVC (w).
+        pub ns: Vec4,
+        /// Geometric normal facing that side (xyz), probability of the diffuse lobe (w).
+        pub ng: Vec4,
+        /// Unit direction toward the previous vertex (xyz), light subpath segments (w).
+        pub wi: Vec4,
+        /// Throughput times the diffuse BSDF value, beta * P_d * albedo / pi (rgb).
+        pub beta_f: Vec4,
+    }
+
+    /// Push constants of the BDPT kernels.
+    pub struct BdptPush (128 bytes) {
+        pub camera: GpuCamera,
+        pub sample_base: u32,
+        pub seed: u32,
+        pub emitter_count: u32,
+        pub emitter_power: f32,
+        /// 0: unbounded; else the most segments of a full path.
+        pub max_depth: u32,
+        pub rr_depth: u32,
+        /// Light vertices stored per light path (reservoir size).
+        pub light_path_len: u32,
+        /// JOIN_FULL or JOIN_K.
+        pub join: u32,
+        /// Light vertices joined per camera vertex for JOIN_K.
+        pub join_k: u32,
+        /// Light paths per iteration (one per pixel).
+        pub light_paths: u32,
+        pub pad0: u32,
+        pub pad1: u32,
     }
 
     /// What one invocation of `subgroup_probe.comp` saw.

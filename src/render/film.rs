@@ -6,18 +6,23 @@ use glam::Vec4;
 /// Progressive accumulation on the GPU: per pixel the sum of sample radiance (rgb) and the
 /// number of samples that reached it (w), in float32. Counting per pixel lets samples that
 /// came out NaN/Inf be dropped without biasing their pixel's average.
+///
+/// Light tracing (BDPT's t = 1 strategy) splats into a separate rgb buffer with atomic adds;
+/// it has no per-pixel count and is divided by the number of iterations.
 pub struct Film {
     pub(crate) accum: Buffer,
     pub(crate) stats: Buffer,
+    pub(crate) splat: Option<Buffer>,
     pub width: u32,
     pub height: u32,
 }
 
 impl Film {
-    pub fn new(ctx: &Context, width: u32, height: u32) -> Result<Film> {
+    pub fn new(ctx: &Context, width: u32, height: u32, with_splat: bool) -> Result<Film> {
         let accum = ctx.create_buffer("film.accum", width as u64 * height as u64 * 16, Memory::Device)?;
         let stats = ctx.create_buffer("film.stats", abi::STAT_COUNT as u64 * 4, Memory::Device)?;
-        let f = Film { accum, stats, width, height };
+        let splat = if with_splat { Some(ctx.create_buffer("film.splat", width as u64 * height as u64 * 12, Memory::Device)?) } else { None };
+        let f = Film { accum, stats, splat, width, height };
         f.clear(ctx)?;
         Ok(f)
     }
@@ -26,17 +31,28 @@ impl Film {
         ctx.submit("film clear", |rec| {
             rec.fill_buffer(&self.accum, 0);
             rec.fill_buffer(&self.stats, 0);
+            if let Some(s) = &self.splat {
+                rec.fill_buffer(s, 0);
+            }
             Ok(())
         })
     }
 
-    /// Average radiance per pixel.
-    pub fn resolve(&self, ctx: &Context) -> Result<RgbImage> {
+    /// Average radiance per pixel after `iterations` passes of one sample per pixel.
+    pub fn resolve(&self, ctx: &Context, iterations: u32) -> Result<RgbImage> {
         let acc: Vec<Vec4> = ctx.read_buffer(&self.accum)?;
+        let splat: Option<Vec<f32>> = self.splat.as_ref().map(|s| ctx.read_buffer(s)).transpose()?;
         let mut img = RgbImage::new(self.width, self.height);
+        let inv_iter = 1.0 / iterations.max(1) as f32;
         for (i, a) in acc.iter().take((self.width * self.height) as usize).enumerate() {
             let n = a.w.max(1.0);
-            img.data[3 * i..3 * i + 3].copy_from_slice(&[a.x / n, a.y / n, a.z / n]);
+            let mut c = [a.x / n, a.y / n, a.z / n];
+            if let Some(s) = &splat {
+                for k in 0..3 {
+                    c[k] += s[3 * i + k] * inv_iter;
+                }
+            }
+            img.data[3 * i..3 * i + 3].copy_from_slice(&c);
         }
         Ok(img)
     }

@@ -12,18 +12,20 @@
 //! # Ok(()) }
 //! ```
 
+mod bdpt;
 mod film;
 pub mod gpu_scene;
 pub mod lights;
 mod pt;
 
+pub use bdpt::{Bdpt, Join};
 pub use film::Film;
 pub use gpu_scene::{GpuScene, SceneFeatures};
 pub use pt::PathTracer;
 
 use crate::bvh::{BuildOptions, Bvh, BvhError};
 use crate::film::RgbImage;
-use crate::gpu::abi::{GpuCamera, PtPush};
+use crate::gpu::abi::{BdptPush, GpuCamera, PtPush};
 use crate::scene::{Camera, Scene};
 use crate::vk::{Context, VkError};
 use std::time::{Duration, Instant};
@@ -35,13 +37,16 @@ pub enum Integrator {
     Pt,
     /// Path tracing with next-event estimation and MIS (the thesis' explicit sampling).
     PtNee,
+    /// Bidirectional path tracing (megakernel: light pass, camera pass), MIS-weighted.
+    Bdpt(Join),
 }
 
 impl Integrator {
-    pub fn name(self) -> &'static str {
+    pub fn name(self) -> String {
         match self {
-            Integrator::Pt => "pt",
-            Integrator::PtNee => "pt-nee",
+            Integrator::Pt => "pt".into(),
+            Integrator::PtNee => "pt-nee".into(),
+            Integrator::Bdpt(j) => format!("bdpt:{}", j.name()),
         }
     }
 }
@@ -52,7 +57,11 @@ impl std::str::FromStr for Integrator {
         match s {
             "pt" => Ok(Integrator::Pt),
             "pt-nee" => Ok(Integrator::PtNee),
-            _ => Err(format!("unknown integrator '{s}' (pt | pt-nee)")),
+            "bdpt" => Ok(Integrator::Bdpt(Join::Full)),
+            _ => match s.strip_prefix("bdpt:") {
+                Some(j) => Ok(Integrator::Bdpt(j.parse()?)),
+                None => Err(format!("unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N)")),
+            },
         }
     }
 }
@@ -66,6 +75,8 @@ pub struct RenderSettings {
     /// First bounce at which Russian roulette may end a path.
     pub rr_depth: u32,
     pub seed: u32,
+    /// BDPT: light vertices stored per light path (a reservoir over an unbounded path).
+    pub light_path_len: u32,
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
     /// responsive and far from the GPU timeout).
     pub pass_target: Duration,
@@ -74,7 +85,7 @@ pub struct RenderSettings {
 
 impl RenderSettings {
     pub fn new(integrator: Integrator) -> Self {
-        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
+        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, light_path_len: 8, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
     }
 }
 
@@ -87,6 +98,16 @@ pub enum RenderError {
     Bvh(#[from] BvhError),
     #[error("camera '{0}' has an empty image ({1}x{2})")]
     EmptyImage(String, u32, u32),
+    #[error("{0}")]
+    Unsupported(String),
+    #[error("{0}")]
+    Memory(String),
+}
+
+/// The integrator's kernels.
+enum Kernels {
+    Pt(PathTracer),
+    Bdpt(Bdpt),
 }
 
 /// A scene on the GPU with an integrator and a film.
@@ -94,7 +115,7 @@ pub struct Renderer {
     ctx: Context,
     scene: GpuScene,
     film: Film,
-    pt: PathTracer,
+    kernels: Kernels,
     camera: GpuCamera,
     settings: RenderSettings,
     /// Samples per pixel accumulated so far.
@@ -117,9 +138,12 @@ impl Renderer {
         }
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &settings.bvh)?;
         let gscene = GpuScene::upload(ctx, scene, &bvh)?;
-        let film = Film::new(ctx, camera.width, camera.height)?;
-        let pt = PathTracer::new(ctx, &gscene, settings.integrator == Integrator::PtNee)?;
-        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, pt, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1 })
+        let kernels = match settings.integrator {
+            Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, &gscene, settings.integrator == Integrator::PtNee)?),
+            Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, &gscene, camera.width * camera.height, settings.light_path_len, join)?),
+        };
+        let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)))?;
+        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1 })
     }
 
     pub fn gpu_scene(&self) -> &GpuScene {
@@ -142,20 +166,60 @@ impl Renderer {
         Ok(())
     }
 
+    /// Bytes of integrator-specific GPU memory (BDPT light vertices).
+    pub fn integrator_bytes(&self) -> u64 {
+        match &self.kernels {
+            Kernels::Pt(_) => 0,
+            Kernels::Bdpt(b) => b.vertex_bytes,
+        }
+    }
+
     /// Renders `spp` more samples per pixel in one submission.
     pub fn pass(&mut self, spp: u32) -> Result<(), RenderError> {
-        let push = PtPush {
-            camera: self.camera,
-            sample_base: self.samples,
-            spp,
-            seed: self.settings.seed,
-            emitter_count: self.scene.emitter_count,
-            emitter_power: self.scene.emitter_power,
-            max_depth: self.settings.max_depth,
-            rr_depth: self.settings.rr_depth,
-            pad0: 0,
-        };
-        self.ctx.submit("render pass", |rec| self.pt.record(rec, &self.scene, &self.film, &push))?;
+        let s = &self.settings;
+        match &self.kernels {
+            Kernels::Pt(pt) => {
+                let push = PtPush {
+                    camera: self.camera,
+                    sample_base: self.samples,
+                    spp,
+                    seed: s.seed,
+                    emitter_count: self.scene.emitter_count,
+                    emitter_power: self.scene.emitter_power,
+                    max_depth: s.max_depth,
+                    rr_depth: s.rr_depth,
+                    pad0: 0,
+                };
+                self.ctx.submit("render pass", |rec| pt.record(rec, &self.scene, &self.film, &push))?;
+            }
+            Kernels::Bdpt(b) => {
+                let join_k = match b.join {
+                    Join::Full => 0,
+                    Join::K(k) => k,
+                };
+                self.ctx.submit("bdpt pass", |rec| {
+                    for i in 0..spp {
+                        let push = BdptPush {
+                            camera: self.camera,
+                            sample_base: self.samples + i,
+                            seed: s.seed,
+                            emitter_count: self.scene.emitter_count,
+                            emitter_power: self.scene.emitter_power,
+                            max_depth: s.max_depth,
+                            rr_depth: s.rr_depth,
+                            light_path_len: b.light_path_len,
+                            join: if b.join == Join::Full { crate::gpu::abi::JOIN_FULL } else { crate::gpu::abi::JOIN_K },
+                            join_k,
+                            light_paths: self.film.width * self.film.height,
+                            pad0: 0,
+                            pad1: 0,
+                        };
+                        b.record(rec, &self.scene, &self.film, &push)?;
+                    }
+                    Ok(())
+                })?;
+            }
+        }
         self.samples += spp;
         Ok(())
     }
@@ -201,7 +265,7 @@ impl Renderer {
 
     /// The film's current estimate.
     pub fn image(&self) -> Result<RgbImage, RenderError> {
-        Ok(self.film.resolve(&self.ctx)?)
+        Ok(self.film.resolve(&self.ctx, self.samples)?)
     }
 
     /// Samples that came out NaN or infinite and were dropped.

@@ -225,6 +225,9 @@ fn create_device(
     let priorities = [1.0f32];
     let queue_info = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
     let mut ext_ptrs: Vec<*const i8> = vec![ash::khr::push_descriptor::NAME.as_ptr()];
+    if info.atomic_float_add {
+        ext_ptrs.push(ash::ext::shader_atomic_float::NAME.as_ptr());
+    }
     ext_ptrs.extend(opts.device_extensions.iter().map(|e| e.as_ptr()));
 
     // Enable the optional features bidir's kernels use where the device has them.
@@ -256,6 +259,10 @@ fn create_device(
         .push_next(&mut e12);
     if info.api_version >= vk::API_VERSION_1_3 {
         create = create.push_next(&mut e13);
+    }
+    let mut atomic_float = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default().shader_buffer_float32_atomic_add(true);
+    if info.atomic_float_add {
+        create = create.push_next(&mut atomic_float);
     }
     // SAFETY: every pointer in `create` outlives the call.
     let device = unsafe { instance.create_device(physical, &create, None) }.ctx(|| format!("vkCreateDevice ({})", info.name))?;

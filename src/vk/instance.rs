@@ -215,6 +215,9 @@ pub struct DeviceInfo {
     pub queue_family: Option<u32>,
     pub push_descriptor: bool,
     pub shader_int64: bool,
+    /// VK_EXT_shader_atomic_float with atomic float add on storage buffers (light-tracing
+    /// splats of BDPT need it).
+    pub atomic_float_add: bool,
     /// Why bidir cannot use this device; empty when it can.
     pub missing: Vec<String>,
 }
@@ -299,6 +302,12 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
         let subgroup_in_compute = subgroup.supported_stages.contains(vk::ShaderStageFlags::COMPUTE);
         let ops = SubgroupOps::from_flags(subgroup.supported_operations);
         let push_descriptor = has_ext(ash::khr::push_descriptor::NAME);
+        let mut atomic_float = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default();
+        if has_ext(ash::ext::shader_atomic_float::NAME) {
+            let mut f2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut atomic_float);
+            instance.get_physical_device_features2(pd, &mut f2);
+        }
+        let atomic_float_add = atomic_float.shader_buffer_float32_atomic_add == vk::TRUE;
 
         let mut missing = Vec::new();
         if api < vk::API_VERSION_1_2 {
@@ -344,6 +353,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             queue_family: family,
             push_descriptor,
             shader_int64: features.shader_int64 == vk::TRUE,
+            atomic_float_add,
             missing,
         })
     }

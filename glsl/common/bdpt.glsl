@@ -1,0 +1,57 @@
+// Shared pieces of the BDPT kernels: the MIS function, the pinhole camera as a sensor (its
+// pdfs and the projection of points onto the image), and the light-vertex store.
+//
+// MIS uses the recursive quantities of Georgiev 2012, "Implementing Vertex Connection and
+// Merging" (tech. report, section 4 and appendix, vertex merging off): each subpath vertex
+// carries dVCM and dVC, from which the power-heuristic weight of any connection follows in
+// O(1). Strategies: s = 0 (camera path hits an emitter), s = 1 (a fresh light sample, NEE),
+// s >= 2 (connection to a stored light vertex), t = 1 (light vertex to camera, splatted).
+#ifndef BIDIR_BDPT_GLSL
+#define BIDIR_BDPT_GLSL
+
+layout(std430, binding = BIND_LIGHT_VERTICES) buffer LightVertices { LightVertex light_vertices[]; };
+// Per light path: (vertices stored, vertices seen). The store is a reservoir.
+layout(std430, binding = BIND_LIGHT_COUNTS) buffer LightCounts { uvec2 light_counts[]; };
+
+// Power heuristic, beta = 2.
+float mis(float x) {
+    return x * x;
+}
+
+float max3(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
+float luminance(vec3 c) {
+    return dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+
+// Distance from the eye to the image plane on which a pixel is 1 x 1.
+float image_plane_distance(GpuCamera cam) {
+    return float(cam.size.y) / (2.0 * length(cam.up.xyz));
+}
+
+// Solid-angle pdf of the camera generating direction `d` (per unit pixel area), SmallVCM's
+// "imageToSolidAngleFactor": (D / cos)^2 / cos.
+float camera_pdf_w(GpuCamera cam, vec3 d) {
+    float cos_c = dot(cam.forward.xyz, d);
+    float r = image_plane_distance(cam) / cos_c;
+    return r * r / cos_c;
+}
+
+// Raster position of world point `p` (pixels, row 0 on top); false if behind the camera or
+// outside the image.
+bool project_to_raster(GpuCamera cam, vec3 p, out vec2 raster) {
+    vec3 v = p - cam.eye.xyz;
+    float z = dot(v, cam.forward.xyz);
+    raster = vec2(-1.0);
+    if (z <= 0.0) {
+        return false;
+    }
+    float x = dot(v, cam.right.xyz) / (z * dot(cam.right.xyz, cam.right.xyz));
+    float y = dot(v, cam.up.xyz) / (z * dot(cam.up.xyz, cam.up.xyz));
+    raster = vec2((x + 1.0) * 0.5 * float(cam.size.x), (1.0 - y) * 0.5 * float(cam.size.y));
+    return raster.x >= 0.0 && raster.y >= 0.0 && raster.x < float(cam.size.x) && raster.y < float(cam.size.y);
+}
+
+#endif

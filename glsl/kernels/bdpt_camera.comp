@@ -1,0 +1,201 @@
+#version 460
+// BDPT, pass 2: one camera subpath per pixel, joined to the light subpath of the same index.
+// At each vertex: s = 0 when it is an emitter, s = 1 with a fresh light sample, and s >= 2
+// with stored light vertices — all of them (full join) or `join_k` chosen uniformly (k-step
+// join). A connection's contribution is divided by the probability that it was evaluated
+// (the reservoir's L / n and k-step's k / stored), so with the fixed full-BDPT MIS weights
+// the estimator stays unbiased whichever join runs (docs/integrators.md).
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#include "bidir_abi.glsl"
+#include "ray.glsl"
+#include "rng.glsl"
+#include "scene.glsl"
+#include "bsdf.glsl"
+#include "lights.glsl"
+#include "bdpt.glsl"
+
+layout(local_size_x = PT_WG_SIZE) in;
+layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
+layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
+layout(push_constant) uniform Push { BdptPush pc; };
+
+bool visible(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
+    vec3 o = offset_ray_origin(a, na);
+    vec3 target = offset_ray_origin(b, nb);
+    vec3 v = target - o;
+    float len = length(v);
+    return trace_ray(o, v / len, 0.0, len, true, stats).prim == NO_HIT;
+}
+
+// Connection of camera vertex (p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc) to light vertex y.
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_in, float pd, vec3 f, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
+    vec3 v = y.pos.xyz - p;
+    float dist2 = dot(v, v);
+    vec3 dir = v * inversesqrt(dist2);
+    float cos_c = dot(ns_f, dir);
+    float cos_y = -dot(y.ns.xyz, dir);
+    if (cos_c <= 0.0 || cos_y <= 0.0 || dot(ng_f, dir) <= 0.0 || dot(y.ng.xyz, dir) >= 0.0) {
+        return vec3(0.0);
+    }
+    float cam_dir_pdf_w = pd * cos_c / PI;
+    float cam_rev_pdf_w = pd * cos_in / PI;
+    float light_dir_pdf_w = y.ng.w * cos_y / PI;
+    float light_rev_pdf_w = y.ng.w * max(0.0, dot(y.ns.xyz, y.wi.xyz)) / PI;
+    float cam_dir_pdf_a = cam_dir_pdf_w * cos_y / dist2;
+    float light_dir_pdf_a = light_dir_pdf_w * cos_c / dist2;
+    float w_light = mis(cam_dir_pdf_a) * (y.pos.w + y.ns.w * mis(light_rev_pdf_w));
+    float w_camera = mis(light_dir_pdf_a) * (d_vcm + d_vc * mis(cam_rev_pdf_w));
+    float g = cos_c * cos_y / dist2;
+    vec3 contrib = f * y.beta_f.rgb * (g / (w_light + 1.0 + w_camera));
+    if (max3(contrib) <= 0.0 || !visible(p, ng_f, y.pos.xyz, y.ng.xyz, stats)) {
+        return vec3(0.0);
+    }
+    return contrib;
+}
+
+vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
+    uvec2 stats = uvec2(0u);
+    vec3 o = pc.camera.eye.xyz;
+    vec3 d = camera_direction(pc.camera, xy);
+    vec3 beta = vec3(1.0);
+    vec3 radiance = vec3(0.0);
+    float d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
+    float d_vc = 0.0;
+    uvec2 lc = light_counts[pixel];   // (stored, seen) of this pixel's light path
+    uint base = pixel * pc.light_path_len;
+
+    for (uint depth = 1u;; depth++) {
+        TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
+        if (h.prim == NO_HIT) {
+            break;
+        }
+        Surface s = surface_at(o, d, h);
+        GpuMaterial m = materials[s.material];
+        vec3 ng_f = s.front ? s.ng : -s.ng;
+        vec3 ns_f = s.front ? s.ns : -s.ns;
+        float cos_in = abs(dot(ns_f, -d));
+        d_vcm *= mis(h.t * h.t);
+        d_vcm /= mis(cos_in);
+        d_vc /= mis(cos_in);
+
+        // s = 0: the camera subpath found an emitter (front faces emit).
+        if (m.emission.w > 0.0 && s.front) {
+            if (depth == 1u) {
+                radiance += beta * m.emission.rgb;
+            } else {
+                float direct_pdf_a = m.emission.w / pc.emitter_power;
+                float emission_pdf_w = direct_pdf_a * max(0.0, -dot(s.ng, d)) / PI;
+                float w_camera = mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * d_vc;
+                radiance += beta * m.emission.rgb / (1.0 + w_camera);
+            }
+        }
+        if (pc.max_depth != 0u && depth >= pc.max_depth) {
+            break;
+        }
+
+        float refl = HAS_MIRROR != 0u ? m.params.x : 0.0;
+        float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
+        float pd = max(0.0, 1.0 - refl - refr);
+        vec3 albedo = vec3(0.0);
+        if (pd > 0.0) {
+            albedo = material_albedo(m, s.uv);
+            vec3 f = pd * albedo / PI;
+            // s = 1: a fresh point on an emitter.
+            if (pc.emitter_count > 0u) {
+                LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+                vec3 to_l = ls.p - s.p;
+                float dist2 = dot(to_l, to_l);
+                vec3 wi = to_l * inversesqrt(dist2);
+                float cos_s = dot(ns_f, wi);
+                float cos_l = -dot(ls.n, wi);
+                if (cos_s > 0.0 && cos_l > 0.0 && dot(ng_f, wi) > 0.0) {
+                    float direct_pdf_w = dist2 / (ls.area * cos_l);
+                    float emission_pdf_w = cos_l / (ls.area * PI);
+                    float bsdf_dir_pdf_w = pd * cos_s / PI;
+                    float bsdf_rev_pdf_w = pd * cos_in / PI;
+                    float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
+                    float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    vec3 c = beta * f * ls.le * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
+                    if (max3(c) > 0.0 && visible(s.p, ng_f, ls.p, ls.n, stats)) {
+                        radiance += c;
+                    }
+                }
+            }
+            // s >= 2: stored light vertices. Vertex y has light subpath segments y.wi.w, so
+            // the full path has y.wi.w + 1 + depth segments.
+            if (lc.x > 0u) {
+                bool full = pc.join == JOIN_FULL || pc.join_k >= lc.x;
+                uint joins = full ? lc.x : pc.join_k;
+                // Evaluation probability of a vertex: reservoir (stored / seen) times the
+                // join's choice (joins / stored).
+                float inv_q = float(lc.y) / float(joins);
+                for (uint j = 0u; j < joins; j++) {
+                    uint slot = full ? j : min(uint(rng_next(rng) * float(lc.x)), lc.x - 1u);
+                    LightVertex y = light_vertices[base + slot];
+                    if (pc.max_depth != 0u && uint(y.wi.w) + 1u + depth > pc.max_depth) {
+                        continue;
+                    }
+                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc, y, stats);
+                }
+            }
+        }
+
+        // Continue by sampling the BSDF (radiance transport).
+        uint lobe = choose_lobe(m, rng_next(rng));
+        if (lobe == LOBE_DIFFUSE) {
+            vec3 dn = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
+            if (dot(dn, ng_f) <= 0.0) {
+                break;
+            }
+            float cos_out = dot(dn, ns_f);
+            float pdf_fwd_w = pd * cos_out / PI;
+            float pdf_rev_w = pd * cos_in / PI;
+            beta *= albedo;
+            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
+            d_vcm = mis(1.0 / pdf_fwd_w);
+            d = dn;
+        } else {
+            vec3 dn;
+            if (lobe == LOBE_MIRROR) {
+                dn = reflect(d, ns_f);
+            } else {
+                float eta = s.front ? 1.0 / m.params.z : m.params.z;
+                float scale;
+                bool refracted;
+                dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
+                beta *= scale;
+            }
+            d_vcm = 0.0;
+            d_vc *= mis(abs(dot(dn, ns_f)));
+            d = dn;
+        }
+        o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+
+        if (depth >= pc.rr_depth) {
+            float q = min(max3(beta), 0.95);
+            if (q <= 0.0 || rng_next(rng) >= q) {
+                break;
+            }
+            beta /= q;
+        }
+    }
+    return radiance;
+}
+
+void main() {
+    uint w = pc.camera.size.x;
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= w * pc.camera.size.y) {
+        return;
+    }
+    Rng rng = rng_init(pixel, pc.sample_base, pc.seed);
+    vec2 xy = vec2(float(pixel % w), float(pixel / w)) + vec2(rng_next(rng), rng_next(rng));
+    vec3 l = camera_path(pixel, xy, rng);
+    if (any(isnan(l)) || any(isinf(l))) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);
+        return;
+    }
+    accum[pixel] += vec4(l, 1.0);
+}

@@ -1,0 +1,171 @@
+#version 460
+// BDPT, pass 1: one light subpath per invocation (one per pixel). An emitter point chosen by
+// power, a cosine-distributed direction, then BSDF sampling with Russian roulette and no
+// length bound. Every diffuse-capable vertex (a) is offered to the vertex store, a
+// reservoir of `light_path_len` slots (Vitter's algorithm R), so each vertex is kept with
+// probability min(1, L / n) — the camera pass divides by it — and (b) is joined to the camera
+// (strategy t = 1) and splatted into the pixel it projects to.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_EXT_shader_atomic_float : require
+#include "bidir_abi.glsl"
+#include "ray.glsl"
+#include "rng.glsl"
+#include "scene.glsl"
+#include "bsdf.glsl"
+#include "lights.glsl"
+#include "bdpt.glsl"
+
+layout(local_size_x = PT_WG_SIZE) in;
+layout(std430, binding = BIND_SPLAT) buffer Splat { float splat[]; };
+layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
+layout(push_constant) uniform Push { BdptPush pc; };
+
+// Strategy t = 1: joins the light vertex at `p` to the eye and splats its contribution.
+void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, float pd, vec3 beta_f, float d_vcm, float d_vc, inout uvec2 stats) {
+    vec3 to_eye = pc.camera.eye.xyz - p;
+    float dist2 = dot(to_eye, to_eye);
+    float dist = sqrt(dist2);
+    vec3 w = to_eye / dist;
+    float cos_cam = -dot(pc.camera.forward.xyz, w);
+    vec2 raster;
+    if (cos_cam <= 0.0 || !project_to_raster(pc.camera, p, raster)) {
+        return;
+    }
+    float cos_to_cam = dot(ns_f, w);
+    if (cos_to_cam <= 0.0 || dot(ng_f, w) <= 0.0) {
+        return;
+    }
+    float r = image_plane_distance(pc.camera) / cos_cam;
+    float image_to_solid_angle = r * r / cos_cam;
+    float image_to_surface = image_to_solid_angle * cos_to_cam / dist2; // camera pdf_a
+    float bsdf_rev_pdf_w = pd * max(0.0, dot(ns_f, wi)) / PI;
+    float w_light = mis(image_to_surface / float(pc.light_paths)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+    vec3 contrib = beta_f * (image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
+    if (max3(contrib) <= 0.0) {
+        return;
+    }
+    vec3 o = offset_ray_origin(p, ng_f);
+    vec3 to = pc.camera.eye.xyz - o;
+    float len = length(to);
+    TraceHit sh = trace_ray(o, to / len, 0.0, len, true, stats);
+    if (sh.prim != NO_HIT) {
+        return;
+    }
+    if (any(isnan(contrib)) || any(isinf(contrib))) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);
+        return;
+    }
+    uint pix = uint(raster.y) * pc.camera.size.x + uint(raster.x);
+    atomicAdd(splat[3u * pix + 0u], contrib.r);
+    atomicAdd(splat[3u * pix + 1u], contrib.g);
+    atomicAdd(splat[3u * pix + 2u], contrib.b);
+}
+
+void main() {
+    uint path = gl_GlobalInvocationID.x;
+    if (path >= pc.light_paths) {
+        return;
+    }
+    uvec2 stats = uvec2(0u);
+    uint stored = 0u, seen = 0u;
+    uint base = path * pc.light_path_len;
+    if (pc.emitter_count == 0u) {
+        light_counts[path] = uvec2(0u);
+        return;
+    }
+    Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
+
+    // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
+    LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+    vec3 d = sample_cosine_hemisphere(ls.n, rng_next(rng), rng_next(rng));
+    float cos0 = dot(d, ls.n);
+    float direct_pdf_a = luminance(ls.le) / pc.emitter_power;
+    float emission_pdf_w = direct_pdf_a * cos0 / PI;
+    if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
+        light_counts[path] = uvec2(0u);
+        return;
+    }
+    vec3 beta = ls.le * cos0 / emission_pdf_w;
+    float beta0 = max3(beta);
+    float d_vcm = mis(direct_pdf_a / emission_pdf_w);
+    float d_vc = mis(cos0 / emission_pdf_w);
+    vec3 o = offset_ray_origin(ls.p, ls.n);
+
+    for (uint depth = 1u;; depth++) {
+        TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
+        if (h.prim == NO_HIT) {
+            break;
+        }
+        Surface s = surface_at(o, d, h);
+        GpuMaterial m = materials[s.material];
+        vec3 ng_f = s.front ? s.ng : -s.ng;
+        vec3 ns_f = s.front ? s.ns : -s.ns;
+        vec3 wi = -d;
+        float cos_in = abs(dot(ns_f, wi));
+        d_vcm *= mis(h.t * h.t);
+        d_vcm /= mis(cos_in);
+        d_vc /= mis(cos_in);
+
+        float refl = HAS_MIRROR != 0u ? m.params.x : 0.0;
+        float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
+        float pd = max(0.0, 1.0 - refl - refr);
+        if (pd > 0.0) {
+            vec3 beta_f = beta * pd * material_albedo(m, s.uv) / PI;
+            // Reservoir: keep the seen-th vertex with probability L / seen.
+            seen++;
+            uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
+            if (slot < pc.light_path_len) {
+                light_vertices[base + slot] = LightVertex(vec4(s.p, d_vcm), vec4(ns_f, d_vc), vec4(ng_f, pd), vec4(wi, float(depth)), vec4(beta_f, 0.0));
+                stored = min(seen, pc.light_path_len);
+            }
+            if (pc.max_depth == 0u || depth + 1u <= pc.max_depth) {
+                connect_to_camera(s.p, ns_f, ng_f, wi, pd, beta_f, d_vcm, d_vc, stats);
+            }
+        }
+        if (pc.max_depth != 0u && depth + 1u >= pc.max_depth) {
+            break; // no longer light subpath can contribute
+        }
+
+        // Continue by sampling the BSDF (importance transport: no eta^2 radiance scaling).
+        uint lobe = choose_lobe(m, rng_next(rng));
+        if (lobe == LOBE_DIFFUSE) {
+            vec3 dn = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
+            if (dot(dn, ng_f) <= 0.0) {
+                break;
+            }
+            float cos_out = dot(dn, ns_f);
+            float pdf_fwd_w = pd * cos_out / PI;
+            float pdf_rev_w = pd * cos_in / PI;
+            beta *= material_albedo(m, s.uv);
+            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
+            d_vcm = mis(1.0 / pdf_fwd_w);
+            d = dn;
+        } else {
+            vec3 dn;
+            if (lobe == LOBE_MIRROR) {
+                dn = reflect(d, ns_f);
+            } else {
+                float eta = s.front ? 1.0 / m.params.z : m.params.z;
+                float scale;
+                bool refracted;
+                dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
+            }
+            // Delta lobe: no connection is possible here; the pdf ratio cancels.
+            d_vcm = 0.0;
+            d_vc *= mis(abs(dot(dn, ns_f)));
+            d = dn;
+        }
+        o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+
+        if (depth >= pc.rr_depth) {
+            float q = min(max3(beta) / beta0, 0.95);
+            if (q <= 0.0 || rng_next(rng) >= q) {
+                break;
+            }
+            beta /= q;
+        }
+    }
+    light_counts[path] = uvec2(stored, seen);
+}

@@ -1,0 +1,107 @@
+use super::{film::Film, gpu_scene::GpuScene, RenderError};
+use crate::gpu::{abi, abi::BdptPush, abi::LightVertex, kernels};
+use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec, VkError};
+
+/// How camera vertices are joined to the light subpath.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Join {
+    /// Every stored light vertex.
+    Full,
+    /// `k` stored light vertices chosen uniformly (with replacement) per camera vertex.
+    K(u32),
+}
+
+impl Join {
+    pub fn name(self) -> String {
+        match self {
+            Join::Full => "full".into(),
+            Join::K(k) => format!("k={k}"),
+        }
+    }
+}
+
+impl std::str::FromStr for Join {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "full" => Ok(Join::Full),
+            "single" => Ok(Join::K(1)),
+            _ => match s.strip_prefix("k=").map(str::parse::<u32>) {
+                Some(Ok(k)) if k >= 1 => Ok(Join::K(k)),
+                _ => Err(format!("unknown join '{s}' (full | single | k=N with N >= 1)")),
+            },
+        }
+    }
+}
+
+/// The megakernel BDPT: a light-subpath pass and a camera-subpath pass per iteration.
+pub struct Bdpt {
+    light: Kernel,
+    camera: Kernel,
+    vertices: Buffer,
+    counts: Buffer,
+    pub join: Join,
+    pub light_path_len: u32,
+    /// Bytes of light-vertex storage.
+    pub vertex_bytes: u64,
+}
+
+impl Bdpt {
+    pub fn new(ctx: &Context, scene: &GpuScene, paths: u32, light_path_len: u32, join: Join) -> Result<Bdpt, RenderError> {
+        let info = ctx.info();
+        if !info.atomic_float_add {
+            return Err(RenderError::Unsupported(format!("{} lacks atomic float add (VK_EXT_shader_atomic_float), which BDPT's light tracing needs", info.name)));
+        }
+        let light_path_len = light_path_len.max(1);
+        let bytes = paths as u64 * light_path_len as u64 * std::mem::size_of::<LightVertex>() as u64;
+        if bytes > info.max_storage_buffer_range as u64 {
+            return Err(RenderError::Memory(format!(
+                "BDPT light vertices need {:.1} MiB ({paths} paths x {light_path_len} vertices x {} bytes), over the device's {} MiB storage-buffer limit: lower --light-path-len or the resolution",
+                bytes as f64 / (1u64 << 20) as f64,
+                std::mem::size_of::<LightVertex>(),
+                info.max_storage_buffer_range >> 20
+            )));
+        }
+        let mut specs = scene.features.specs();
+        specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
+        let vertices = ctx.create_buffer("bdpt.light_vertices", bytes, Memory::Device).map_err(|e| match e {
+            VkError::Alloc { bytes, .. } => RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len")),
+            e => e.into(),
+        })?;
+        Ok(Bdpt {
+            light: ctx.create_kernel(&kernels::BDPT_LIGHT, &specs)?,
+            camera: ctx.create_kernel(&kernels::BDPT_CAMERA, &specs)?,
+            vertices,
+            counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
+            join,
+            light_path_len,
+            vertex_bytes: bytes,
+        })
+    }
+
+    /// Records one iteration: all light subpaths, then all camera subpaths.
+    pub fn record(&self, rec: &mut Recorder, scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
+        let mut binds = scene.binds();
+        binds.push(Bind::buffer(abi::BIND_LIGHT_VERTICES, &self.vertices));
+        binds.push(Bind::buffer(abi::BIND_LIGHT_COUNTS, &self.counts));
+        binds.push(Bind::buffer(abi::BIND_RENDER_STATS, &film.stats));
+        binds.push(Bind::buffer(abi::BIND_SPLAT, film.splat.as_ref().expect("BDPT films have a splat buffer")));
+        binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
+        rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(push.light_paths), 1, 1])?;
+        let n = film.width * film.height;
+        rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn joins_parse() {
+        assert_eq!("full".parse::<Join>().unwrap(), Join::Full);
+        assert_eq!("single".parse::<Join>().unwrap(), Join::K(1));
+        assert_eq!("k=4".parse::<Join>().unwrap(), Join::K(4));
+        assert!("k=0".parse::<Join>().is_err());
+        assert!("k=x".parse::<Join>().is_err());
+    }
+}
