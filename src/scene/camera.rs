@@ -12,9 +12,12 @@ use super::{Aabb, Camera, SceneError};
 /// Name of the camera attached to the built-in Cornell box.
 pub const CORNELL_BOX_CAMERA_NAME: &str = "cornell-box";
 
-/// Image size of glTF cameras: 1080 rows, width from the camera's aspect ratio (1920 without).
-const GLTF_ROWS: u32 = 1080;
-const GLTF_DEFAULT_WIDTH: u32 = 1920;
+/// Image size of a camera the file does not size: glTF cameras without an aspect ratio, and
+/// the framing camera of a scene without cameras. glTF cameras with an aspect ratio keep the
+/// 1080 rows.
+pub const DEFAULT_IMAGE_SIZE: (u32, u32) = (1920, 1080);
+const GLTF_ROWS: u32 = DEFAULT_IMAGE_SIZE.1;
+const GLTF_DEFAULT_WIDTH: u32 = DEFAULT_IMAGE_SIZE.0;
 
 /// Vertical field of view used to frame a scene that has no camera.
 const FRAMING_FOV_Y_DEG: f32 = 40.0;

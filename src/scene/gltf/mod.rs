@@ -46,6 +46,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         ::gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| gerr("file", e.to_string()))?;
     drop(bytes);
     check_extensions(file, &document, &mut w)?;
+    check_position_references(file, &document)?;
     let doc = Document::from_json(document.into_json()).map_err(|e| match e {
         ::gltf::Error::Validation(errs) => {
             let (path, why) = &errs[0];
@@ -126,6 +127,27 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<(),
             w.warn_once(&format!("gltf-ext-{ext}"), || {
                 format!("{}: glTF extension {ext} is not supported; {effect}", file.display())
             });
+        }
+    }
+    Ok(())
+}
+
+/// The `gltf` crate's validation indexes the POSITION accessor without a bounds check (a
+/// panic on a dangling reference), so that reference is checked first.
+fn check_position_references(file: &Path, doc: &Document) -> Result<(), SceneError> {
+    use ::gltf::json::{mesh::Semantic as S, validation::Checked};
+    let json = doc.as_json();
+    for (mi, mesh) in json.meshes.iter().enumerate() {
+        for (pi, prim) in mesh.primitives.iter().enumerate() {
+            if let Some(acc) = prim.attributes.get(&Checked::Valid(S::Positions)) {
+                if acc.value() >= json.accessors.len() {
+                    return Err(SceneError::Gltf {
+                        file: file.to_path_buf(),
+                        element: format!("meshes[{mi}].primitives[{pi}].attributes[\"POSITION\"]"),
+                        msg: format!("invalid: accessor {} does not exist ({} accessors)", acc.value(), json.accessors.len()),
+                    });
+                }
+            }
         }
     }
     Ok(())
