@@ -206,8 +206,8 @@ fn partial_normals_become_flat_normals() {
     let n = s.normals.as_ref().expect("normals kept");
     assert_eq!(s.vertex_count(), 3 + 6, "the flat quad's vertices are unshared");
     assert_eq!(n[0], Vec3::new(0.0, 0.6, 0.8));
-    for v in 3..9 {
-        assert!((n[v] - Vec3::Z).length() < 1e-6, "{}", n[v]);
+    for v in &n[3..9] {
+        assert!((*v - Vec3::Z).length() < 1e-6, "{v}");
     }
 }
 
@@ -281,6 +281,14 @@ fn glb_with_embedded_image() {
     let g = load("gltf/instanced.gltf").scene;
     assert_eq!(l.scene.positions, g.positions);
     assert_eq!(l.scene.triangles, g.triangles);
+}
+
+#[test]
+fn required_material_and_transform_extensions_only_warn() {
+    let l = scene::load(&data("gltf/requires_texture_transform.gltf"), &LoadOptions::default()).unwrap();
+    assert_eq!(l.scene.triangle_count(), 2);
+    let w = l.warnings.join("\n");
+    assert!(w.contains("KHR_texture_transform is not supported") && w.contains("KHR_materials_clearcoat"), "{w}");
 }
 
 #[test]

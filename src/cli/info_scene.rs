@@ -32,10 +32,10 @@ fn bytes(n: u64) -> String {
     }
 }
 
-fn camera_line(c: &Camera) -> String {
+/// Everything but the name.
+fn camera_details(c: &Camera) -> String {
     format!(
-        "{}: eye {} target {} up {} fov_y {}° {}x{}",
-        c.name,
+        "eye {} target {} up {} fov_y {}° {}x{}",
         fmt_vec(c.eye),
         fmt_vec(c.target),
         fmt_vec(c.up),
@@ -50,7 +50,9 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
     let s = &l.scene;
     let yes_no = |b: bool| if b { "yes" } else { "no" };
     println!("scene:        {}", s.source);
-    println!("load time:    {:.3} s", l.load_time.as_secs_f64());
+    let t = l.load_time.as_secs_f64();
+    let t = if t < 1.0 { format!("{:.1} ms", t * 1e3) } else { format!("{t:.2} s") };
+    println!("load time:    {t}");
     println!("triangles:    {} ({} degenerate dropped)", thousands(s.triangle_count() as u64), s.dropped_degenerate);
     println!(
         "vertices:     {} (normals: {}, uvs: {})",
@@ -89,13 +91,14 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
     println!("bounds:       min {} max {} (size {})", fmt_vec(b.min), fmt_vec(b.max), fmt_vec(b.diagonal()));
     println!("cameras:      {}", s.cameras.len());
     for (i, c) in s.cameras.iter().enumerate() {
-        println!("  [{i}] {}", camera_line(c));
+        println!("  [{i}] {}: {}", c.name, camera_details(c));
     }
     let from = match l.camera_index {
-        Some(i) => format!("[{i}]"),
-        None => "framed (the scene has no camera)".to_owned(),
+        Some(i) => format!("[{i}] {}", s.cameras[i].name),
+        None => "framing (the scene has no camera)".to_owned(),
     };
-    println!("camera used:  {from}{} {}", if args.has_camera_flags() { " with flags" } else { "" }, camera_line(&l.camera));
+    let flags = if args.has_camera_flags() { ", with flags" } else { "" };
+    println!("camera used:  {from}{flags}: {}", camera_details(&l.camera));
     println!("warnings:     {}", l.warnings.len());
     for w in &l.warnings {
         println!("  - {w}");

@@ -208,8 +208,8 @@ mod tests {
         assert_eq!(n.len(), b.positions.len());
         assert_eq!(b.uvs.as_ref().unwrap().len(), b.positions.len());
         // Rotating +z by 90° about x gives -y.
-        for v in 4..10 {
-            assert!((n[v] - Vec3::NEG_Y).length() < 1e-6, "{}", n[v]);
+        for v in &n[4..10] {
+            assert!((*v - Vec3::NEG_Y).length() < 1e-6, "{v}");
         }
         assert_eq!(b.triangles[2], [4, 5, 6]);
     }

@@ -282,5 +282,22 @@ with open(path("bad", "gltf_invalid_json.gltf"), "w") as f:
     f.write('{\n  "asset": {"version": "2.0"},\n  "nodes": [ {"mesh": 0,\n')
 doc, buf = one_quad()
 finish(doc, buf, "bad/glb_truncated.glb", glb=True)
+
+
+def requires_transform(doc, buf, a):
+    doc["extensionsUsed"] = ["KHR_texture_transform", "KHR_materials_clearcoat"]
+    doc["extensionsRequired"] = ["KHR_texture_transform", "KHR_materials_clearcoat"]
+
+
+doc, buf = one_quad(requires_transform)
+finish(doc, buf, "gltf/requires_texture_transform.gltf")
+
+
+def requires_meshopt(doc, buf, a):
+    doc["extensionsUsed"] = ["KHR_texture_transform", "EXT_meshopt_compression"]
+    doc["extensionsRequired"] = ["KHR_texture_transform", "EXT_meshopt_compression"]
+
+
+bad("gltf_meshopt.gltf", requires_meshopt)
 with open(path("bad", "glb_truncated.glb"), "rb+") as f:
     f.truncate(60)

@@ -26,7 +26,7 @@ fn view<'b>(
     types: &[DataType],
 ) -> Result<(&'b [u8], usize, usize, DataType)> {
     if acc.sparse().is_some() {
-        return Err(AccessorError::Unsupported("sparse accessors".into()));
+        return Err(AccessorError::Unsupported("a sparse accessor".into()));
     }
     if acc.dimensions() != dims {
         return bad(format!("type is {:?}, expected {dims:?}", acc.dimensions()));

@@ -9,12 +9,12 @@
 //! Textures are decoded on worker threads while the geometry is assembled, and only base
 //! colour textures are decoded at all (the model has no use for normal maps).
 //!
-//! Errors (geometry that cannot be read): invalid JSON or references, required extensions
-//! other than transmission/ior/emissive strength (Draco, meshopt, quantization, ...), sparse
+//! Errors (geometry that cannot be read): invalid JSON or references, required geometry
+//! encodings (Draco, meshopt, quantization, GPU instancing) or texture formats, sparse
 //! accessors, accessors of the wrong type, out of range or non-finite, unreadable buffers.
-//! Warnings (ignored once, by name): unsupported optional extensions (`KHR_texture_transform`,
-//! ...), texture kinds, BLEND, non-triangle primitives, skins, morph targets, orthographic
-//! cameras, extra scenes.
+//! Warnings (ignored once, by name): other unsupported extensions (`KHR_texture_transform`,
+//! material extensions, lights; even when required), texture kinds, BLEND, non-triangle
+//! primitives, skins, morph targets, orthographic cameras, extra scenes.
 
 mod accessor;
 mod files;
@@ -45,9 +45,11 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     let ::gltf::Gltf { document, blob } =
         ::gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| gerr("file", e.to_string()))?;
     drop(bytes);
-    check_extensions(file, &document, &mut w)?;
+    let relaxed = check_extensions(file, &document, &mut w)?;
     check_position_references(file, &document)?;
-    let doc = Document::from_json(document.into_json()).map_err(|e| match e {
+    let mut json = document.into_json();
+    json.extensions_required.retain(|e| !relaxed.contains(e));
+    let doc = Document::from_json(json).map_err(|e| match e {
         ::gltf::Error::Validation(errs) => {
             let (path, why) = &errs[0];
             let more = if errs.len() > 1 { format!(" (and {} more problems)", errs.len() - 1) } else { String::new() };
@@ -98,25 +100,38 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     Ok(Loaded { scene, warnings: w.into_vec() })
 }
 
-/// Required extensions the loader cannot honour are errors; merely used ones are warnings.
-fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<(), SceneError> {
+/// Whether a file that *requires* extension `ext` can still be loaded, approximately: the
+/// extension changes materials, texture placement or lights, not whether the geometry can be
+/// read. Such requirements are warned about and removed before validation (which would
+/// otherwise reject them). Geometry encodings (Draco, meshopt, quantization, GPU instancing)
+/// and texture formats stay errors.
+fn degradable(ext: &str) -> bool {
+    ext.starts_with("KHR_materials_") || matches!(ext, "KHR_texture_transform" | "KHR_lights_punctual")
+}
+
+/// Required extensions the loader cannot honour are errors; the others, and those merely
+/// used, are warnings (once each, by name). Returns the names to drop from
+/// `extensionsRequired`.
+fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec<String>, SceneError> {
     let json = doc.as_json();
+    let mut relaxed = Vec::new();
     for (i, ext) in json.extensions_required.iter().enumerate() {
-        if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
-            let what = match ext.as_str() {
-                "KHR_draco_mesh_compression" => "Draco mesh compression (KHR_draco_mesh_compression)".to_owned(),
-                "EXT_meshopt_compression" => "meshopt compression (EXT_meshopt_compression)".to_owned(),
-                "KHR_mesh_quantization" => "quantized vertex attributes (KHR_mesh_quantization)".to_owned(),
-                _ => format!("the required extension {ext}"),
-            };
-            return Err(SceneError::Unsupported {
-                file: file.to_path_buf(),
-                element: format!("extensionsRequired[{i}]"),
-                what,
-            });
+        if SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
+            continue;
         }
+        if degradable(ext) {
+            relaxed.push(ext.clone());
+            continue;
+        }
+        let what = match ext.as_str() {
+            "KHR_draco_mesh_compression" => "Draco mesh compression (KHR_draco_mesh_compression)".to_owned(),
+            "EXT_meshopt_compression" => "meshopt compression (EXT_meshopt_compression)".to_owned(),
+            "KHR_mesh_quantization" => "quantized vertex attributes (KHR_mesh_quantization)".to_owned(),
+            _ => format!("the required extension {ext}"),
+        };
+        return Err(SceneError::Unsupported { file: file.to_path_buf(), element: format!("extensionsRequired[{i}]"), what });
     }
-    for ext in &json.extensions_used {
+    for ext in json.extensions_used.iter().chain(&relaxed) {
         if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
             let effect = match ext.as_str() {
                 "KHR_texture_transform" => "texture transforms ignored, textures may be misplaced",
@@ -129,7 +144,7 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<(),
             });
         }
     }
-    Ok(())
+    Ok(relaxed)
 }
 
 /// The `gltf` crate's validation indexes the POSITION accessor without a bounds check (a
