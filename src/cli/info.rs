@@ -1,14 +1,32 @@
 use anyhow::Context as _;
 use bidir::vk::{self, ContextOptions};
 
+use super::scene_args::SceneArgs;
+
 #[derive(clap::Args, Debug)]
-pub struct InfoArgs {}
+pub struct InfoArgs {
+    /// Report on the built-in Cornell box
+    #[arg(long, conflicts_with = "scene")]
+    pub builtin: bool,
+    #[command(flatten)]
+    pub scene: SceneArgs,
+}
 
 fn gib(bytes: u64) -> String {
     format!("{:.1} GiB", bytes as f64 / (1u64 << 30) as f64)
 }
 
-pub fn run(_args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+pub fn run(args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    if args.builtin || args.scene.scene.is_some() {
+        return super::info_scene::run(&args.scene);
+    }
+    if args.scene.has_camera_flags() || args.scene.strict {
+        anyhow::bail!("camera flags and --strict need a scene: give a scene file or --builtin");
+    }
+    devices(opts)
+}
+
+fn devices(opts: &ContextOptions) -> anyhow::Result<()> {
     let devices = vk::list_devices().context("cannot list Vulkan devices")?;
     if devices.is_empty() {
         return Err(vk::VkError::NoDevice.into());

@@ -1,6 +1,8 @@
 //! Command-line parsing and the subcommands.
 
 mod info;
+mod info_scene;
+pub mod scene_args;
 
 use clap::{Parser, Subcommand};
 
@@ -17,7 +19,8 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// List Vulkan devices (subgroup size and operations, memory) and which one bidir picks.
+    /// List Vulkan devices (subgroup size and operations, memory) and which one bidir picks;
+    /// with a scene file (or --builtin), report on the scene instead (no GPU needed).
     Info(info::InfoArgs),
 }
 

@@ -3,8 +3,64 @@
 //!
 //! "Model no more than a scene needs": normals, UVs and textures are `None`/empty when the
 //! file has none, and [`Scene::features`] tells kernels what they can skip.
+//!
+//! Files, one job each: [`load`] picks the loader by extension; `obj.rs` (+ `obj_check.rs`, the
+//! line-numbered validation tobj lacks, and `mtl.rs`, the material library with the thesis'
+//! keys) and `gltf/` read files; `builder.rs` assembles the one compact vertex/triangle list
+//! both loaders share (normal/UV filling, degenerate triangles); `texture.rs` decodes images
+//! in parallel; `camera.rs` holds the pinhole conventions; `stats.rs` the derived data
+//! (emitters and their power, bounds, byte counts); `builtin.rs` the embedded Cornell box.
+
+mod builder;
+mod builtin;
+mod camera;
+mod error;
+mod gltf;
+mod mtl;
+mod obj;
+mod obj_check;
+mod stats;
+mod texture;
+mod warnings;
+
+pub use builtin::BUILTIN_SOURCE;
+pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
+pub use error::SceneError;
+pub use gltf::load_gltf;
+pub use obj::{load_obj, load_obj_str};
+pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts};
+pub use texture::srgb_to_linear;
+
+use std::path::Path;
 
 use glam::{Vec2, Vec3};
+
+/// How forgiving a loader is.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LoadOptions {
+    /// Missing or undecodable material libraries and textures, and unknown material names,
+    /// are errors instead of warnings with a fallback (default grey material / no texture).
+    pub strict: bool,
+}
+
+/// What a loader returns: the scene and the warnings met on the way (each also went to
+/// `log::warn!`), for the CLI to print.
+#[derive(Clone, Debug)]
+pub struct Loaded {
+    pub scene: Scene,
+    pub warnings: Vec<String>,
+}
+
+/// Loads a scene file, choosing the loader by extension: `.obj` (with its `.mtl`),
+/// `.gltf` or `.glb`.
+pub fn load(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("obj") => load_obj(path, opts),
+        Some("gltf") | Some("glb") => load_gltf(path, opts),
+        _ => Err(SceneError::UnknownFormat { file: path.to_path_buf() }),
+    }
+}
 
 /// Indexed triangles with a material per triangle.
 #[derive(Clone, Debug, Default)]
@@ -12,9 +68,12 @@ pub struct Scene {
     /// Where it came from (file path, or `builtin:cornell-box`), for messages.
     pub source: String,
     pub positions: Vec<Vec3>,
-    /// Per-vertex shading normals, only where the file has them.
+    /// Per-vertex unit shading normals, only where the file has them. When only part of a
+    /// scene has normals, the rest gets its flat face normal (on unshared vertices), so a
+    /// kernel never mixes "has normals" and "has none".
     pub normals: Option<Vec<Vec3>>,
-    /// Per-vertex texture coordinates, only where the file has them.
+    /// Per-vertex texture coordinates, only where the file has them. (0, 0) is the top-left
+    /// corner of a texture (glTF's convention; OBJ's `v` is flipped on load).
     pub uvs: Option<Vec<Vec2>>,
     /// Vertex indices, counter-clockwise seen from the front.
     pub triangles: Vec<[u32; 3]>,
@@ -87,7 +146,9 @@ pub struct Texture {
     pub srgb: bool,
 }
 
-/// A pinhole camera.
+/// A pinhole camera, with the conventions of `scenes/cornell-box/README.md`: image row 0 at
+/// the top, camera right = forward × up (so forward (0,0,1), up (0,1,0) gives right (-1,0,0)).
+/// See `camera.rs` for ray generation and projection.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Camera {
     pub name: String,

@@ -1,0 +1,133 @@
+//! `bidir info SCENE`: what a scene holds and what it will cost, without a GPU.
+
+use bidir::scene::{fmt_vec, Camera};
+
+use super::scene_args::SceneArgs;
+
+/// `1234567` → `1,234,567`.
+fn thousands(n: u64) -> String {
+    let s = n.to_string();
+    let mut out = String::new();
+    for (i, c) in s.chars().enumerate() {
+        if i > 0 && (s.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+fn bytes(n: u64) -> String {
+    const UNITS: [&str; 4] = ["B", "KiB", "MiB", "GiB"];
+    let mut v = n as f64;
+    let mut u = 0;
+    while v >= 1024.0 && u < UNITS.len() - 1 {
+        v /= 1024.0;
+        u += 1;
+    }
+    if u == 0 {
+        format!("{n} B")
+    } else {
+        format!("{v:.1} {}", UNITS[u])
+    }
+}
+
+/// Everything but the name.
+fn camera_details(c: &Camera) -> String {
+    format!(
+        "eye {} target {} up {} fov_y {}° {}x{}",
+        fmt_vec(c.eye),
+        fmt_vec(c.target),
+        fmt_vec(c.up),
+        (c.fov_y_deg * 1e4).round() / 1e4,
+        c.width,
+        c.height
+    )
+}
+
+pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
+    let l = args.load()?;
+    let s = &l.scene;
+    let yes_no = |b: bool| if b { "yes" } else { "no" };
+    println!("scene:        {}", s.source);
+    let t = l.load_time.as_secs_f64();
+    let t = if t < 1.0 { format!("{:.1} ms", t * 1e3) } else { format!("{t:.2} s") };
+    println!("load time:    {t}");
+    println!("triangles:    {} ({} degenerate dropped)", thousands(s.triangle_count() as u64), s.dropped_degenerate);
+    println!(
+        "vertices:     {} (normals: {}, uvs: {})",
+        thousands(s.vertex_count() as u64),
+        yes_no(s.normals.is_some()),
+        yes_no(s.uvs.is_some())
+    );
+    let m = s.material_counts();
+    println!(
+        "materials:    {} ({} with a diffuse part, {} mirror, {} glass, {} emissive, {} alpha-masked, {} textured)",
+        m.total, m.diffuse, m.mirror, m.glass, m.emissive, m.alpha_masked, m.textured
+    );
+    let emitters = s.emitters();
+    if emitters.is_empty() {
+        println!("emitters:     none");
+    } else {
+        let (power, lum) = s.total_emitted_power();
+        println!(
+            "emitters:     {} triangles, power (pi * area * Le) ({:.4e}, {:.4e}, {:.4e}), luminance {:.4e}",
+            thousands(emitters.len() as u64),
+            power.x,
+            power.y,
+            power.z,
+            lum
+        );
+    }
+    let srgb = s.textures.iter().filter(|t| t.srgb).count();
+    println!(
+        "textures:     {} ({} sRGB, {} linear), {}",
+        s.textures.len(),
+        srgb,
+        s.textures.len() - srgb,
+        bytes(s.texture_bytes())
+    );
+    let b = s.bounds();
+    println!("bounds:       min {} max {} (size {})", fmt_vec(b.min), fmt_vec(b.max), fmt_vec(b.diagonal()));
+    println!("cameras:      {}", s.cameras.len());
+    for (i, c) in s.cameras.iter().enumerate() {
+        println!("  [{i}] {}: {}", c.name, camera_details(c));
+    }
+    let from = match l.camera_index {
+        Some(i) => format!("[{i}] {}", s.cameras[i].name),
+        None => "framing (the scene has no camera)".to_owned(),
+    };
+    let flags = if args.has_camera_flags() { ", with flags" } else { "" };
+    println!("camera used:  {from}{flags}: {}", camera_details(&l.camera));
+    println!("warnings:     {}", l.warnings.len());
+    for w in &l.warnings {
+        println!("  - {w}");
+    }
+    let g = s.gpu_bytes_estimate();
+    println!(
+        "GPU estimate: {} (positions {}, normals {}, uvs {}, triangles {}, material ids {}, materials {}, textures {}) + BVH",
+        bytes(g.total()),
+        bytes(g.positions),
+        bytes(g.normals),
+        bytes(g.uvs),
+        bytes(g.triangles),
+        bytes(g.material_ids),
+        bytes(g.materials),
+        bytes(g.textures)
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn number_formats() {
+        assert_eq!(thousands(262087), "262,087");
+        assert_eq!(thousands(32), "32");
+        assert_eq!(thousands(1000), "1,000");
+        assert_eq!(bytes(1000), "1000 B");
+        assert_eq!(bytes(3 << 20), "3.0 MiB");
+    }
+}

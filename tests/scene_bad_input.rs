@@ -1,0 +1,312 @@
+//! Bad scene files (tests/data/bad/, written for these tests; the binary ones by
+//! tests/data/make_data.py): each must be a `SceneError` naming the file and the line (OBJ,
+//! MTL) or element (glTF), and none may panic.
+
+use std::path::{Path, PathBuf};
+
+use bidir::scene::{self, LoadOptions, SceneError};
+
+fn bad(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/bad").join(name)
+}
+
+fn load(name: &str, strict: bool) -> Result<scene::Loaded, SceneError> {
+    scene::load(&bad(name), &LoadOptions { strict })
+}
+
+fn error(name: &str) -> SceneError {
+    match load(name, false) {
+        Ok(l) => panic!("{name} loaded ({} triangles, warnings {:?})", l.scene.triangles.len(), l.warnings),
+        Err(e) => e,
+    }
+}
+
+/// The message starts with `<path>:<line>: ` and contains every one of `words`.
+fn assert_line(e: &SceneError, file: &str, line: usize, words: &[&str]) {
+    let msg = e.to_string();
+    let want = format!("{}:{line}: ", bad(file).display());
+    assert!(msg.starts_with(&want), "expected '{want}...', got: {msg}");
+    assert_eq!(e.line(), Some(line), "{msg}");
+    assert_eq!(e.file(), Some(bad(file).as_path()), "{msg}");
+    for w in words {
+        assert!(msg.contains(w), "expected '{w}' in: {msg}");
+    }
+}
+
+/// The message starts with `<path>: <element>` and contains every one of `words`.
+fn assert_element(e: &SceneError, file: &str, element: &str, words: &[&str]) {
+    let msg = e.to_string();
+    let want = format!("{}: {element}", bad(file).display());
+    assert!(msg.starts_with(&want), "expected '{want}...', got: {msg}");
+    for w in words {
+        assert!(msg.contains(w), "expected '{w}' in: {msg}");
+    }
+}
+
+// ---- OBJ --------------------------------------------------------------------------------
+
+#[test]
+fn obj_bad_number() {
+    assert_line(&error("obj_bad_number.obj"), "obj_bad_number.obj", 3, &["'x' is not a number"]);
+}
+
+#[test]
+fn obj_nan() {
+    assert_line(&error("obj_nan.obj"), "obj_nan.obj", 3, &["'nan' is not a finite number"]);
+}
+
+#[test]
+fn obj_inf() {
+    assert_line(&error("obj_inf.obj"), "obj_inf.obj", 4, &["'1e39' is not a finite number"]);
+}
+
+#[test]
+fn obj_index_out_of_range() {
+    assert_line(&error("obj_index_out_of_range.obj"), "obj_index_out_of_range.obj", 5, &["vertex index 5 out of range (3 vertices so far)"]);
+}
+
+#[test]
+fn obj_index_zero() {
+    assert_line(&error("obj_index_zero.obj"), "obj_index_zero.obj", 5, &["index 0 is invalid"]);
+}
+
+#[test]
+fn obj_negative_index() {
+    assert_line(&error("obj_negative_index.obj"), "obj_negative_index.obj", 5, &["vertex index -4 out of range"]);
+}
+
+#[test]
+fn obj_uv_index() {
+    assert_line(&error("obj_uv_index.obj"), "obj_uv_index.obj", 6, &["texture coordinate index 2 out of range"]);
+}
+
+#[test]
+fn obj_normal_index() {
+    assert_line(&error("obj_normal_index.obj"), "obj_normal_index.obj", 6, &["normal index 3 out of range"]);
+}
+
+#[test]
+fn obj_face_two_vertices() {
+    assert_line(&error("obj_face_two_vertices.obj"), "obj_face_two_vertices.obj", 4, &["at least 3 vertices"]);
+}
+
+#[test]
+fn obj_bad_face_token() {
+    assert_line(&error("obj_bad_face_token.obj"), "obj_bad_face_token.obj", 5, &["'3/x'"]);
+}
+
+#[test]
+fn obj_bad_normal() {
+    assert_line(&error("obj_bad_normal.obj"), "obj_bad_normal.obj", 3, &["a normal needs 3 numbers"]);
+}
+
+#[test]
+fn obj_partial_colours() {
+    assert_line(&error("obj_partial_colours.obj"), "obj_partial_colours.obj", 3, &["vertex colours"]);
+}
+
+#[test]
+fn obj_empty() {
+    let e = error("obj_empty.obj");
+    assert!(matches!(e, SceneError::Empty { dropped: 0, .. }), "{e:?}");
+    assert_element(&e, "obj_empty.obj", "the scene has no triangles", &[]);
+}
+
+#[test]
+fn obj_all_degenerate() {
+    let e = error("obj_all_degenerate.obj");
+    assert!(matches!(e, SceneError::Empty { dropped: 2, .. }), "{e:?}");
+    assert_element(&e, "obj_all_degenerate.obj", "the scene has no triangles", &["all 2 were degenerate"]);
+}
+
+#[test]
+fn obj_missing_mtl_warns_or_fails_when_strict() {
+    let l = load("obj_missing_mtl.obj", false).unwrap();
+    let w = l.warnings.join("\n");
+    let at = format!("{}:2: material library 'nothere.mtl' not found", bad("obj_missing_mtl.obj").display());
+    assert!(w.contains(&at), "{w}");
+    assert!(w.contains("unknown material 'red'"), "{w}");
+    assert_eq!(l.scene.materials.len(), 1);
+    assert_eq!(l.scene.materials[0].name, "default");
+    let e = load("obj_missing_mtl.obj", true).unwrap_err();
+    assert_line(&e, "obj_missing_mtl.obj", 2, &["material library 'nothere.mtl' not found"]);
+}
+
+#[test]
+fn obj_unknown_material_strict() {
+    assert!(load("obj_unknown_material.obj", false).is_ok());
+    let e = load("obj_unknown_material.obj", true).unwrap_err();
+    assert_line(&e, "obj_unknown_material.obj", 5, &["unknown material 'nosuch'"]);
+}
+
+#[test]
+fn mtl_bad_colour_names_the_mtl_line() {
+    assert_line(&error("obj_bad_mtl.obj"), "obj_bad_mtl.mtl", 3, &["expected 3 numbers"]);
+}
+
+#[test]
+fn mtl_bad_thesis_key_names_the_mtl_line() {
+    assert_line(&error("obj_bad_thesis_key.obj"), "obj_bad_thesis_key.mtl", 4, &["'lots' is not a number"]);
+}
+
+#[test]
+fn missing_texture_warns_or_fails_when_strict() {
+    let l = load("obj_missing_texture.obj", false).unwrap();
+    let at = format!("{}:3: texture 'nothere.png' not found", bad("obj_missing_texture.mtl").display());
+    assert!(l.warnings.iter().any(|w| w.starts_with(&at)), "{:?}", l.warnings);
+    assert_eq!(l.scene.materials[0].albedo_texture, None);
+    assert!(l.scene.textures.is_empty());
+    let e = load("obj_missing_texture.obj", true).unwrap_err();
+    assert_line(&e, "obj_missing_texture.mtl", 3, &["texture 'nothere.png' not found", "nothere.png"]);
+}
+
+#[test]
+fn corrupt_texture_warns_or_fails_when_strict() {
+    let l = load("obj_corrupt_texture.obj", false).unwrap();
+    let at = format!("{}:3: cannot decode texture 'corrupt.png'", bad("obj_corrupt_texture.mtl").display());
+    assert!(l.warnings.iter().any(|w| w.starts_with(&at)), "{:?}", l.warnings);
+    let e = load("obj_corrupt_texture.obj", true).unwrap_err();
+    assert!(e.to_string().starts_with(&at), "{e}");
+    assert_eq!(e.file(), Some(bad("obj_corrupt_texture.mtl").as_path()));
+}
+
+// ---- files --------------------------------------------------------------------------------
+
+#[test]
+fn missing_file() {
+    let e = error("does_not_exist.obj");
+    assert!(matches!(e, SceneError::Io { .. }), "{e:?}");
+    assert_element(&e, "does_not_exist.obj", "cannot read", &[]);
+    let e = error("does_not_exist.gltf");
+    assert_element(&e, "does_not_exist.gltf", "cannot read", &[]);
+}
+
+#[test]
+fn unknown_format() {
+    let e = error("unknown_format.ply");
+    assert_element(&e, "unknown_format.ply", "unknown scene format", &[]);
+}
+
+#[test]
+fn garbage_obj() {
+    // Random bytes: whatever the first bad line is, the error names the file.
+    let e = error("garbage.obj");
+    assert_eq!(e.file(), Some(bad("garbage.obj").as_path()), "{e}");
+}
+
+// ---- glTF ---------------------------------------------------------------------------------
+
+#[test]
+fn gltf_draco() {
+    let e = error("gltf_draco.gltf");
+    assert!(matches!(e, SceneError::Unsupported { .. }), "{e:?}");
+    assert_element(&e, "gltf_draco.gltf", "extensionsRequired[0]", &["Draco", "not supported"]);
+}
+
+#[test]
+fn gltf_meshopt() {
+    let e = error("gltf_meshopt.gltf");
+    assert_element(&e, "gltf_meshopt.gltf", "extensionsRequired[1]", &["meshopt", "not supported"]);
+}
+
+#[test]
+fn gltf_sparse() {
+    let e = error("gltf_sparse.gltf");
+    assert!(matches!(e, SceneError::Unsupported { .. }), "{e:?}");
+    assert_element(&e, "gltf_sparse.gltf", "mesh 0 \"Q\", primitive 0, accessor 0 (POSITION)", &["a sparse accessor is not supported"]);
+}
+
+#[test]
+fn gltf_index_out_of_range() {
+    let e = error("gltf_index_out_of_range.gltf");
+    assert_element(&e, "gltf_index_out_of_range.gltf", "mesh 0 \"Q\", primitive 0, accessor 5 (indices)", &["index 7", "4 vertices"]);
+}
+
+#[test]
+fn gltf_wrong_accessor_type() {
+    let e = error("gltf_wrong_accessor_type.gltf");
+    assert_element(&e, "gltf_wrong_accessor_type.gltf", "mesh 0 \"Q\", primitive 0, accessor 0 (POSITION)", &["Vec2"]);
+}
+
+#[test]
+fn gltf_accessor_overrun() {
+    let e = error("gltf_accessor_overrun.gltf");
+    assert_element(&e, "gltf_accessor_overrun.gltf", "mesh 0 \"Q\", primitive 0, accessor 0 (POSITION)", &["400 elements", "run past"]);
+}
+
+#[test]
+fn gltf_nan_position() {
+    let e = error("gltf_nan_position.gltf");
+    assert_element(&e, "gltf_nan_position.gltf", "mesh 0 \"Q\", primitive 0, accessor 5 (POSITION)", &["element 1 is not finite"]);
+}
+
+#[test]
+fn gltf_bad_reference() {
+    let e = error("gltf_bad_reference.gltf");
+    assert_element(&e, "gltf_bad_reference.gltf", "meshes[0].primitives[0].attributes", &["invalid"]);
+}
+
+#[test]
+fn gltf_node_cycle() {
+    let e = error("gltf_node_cycle.gltf");
+    assert_element(&e, "gltf_node_cycle.gltf", "node", &["cycle"]);
+}
+
+#[test]
+fn gltf_normal_count() {
+    let e = error("gltf_normal_count.gltf");
+    assert_element(&e, "gltf_normal_count.gltf", "mesh 0 \"Q\", primitive 0, accessor 1 (NORMAL)", &["3 elements, but POSITION has 4"]);
+}
+
+#[test]
+fn gltf_short_buffer() {
+    let e = error("gltf_short_buffer.gltf");
+    assert_element(&e, "gltf_short_buffer.gltf", "buffer 0", &["the file declares"]);
+}
+
+#[test]
+fn gltf_missing_bin() {
+    let e = error("gltf_missing_bin.gltf");
+    assert_element(&e, "gltf_missing_bin.gltf", "buffer 0", &["cannot read 'gltf_missing_bin.bin'"]);
+}
+
+#[test]
+fn gltf_points_only() {
+    let e = error("gltf_points_only.gltf");
+    assert!(matches!(e, SceneError::Empty { .. }), "{e:?}");
+    assert_element(&e, "gltf_points_only.gltf", "the scene has no triangles", &[]);
+}
+
+#[test]
+fn gltf_invalid_json() {
+    let e = error("gltf_invalid_json.gltf");
+    assert_element(&e, "gltf_invalid_json.gltf", "file", &["line"]);
+}
+
+#[test]
+fn glb_truncated() {
+    let e = error("glb_truncated.glb");
+    assert_element(&e, "glb_truncated.glb", "file", &[]);
+    let e = error("garbage.glb");
+    assert_element(&e, "garbage.glb", "file", &[]);
+}
+
+/// Every file of the corpus, strict or not, through `catch_unwind`: an error or a scene,
+/// never a panic.
+#[test]
+fn no_bad_file_panics() {
+    let dir = bad("");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    files.sort();
+    assert!(files.len() >= 30, "corpus too small: {}", files.len());
+    let mut panicked = Vec::new();
+    for f in &files {
+        for strict in [false, true] {
+            let r = std::panic::catch_unwind(|| scene::load(f, &LoadOptions { strict }).map(|l| l.scene.triangles.len()));
+            if r.is_err() {
+                panicked.push(format!("{} (strict {strict})", f.display()));
+            }
+        }
+    }
+    assert!(panicked.is_empty(), "panicked on: {panicked:?}");
+}
