@@ -139,3 +139,26 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     assert_eq!(leaks[0], 0, "watertight test leaked rays through shared edges");
     finish(ctx);
 }
+
+#[test]
+fn cornell_box_matches_cpu_hit_for_hit() {
+    let ctx = gpu();
+    let scene = bidir::scene::Scene::builtin_cornell_box();
+    let mut rng = Pcg::new(13);
+    let (lo, hi) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(556.0, 548.8, 559.2));
+    let mut rays = mixed_rays(&mut rng, lo, hi, 90_000);
+    // Camera rays through jittered pixels of the reference camera.
+    let cam = &scene.cameras[0];
+    let g = bidir::trace::gpu_camera(cam);
+    for _ in 0..60_000 {
+        let (x, y) = (rng.next_f32() * 2.0 - 1.0, 1.0 - rng.next_f32() * 2.0);
+        let d = (g.forward + g.right * x + g.up * y).truncate().normalize();
+        rays.push(ray(cam.eye, d, 3.0e38));
+    }
+    for tri_test in [TriTest::Watertight, TriTest::Woop] {
+        for pre_split in [false, true] {
+            check_scene(&ctx, "cornell", &scene.positions, &scene.triangles, &rays, BuildOptions { tri_test, pre_split, ..Default::default() });
+        }
+    }
+    finish(ctx);
+}

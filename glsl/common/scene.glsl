@@ -21,6 +21,31 @@ layout(std430, binding = BIND_NORMALS) readonly buffer Normals { float vertex_no
 layout(std430, binding = BIND_UVS) readonly buffer Uvs { vec2 vertex_uvs[]; };
 layout(std430, binding = BIND_TEXTURES) readonly buffer Textures { GpuTexture textures[]; };
 layout(std430, binding = BIND_TEXELS) readonly buffer Texels { uint texels[]; };
+layout(std430, binding = BIND_POSITIONS) readonly buffer Positions { float vertex_positions[]; };
+
+vec3 vertex_position(uint i) {
+    return vec3(vertex_positions[3u * i], vertex_positions[3u * i + 1u], vertex_positions[3u * i + 2u]);
+}
+
+// The hit point from barycentrics of the triangle's vertices, not o + t d: offsetting rays
+// off surfaces (offset_ray_origin) assumes a point with only the rounding error of the
+// vertices themselves (exactly on axis-aligned planes such as y = 0), which o + t d, with an
+// error proportional to t, does not have.
+vec3 hit_point(TraceHit h) {
+    vec3 v0, v1, v2;
+    if (TRI_TEST == TRI_TEST_WATERTIGHT) {
+        GpuTri t = bvh_tris[h.prim];
+        v0 = t.a.xyz;
+        v1 = t.b.xyz;
+        v2 = t.c.xyz;
+    } else {
+        uvec4 info = prim_info[h.prim];
+        v0 = vertex_position(info.x);
+        v1 = vertex_position(info.y);
+        v2 = vertex_position(info.z);
+    }
+    return (1.0 - h.bary.x - h.bary.y) * v0 + h.bary.x * v1 + h.bary.y * v2;
+}
 
 vec3 srgb_to_linear(vec3 c) {
     return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
@@ -74,7 +99,7 @@ struct Surface {
 Surface surface_at(vec3 o, vec3 d, TraceHit h) {
     Surface s;
     uvec4 info = prim_info[h.prim];
-    s.p = o + h.t * d;
+    s.p = hit_point(h);
     s.ng = normalize(tri_geometric_normal(bvh_tris[h.prim]));
     s.ns = s.ng;
     if (HAS_NORMALS != 0u) {

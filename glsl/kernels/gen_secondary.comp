@@ -29,7 +29,13 @@ void main() {
         flags[i] = 0u;
         return;
     }
+    // Hit point from barycentrics where the vertices are at hand (see scene.glsl hit_point);
+    // Woop-encoded triangles only give o + t d (good enough for timing rays).
     vec3 p = r.origin.xyz + h.t * r.dir.xyz;
+    if (TRI_TEST == TRI_TEST_WATERTIGHT) {
+        GpuTri t = bvh_tris[h.tri];
+        p = (1.0 - h.u - h.v) * t.a.xyz + h.u * t.b.xyz + h.v * t.c.xyz;
+    }
     vec3 n = normalize(tri_geometric_normal(bvh_tris[h.tri]));
     if (dot(n, r.dir.xyz) > 0.0) {
         n = -n; // face the side the ray came from

@@ -1,7 +1,10 @@
 //! Command-line parsing and the subcommands.
 
+mod bench;
+mod diff;
 mod info;
 mod info_scene;
+mod render;
 pub mod scene_args;
 
 use clap::{Parser, Subcommand};
@@ -22,6 +25,13 @@ pub enum Command {
     /// List Vulkan devices (subgroup size and operations, memory) and which one bidir picks;
     /// with a scene file (or --builtin), report on the scene instead (no GPU needed).
     Info(info::InfoArgs),
+    /// Render a scene (default: the built-in Cornell box) to EXR/PNG.
+    Render(Box<render::RenderArgs>),
+    /// Compare two EXR images: RMSE, relMSE, mean ratio, heatmap.
+    Diff(diff::DiffArgs),
+    /// Benchmarks with GPU timestamps (warm-up, repetitions, median).
+    #[command(subcommand)]
+    Bench(bench::BenchCommand),
 }
 
 pub fn run() -> anyhow::Result<()> {
@@ -32,5 +42,8 @@ pub fn run() -> anyhow::Result<()> {
     }
     match cli.command {
         Command::Info(args) => info::run(&args, &opts),
+        Command::Render(args) => render::run(&args, &opts),
+        Command::Bench(cmd) => bench::run(&cmd, &opts),
+        Command::Diff(args) => diff::run(&args),
     }
 }

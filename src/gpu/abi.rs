@@ -68,6 +68,8 @@ gpu_consts! {
     pub const BIND_UVS: u32 = 13;
     pub const BIND_TEXTURES: u32 = 14;
     pub const BIND_TEXELS: u32 = 15;
+    /// Vertex positions (xyz triples), for exact hit points when triangles are Woop-encoded.
+    pub const BIND_POSITIONS: u32 = 21;
     pub const BIND_ACCUM: u32 = 16;
     pub const BIND_RENDER_STATS: u32 = 17;
     pub const BIND_LIGHT_VERTICES: u32 = 18;

@@ -57,6 +57,7 @@ pub struct GpuScene {
     pub uvs: Buffer,
     pub textures: Buffer,
     pub texels: Buffer,
+    pub positions: Buffer,
     pub features: SceneFeatures,
     pub emitter_count: u32,
     pub emitter_power: f32,
@@ -110,9 +111,10 @@ impl GpuScene {
         let texels = if texels.is_empty() { placeholder("scene.texels (none)")? } else { ctx.upload_buffer("scene.texels", &texels)? };
         let emitters = if lights.emitters.is_empty() { placeholder("scene.emitters (none)")? } else { ctx.upload_buffer("scene.emitters", &lights.emitters)? };
         let alias = if lights.alias.is_empty() { placeholder("scene.alias (none)")? } else { ctx.upload_buffer("scene.alias", &lights.alias)? };
+        let positions = ctx.upload_buffer("scene.positions", &scene.positions.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?;
         let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
         let materials = ctx.upload_buffer("scene.materials", &materials)?;
-        let bytes = [&prim_info, &materials, &emitters, &alias, &normals, &uvs, &textures, &texels].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
+        let bytes = [&prim_info, &materials, &emitters, &alias, &normals, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
         Ok(GpuScene {
             bvh: gbvh,
             prim_info,
@@ -123,6 +125,7 @@ impl GpuScene {
             uvs,
             textures,
             texels,
+            positions,
             features,
             emitter_count: lights.emitters.len() as u32,
             emitter_power: lights.total_power,
@@ -144,6 +147,7 @@ impl GpuScene {
             Bind::buffer(abi::BIND_UVS, &self.uvs),
             Bind::buffer(abi::BIND_TEXTURES, &self.textures),
             Bind::buffer(abi::BIND_TEXELS, &self.texels),
+            Bind::buffer(abi::BIND_POSITIONS, &self.positions),
         ]
     }
 }

@@ -4,7 +4,7 @@
 //! # fn main() -> Result<(), Box<dyn std::error::Error>> {
 //! use bidir::render::{Integrator, RenderSettings, Renderer};
 //! let ctx = bidir::vk::Context::new(&bidir::vk::ContextOptions::from_env())?;
-//! let scene = bidir::scene::builtin_cornell_box();
+//! let scene = bidir::scene::Scene::builtin_cornell_box();
 //! let camera = scene.cameras[0].clone();
 //! let mut r = Renderer::new(&ctx, &scene, &camera, RenderSettings::new(Integrator::PtNee))?;
 //! r.render_spp(64, |_| {})?;

@@ -1,0 +1,76 @@
+//! `bidir bench traversal`.
+
+use super::scene_args::SceneArgs;
+use anyhow::Context as _;
+use bidir::bench::traversal::{self, RayKind};
+use bidir::bvh::TriTest;
+use bidir::vk::{Context, ContextOptions};
+use std::path::PathBuf;
+
+#[derive(clap::Subcommand, Debug)]
+pub enum BenchCommand {
+    /// Traversal speed: primary, shadow and diffuse rays, GPU-timed.
+    Traversal(TraversalArgs),
+}
+
+#[derive(clap::Args, Debug)]
+pub struct TraversalArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// primary | shadow | diffuse | all
+    #[arg(long, default_value = "all")]
+    pub rays: String,
+    /// Ray-triangle test: watertight | woop.
+    #[arg(long, default_value = "watertight")]
+    pub tri_test: TriTest,
+    /// Timed repetitions (at least 5); the median is reported.
+    #[arg(long, default_value_t = 9)]
+    pub reps: usize,
+    #[arg(long, default_value_t = 3)]
+    pub warmup: usize,
+    /// obvhs build quality 0 (fastest) .. 4 (slowest, best).
+    #[arg(long, default_value_t = 2)]
+    pub quality: u32,
+    /// Most triangles per leaf (1..=16).
+    #[arg(long, default_value_t = 4)]
+    pub leaf_size: u32,
+    /// Disable spatial pre-splits.
+    #[arg(long)]
+    pub no_pre_split: bool,
+    /// Write the report as JSON.
+    #[arg(long)]
+    pub json: Option<PathBuf>,
+}
+
+pub fn run(cmd: &BenchCommand, opts: &ContextOptions) -> anyhow::Result<()> {
+    match cmd {
+        BenchCommand::Traversal(a) => traversal_cmd(a, opts),
+    }
+}
+
+fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    let kinds = match a.rays.as_str() {
+        "all" => RayKind::ALL.to_vec(),
+        "primary" => vec![RayKind::Primary],
+        "shadow" => vec![RayKind::Shadow],
+        "diffuse" => vec![RayKind::Diffuse],
+        other => anyhow::bail!("--rays {other}: expected primary | shadow | diffuse | all"),
+    };
+    let loaded = a.scene.load()?;
+    let ctx = Context::new(opts).context("cannot start Vulkan")?;
+    let mut o = traversal::Options { kinds, warmup: a.warmup, repetitions: a.reps.max(5), ..Default::default() };
+    o.build.tri_test = a.tri_test;
+    o.build.quality = a.quality;
+    o.build.max_leaf_tris = a.leaf_size;
+    o.build.pre_split = !a.no_pre_split;
+    let cam = bidir::trace::gpu_camera(&loaded.camera);
+    let report = traversal::run(&ctx, &loaded.scene.positions, &loaded.scene.triangles, &cam, &o)?;
+    report.print();
+    if let Some(path) = &a.json {
+        let tmp = path.with_extension("json.tmp");
+        std::fs::write(&tmp, report.to_json().to_pretty()).with_context(|| format!("cannot write {}", tmp.display()))?;
+        std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
