@@ -46,7 +46,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         ::gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| gerr("file", e.to_string()))?;
     drop(bytes);
     let relaxed = check_extensions(file, &document, &mut w)?;
-    check_position_references(file, &document)?;
+    check_what_validation_misses(file, &document)?;
     let mut json = document.into_json();
     json.extensions_required.retain(|e| !relaxed.contains(e));
     let doc = Document::from_json(json).map_err(|e| match e {
@@ -147,22 +147,42 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
     Ok(relaxed)
 }
 
-/// The `gltf` crate's validation indexes the POSITION accessor without a bounds check (a
-/// panic on a dangling reference), so that reference is checked first.
-fn check_position_references(file: &Path, doc: &Document) -> Result<(), SceneError> {
+/// What the `gltf` crate's validation lets through but its accessors then `unwrap` (a panic):
+/// a dangling POSITION reference (its validation indexes it unchecked), an image with neither
+/// `uri` nor `bufferView` + `mimeType`, a camera whose `type` names a projection it lacks.
+fn check_what_validation_misses(file: &Path, doc: &Document) -> Result<(), SceneError> {
+    use ::gltf::json::camera::Type;
     use ::gltf::json::{mesh::Semantic as S, validation::Checked};
+    let err = |element: String, msg: String| Err(SceneError::Gltf { file: file.to_path_buf(), element, msg });
     let json = doc.as_json();
     for (mi, mesh) in json.meshes.iter().enumerate() {
         for (pi, prim) in mesh.primitives.iter().enumerate() {
             if let Some(acc) = prim.attributes.get(&Checked::Valid(S::Positions)) {
                 if acc.value() >= json.accessors.len() {
-                    return Err(SceneError::Gltf {
-                        file: file.to_path_buf(),
-                        element: format!("meshes[{mi}].primitives[{pi}].attributes[\"POSITION\"]"),
-                        msg: format!("invalid: accessor {} does not exist ({} accessors)", acc.value(), json.accessors.len()),
-                    });
+                    return err(
+                        format!("meshes[{mi}].primitives[{pi}].attributes[\"POSITION\"]"),
+                        format!("invalid: accessor {} does not exist ({} accessors)", acc.value(), json.accessors.len()),
+                    );
                 }
             }
+        }
+    }
+    for (i, img) in json.images.iter().enumerate() {
+        if img.buffer_view.is_some() && img.mime_type.is_none() {
+            return err(format!("images[{i}]"), "invalid: an image in a bufferView needs a mimeType".into());
+        }
+        if img.buffer_view.is_none() && img.uri.is_none() {
+            return err(format!("images[{i}]"), "invalid: neither uri nor bufferView".into());
+        }
+    }
+    for (i, cam) in json.cameras.iter().enumerate() {
+        let missing = match cam.type_ {
+            Checked::Valid(Type::Perspective) => cam.perspective.is_none(),
+            Checked::Valid(Type::Orthographic) => cam.orthographic.is_none(),
+            Checked::Invalid => false, // validation reports it
+        };
+        if missing {
+            return err(format!("cameras[{i}]"), "invalid: the projection its type names is missing".into());
         }
     }
     Ok(())
