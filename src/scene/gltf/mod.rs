@@ -68,9 +68,9 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     let (geometry, decoded) = std::thread::scope(|s| {
         let decoder = s.spawn(|| requests.decode(opts.strict, &mut tex_warnings));
         let geometry = geometry(file, &doc, &buffers, default_material, &mut w);
-        let decoded = decoder
-            .join()
-            .unwrap_or_else(|_| Err(SceneError::Parse { file: file.to_path_buf(), msg: "texture decoding failed".into() }));
+        let decoded = decoder.join().unwrap_or_else(|_| {
+            Err(SceneError::Parse { file: file.to_path_buf(), msg: "texture decoding failed".into() })
+        });
         (geometry, decoded)
     });
     let (b, cameras, used_default) = geometry?;
@@ -129,7 +129,11 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
             "KHR_mesh_quantization" => "quantized vertex attributes (KHR_mesh_quantization)".to_owned(),
             _ => format!("the required extension {ext}"),
         };
-        return Err(SceneError::Unsupported { file: file.to_path_buf(), element: format!("extensionsRequired[{i}]"), what });
+        return Err(SceneError::Unsupported {
+            file: file.to_path_buf(),
+            element: format!("extensionsRequired[{i}]"),
+            what,
+        });
     }
     for ext in json.extensions_used.iter().chain(&relaxed) {
         if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
@@ -161,7 +165,11 @@ fn check_what_validation_misses(file: &Path, doc: &Document) -> Result<(), Scene
                 if acc.value() >= json.accessors.len() {
                     return err(
                         format!("meshes[{mi}].primitives[{pi}].attributes[\"POSITION\"]"),
-                        format!("invalid: accessor {} does not exist ({} accessors)", acc.value(), json.accessors.len()),
+                        format!(
+                            "invalid: accessor {} does not exist ({} accessors)",
+                            acc.value(),
+                            json.accessors.len()
+                        ),
                     );
                 }
             }
@@ -247,15 +255,15 @@ fn geometry(
             instances.push((mesh.index(), world));
         }
         if node.skin().is_some() {
-            w.warn_once("gltf-skin", || format!("{}: {}: skins are not supported; the bind pose is used", file.display(), element()));
+            w.warn_once("gltf-skin", || {
+                format!("{}: {}: skins are not supported; the bind pose is used", file.display(), element())
+            });
         }
         if let Some(cam) = node.camera() {
             match cam.projection() {
                 ::gltf::camera::Projection::Perspective(p) => {
-                    let name = node
-                        .name()
-                        .or(cam.name())
-                        .map_or_else(|| format!("camera {}", cam.index()), str::to_owned);
+                    let name =
+                        node.name().or(cam.name()).map_or_else(|| format!("camera {}", cam.index()), str::to_owned);
                     cameras.push(Camera::from_gltf(name, world, p.yfov(), p.aspect_ratio()));
                 }
                 ::gltf::camera::Projection::Orthographic(_) => w.warn_once("gltf-ortho", || {
