@@ -223,6 +223,16 @@ fn gltf_image_without_source() {
 }
 
 #[test]
+fn gltf_missing_image_warns_or_fails_when_strict() {
+    let l = load("gltf_missing_image.gltf", false).unwrap();
+    let at = format!("{}: image 0 \"gone\": texture 'gone' not found", bad("gltf_missing_image.gltf").display());
+    assert!(l.warnings.iter().any(|w| w.starts_with(&at) && w.contains("nothere.png")), "{:?}", l.warnings);
+    assert_eq!(l.scene.materials[0].albedo_texture, None);
+    let e = load("gltf_missing_image.gltf", true).unwrap_err();
+    assert_element(&e, "gltf_missing_image.gltf", "image 0 \"gone\"", &["not found", "nothere.png"]);
+}
+
+#[test]
 fn gltf_camera_without_projection() {
     let e = error("gltf_camera_without_projection.gltf");
     assert_element(&e, "gltf_camera_without_projection.gltf", "cameras[0]", &["projection"]);

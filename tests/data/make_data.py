@@ -314,7 +314,13 @@ def camera_without_projection(doc, buf, a):
     doc["scenes"][0]["nodes"].append(1)
 
 
+def missing_image(doc, buf, a):
+    image_without_source(doc, buf, a)
+    doc["images"] = [{"name": "gone", "uri": "nothere.png"}]
+
+
 bad("gltf_image_without_source.gltf", image_without_source)
+bad("gltf_missing_image.gltf", missing_image)
 bad("gltf_camera_without_projection.gltf", camera_without_projection)
 with open(path("bad", "glb_truncated.glb"), "rb+") as f:
     f.truncate(60)
