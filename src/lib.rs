@@ -4,6 +4,8 @@
 //! - [`vk`]: the only place with `unsafe` Vulkan: context, memory, kernels, submission.
 //! - [`gpu`]: the ABI shared with GLSL (structs, bindings, workgroup sizes) and the SPIR-V.
 //! - [`compute`]: small reusable GPU algorithms (reduction, prefix sum).
+//! - [`scene`]: the CPU scene: OBJ+MTL and glTF loaders, textures, cameras, the built-in
+//!   Cornell box, derived data (emitters, bounds, sizes). Needs no GPU.
 
 pub mod compute;
 pub mod bench;

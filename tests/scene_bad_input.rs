@@ -2,6 +2,8 @@
 //! tests/data/make_data.py): each must be a `SceneError` naming the file and the line (OBJ,
 //! MTL) or element (glTF), and none may panic.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
 use bidir::scene::{self, LoadOptions, SceneError};
@@ -62,7 +64,12 @@ fn obj_inf() {
 
 #[test]
 fn obj_index_out_of_range() {
-    assert_line(&error("obj_index_out_of_range.obj"), "obj_index_out_of_range.obj", 5, &["vertex index 5 out of range (3 vertices so far)"]);
+    assert_line(
+        &error("obj_index_out_of_range.obj"),
+        "obj_index_out_of_range.obj",
+        5,
+        &["vertex index 5 out of range (3 vertices so far)"],
+    );
 }
 
 #[test]
@@ -210,16 +217,48 @@ fn gltf_meshopt() {
 }
 
 #[test]
+fn gltf_image_without_source() {
+    let e = error("gltf_image_without_source.gltf");
+    assert_element(&e, "gltf_image_without_source.gltf", "images[0]", &["neither uri nor bufferView"]);
+}
+
+#[test]
+fn gltf_missing_image_warns_or_fails_when_strict() {
+    let l = load("gltf_missing_image.gltf", false).unwrap();
+    let at = format!("{}: image 0 \"gone\": texture 'gone' not found", bad("gltf_missing_image.gltf").display());
+    assert!(l.warnings.iter().any(|w| w.starts_with(&at) && w.contains("nothere.png")), "{:?}", l.warnings);
+    assert_eq!(l.scene.materials[0].albedo_texture, None);
+    let e = load("gltf_missing_image.gltf", true).unwrap_err();
+    assert_element(&e, "gltf_missing_image.gltf", "image 0 \"gone\"", &["not found", "nothere.png"]);
+}
+
+#[test]
+fn gltf_camera_without_projection() {
+    let e = error("gltf_camera_without_projection.gltf");
+    assert_element(&e, "gltf_camera_without_projection.gltf", "cameras[0]", &["projection"]);
+}
+
+#[test]
 fn gltf_sparse() {
     let e = error("gltf_sparse.gltf");
     assert!(matches!(e, SceneError::Unsupported { .. }), "{e:?}");
-    assert_element(&e, "gltf_sparse.gltf", "mesh 0 \"Q\", primitive 0, accessor 0 (POSITION)", &["a sparse accessor is not supported"]);
+    assert_element(
+        &e,
+        "gltf_sparse.gltf",
+        "mesh 0 \"Q\", primitive 0, accessor 0 (POSITION)",
+        &["a sparse accessor is not supported"],
+    );
 }
 
 #[test]
 fn gltf_index_out_of_range() {
     let e = error("gltf_index_out_of_range.gltf");
-    assert_element(&e, "gltf_index_out_of_range.gltf", "mesh 0 \"Q\", primitive 0, accessor 5 (indices)", &["index 7", "4 vertices"]);
+    assert_element(
+        &e,
+        "gltf_index_out_of_range.gltf",
+        "mesh 0 \"Q\", primitive 0, accessor 5 (indices)",
+        &["index 7", "4 vertices"],
+    );
 }
 
 #[test]
@@ -231,13 +270,23 @@ fn gltf_wrong_accessor_type() {
 #[test]
 fn gltf_accessor_overrun() {
     let e = error("gltf_accessor_overrun.gltf");
-    assert_element(&e, "gltf_accessor_overrun.gltf", "mesh 0 \"Q\", primitive 0, accessor 0 (POSITION)", &["400 elements", "run past"]);
+    assert_element(
+        &e,
+        "gltf_accessor_overrun.gltf",
+        "mesh 0 \"Q\", primitive 0, accessor 0 (POSITION)",
+        &["400 elements", "run past"],
+    );
 }
 
 #[test]
 fn gltf_nan_position() {
     let e = error("gltf_nan_position.gltf");
-    assert_element(&e, "gltf_nan_position.gltf", "mesh 0 \"Q\", primitive 0, accessor 5 (POSITION)", &["element 1 is not finite"]);
+    assert_element(
+        &e,
+        "gltf_nan_position.gltf",
+        "mesh 0 \"Q\", primitive 0, accessor 5 (POSITION)",
+        &["element 1 is not finite"],
+    );
 }
 
 #[test]
@@ -255,7 +304,12 @@ fn gltf_node_cycle() {
 #[test]
 fn gltf_normal_count() {
     let e = error("gltf_normal_count.gltf");
-    assert_element(&e, "gltf_normal_count.gltf", "mesh 0 \"Q\", primitive 0, accessor 1 (NORMAL)", &["3 elements, but POSITION has 4"]);
+    assert_element(
+        &e,
+        "gltf_normal_count.gltf",
+        "mesh 0 \"Q\", primitive 0, accessor 1 (NORMAL)",
+        &["3 elements, but POSITION has 4"],
+    );
 }
 
 #[test]
@@ -302,11 +356,82 @@ fn no_bad_file_panics() {
     let mut panicked = Vec::new();
     for f in &files {
         for strict in [false, true] {
-            let r = std::panic::catch_unwind(|| scene::load(f, &LoadOptions { strict }).map(|l| l.scene.triangles.len()));
+            let r =
+                std::panic::catch_unwind(|| scene::load(f, &LoadOptions { strict }).map(|l| l.scene.triangles.len()));
             if r.is_err() {
                 panicked.push(format!("{} (strict {strict})", f.display()));
             }
         }
     }
     assert!(panicked.is_empty(), "panicked on: {panicked:?}");
+}
+
+/// Deterministic random edits of good files (bytes flipped, ranges dropped or repeated,
+/// numbers swapped for `0`, `-9`, `nan`, `1e40`...): each load is an error or a scene, never a
+/// panic.
+#[test]
+fn mutated_files_never_panic() {
+    let dir = std::env::temp_dir().join(format!("bidir-scene-mutations-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    let originals = [
+        ("room.obj", std::fs::read(good.join("room/room.obj")).unwrap()),
+        ("room.mtl", std::fs::read(good.join("room/room.mtl")).unwrap()),
+        ("instanced.gltf", std::fs::read(good.join("gltf/instanced.gltf")).unwrap()),
+        ("instanced.glb", std::fs::read(good.join("gltf/instanced.glb")).unwrap()),
+    ];
+    // The room's textures next to the mutated files, so texture decoding is exercised too.
+    for t in ["floor_d.tga", "leaf.png", "mask_grey.png"] {
+        std::fs::copy(good.join("room").join(t), dir.join(t)).unwrap();
+    }
+    std::fs::copy(good.join("gltf/instanced.bin"), dir.join("instanced.bin")).unwrap();
+    const TOKENS: [&[u8]; 9] = [b"0", b"-9", b"nan", b"1e40", b"/", b" ", b"\n", b"99999999999", b"\""];
+    // More rounds or another seed: BIDIR_MUTATION_ROUNDS, BIDIR_MUTATION_SEED.
+    let env = |k: &str, d: u64| std::env::var(k).ok().and_then(|v| v.parse().ok()).unwrap_or(d);
+    let rounds = env("BIDIR_MUTATION_ROUNDS", 150);
+    let mut rng = common::Pcg::new(env("BIDIR_MUTATION_SEED", 1234));
+    let mut panicked = Vec::new();
+    for (name, original) in &originals {
+        for round in 0..rounds {
+            let mut bytes = original.clone();
+            for _ in 0..1 + rng.below(4) {
+                let len = bytes.len() as u32;
+                let at = rng.below(len) as usize;
+                match rng.below(4) {
+                    0 => bytes[at] ^= 1 << rng.below(8),
+                    1 => {
+                        let n = (rng.below(16) as usize).min(bytes.len() - at);
+                        bytes.drain(at..at + n);
+                    }
+                    2 => {
+                        let n = (rng.below(32) as usize).min(bytes.len() - at);
+                        let copy = bytes[at..at + n].to_vec();
+                        bytes.splice(at..at, copy);
+                    }
+                    _ => {
+                        let t = TOKENS[rng.below(TOKENS.len() as u32) as usize];
+                        bytes.splice(at..at, t.iter().copied());
+                    }
+                }
+            }
+            // The OBJ loads its unmodified library and vice versa.
+            for (f, b) in [("room.obj", &originals[0].1), ("room.mtl", &originals[1].1)] {
+                std::fs::write(dir.join(f), b).unwrap();
+            }
+            std::fs::write(dir.join(name), &bytes).unwrap();
+            let target = dir.join(if *name == "room.mtl" { "room.obj" } else { name });
+            for strict in [false, true] {
+                let r = std::panic::catch_unwind(|| {
+                    scene::load(&target, &LoadOptions { strict }).map(|l| l.scene.triangles.len())
+                });
+                if r.is_err() {
+                    let keep = dir.join(format!("panic-{round}-{name}"));
+                    std::fs::write(&keep, &bytes).unwrap();
+                    panicked.push(keep.display().to_string());
+                }
+            }
+        }
+    }
+    assert!(panicked.is_empty(), "panicked on (inputs kept): {panicked:?}");
+    std::fs::remove_dir_all(&dir).ok();
 }

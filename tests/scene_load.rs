@@ -123,7 +123,10 @@ fn room_with_thesis_keys() {
     assert!((lum - scene::luminance(want)).abs() < 1e-4);
 
     let (_, half) = material(s, "HalfMirror");
-    assert_eq!((half.albedo, half.reflectivity, half.refractivity, half.ior), (Vec3::new(0.5, 0.25, 0.125), 0.3, 0.2, 1.2));
+    assert_eq!(
+        (half.albedo, half.reflectivity, half.refractivity, half.ior),
+        (Vec3::new(0.5, 0.25, 0.125), 0.3, 0.2, 1.2)
+    );
     let (_, old) = material(s, "OldGlass");
     assert_eq!((old.reflectivity, old.refractivity, old.ior), (0.0, 1.0, 1.33));
     let (_, chrome) = material(s, "Chrome");

@@ -51,11 +51,7 @@ pub(crate) struct Builder {
 
 impl Builder {
     pub fn new(with_normals: bool, with_uvs: bool) -> Self {
-        Builder {
-            normals: with_normals.then(Vec::new),
-            uvs: with_uvs.then(Vec::new),
-            ..Default::default()
-        }
+        Builder { normals: with_normals.then(Vec::new), uvs: with_uvs.then(Vec::new), ..Default::default() }
     }
 
     pub fn reserve(&mut self, vertices: usize, triangles: usize) {

@@ -135,7 +135,11 @@ pub fn fmt_vec(v: Vec3) -> String {
     let f = |x: f32| {
         let s = format!("{x:.4}");
         let s = s.trim_end_matches('0').trim_end_matches('.');
-        if s == "-0" { "0".to_owned() } else { s.to_owned() }
+        if s == "-0" {
+            "0".to_owned()
+        } else {
+            s.to_owned()
+        }
     };
     format!("({}, {}, {})", f(v.x), f(v.y), f(v.z))
 }
@@ -175,7 +179,8 @@ mod tests {
 
     #[test]
     fn gltf_camera_looks_down_minus_z_and_keeps_1080_rows() {
-        let world = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0)) * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2);
+        let world =
+            Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0)) * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2);
         let c = Camera::from_gltf("c".into(), world, 0.5, Some(2.0));
         assert!((c.eye - Vec3::new(1.0, 2.0, 3.0)).length() < 1e-6);
         // -Z rotated 90° about +Y is -X.

@@ -70,7 +70,8 @@ pub struct Scene {
     pub positions: Vec<Vec3>,
     /// Per-vertex unit shading normals, only where the file has them. When only part of a
     /// scene has normals, the rest gets its flat face normal (on unshared vertices), so a
-    /// kernel never mixes "has normals" and "has none".
+    /// kernel never mixes "has normals" and "has none". A zero-length normal in a file stays
+    /// zero: kernels fall back to the geometric normal when the interpolated one degenerates.
     pub normals: Option<Vec<Vec3>>,
     /// Per-vertex texture coordinates, only where the file has them. (0, 0) is the top-left
     /// corner of a texture (glTF's convention; OBJ's `v` is flipped on load).

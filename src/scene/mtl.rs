@@ -57,8 +57,9 @@ pub(crate) struct MtlEntry {
 /// Keys read but not part of the material model: ignored without a word.
 const IGNORED: &[&str] = &["ka", "ks", "ns", "tf", "sharpness", "map_ka"];
 /// Texture maps the model cannot use: one warning per key.
-const UNSUPPORTED_MAPS: &[&str] =
-    &["map_ks", "map_ns", "map_ke", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl", "map_pr", "map_pm"];
+const UNSUPPORTED_MAPS: &[&str] = &[
+    "map_ks", "map_ns", "map_ke", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl", "map_pr", "map_pm",
+];
 
 pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<MtlEntry>, SceneError> {
     let mut out: Vec<MtlEntry> = Vec::new();
@@ -82,7 +83,9 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             continue;
         }
         let Some(m) = out.last_mut() else {
-            w.warn_once("mtl-before-newmtl", || format!("{}:{line}: `{key}` before any `newmtl` ignored", file.display()));
+            w.warn_once("mtl-before-newmtl", || {
+                format!("{}:{line}: `{key}` before any `newmtl` ignored", file.display())
+            });
             continue;
         };
         match key_lc.as_str() {
@@ -129,7 +132,10 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             }
             k if IGNORED.contains(&k) => {}
             k if UNSUPPORTED_MAPS.contains(&k) => w.warn_once(&format!("mtl-map-{k}"), || {
-                format!("{}:{line}: `{key}` is not supported (bidir has no bump, specular or normal maps); ignored", file.display())
+                format!(
+                    "{}:{line}: `{key}` is not supported (bidir has no bump, specular or normal maps); ignored",
+                    file.display()
+                )
             }),
             _ => w.warn_once(&format!("mtl-key-{key_lc}"), || {
                 format!("{}:{line}: unknown MTL key `{key}` ignored", file.display())
@@ -192,9 +198,7 @@ fn texture_name(
             i += 1;
             taken += 1;
         }
-        w.warn_once("mtl-texture-options", || {
-            format!("{}:{line}: texture option `{opt}` ignored", file.display())
-        });
+        w.warn_once("mtl-texture-options", || format!("{}:{line}: texture option `{opt}` ignored", file.display()));
     }
     let name = args[i.min(args.len())..].join(" ");
     if name.is_empty() {

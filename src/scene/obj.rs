@@ -105,7 +105,12 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
     for (k, (lib, e)) in entries.iter().enumerate() {
         match by_name.get(&e.name) {
             Some(&m) => {
-                w.warn(format!("{}:{}: material '{}' defined again; the later definition wins", lib.display(), e.line, e.name));
+                w.warn(format!(
+                    "{}:{}: material '{}' defined again; the later definition wins",
+                    lib.display(),
+                    e.line,
+                    e.name
+                ));
                 defs[m] = k;
             }
             None => {
@@ -194,7 +199,13 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
         let triangles: Vec<[u32; 3]> = mesh.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
         let material = material_of(mesh.material_id, &mut materials);
         b.push(
-            &Part { positions: &positions, normals: normals.as_deref(), uvs: uvs.as_deref(), triangles: &triangles, material },
+            &Part {
+                positions: &positions,
+                normals: normals.as_deref(),
+                uvs: uvs.as_deref(),
+                triangles: &triangles,
+                material,
+            },
             None,
         );
     }

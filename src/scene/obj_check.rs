@@ -59,7 +59,9 @@ pub(crate) fn check(file: &Path, text: &str, w: &mut Warnings) -> Result<ObjChec
                         }
                         n[..3].iter().all(|x| (x / n[3]).is_finite())
                     }
-                    k => return Err(err(format!("a vertex needs 3 coordinates (plus w, or r g b); found {k} numbers"))),
+                    k => {
+                        return Err(err(format!("a vertex needs 3 coordinates (plus w, or r g b); found {k} numbers")))
+                    }
                 };
                 if !pos_ok {
                     return Err(err("vertex coordinate is not finite".into()));
@@ -205,7 +207,10 @@ mod tests {
 
     #[test]
     fn accepts_valid_statements() {
-        let c = run("# c\nv 0 0 0\nv 1 0 0 1\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\nf -3 -2 -1\nf 1//1 2//1 3//1\n").unwrap();
+        let c = run(
+            "# c\nv 0 0 0\nv 1 0 0 1\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\nf -3 -2 -1\nf 1//1 2//1 3//1\n",
+        )
+        .unwrap();
         assert_eq!((c.positions, c.texcoords, c.normals, c.faces), (3, 1, 1, 3));
         assert!(c.rewritten.is_none());
     }

@@ -213,12 +213,23 @@ mod tests {
 
     fn two_triangle_scene() -> Scene {
         Scene {
-            positions: vec![Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 3.0, 0.0), Vec3::new(9.0, 9.0, 9.0), Vec3::splat(-50.0)],
+            positions: vec![
+                Vec3::ZERO,
+                Vec3::new(2.0, 0.0, 0.0),
+                Vec3::new(0.0, 3.0, 0.0),
+                Vec3::new(9.0, 9.0, 9.0),
+                Vec3::splat(-50.0),
+            ],
             triangles: vec![[0, 1, 2], [0, 2, 1]],
             material_ids: vec![0, 1],
             materials: vec![
                 Material::default(),
-                Material { emission: Vec3::new(1.0, 2.0, 0.0), reflectivity: 0.25, refractivity: 0.75, ..Default::default() },
+                Material {
+                    emission: Vec3::new(1.0, 2.0, 0.0),
+                    reflectivity: 0.25,
+                    refractivity: 0.75,
+                    ..Default::default()
+                },
             ],
             ..Default::default()
         }
@@ -247,7 +258,10 @@ mod tests {
     fn counts_components_and_bytes() {
         let s = two_triangle_scene();
         let c = s.material_counts();
-        assert_eq!(c, MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, emissive: 1, alpha_masked: 0, textured: 0 });
+        assert_eq!(
+            c,
+            MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, emissive: 1, alpha_masked: 0, textured: 0 }
+        );
         let g = s.gpu_bytes_estimate();
         assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 128));
         assert_eq!(g.total(), 240);

@@ -41,9 +41,15 @@ pub(crate) enum Role {
 pub(crate) enum Source<'a> {
     File(PathBuf),
     /// Bytes inside a glTF buffer, with the declared MIME type.
-    Memory { bytes: &'a [u8], mime: Option<String> },
+    Memory {
+        bytes: &'a [u8],
+        mime: Option<String>,
+    },
     /// Bytes decoded from a `data:` URI.
-    Owned { bytes: Vec<u8>, mime: Option<String> },
+    Owned {
+        bytes: Vec<u8>,
+        mime: Option<String>,
+    },
 }
 
 /// One texture a material asked for.
@@ -110,7 +116,12 @@ impl<'a> Requests<'a> {
                                     msg: format!("image '{}' not found (looked for {})", req.name, path.display()),
                                 },
                             },
-                            format!("{}: texture '{}' not found (looked for {}); using none", req.at, req.name, path.display()),
+                            format!(
+                                "{}: texture '{}' not found (looked for {}); using none",
+                                req.at,
+                                req.name,
+                                path.display()
+                            ),
                         ),
                         Failure::Bad(why) => (
                             SceneError::Texture {
@@ -145,7 +156,8 @@ impl Decoded {
     pub fn apply(&self, materials: &mut [Material]) {
         for m in materials {
             m.albedo_texture = m.albedo_texture.and_then(|t| self.remap[t as usize]);
-            m.alpha = m.alpha.and_then(|a| self.remap[a.texture as usize].map(|t| super::AlphaMask { texture: t, ..a }));
+            m.alpha =
+                m.alpha.and_then(|a| self.remap[a.texture as usize].map(|t| super::AlphaMask { texture: t, ..a }));
         }
     }
 }

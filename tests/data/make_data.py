@@ -299,5 +299,28 @@ def requires_meshopt(doc, buf, a):
 
 
 bad("gltf_meshopt.gltf", requires_meshopt)
+
+
+def image_without_source(doc, buf, a):
+    doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    doc["meshes"][0]["primitives"][0]["material"] = 0
+    doc["textures"] = [{"source": 0}]
+    doc["images"] = [{"name": "nowhere", "mimeType": "image/png"}]
+
+
+def camera_without_projection(doc, buf, a):
+    doc["cameras"] = [{"type": "perspective", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}}]
+    doc["nodes"].append({"camera": 0})
+    doc["scenes"][0]["nodes"].append(1)
+
+
+def missing_image(doc, buf, a):
+    image_without_source(doc, buf, a)
+    doc["images"] = [{"name": "gone", "uri": "nothere.png"}]
+
+
+bad("gltf_image_without_source.gltf", image_without_source)
+bad("gltf_missing_image.gltf", missing_image)
+bad("gltf_camera_without_projection.gltf", camera_without_projection)
 with open(path("bad", "glb_truncated.glb"), "rb+") as f:
     f.truncate(60)

@@ -69,8 +69,9 @@ pub(super) fn load_buffers(
             }
             ::gltf::buffer::Source::Uri(uri) => match resolve(uri, base).map_err(&err)? {
                 Uri::Data(d) => d,
-                Uri::File(path) => std::fs::read(&path)
-                    .map_err(|e| err(format!("cannot read '{uri}' ({}): {e}", path.display())))?,
+                Uri::File(path) => {
+                    std::fs::read(&path).map_err(|e| err(format!("cannot read '{uri}' ({}): {e}", path.display())))?
+                }
             },
         };
         if data.len() < buffer.length() {
@@ -97,7 +98,9 @@ mod tests {
     fn uris() {
         let base = Path::new("/scenes");
         assert!(matches!(resolve("tex/a%20b.png", base), Ok(Uri::File(p)) if p == Path::new("/scenes/tex/a b.png")));
-        assert!(matches!(resolve("data:application/octet-stream;base64,AAEC", base), Ok(Uri::Data(d)) if d[..3] == [0, 1, 2]));
+        assert!(
+            matches!(resolve("data:application/octet-stream;base64,AAEC", base), Ok(Uri::Data(d)) if d[..3] == [0, 1, 2])
+        );
         assert!(resolve("https://example.com/a.bin", base).is_err());
         assert!(resolve("data:application/octet-stream;base64,@@@", base).is_err());
     }

@@ -56,7 +56,8 @@ pub(super) fn convert<'a>(
             }
             None => None,
         };
-        let reflectivity = if pbr.metallic_factor() >= 1.0 && pbr.roughness_factor() <= MIRROR_ROUGHNESS { 1.0 } else { 0.0 };
+        let reflectivity =
+            if pbr.metallic_factor() >= 1.0 && pbr.roughness_factor() <= MIRROR_ROUGHNESS { 1.0 } else { 0.0 };
         if pbr.metallic_roughness_texture().is_some() {
             unsupported(w, "metallicRoughnessTexture");
         }
@@ -64,8 +65,11 @@ pub(super) fn convert<'a>(
         if transmission.as_ref().is_some_and(|t| t.transmission_texture().is_some()) {
             unsupported(w, "transmissionTexture");
         }
-        let refractivity =
-            if reflectivity > 0.0 { 0.0 } else { transmission.map_or(0.0, |t| t.transmission_factor()).clamp(0.0, 1.0) };
+        let refractivity = if reflectivity > 0.0 {
+            0.0
+        } else {
+            transmission.map_or(0.0, |t| t.transmission_factor()).clamp(0.0, 1.0)
+        };
         let emission = Vec3::from(m.emissive_factor()) * m.emissive_strength().unwrap_or(1.0);
         if m.emissive_texture().is_some() {
             unsupported(w, "emissiveTexture (emissiveFactor alone is used)");
@@ -107,7 +111,11 @@ pub(super) fn convert<'a>(
             alpha,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
-        if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {
+        if !finite
+            || material.albedo.min_element() < 0.0
+            || material.emission.min_element() < 0.0
+            || material.ior <= 0.0
+        {
             return Err(SceneError::Gltf {
                 file: file.to_path_buf(),
                 element,
@@ -130,13 +138,13 @@ fn image_request<'a>(
 ) -> Result<Option<u32>, SceneError> {
     let index = image.index();
     let label = image.name().map(str::to_owned);
-    let at = format!("{}: image {index}{}", file.display(), label.as_ref().map_or(String::new(), |n| format!(" \"{n}\"")));
+    let at =
+        format!("{}: image {index}{}", file.display(), label.as_ref().map_or(String::new(), |n| format!(" \"{n}\"")));
     let source = match image.source() {
         ::gltf::image::Source::View { view, mime_type } => {
             let start = view.offset();
-            let bytes = buffers
-                .get(view.buffer().index())
-                .and_then(|b| b.get(start..start.checked_add(view.length())?));
+            let bytes =
+                buffers.get(view.buffer().index()).and_then(|b| b.get(start..start.checked_add(view.length())?));
             match bytes {
                 Some(bytes) => Source::Memory { bytes, mime: Some(mime_type.to_owned()) },
                 None => {
@@ -159,7 +167,9 @@ fn image_request<'a>(
     };
     let name = match (&label, &source) {
         (Some(n), _) => n.clone(),
-        (None, Source::File(p)) => p.file_name().map_or_else(|| format!("image {index}"), |f| f.to_string_lossy().into_owned()),
+        (None, Source::File(p)) => {
+            p.file_name().map_or_else(|| format!("image {index}"), |f| f.to_string_lossy().into_owned())
+        }
         _ => format!("image {index}"),
     };
     Ok(Some(requests.request(format!("image {index}"), Role::Colour, || Request {

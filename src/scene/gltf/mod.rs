@@ -46,7 +46,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         ::gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| gerr("file", e.to_string()))?;
     drop(bytes);
     let relaxed = check_extensions(file, &document, &mut w)?;
-    check_position_references(file, &document)?;
+    check_what_validation_misses(file, &document)?;
     let mut json = document.into_json();
     json.extensions_required.retain(|e| !relaxed.contains(e));
     let doc = Document::from_json(json).map_err(|e| match e {
@@ -68,9 +68,9 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     let (geometry, decoded) = std::thread::scope(|s| {
         let decoder = s.spawn(|| requests.decode(opts.strict, &mut tex_warnings));
         let geometry = geometry(file, &doc, &buffers, default_material, &mut w);
-        let decoded = decoder
-            .join()
-            .unwrap_or_else(|_| Err(SceneError::Parse { file: file.to_path_buf(), msg: "texture decoding failed".into() }));
+        let decoded = decoder.join().unwrap_or_else(|_| {
+            Err(SceneError::Parse { file: file.to_path_buf(), msg: "texture decoding failed".into() })
+        });
         (geometry, decoded)
     });
     let (b, cameras, used_default) = geometry?;
@@ -129,7 +129,11 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
             "KHR_mesh_quantization" => "quantized vertex attributes (KHR_mesh_quantization)".to_owned(),
             _ => format!("the required extension {ext}"),
         };
-        return Err(SceneError::Unsupported { file: file.to_path_buf(), element: format!("extensionsRequired[{i}]"), what });
+        return Err(SceneError::Unsupported {
+            file: file.to_path_buf(),
+            element: format!("extensionsRequired[{i}]"),
+            what,
+        });
     }
     for ext in json.extensions_used.iter().chain(&relaxed) {
         if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
@@ -147,22 +151,46 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
     Ok(relaxed)
 }
 
-/// The `gltf` crate's validation indexes the POSITION accessor without a bounds check (a
-/// panic on a dangling reference), so that reference is checked first.
-fn check_position_references(file: &Path, doc: &Document) -> Result<(), SceneError> {
+/// What the `gltf` crate's validation lets through but its accessors then `unwrap` (a panic):
+/// a dangling POSITION reference (its validation indexes it unchecked), an image with neither
+/// `uri` nor `bufferView` + `mimeType`, a camera whose `type` names a projection it lacks.
+fn check_what_validation_misses(file: &Path, doc: &Document) -> Result<(), SceneError> {
+    use ::gltf::json::camera::Type;
     use ::gltf::json::{mesh::Semantic as S, validation::Checked};
+    let err = |element: String, msg: String| Err(SceneError::Gltf { file: file.to_path_buf(), element, msg });
     let json = doc.as_json();
     for (mi, mesh) in json.meshes.iter().enumerate() {
         for (pi, prim) in mesh.primitives.iter().enumerate() {
             if let Some(acc) = prim.attributes.get(&Checked::Valid(S::Positions)) {
                 if acc.value() >= json.accessors.len() {
-                    return Err(SceneError::Gltf {
-                        file: file.to_path_buf(),
-                        element: format!("meshes[{mi}].primitives[{pi}].attributes[\"POSITION\"]"),
-                        msg: format!("invalid: accessor {} does not exist ({} accessors)", acc.value(), json.accessors.len()),
-                    });
+                    return err(
+                        format!("meshes[{mi}].primitives[{pi}].attributes[\"POSITION\"]"),
+                        format!(
+                            "invalid: accessor {} does not exist ({} accessors)",
+                            acc.value(),
+                            json.accessors.len()
+                        ),
+                    );
                 }
             }
+        }
+    }
+    for (i, img) in json.images.iter().enumerate() {
+        if img.buffer_view.is_some() && img.mime_type.is_none() {
+            return err(format!("images[{i}]"), "invalid: an image in a bufferView needs a mimeType".into());
+        }
+        if img.buffer_view.is_none() && img.uri.is_none() {
+            return err(format!("images[{i}]"), "invalid: neither uri nor bufferView".into());
+        }
+    }
+    for (i, cam) in json.cameras.iter().enumerate() {
+        let missing = match cam.type_ {
+            Checked::Valid(Type::Perspective) => cam.perspective.is_none(),
+            Checked::Valid(Type::Orthographic) => cam.orthographic.is_none(),
+            Checked::Invalid => false, // validation reports it
+        };
+        if missing {
+            return err(format!("cameras[{i}]"), "invalid: the projection its type names is missing".into());
         }
     }
     Ok(())
@@ -227,15 +255,15 @@ fn geometry(
             instances.push((mesh.index(), world));
         }
         if node.skin().is_some() {
-            w.warn_once("gltf-skin", || format!("{}: {}: skins are not supported; the bind pose is used", file.display(), element()));
+            w.warn_once("gltf-skin", || {
+                format!("{}: {}: skins are not supported; the bind pose is used", file.display(), element())
+            });
         }
         if let Some(cam) = node.camera() {
             match cam.projection() {
                 ::gltf::camera::Projection::Perspective(p) => {
-                    let name = node
-                        .name()
-                        .or(cam.name())
-                        .map_or_else(|| format!("camera {}", cam.index()), str::to_owned);
+                    let name =
+                        node.name().or(cam.name()).map_or_else(|| format!("camera {}", cam.index()), str::to_owned);
                     cameras.push(Camera::from_gltf(name, world, p.yfov(), p.aspect_ratio()));
                 }
                 ::gltf::camera::Projection::Orthographic(_) => w.warn_once("gltf-ortho", || {
