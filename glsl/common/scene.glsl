@@ -118,6 +118,25 @@ Surface surface_at(vec3 o, vec3 d, TraceHit h) {
     return s;
 }
 
+// Whether the segment between surface points a and b (geometric normals na, nb facing the
+// segment) is unoccluded. Both ends are offset off their surfaces; the far end is then
+// approached only up to a bound on the rounding of o + t d at that distance (32 ulps of the
+// largest coordinate involved), so the target's own surface never counts as an occluder —
+// the offset alone is too small there when b lies near a coordinate plane through the
+// origin (offset_ray_origin's absolute branch) and the ray comes from far away.
+bool visible_between(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
+    vec3 o = offset_ray_origin(a, na);
+    vec3 target = offset_ray_origin(b, nb);
+    vec3 v = target - o;
+    float len = length(v);
+    vec3 m = max(abs(o), abs(target));
+    float slack = max(m.x, max(m.y, m.z)) * (32.0 / 8388608.0);
+    if (len <= slack) {
+        return true;
+    }
+    return trace_ray(o, v / len, 0.0, len - slack, true, stats).prim == NO_HIT;
+}
+
 vec3 material_albedo(GpuMaterial m, vec2 uv) {
     vec3 a = m.albedo.rgb;
     if (HAS_TEXTURES != 0u && m.tex.x != 0u) {

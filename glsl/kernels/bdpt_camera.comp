@@ -21,14 +21,6 @@ layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { BdptPush pc; };
 
-bool visible(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
-    vec3 o = offset_ray_origin(a, na);
-    vec3 target = offset_ray_origin(b, nb);
-    vec3 v = target - o;
-    float len = length(v);
-    return trace_ray(o, v / len, 0.0, len, true, stats).prim == NO_HIT;
-}
-
 // Connection of camera vertex (p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc) to light vertex y.
 vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_in, float pd, vec3 f, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
     vec3 v = y.pos.xyz - p;
@@ -49,7 +41,7 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_in, float pd, vec3 f, float
     float w_camera = mis(light_dir_pdf_a) * (d_vcm + d_vc * mis(cam_rev_pdf_w));
     float g = cos_c * cos_y / dist2;
     vec3 contrib = f * y.beta_f.rgb * (g / (w_light + 1.0 + w_camera));
-    if (max3(contrib) <= 0.0 || !visible(p, ng_f, y.pos.xyz, y.ng.xyz, stats)) {
+    if (max3(contrib) <= 0.0 || !visible_between(p, ng_f, y.pos.xyz, y.ng.xyz, stats)) {
         return vec3(0.0);
     }
     return contrib;
@@ -118,7 +110,7 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
                     float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
                     float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * f * ls.le * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
-                    if (max3(c) > 0.0 && visible(s.p, ng_f, ls.p, ls.n, stats)) {
+                    if (max3(c) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
                         radiance += c;
                     }
                 }

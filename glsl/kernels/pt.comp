@@ -82,23 +82,17 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             // Next-event estimation: an emitter point by power, one shadow ray.
             if (NEE != 0u && pc.emitter_count > 0u && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
                 LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
-                vec3 to_l = ls.p - p_off;
+                vec3 to_l = ls.p - s.p;
                 float dist2 = dot(to_l, to_l);
                 float dist = sqrt(dist2);
                 vec3 wi = to_l / dist;
                 float cos_s = dot(wi, ns_f);
                 float cos_l = -dot(wi, ls.n);
-                if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0) {
-                    vec3 target = offset_ray_origin(ls.p, ls.n);
-                    vec3 to_t = target - p_off;
-                    float t_len = length(to_t);
-                    TraceHit sh = trace_ray(p_off, to_t / t_len, 0.0, t_len, true, stats);
-                    if (sh.prim == NO_HIT) {
-                        float pdf_light_w = light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
-                        float pdf_bsdf_w = cos_s / PI;
-                        float w = power_heuristic(pdf_light_w, pdf_bsdf_w);
-                        radiance += throughput * (albedo / PI) * ls.le * (cos_s * w / pdf_light_w);
-                    }
+                if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
+                    float pdf_light_w = light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
+                    float pdf_bsdf_w = cos_s / PI;
+                    float w = power_heuristic(pdf_light_w, pdf_bsdf_w);
+                    radiance += throughput * (albedo / PI) * ls.le * (cos_s * w / pdf_light_w);
                 }
             }
             // Cosine-weighted continuation: f cos / pdf_w = albedo.

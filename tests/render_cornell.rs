@@ -1,0 +1,94 @@
+//! The Cornell box against the converged reference (`../shared/references/cornell-box`):
+//! every integrator and join at 256 spp must match the mean of each channel within 1 % and
+//! every 32x32 block mean within 4 %; integrators must agree with each other the same way.
+//! Skipped with a message when the reference is absent.
+
+mod common;
+
+use bidir::film::{metrics, read_exr, RgbImage};
+use bidir::render::{Integrator, Join, RenderSettings, Renderer};
+use bidir::scene::Scene;
+use common::{finish, gpu};
+use std::path::Path;
+use std::sync::OnceLock;
+
+const REFERENCE: &str = "../shared/references/cornell-box/reference.exr";
+const SPP: u32 = 256;
+
+fn reference() -> Option<RgbImage> {
+    if !Path::new(REFERENCE).exists() {
+        eprintln!("skipping: {REFERENCE} is absent");
+        return None;
+    }
+    Some(read_exr(Path::new(REFERENCE)).expect("reference.exr reads"))
+}
+
+fn render(integrator: Integrator) -> RgbImage {
+    let ctx = gpu();
+    let scene = Scene::builtin_cornell_box();
+    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], RenderSettings::new(integrator)).unwrap();
+    r.render_spp(SPP, |_| {}).unwrap();
+    let img = r.image().unwrap();
+    assert_eq!(r.nan_samples().unwrap(), 0, "{}: NaN/Inf samples", integrator.name());
+    drop(r);
+    finish(ctx);
+    img
+}
+
+/// pt-nee is the yardstick the others are compared with; rendered once per test binary.
+fn pt_nee() -> &'static RgbImage {
+    static IMG: OnceLock<RgbImage> = OnceLock::new();
+    IMG.get_or_init(|| render(Integrator::PtNee))
+}
+
+/// Mean per channel within 1 %, every 32x32 block mean per channel within 4 %.
+fn assert_close(what: &str, a: &RgbImage, b: &RgbImage) {
+    let ratio = metrics::mean_ratio(a, b);
+    eprintln!("{what}: RMSE {:.5}, mean ratio {:.4} {:.4} {:.4}", metrics::rmse(a, b), ratio[0], ratio[1], ratio[2]);
+    for (c, r) in ratio.iter().enumerate() {
+        assert!((r - 1.0).abs() < 0.01, "{what}: channel {c} mean ratio {r:.4} is off by more than 1 %");
+    }
+    let (ba, bb) = (metrics::block_means(a, 32), metrics::block_means(b, 32));
+    let mut worst = 0.0f64;
+    for ((x, y, ma), (_, _, mb)) in ba.iter().zip(&bb) {
+        for c in 0..3 {
+            let rel = (ma[c] / mb[c] - 1.0).abs();
+            worst = worst.max(rel);
+            assert!(rel < 0.04, "{what}: block ({x}, {y}) channel {c}: {:.5} vs {:.5} ({:+.2} %)", ma[c], mb[c], 100.0 * (ma[c] / mb[c] - 1.0));
+        }
+    }
+    eprintln!("{what}: worst 32x32 block {:.2} %", 100.0 * worst);
+}
+
+#[test]
+fn pt_and_pt_nee_match_reference_and_each_other() {
+    let Some(reference) = reference() else { return };
+    let pt = render(Integrator::Pt);
+    assert_close("pt vs reference", &pt, &reference);
+    assert_close("pt-nee vs reference", pt_nee(), &reference);
+    assert_close("pt vs pt-nee", &pt, pt_nee());
+}
+
+#[test]
+fn bdpt_full_join_matches_reference_and_pt_nee() {
+    let Some(reference) = reference() else { return };
+    let img = render(Integrator::Bdpt(Join::Full));
+    assert_close("bdpt:full vs reference", &img, &reference);
+    assert_close("bdpt:full vs pt-nee", &img, pt_nee());
+}
+
+#[test]
+fn bdpt_k_step_join_matches_reference() {
+    let Some(reference) = reference() else { return };
+    let img = render(Integrator::Bdpt(Join::K(4)));
+    assert_close("bdpt:k=4 vs reference", &img, &reference);
+    assert_close("bdpt:k=4 vs pt-nee", &img, pt_nee());
+}
+
+#[test]
+fn bdpt_single_join_matches_reference() {
+    let Some(reference) = reference() else { return };
+    let img = render(Integrator::Bdpt(Join::K(1)));
+    assert_close("bdpt:single vs reference", &img, &reference);
+    assert_close("bdpt:single vs pt-nee", &img, pt_nee());
+}
