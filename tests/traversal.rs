@@ -162,3 +162,55 @@ fn cornell_box_matches_cpu_hit_for_hit() {
     }
     finish(ctx);
 }
+
+#[test]
+fn sponza_matches_cpu_hit_for_hit() {
+    let path = std::path::Path::new("../shared/scenes/sponza/Sponza.gltf");
+    if !path.exists() {
+        eprintln!("skipping: {} is absent", path.display());
+        return;
+    }
+    let loaded = bidir::scene::load(path, &Default::default()).expect("Sponza loads");
+    let scene = loaded.scene;
+    let cam = scene.cameras.iter().find(|c| c.name == "CameraMain").expect("CameraMain");
+    let g = bidir::trace::gpu_camera(cam);
+    let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions::default()).unwrap();
+    let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
+    let mut rng = Pcg::new(14);
+    // 100k camera rays through random image points, then from their hits: 50k segments to a
+    // point light above the atrium and 50k random directions.
+    let mut rays: Vec<GpuRay> = (0..100_000)
+        .map(|_| {
+            let (x, y) = (rng.next_f32() * 2.0 - 1.0, 1.0 - rng.next_f32() * 2.0);
+            ray(cam.eye, (g.forward + g.right * x + g.up * y).truncate().normalize(), 3.0e38)
+        })
+        .collect();
+    let light = Vec3::new(0.0, 40.0, 0.0);
+    let mut hits = Vec::new();
+    for r in &rays {
+        let (o, d) = (r.origin.truncate(), r.dir.truncate());
+        if let Some((t, h)) = cpu.closest(o, d, 0.0, 3.0e38) {
+            let [a, b, c] = scene.triangles[t as usize].map(|i| scene.positions[i as usize]);
+            let mut n = (b - a).cross(c - a).normalize();
+            if n.dot(d) > 0.0 {
+                n = -n;
+            }
+            hits.push(o + d * h.t + n * 1e-3);
+        }
+        if hits.len() == 100_000 {
+            break;
+        }
+    }
+    for (i, p) in hits.iter().enumerate() {
+        if i % 2 == 0 {
+            rays.push(ray(*p, (light - *p).normalize(), (light - *p).length()));
+        } else {
+            rays.push(ray(*p, geometry::random_unit(&mut rng), 3.0e38));
+        }
+    }
+    drop(cpu);
+    let ctx = gpu();
+    let (hit, miss) = check_scene(&ctx, "sponza", &scene.positions, &scene.triangles, &rays, BuildOptions::default());
+    assert!(hit > 50_000 && miss > 1_000);
+    finish(ctx);
+}
