@@ -68,12 +68,12 @@ fn furnace_pt_nee() {
 
 #[test]
 fn furnace_bdpt_full() {
-    check(Integrator::Bdpt(bidir::render::Join::Full), 0.5, 1.0, 16);
-    check(Integrator::Bdpt(bidir::render::Join::Full), 0.8, 0.25, 40);
+    check(Integrator::Bdpt(bidir::render::Join::Full), 0.5, 1.0, 24);
+    check(Integrator::Bdpt(bidir::render::Join::Full), 0.8, 0.25, 96);
 }
 
 #[test]
 fn furnace_bdpt_k_step_and_single() {
-    check(Integrator::Bdpt(bidir::render::Join::K(2)), 0.8, 0.25, 40);
-    check(Integrator::Bdpt(bidir::render::Join::K(1)), 0.5, 1.0, 16);
+    check(Integrator::Bdpt(bidir::render::Join::K(2)), 0.8, 0.25, 96);
+    check(Integrator::Bdpt(bidir::render::Join::K(1)), 0.5, 1.0, 24);
 }

@@ -41,7 +41,10 @@ fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]],
                     assert!((g.t - h.t).abs() <= 1e-6 * h.t.abs(), "{name} ray {i}: GPU triangle {gtri} t={}, CPU triangle {tri} t={}", g.t, h.t);
                     ties += 1;
                 } else {
-                    assert!((g.t - h.t).abs() <= 1e-6 * h.t.abs(), "{name} ray {i}: t GPU {} CPU {}", g.t, h.t);
+                    // Same triangle: t may differ by the GPU's division (Vulkan allows 2.5 ulp for
+                    // OpFDiv, NVIDIA uses it), amplified by cancellation in the edge-function sum
+                    // for hits close to the origin: seen 1.3e-6 relative on an H100.
+                    assert!((g.t - h.t).abs() <= 1e-5 * h.t.abs(), "{name} ray {i}: t GPU {} CPU {}", g.t, h.t);
                 }
                 hits += 1;
             }

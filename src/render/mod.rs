@@ -231,7 +231,8 @@ impl Renderer {
         self.pass(spp)?;
         let took = t.elapsed().as_secs_f64();
         let target = self.settings.pass_target.as_secs_f64();
-        let scale = (target / took.max(1e-6)).clamp(0.25, 4.0);
+        // Grow fast while passes are tiny (fast GPUs), cautiously near the target.
+        let scale = (target / took.max(1e-6)).clamp(0.25, if took < target / 16.0 { 16.0 } else { 4.0 });
         self.pass_spp = ((spp as f64 * scale) as u32).clamp(1, 4096);
         Ok(spp)
     }
