@@ -4,7 +4,7 @@
 
 mod common;
 
-use bidir::render::{Integrator, RenderSettings, Renderer};
+use bidir::render::{Integrator, RenderSettings, Renderer, Sampler};
 use bidir::scene::{Camera, Material, Scene};
 use common::{finish, geometry, gpu};
 use glam::Vec3;
@@ -34,9 +34,15 @@ pub fn furnace_scene(rho: f32, le: f32) -> Scene {
 }
 
 fn check(integrator: Integrator, rho: f32, le: f32, spp: u32) {
+    check_with(integrator, Sampler::Sobol, rho, le, spp)
+}
+
+fn check_with(integrator: Integrator, sampler: Sampler, rho: f32, le: f32, spp: u32) {
     let ctx = gpu();
     let scene = furnace_scene(rho, le);
-    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], RenderSettings::new(integrator)).unwrap();
+    let mut settings = RenderSettings::new(integrator);
+    settings.sampler = sampler;
+    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
     r.render_spp(spp, |_| {}).unwrap();
     let img = r.image().unwrap();
     assert_eq!(r.nan_samples().unwrap(), 0);
@@ -47,7 +53,7 @@ fn check(integrator: Integrator, rho: f32, le: f32, spp: u32) {
     // Pixels are independent estimates; channels are equal here, so count pixels only.
     let sigma = (var / (n / 3.0)).sqrt() / expect;
     let err = mean / expect - 1.0;
-    eprintln!("{} rho={rho} Le={le}: mean {mean:.5} expected {expect:.5} ({:+.3} %), 3 sigma {:.3} %", integrator.name(), err * 100.0, 300.0 * sigma);
+    eprintln!("{} {sampler:?} rho={rho} Le={le}: mean {mean:.5} expected {expect:.5} ({:+.3} %), 3 sigma {:.3} %", integrator.name(), err * 100.0, 300.0 * sigma);
     assert!(3.0 * sigma < 0.0025, "test too noisy to resolve 0.5 %: raise spp");
     assert!(err.abs() < 0.005, "{}: furnace mean {mean} vs {expect} ({:+.3} %)", integrator.name(), err * 100.0);
     drop(r);
@@ -58,6 +64,12 @@ fn check(integrator: Integrator, rho: f32, le: f32, spp: u32) {
 fn furnace_pt() {
     check(Integrator::Pt, 0.5, 1.0, 64);
     check(Integrator::Pt, 0.8, 0.25, 256);
+}
+
+#[test]
+fn furnace_independent_sampler() {
+    check_with(Integrator::PtNee, Sampler::Independent, 0.5, 1.0, 64);
+    check_with(Integrator::Bdpt(bidir::render::Join::Full), Sampler::Independent, 0.5, 1.0, 24);
 }
 
 #[test]

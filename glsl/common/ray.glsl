@@ -40,6 +40,19 @@ vec3 sample_cosine_hemisphere(vec3 n, float u1, float u2) {
     return normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(max(0.0, 1.0 - u1)) * n);
 }
 
+// Invocation index -> pixel, in 8x8 tiles (row-major tiles, row-major within a tile), so a
+// subgroup of 32 covers an 8x4 block: neighbouring lanes trace neighbouring rays, which keeps
+// traversal coherent. Dispatch tiled_invocations(size) invocations; `valid` is false for the
+// parts of edge tiles outside the image.
+uvec2 tiled_pixel(uint i, uvec2 size, out bool valid) {
+    uint tiles_x = (size.x + 7u) / 8u;
+    uint tile = i / 64u;
+    uint within = i % 64u;
+    uvec2 p = uvec2((tile % tiles_x) * 8u + within % 8u, (tile / tiles_x) * 8u + within / 8u);
+    valid = p.x < size.x && p.y < size.y;
+    return p;
+}
+
 // Primary ray direction through image position `p` (pixels, row 0 on top) of camera `cam`.
 vec3 camera_direction(GpuCamera cam, vec2 p) {
     vec2 ndc = vec2(2.0 * p.x / float(cam.size.x) - 1.0, 1.0 - 2.0 * p.y / float(cam.size.y));

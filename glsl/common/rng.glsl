@@ -1,6 +1,15 @@
-// Counter-based random numbers: a PCG-style hash of (index, sample, seed), no state in memory.
+// Random numbers for the integrators, a value per (pixel or path, sample index, dimension):
+// - independent (SAMPLER_INDEPENDENT): a PCG-style hash chain, no state in memory;
+// - Owen-scrambled Sobol' (SAMPLER_SOBOL): Burley 2020, "Practical Hash-based Owen
+//   Scrambling" — dimensions in groups of four, each group with its own per-pixel index
+//   shuffle and value scramble, so every dimension stays uniform (unbiased) and each group
+//   keeps Sobol's stratification across a pixel's samples.
 #ifndef BIDIR_RNG_GLSL
 #define BIDIR_RNG_GLSL
+
+#include "bidir_sobol.glsl"
+
+layout(constant_id = SPEC_SAMPLER) const uint SAMPLER = SAMPLER_INDEPENDENT;
 
 // PCG hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering"): one 32-bit LCG step
 // and an output permutation.
@@ -11,15 +20,46 @@ uint pcg_hash(uint v) {
 }
 
 struct Rng {
-    uint state;
+    uint state;   // independent: hash chain; Sobol: per-pixel seed
+    uint index;   // Sobol: sample index
+    uint dim;     // Sobol: next dimension
 };
 
-Rng rng_init(uint a, uint b, uint c) {
-    return Rng(pcg_hash(a ^ pcg_hash(b ^ pcg_hash(c))));
+Rng rng_init(uint pixel, uint sample_index, uint seed) {
+    uint s = pcg_hash(pixel ^ pcg_hash(seed));
+    if (SAMPLER == SAMPLER_SOBOL) {
+        return Rng(s, sample_index, 0u);
+    }
+    return Rng(pcg_hash(s ^ pcg_hash(sample_index)), 0u, 0u);
 }
 
-// Uniform in [0, 1): the top 24 bits of the next hash.
+// Burley's Laine–Karras-style hash: an invertible mixing of the low bits into the high ones.
+uint laine_karras_permutation(uint x, uint seed) {
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+// A random Owen (nested uniform) scramble of the bits of x.
+uint nested_uniform_scramble(uint x, uint seed) {
+    return bitfieldReverse(laine_karras_permutation(bitfieldReverse(x), seed));
+}
+
+// sobol_point(index, dim) comes from the generated bidir_sobol.glsl.
+
+// Uniform in [0, 1): the top 24 bits of the next value.
 float rng_next(inout Rng r) {
+    if (SAMPLER == SAMPLER_SOBOL) {
+        uint group_seed = pcg_hash(r.state ^ pcg_hash(r.dim / 4u));
+        uint shuffled = nested_uniform_scramble(r.index, group_seed);
+        uint k = r.dim % 4u;
+        uint x = nested_uniform_scramble(sobol_point(shuffled, k), pcg_hash(group_seed ^ (k + 1u)));
+        r.dim++;
+        return float(x >> 8u) * (1.0 / 16777216.0);
+    }
     r.state = pcg_hash(r.state);
     return float(r.state >> 8u) * (1.0 / 16777216.0);
 }

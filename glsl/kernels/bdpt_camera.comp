@@ -177,13 +177,14 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
 }
 
 void main() {
-    uint w = pc.camera.size.x;
-    uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= w * pc.camera.size.y) {
+    bool valid;
+    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x, pc.camera.size.xy, valid);
+    if (!valid) {
         return;
     }
+    uint pixel = px.y * pc.camera.size.x + px.x;
     Rng rng = rng_init(pixel, pc.sample_base, pc.seed);
-    vec2 xy = vec2(float(pixel % w), float(pixel / w)) + vec2(rng_next(rng), rng_next(rng));
+    vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
     vec3 l = camera_path(pixel, xy, rng);
     if (any(isnan(l)) || any(isinf(l))) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);

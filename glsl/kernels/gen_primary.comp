@@ -1,5 +1,6 @@
 #version 460
-// Camera rays through pixel centres (row 0 on top), one per pixel, row-major.
+// Camera rays through pixel centres (row 0 on top), one per pixel, in 8x8-tile order
+// (see tiled_pixel); rays of edge-tile pixels outside the image get tmax = -1.
 #include "bidir_abi.glsl"
 #include "ray.glsl"
 
@@ -9,10 +10,8 @@ layout(push_constant) uniform Push { GpuCamera cam; };
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    uint w = cam.size.x;
-    if (i >= w * cam.size.y) {
-        return;
-    }
-    vec2 p = vec2(float(i % w) + 0.5, float(i / w) + 0.5);
-    rays[i] = GpuRay(vec4(cam.eye.xyz, 0.0), vec4(camera_direction(cam, p), 3.0e38));
+    bool valid;
+    uvec2 px = tiled_pixel(i, cam.size.xy, valid);
+    vec2 p = vec2(px) + 0.5;
+    rays[i] = GpuRay(vec4(cam.eye.xyz, 0.0), vec4(camera_direction(cam, p), valid ? 3.0e38 : -1.0));
 }

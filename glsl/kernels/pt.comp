@@ -119,12 +119,13 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
 }
 
 void main() {
-    uint w = pc.camera.size.x;
-    uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= w * pc.camera.size.y) {
+    bool valid;
+    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x, pc.camera.size.xy, valid);
+    if (!valid) {
         return;
     }
-    vec2 xy = vec2(float(pixel % w), float(pixel / w));
+    uint pixel = px.y * pc.camera.size.x + px.x;
+    vec2 xy = vec2(px);
     vec3 sum = vec3(0.0);
     float count = 0.0;
     uint bad = 0u;

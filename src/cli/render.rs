@@ -27,6 +27,10 @@ pub struct RenderArgs {
     pub time: Option<f64>,
     #[arg(long, default_value_t = 0)]
     pub seed: u32,
+    /// Random numbers: sobol (Owen-scrambled Sobol', about half the RMSE at equal spp on the
+    /// Cornell box) | independent.
+    #[arg(long, default_value = "sobol")]
+    pub sampler: bidir::render::Sampler,
     /// Most path segments (0: unbounded; Russian roulette ends paths).
     #[arg(long, default_value_t = 0)]
     pub max_depth: u32,
@@ -75,6 +79,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
     let mut settings = RenderSettings::new(integrator);
     settings.seed = args.seed;
+    settings.sampler = args.sampler;
     settings.max_depth = args.max_depth;
     settings.light_path_len = args.light_path_len;
     settings.bvh.tri_test = args.tri_test;

@@ -105,6 +105,10 @@ gpu_consts! {
     pub const SPEC_HAS_MIRROR: u32 = 8;
     pub const SPEC_HAS_GLASS: u32 = 9;
     pub const SPEC_HAS_ALPHA: u32 = 10;
+    /// Random numbers: SAMPLER_INDEPENDENT or SAMPLER_SOBOL.
+    pub const SPEC_SAMPLER: u32 = 11;
+    pub const SAMPLER_INDEPENDENT: u32 = 0;
+    pub const SAMPLER_SOBOL: u32 = 1;
 }
 
 gpu_structs! {

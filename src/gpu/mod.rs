@@ -2,5 +2,6 @@
 
 pub mod abi;
 pub mod kernels;
+pub mod sobol;
 
 pub use abi::{FieldLayout, GpuStruct};

@@ -47,7 +47,7 @@ pub struct Bdpt {
 }
 
 impl Bdpt {
-    pub fn new(ctx: &Context, scene: &GpuScene, paths: u32, light_path_len: u32, join: Join) -> Result<Bdpt, RenderError> {
+    pub fn new(ctx: &Context, scene: &GpuScene, paths: u32, light_path_len: u32, join: Join, sampler: super::Sampler) -> Result<Bdpt, RenderError> {
         let info = ctx.info();
         if !info.atomic_float_add {
             return Err(RenderError::Unsupported(format!("{} lacks atomic float add (VK_EXT_shader_atomic_float), which BDPT's light tracing needs", info.name)));
@@ -64,6 +64,7 @@ impl Bdpt {
         }
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
+        specs.push(sampler.spec());
         let vertices = ctx.create_buffer("bdpt.light_vertices", bytes, Memory::Device).map_err(|e| match e {
             VkError::Alloc { bytes, .. } => RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len")),
             e => e.into(),
@@ -88,7 +89,7 @@ impl Bdpt {
         binds.push(Bind::buffer(abi::BIND_SPLAT, film.splat.as_ref().expect("BDPT films have a splat buffer")));
         binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
         rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(push.light_paths), 1, 1])?;
-        let n = film.width * film.height;
+        let n = crate::trace::tiled_invocations(film.width, film.height);
         rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])
     }
 }

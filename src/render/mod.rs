@@ -66,6 +66,36 @@ impl std::str::FromStr for Integrator {
     }
 }
 
+/// Where random numbers come from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sampler {
+    /// Independent uniform numbers from a counter-based hash.
+    Independent,
+    /// Owen-scrambled Sobol' points (Burley 2020), four dimensions per stratified group.
+    Sobol,
+}
+
+impl Sampler {
+    pub fn spec(self) -> crate::vk::Spec {
+        let value = match self {
+            Sampler::Independent => crate::gpu::abi::SAMPLER_INDEPENDENT,
+            Sampler::Sobol => crate::gpu::abi::SAMPLER_SOBOL,
+        };
+        crate::vk::Spec { id: crate::gpu::abi::SPEC_SAMPLER, value }
+    }
+}
+
+impl std::str::FromStr for Sampler {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "independent" => Ok(Sampler::Independent),
+            "sobol" => Ok(Sampler::Sobol),
+            _ => Err(format!("unknown sampler '{s}' (independent | sobol)")),
+        }
+    }
+}
+
 /// How to render.
 #[derive(Clone, Debug)]
 pub struct RenderSettings {
@@ -75,6 +105,7 @@ pub struct RenderSettings {
     /// First bounce at which Russian roulette may end a path.
     pub rr_depth: u32,
     pub seed: u32,
+    pub sampler: Sampler,
     /// BDPT: light vertices stored per light path (a reservoir over an unbounded path).
     pub light_path_len: u32,
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
@@ -85,7 +116,7 @@ pub struct RenderSettings {
 
 impl RenderSettings {
     pub fn new(integrator: Integrator) -> Self {
-        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, light_path_len: 8, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
+        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
     }
 }
 
@@ -139,8 +170,8 @@ impl Renderer {
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &settings.bvh)?;
         let gscene = GpuScene::upload(ctx, scene, &bvh)?;
         let kernels = match settings.integrator {
-            Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, &gscene, settings.integrator == Integrator::PtNee)?),
-            Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, &gscene, camera.width * camera.height, settings.light_path_len, join)?),
+            Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, &gscene, settings.integrator == Integrator::PtNee, settings.sampler)?),
+            Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, &gscene, camera.width * camera.height, settings.light_path_len, join, settings.sampler)?),
         };
         let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)))?;
         Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1 })

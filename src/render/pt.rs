@@ -8,10 +8,11 @@ pub struct PathTracer {
 }
 
 impl PathTracer {
-    pub fn new(ctx: &Context, scene: &GpuScene, nee: bool) -> Result<PathTracer> {
+    pub fn new(ctx: &Context, scene: &GpuScene, nee: bool, sampler: super::Sampler) -> Result<PathTracer> {
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
+        specs.push(sampler.spec());
         Ok(PathTracer { kernel: ctx.create_kernel(&kernels::PT, &specs)? })
     }
 
@@ -20,7 +21,7 @@ impl PathTracer {
         let mut binds = scene.binds();
         binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
         binds.push(Bind::buffer(abi::BIND_RENDER_STATS, &film.stats));
-        let n = film.width * film.height;
+        let n = crate::trace::tiled_invocations(film.width, film.height);
         rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(push), [self.kernel.groups_for(n), 1, 1])
     }
 }

@@ -14,6 +14,12 @@ use crate::gpu::{
 };
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
 
+/// Invocations that cover a `width` x `height` image in whole 8x8 tiles (the order of
+/// `tiled_pixel` in glsl/common/ray.glsl).
+pub fn tiled_invocations(width: u32, height: u32) -> u32 {
+    width.div_ceil(8) * 8 * height.div_ceil(8) * 8
+}
+
 /// A BVH in GPU memory.
 pub struct GpuBvh {
     pub nodes: Buffer,
@@ -111,9 +117,10 @@ impl Tracer {
         ctx.read_buffer(&hits)
     }
 
-    /// Records camera rays through pixel centres into `rays` (width * height of them).
+    /// Records camera rays through pixel centres into `rays`, in 8x8-tile order
+    /// (`tiled_invocations` of them; those outside the image have tmax < 0).
     pub fn record_primary(&self, rec: &mut Recorder, cam: &GpuCamera, rays: &Buffer) -> Result<()> {
-        let n = cam.size.x * cam.size.y;
+        let n = tiled_invocations(cam.size.x, cam.size.y);
         rec.dispatch(&self.gen_primary, &[Bind::buffer(abi::BIND_RAYS_OUT, rays)], bytemuck::bytes_of(cam), [self.gen_primary.groups_for(n), 1, 1])
     }
 
