@@ -46,6 +46,10 @@ pub struct RenderArgs {
     /// Ray-triangle test: watertight | woop.
     #[arg(long, default_value = "watertight")]
     pub tri_test: TriTest,
+    /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
+    /// what kernel specialisation buys).
+    #[arg(long)]
+    pub all_features: bool,
     /// Print RMSE / mean ratio against this reference EXR at the end.
     #[arg(long)]
     pub reference: Option<PathBuf>,
@@ -80,6 +84,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let mut settings = RenderSettings::new(integrator);
     settings.seed = args.seed;
     settings.sampler = args.sampler;
+    settings.all_material_code = args.all_features;
     settings.max_depth = args.max_depth;
     settings.light_path_len = args.light_path_len;
     settings.bvh.tri_test = args.tri_test;

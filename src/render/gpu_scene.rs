@@ -34,6 +34,13 @@ impl SceneFeatures {
         }
     }
 
+    /// The same scene with the code for mirrors, glass, textures and alpha compiled in even
+    /// where it has none (only to measure what specialisation buys; vertex attributes stay as
+    /// they are, since their buffers are only uploaded when present).
+    pub fn with_all_material_code(self) -> SceneFeatures {
+        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, ..self }
+    }
+
     pub fn specs(&self) -> Vec<Spec> {
         vec![
             Spec { id: abi::SPEC_HAS_NORMALS, value: self.normals as u32 },

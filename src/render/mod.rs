@@ -108,6 +108,9 @@ pub struct RenderSettings {
     pub sampler: Sampler,
     /// BDPT: light vertices stored per light path (a reservoir over an unbounded path).
     pub light_path_len: u32,
+    /// Compile the mirror/glass/texture/alpha code in even where the scene has none (to
+    /// measure what specialisation buys).
+    pub all_material_code: bool,
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
     /// responsive and far from the GPU timeout).
     pub pass_target: Duration,
@@ -116,7 +119,7 @@ pub struct RenderSettings {
 
 impl RenderSettings {
     pub fn new(integrator: Integrator) -> Self {
-        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
+        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
     }
 }
 
@@ -168,7 +171,10 @@ impl Renderer {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &settings.bvh)?;
-        let gscene = GpuScene::upload(ctx, scene, &bvh)?;
+        let mut gscene = GpuScene::upload(ctx, scene, &bvh)?;
+        if settings.all_material_code {
+            gscene.features = gscene.features.with_all_material_code();
+        }
         let kernels = match settings.integrator {
             Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, &gscene, settings.integrator == Integrator::PtNee, settings.sampler)?),
             Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, &gscene, camera.width * camera.height, settings.light_path_len, join, settings.sampler)?),
