@@ -27,7 +27,7 @@ mod kernel;
 mod memory;
 pub mod reflect;
 
-pub use ash::vk::Format;
+pub use ash::vk::{Format, PhysicalDeviceType};
 pub use commands::{Bind, Recorder, Resource, Timer};
 pub use context::{Context, ContextOptions};
 pub use error::{Result, VkError};
