@@ -4,7 +4,7 @@
 
 use super::controls::{FlyCamera, Motion};
 use super::pacing::{FrameStats, Pacer};
-use super::{ViewOptions, ViewSummary, ViewerError};
+use super::{fit_to_monitor, next_screenshot, ViewOptions, ViewSummary, ViewerError};
 use crate::film;
 use crate::render::{Integrator, Join, RenderError, Renderer, Tonemap, TonemapSettings};
 use crate::vk::{self, Context, Image, Presented, Swapchain};
@@ -168,19 +168,6 @@ struct State {
     screenshots: Vec<PathBuf>,
 }
 
-/// The window's starting size: the camera's, shrunk (keeping its aspect) to 90 % of the
-/// monitor where it would not fit.
-fn fit_to_monitor(w: u32, h: u32, monitor: Option<PhysicalSize<u32>>) -> (u32, u32) {
-    let Some(m) = monitor.filter(|m| m.width > 0 && m.height > 0) else {
-        return (w, h);
-    };
-    let scale = (0.9 * m.width as f64 / w as f64).min(0.9 * m.height as f64 / h as f64);
-    if scale >= 1.0 {
-        return (w, h);
-    }
-    (((w as f64 * scale) as u32).max(1), ((h as f64 * scale) as u32).max(1))
-}
-
 impl State {
     fn open(opts: &ViewOptions, el: &ActiveEventLoop) -> Result<State, ViewerError> {
         let (w, h) = fit_to_monitor(opts.camera.width, opts.camera.height, el.primary_monitor().map(|m| m.size()));
@@ -296,11 +283,11 @@ impl State {
             }
             KeyCode::KeyF if once => {
                 self.fly.frame_scene();
-                self.renderer.set_camera(&self.fly.camera)?;
+                self.apply_camera()?;
             }
             KeyCode::KeyR if once => {
                 self.fly.reset();
-                self.renderer.set_camera(&self.fly.camera)?;
+                self.apply_camera()?;
             }
             KeyCode::KeyP if once => {
                 let paths = next_screenshot(&opts.screenshot_dir);
@@ -334,6 +321,21 @@ impl State {
                 Ok(())
             }
             Err(e) => Err(e.into()),
+        }
+    }
+
+    /// Renders from the fly camera from now on. BDPT's light-vertex store grows with the
+    /// window: where a bigger one does not fit, the viewer falls back to pt-nee rather than quit.
+    fn apply_camera(&mut self) -> Result<(), ViewerError> {
+        match self.renderer.set_camera(&self.fly.camera) {
+            Err(RenderError::Memory(msg)) if matches!(self.integrator, Integrator::Bdpt(_)) => {
+                eprintln!("view: {msg}; switching to pt-nee");
+                self.renderer.set_integrator(Integrator::PtNee)?;
+                self.integrator = Integrator::PtNee;
+                self.pacer.restart();
+                Ok(self.renderer.set_camera(&self.fly.camera)?)
+            }
+            r => Ok(r?),
         }
     }
 
@@ -380,7 +382,7 @@ impl State {
         moved |= self.fly.look(dx as f32, dy as f32);
         moved |= self.fly.fly(self.input.motion(), dt.as_secs_f32());
         if moved {
-            self.renderer.set_camera(&self.fly.camera)?;
+            self.apply_camera()?;
         }
 
         let spp = self.pacer.spp();
@@ -439,42 +441,5 @@ impl State {
             screenshots,
             validation_messages,
         }
-    }
-}
-
-/// `bidir-view-NNN.exr` and `.png` in `dir`, NNN the first number neither file uses.
-fn next_screenshot(dir: &std::path::Path) -> Vec<PathBuf> {
-    let mut n = 0u32;
-    loop {
-        let base = dir.join(format!("bidir-view-{n:03}"));
-        let (exr, png) = (base.with_extension("exr"), base.with_extension("png"));
-        if !exr.exists() && !png.exists() {
-            return vec![exr, png];
-        }
-        n += 1;
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn window_fits_the_monitor() {
-        assert_eq!(fit_to_monitor(256, 256, None), (256, 256));
-        assert_eq!(fit_to_monitor(256, 256, Some(PhysicalSize::new(1280, 1024))), (256, 256));
-        let (w, h) = fit_to_monitor(1920, 1080, Some(PhysicalSize::new(1280, 1024)));
-        assert_eq!(w, 1152);
-        assert!((w as f64 / h as f64 - 1920.0 / 1080.0).abs() < 0.01);
-    }
-
-    #[test]
-    fn screenshots_take_the_next_free_number() {
-        let dir = std::env::temp_dir().join(format!("bidir-view-shots-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        assert_eq!(next_screenshot(&dir)[0], dir.join("bidir-view-000.exr"));
-        std::fs::write(dir.join("bidir-view-000.png"), b"").unwrap();
-        assert_eq!(next_screenshot(&dir), vec![dir.join("bidir-view-001.exr"), dir.join("bidir-view-001.png")]);
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

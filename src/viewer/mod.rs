@@ -7,7 +7,9 @@
 //!
 //! **The film follows the window**: one film pixel per window pixel. A resize gives the
 //! camera the window's size (same vertical field of view, so a wider window sees more at
-//! the sides) and restarts the accumulation, as any camera change does.
+//! the sides) and restarts the accumulation, as any camera change does. BDPT's light-vertex
+//! store grows with the window; where it would exceed the device's limits the viewer says so
+//! and falls back to pt-nee instead of quitting.
 //!
 //! Controls: drag with the left mouse button to look, W/A/S/D to move, Q/E down/up, scroll
 //! to change speed, F frames the scene, R resets the camera; 1/2/3 switch to pt / pt-nee /
@@ -130,4 +132,55 @@ pub fn run(opts: &ViewOptions) -> Result<ViewSummary, ViewerError> {
         return Err(ViewerError::Usage("--frames must be at least 1".into()));
     }
     app::run(opts)
+}
+
+/// The window's starting size: the camera's, shrunk (keeping its aspect) to 90 % of the
+/// monitor where it would not fit.
+fn fit_to_monitor(w: u32, h: u32, monitor: Option<winit::dpi::PhysicalSize<u32>>) -> (u32, u32) {
+    let Some(m) = monitor.filter(|m| m.width > 0 && m.height > 0) else {
+        return (w, h);
+    };
+    let scale = (0.9 * m.width as f64 / w as f64).min(0.9 * m.height as f64 / h as f64);
+    if scale >= 1.0 {
+        return (w, h);
+    }
+    (((w as f64 * scale) as u32).max(1), ((h as f64 * scale) as u32).max(1))
+}
+
+/// `bidir-view-NNN.exr` and `.png` in `dir`, NNN the first number neither file uses.
+fn next_screenshot(dir: &std::path::Path) -> Vec<PathBuf> {
+    let mut n = 0u32;
+    loop {
+        let base = dir.join(format!("bidir-view-{n:03}"));
+        let (exr, png) = (base.with_extension("exr"), base.with_extension("png"));
+        if !exr.exists() && !png.exists() {
+            return vec![exr, png];
+        }
+        n += 1;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use winit::dpi::PhysicalSize;
+
+    #[test]
+    fn window_fits_the_monitor() {
+        assert_eq!(fit_to_monitor(256, 256, None), (256, 256));
+        assert_eq!(fit_to_monitor(256, 256, Some(PhysicalSize::new(1280, 1024))), (256, 256));
+        let (w, h) = fit_to_monitor(1920, 1080, Some(PhysicalSize::new(1280, 1024)));
+        assert_eq!(w, 1152);
+        assert!((w as f64 / h as f64 - 1920.0 / 1080.0).abs() < 0.01);
+    }
+
+    #[test]
+    fn screenshots_take_the_next_free_number() {
+        let dir = std::env::temp_dir().join(format!("bidir-view-shots-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        assert_eq!(next_screenshot(&dir)[0], dir.join("bidir-view-000.exr"));
+        std::fs::write(dir.join("bidir-view-000.png"), b"").unwrap();
+        assert_eq!(next_screenshot(&dir), vec![dir.join("bidir-view-001.exr"), dir.join("bidir-view-001.png")]);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }
