@@ -2,7 +2,7 @@
 # Sourced by scripts/bidir, scripts/test and .ci/run. Makes a fresh Debian/Ubuntu machine
 # ready to build and run bidir, doing only what is missing:
 #   1. apt packages: Vulkan loader, lavapipe (mesa-vulkan-drivers), Khronos validation layers,
-#      Debian's shaderc/glslang/SPIRV-Tools static libraries;
+#      Debian's shaderc/glslang/SPIRV-Tools static libraries, Xvfb and X11 libraries (viewer);
 #   2. the fast shaderc path: Debian's static archives merged into one libshaderc_combined.a
 #      (Debian's own libshaderc_combined.a lacks the glslang and SPIRV-Tools symbols), and
 #      SHADERC_LIB_DIR pointed at it. If that cannot be done, the fallback builds shaderc from
@@ -34,6 +34,12 @@ command -v cargo >/dev/null || { echo "setup: cargo not found; install Rust (htt
 
 bidir_apt_install libvulkan1 libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers pkg-config \
   || { echo "setup: could not install the Vulkan packages" >&2; return 1 2>/dev/null || exit 1; }
+
+# The viewer (`bidir view`): the X11 libraries winit loads at run time, and Xvfb (with
+# xauth, which xvfb-run needs) so its tests have a display on machines without one. Not
+# fatal: without them only the viewer's window test is skipped.
+bidir_apt_install xvfb xauth libx11-xcb1 libxcursor1 libxrandr2 libxi6 libxkbcommon-x11-0 \
+  || echo "setup: could not install Xvfb and the X11 libraries; the viewer's window test will be skipped" >&2
 
 export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$bidir_cache/target}
 export BIDIR_CARGO_FEATURES=${BIDIR_CARGO_FEATURES:-}

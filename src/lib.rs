@@ -6,6 +6,8 @@
 //! - [`compute`]: small reusable GPU algorithms (reduction, prefix sum).
 //! - [`scene`]: the CPU scene: OBJ+MTL and glTF loaders, textures, cameras, the built-in
 //!   Cornell box, derived data (emitters, bounds, sizes). Needs no GPU.
+//! - [`render`]: integrators on the GPU, the progressive film, the display tonemap.
+//! - [`viewer`]: `bidir view`, the film live in a window with a fly camera.
 
 pub mod compute;
 pub mod bench;
@@ -15,4 +17,5 @@ pub mod gpu;
 pub mod render;
 pub mod scene;
 pub mod trace;
+pub mod viewer;
 pub mod vk;

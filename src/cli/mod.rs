@@ -6,6 +6,7 @@ mod info;
 mod info_scene;
 mod render;
 pub mod scene_args;
+mod view;
 
 use clap::{Parser, Subcommand};
 
@@ -27,6 +28,9 @@ pub enum Command {
     Info(info::InfoArgs),
     /// Render a scene (default: the built-in Cornell box) to EXR/PNG.
     Render(Box<render::RenderArgs>),
+    /// Show the progressive render in a window: drag to look, WASD/QE to move, scroll for
+    /// speed, F frame, R reset, 1/2/3 pt/pt-nee/bdpt, +/- exposure, P screenshot, Esc quit.
+    View(Box<view::ViewArgs>),
     /// Compare two EXR images: RMSE, relMSE, mean ratio, heatmap.
     Diff(diff::DiffArgs),
     /// Benchmarks with GPU timestamps (warm-up, repetitions, median).
@@ -43,6 +47,7 @@ pub fn run() -> anyhow::Result<()> {
     match cli.command {
         Command::Info(args) => info::run(&args, &opts),
         Command::Render(args) => render::run(&args, &opts),
+        Command::View(args) => view::run(&args, &opts),
         Command::Bench(cmd) => bench::run(&cmd, &opts),
         Command::Diff(args) => diff::run(&args),
     }

@@ -31,6 +31,14 @@ gpu_consts! {
     pub const IMAGE_AFFINE_BIND_SRC: u32 = 0;
     pub const IMAGE_AFFINE_BIND_DST: u32 = 1;
 
+    // ---- Bindings: tonemap.comp (film -> display bytes) ------------------------------------
+    /// The film's accumulation buffer (vec4 per pixel: rgb sum, sample count).
+    pub const TONEMAP_BIND_ACCUM: u32 = 0;
+    /// The film's light-tracing splats (rgb floats per pixel), read when `has_splat` is 1.
+    pub const TONEMAP_BIND_SPLAT: u32 = 1;
+    /// The RGBA8 storage image written.
+    pub const TONEMAP_BIND_OUT: u32 = 2;
+
     // ---- Bindings: subgroup_probe.comp -------------------------------------------------
     pub const PROBE_BIND_OUT: u32 = 0;
 
@@ -285,6 +293,23 @@ gpu_structs! {
         pub join_k: u32,
         /// Light paths per iteration (one per pixel).
         pub light_paths: u32,
+        pub pad0: u32,
+        pub pad1: u32,
+    }
+
+    /// Push constants of `tonemap.comp`: the film's estimate (as `Film::resolve`) scaled by
+    /// `scale`, clamped to [0, 1], sRGB-encoded, stored as 8-bit RGBA (or BGRA byte order).
+    pub struct TonemapPush (32 bytes) {
+        pub width: u32,
+        pub height: u32,
+        /// 1 / iterations: the splat buffer holds sums over iterations.
+        pub inv_iterations: f32,
+        /// 2^exposure.
+        pub scale: f32,
+        /// 1: add the splat buffer (BDPT films).
+        pub has_splat: u32,
+        /// 1: store B, G, R, A (B8G8R8A8 swapchains; the copy to them does not swizzle).
+        pub bgra: u32,
         pub pad0: u32,
         pub pad1: u32,
     }

@@ -17,17 +17,19 @@ mod film;
 pub mod gpu_scene;
 pub mod lights;
 mod pt;
+mod tonemap;
 
 pub use bdpt::{Bdpt, Join};
 pub use film::Film;
 pub use gpu_scene::{GpuScene, SceneFeatures};
 pub use pt::PathTracer;
+pub use tonemap::{Tonemap, TonemapSettings};
 
 use crate::bvh::{BuildOptions, Bvh, BvhError};
 use crate::film::RgbImage;
 use crate::gpu::abi::{BdptPush, GpuCamera, PtPush};
 use crate::scene::{Camera, Scene};
-use crate::vk::{Context, VkError};
+use crate::vk::{Context, Image, Recorder, VkError};
 use std::time::{Duration, Instant};
 
 /// Which estimator renders the image.
@@ -158,6 +160,14 @@ pub struct Renderer {
     pass_spp: u32,
 }
 
+/// The kernels of `integrator` for a film of `pixels` pixels.
+fn build_kernels(ctx: &Context, scene: &GpuScene, integrator: Integrator, pixels: u32, settings: &RenderSettings) -> Result<Kernels, RenderError> {
+    Ok(match integrator {
+        Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
+        Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, scene, pixels, settings.light_path_len, join, settings.sampler)?),
+    })
+}
+
 /// Progress after a pass.
 #[derive(Clone, Copy, Debug)]
 pub struct Progress {
@@ -175,10 +185,7 @@ impl Renderer {
         if settings.all_material_code {
             gscene.features = gscene.features.with_all_material_code();
         }
-        let kernels = match settings.integrator {
-            Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, &gscene, settings.integrator == Integrator::PtNee, settings.sampler)?),
-            Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, &gscene, camera.width * camera.height, settings.light_path_len, join, settings.sampler)?),
-        };
+        let kernels = build_kernels(ctx, &gscene, settings.integrator, camera.width * camera.height, &settings)?;
         let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)))?;
         Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1 })
     }
@@ -199,6 +206,50 @@ impl Renderer {
             self.camera = crate::trace::gpu_camera(c);
         }
         self.film.clear(&self.ctx)?;
+        self.samples = 0;
+        Ok(())
+    }
+
+    /// The film the integrator accumulates into (for display passes such as [`Tonemap`]).
+    pub fn film(&self) -> &Film {
+        &self.film
+    }
+
+    /// Records the film's current estimate, tonemapped, into `target` (see [`Tonemap::record`]).
+    pub fn record_tonemap(&self, rec: &mut Recorder, tonemap: &Tonemap, target: &Image, settings: TonemapSettings) -> crate::vk::Result<()> {
+        tonemap.record(rec, &self.film, self.samples, target, settings)
+    }
+
+    /// Renders from `camera` from now on and clears the film. A camera with another image size
+    /// gets a new film (and BDPT a light-vertex store for the new number of pixels); on error
+    /// the renderer is unchanged.
+    pub fn set_camera(&mut self, camera: &Camera) -> Result<(), RenderError> {
+        if camera.width == 0 || camera.height == 0 {
+            return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
+        }
+        if (camera.width, camera.height) != (self.film.width, self.film.height) {
+            let pixels = camera.width * camera.height;
+            // Path tracers keep their kernels; BDPT's store is sized by the pixel count.
+            let bdpt = matches!(self.kernels, Kernels::Bdpt(_));
+            let kernels = if bdpt { Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings)?) } else { None };
+            let film = Film::new(&self.ctx, camera.width, camera.height, bdpt)?;
+            if let Some(k) = kernels {
+                self.kernels = k;
+            }
+            self.film = film;
+        }
+        self.reset(Some(camera))
+    }
+
+    /// Switches to another integrator, keeping the scene and its BVH on the GPU, and clears
+    /// the film. On error the renderer is unchanged.
+    pub fn set_integrator(&mut self, integrator: Integrator) -> Result<(), RenderError> {
+        let kernels = build_kernels(&self.ctx, &self.scene, integrator, self.film.width * self.film.height, &self.settings)?;
+        let film = Film::new(&self.ctx, self.film.width, self.film.height, matches!(kernels, Kernels::Bdpt(_)))?;
+        self.kernels = kernels;
+        self.film = film;
+        self.settings.integrator = integrator;
+        self.pass_spp = 1;
         self.samples = 0;
         Ok(())
     }

@@ -35,8 +35,8 @@ impl<'a> Bind<'a> {
 /// Records commands into one command buffer. Every dispatch, copy and fill is followed by a
 /// full compute/transfer memory barrier, so consecutive commands see each other's writes.
 pub struct Recorder<'a> {
-    shared: &'a Shared,
-    cmd: vk::CommandBuffer,
+    pub(super) shared: &'a Shared,
+    pub(super) cmd: vk::CommandBuffer,
 }
 
 impl<'a> Recorder<'a> {
@@ -217,6 +217,21 @@ impl Context {
     where
         F: FnOnce(&mut Recorder) -> Result<()>,
     {
+        self.submit_synced(what, &[], &[], record)
+    }
+
+    /// [`Context::submit`] that also waits for the semaphores `wait` (each at its stage) before
+    /// the recorded work and signals `signal` after it (swapchain acquire and present).
+    pub(super) fn submit_synced<F>(
+        &self,
+        what: &str,
+        wait: &[(vk::Semaphore, vk::PipelineStageFlags)],
+        signal: &[vk::Semaphore],
+        record: F,
+    ) -> Result<()>
+    where
+        F: FnOnce(&mut Recorder) -> Result<()>,
+    {
         let s = &*self.shared;
         let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
         let alloc = vk::CommandBufferAllocateInfo::default().command_pool(*pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
@@ -251,7 +266,13 @@ impl Context {
         };
         s.name(fence, &format!("{what}.fence"));
         let cmds = [cmd];
-        let submit = [vk::SubmitInfo::default().command_buffers(&cmds)];
+        let wait_semaphores: Vec<vk::Semaphore> = wait.iter().map(|w| w.0).collect();
+        let wait_stages: Vec<vk::PipelineStageFlags> = wait.iter().map(|w| w.1).collect();
+        let submit = [vk::SubmitInfo::default()
+            .command_buffers(&cmds)
+            .wait_semaphores(&wait_semaphores)
+            .wait_dst_stage_mask(&wait_stages)
+            .signal_semaphores(signal)];
         let queue = s.queue.lock().unwrap_or_else(|e| e.into_inner());
         // SAFETY: the queue is externally synchronised by its mutex.
         let submitted = unsafe { s.device.queue_submit(*queue, &submit, fence) };

@@ -62,9 +62,13 @@ impl ContextOptions {
 /// The device-wide state shared (through `Arc`) by every GPU object, so that each object
 /// can free itself on drop and the device is destroyed only after the last of them.
 pub(crate) struct Shared {
-    /// Keeps the loader library loaded while the instance lives.
-    _entry: ash::Entry,
+    /// The loader (keeps its library loaded while the instance lives; surfaces need it).
+    pub entry: ash::Entry,
     pub instance: ash::Instance,
+    /// The chosen physical device and the queue family of `queue` (graphics + compute when
+    /// the device has one): what a surface's present support is checked against.
+    pub physical: vk::PhysicalDevice,
+    pub queue_family: u32,
     debug_utils: Option<ash::ext::debug_utils::Instance>,
     messenger: vk::DebugUtilsMessengerEXT,
     pub device: ash::Device,
@@ -157,9 +161,12 @@ impl Context {
             Ok((device, queue, pool, allocator)) => {
                 let debug_device = parts.debug_utils.as_ref().map(|_| ash::ext::debug_utils::Device::new(&parts.instance, &device));
                 let push_descriptor = ash::khr::push_descriptor::Device::new(&parts.instance, &device);
+                let queue_family = info.queue_family.expect("usable devices have a compute queue");
                 let shared = Shared {
-                    _entry: parts.entry,
+                    entry: parts.entry,
                     instance: parts.instance,
+                    physical,
+                    queue_family,
                     debug_utils: parts.debug_utils,
                     messenger: parts.messenger,
                     device,
@@ -224,6 +231,22 @@ fn create_device(
     let family = info.queue_family.expect("usable devices have a compute queue");
     let priorities = [1.0f32];
     let queue_info = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
+    // Extensions the caller asked for (the viewer's swapchain) must exist: say which is missing
+    // rather than fail inside vkCreateDevice.
+    if !opts.device_extensions.is_empty() {
+        // SAFETY: query on a live physical device.
+        let available = unsafe { instance.enumerate_device_extension_properties(physical) }
+            .ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
+        for want in &opts.device_extensions {
+            if !available.iter().any(|e| e.extension_name_as_c_str() == Ok(*want)) {
+                return Err(VkError::MissingExtension {
+                    extension: want.to_string_lossy().into_owned(),
+                    on: format!("device '{}'", info.name),
+                    hint: "a window needs it; choose another device with --device (`bidir info` lists them)".into(),
+                });
+            }
+        }
+    }
     let mut ext_ptrs: Vec<*const i8> = vec![ash::khr::push_descriptor::NAME.as_ptr()];
     if info.atomic_float_add {
         ext_ptrs.push(ash::ext::shader_atomic_float::NAME.as_ptr());

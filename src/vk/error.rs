@@ -44,6 +44,13 @@ pub enum VkError {
     Kernel { kernel: String, msg: String },
     #[error("'{name}': {msg}")]
     Usage { name: String, msg: String },
+    #[error("{on} does not offer {extension}: {hint}")]
+    MissingExtension { extension: String, on: String, hint: String },
+    #[error(
+        "device '{device}' cannot present to this window ({why}); choose another device with \
+         --device (`bidir info` lists them), or render headless with `bidir render`"
+    )]
+    CannotPresent { device: String, why: String },
     #[error("{0} GPU object(s) still alive when the context was closed (a leak in the caller)")]
     LiveObjects(usize),
 }

@@ -77,6 +77,17 @@ pub(crate) fn create_instance(
     if validation && !layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)) {
         return Err(VkError::NoValidationLayer);
     }
+    for want in extra_extensions {
+        if !exts.iter().any(|e| e.extension_name_as_c_str() == Ok(*want)) {
+            return Err(VkError::MissingExtension {
+                extension: want.to_string_lossy().into_owned(),
+                on: "the Vulkan loader".into(),
+                hint: "a window needs it; install a driver with window-system support (on Debian/Ubuntu: \
+                       apt-get install libvulkan1 mesa-vulkan-drivers), or render headless with `bidir render`"
+                    .into(),
+            });
+        }
+    }
     let has_debug_utils = validation || exts.iter().any(|e| e.extension_name_as_c_str() == Ok(ash::ext::debug_utils::NAME));
     let api_version = loader_version.min(vk::API_VERSION_1_3);
     if api_version < vk::API_VERSION_1_2 {

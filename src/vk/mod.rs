@@ -1,7 +1,8 @@
 //! The Vulkan backend. Every `unsafe` ash call in bidir lives below this module; what it
 //! exports is safe: a [`Context`] (instance, device, queue, allocator), [`Buffer`]s and
 //! [`Image`]s that free themselves, [`Kernel`]s whose bindings are reflected from their
-//! SPIR-V, and [`Context::submit`] to record and run work with a timeout.
+//! SPIR-V, [`Context::submit`] to record and run work with a timeout, and a [`Swapchain`]
+//! that shows an image in a window.
 //!
 //! ```no_run
 //! use bidir::{gpu::{abi, kernels}, vk::{Bind, Context, ContextOptions, Memory}};
@@ -26,6 +27,7 @@ mod instance;
 mod kernel;
 mod memory;
 pub mod reflect;
+mod swapchain;
 
 pub use ash::vk::{Format, PhysicalDeviceType};
 pub use commands::{Bind, Recorder, Resource, Timer};
@@ -34,3 +36,4 @@ pub use error::{Result, VkError};
 pub use instance::{choose_device, list_devices, DeviceInfo, MemoryHeap, SubgroupOps};
 pub use kernel::{Kernel, Spec};
 pub use memory::{Buffer, Image, Memory};
+pub use swapchain::{surface_extensions, Presented, Swapchain, Vsync, SWAPCHAIN_EXTENSION};

@@ -1,0 +1,118 @@
+//! `bidir view`: the progressive film live in a window (see `bidir::viewer`).
+
+use super::scene_args::SceneArgs;
+use anyhow::{bail, Context as _};
+use bidir::render::{Integrator, Join, RenderSettings};
+use bidir::viewer::{self, ViewOptions};
+use bidir::vk::{ContextOptions, Vsync};
+use std::path::PathBuf;
+use std::time::Duration;
+
+#[derive(clap::Args, Debug)]
+pub struct ViewArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N (keys 1/2/3 switch)
+    #[arg(long, default_value = "pt-nee")]
+    pub integrator: Integrator,
+    /// BDPT join (overrides the one in --integrator): full | single | k=N.
+    #[arg(long)]
+    pub join: Option<Join>,
+    #[arg(long, default_value_t = 0)]
+    pub seed: u32,
+    /// Most path segments (0: unbounded; Russian roulette ends paths).
+    #[arg(long, default_value_t = 0)]
+    pub max_depth: u32,
+    /// BDPT: light vertices kept per light path.
+    #[arg(long, default_value_t = 8)]
+    pub light_path_len: u32,
+    /// Exposure in stops (+/- change it by half a stop).
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub exposure: f32,
+    /// Present without waiting for vertical blank (MAILBOX, else IMMEDIATE).
+    #[arg(long)]
+    pub no_vsync: bool,
+    /// Frame time to size each frame's batch of samples to, in milliseconds.
+    #[arg(long, default_value_t = 16.0)]
+    pub frame_ms: f64,
+    /// Quit after this many frames.
+    #[arg(long)]
+    pub frames: Option<u32>,
+    /// Write the film to this file (.exr or .png) when quitting; may repeat.
+    #[arg(long)]
+    pub screenshot: Vec<PathBuf>,
+    /// Testing: after frame F, resize the window to WxH (e.g. 3:320x200).
+    #[arg(long, value_name = "F:WxH", value_parser = parse_resize, hide = true)]
+    pub resize_at: Option<(u32, u32, u32)>,
+}
+
+fn parse_resize(s: &str) -> Result<(u32, u32, u32), String> {
+    let err = || format!("expected FRAME:WIDTHxHEIGHT like 3:320x200, got '{s}'");
+    let (f, size) = s.split_once(':').ok_or_else(err)?;
+    let (w, h) = size.split_once('x').ok_or_else(err)?;
+    let n = |x: &str| x.trim().parse::<u32>().ok().filter(|&v| v > 0).ok_or_else(err);
+    Ok((n(f)?, n(w)?, n(h)?))
+}
+
+pub fn run(args: &ViewArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    if !(args.frame_ms > 0.0 && args.frame_ms.is_finite()) {
+        bail!("--frame-ms must be a positive number of milliseconds");
+    }
+    let mut integrator = args.integrator;
+    if let (Some(j), Integrator::Bdpt(_)) = (args.join, integrator) {
+        integrator = Integrator::Bdpt(j);
+    } else if args.join.is_some() {
+        bail!("--join applies to --integrator bdpt only");
+    }
+    let loaded = args.scene.load()?;
+    for w in &loaded.warnings {
+        eprintln!("warning: {w}");
+    }
+    let mut settings = RenderSettings::new(integrator);
+    settings.seed = args.seed;
+    settings.max_depth = args.max_depth;
+    settings.light_path_len = args.light_path_len;
+    let mut v = ViewOptions::new(loaded.scene, loaded.camera, settings);
+    v.exposure = args.exposure;
+    v.vsync = if args.no_vsync { Vsync::Off } else { Vsync::On };
+    v.frames = args.frames;
+    v.screenshots = args.screenshot.clone();
+    v.frame_budget = Duration::from_secs_f64(args.frame_ms / 1e3);
+    v.context = opts.clone();
+    v.resize_at = args.resize_at;
+    let summary = viewer::run(&v).context("bidir view")?;
+
+    let mut ms: Vec<f64> = summary.frame_times.iter().map(|t| t.as_secs_f64() * 1e3).collect();
+    ms.sort_by(f64::total_cmp);
+    let median = ms.get(ms.len() / 2).copied().unwrap_or(0.0);
+    println!(
+        "{} {}x{} {}: {} frames, {} spp in the film, median {:.1} ms/frame, present mode {}",
+        summary.device,
+        summary.camera.width,
+        summary.camera.height,
+        summary.integrator.name(),
+        summary.frames,
+        summary.samples,
+        median,
+        summary.present_mode
+    );
+    for s in &summary.screenshots {
+        println!("wrote {}", s.display());
+    }
+    if !summary.validation_messages.is_empty() {
+        bail!("the validation layer reported {} message(s) (printed above)", summary.validation_messages.len());
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn resize_spec_parses() {
+        assert_eq!(parse_resize("3:320x200").unwrap(), (3, 320, 200));
+        assert!(parse_resize("3:320").is_err());
+        assert!(parse_resize("0:320x200").is_err());
+        assert!(parse_resize("x").unwrap_err().contains("FRAME:WIDTHxHEIGHT"));
+    }
+}
