@@ -9,6 +9,7 @@
 //! The SVG names the font family `sans-serif`; viewers use their own, the layout is
 //! measured with Noto Mono (wider, so labels never overlap).
 
+use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
@@ -91,6 +92,21 @@ fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     lo..hi
 }
 
+/// Tick values on a log axis over `range`: labelled ones (1, 2, 5 times powers of ten, or
+/// 1..9 times them where that would give fewer than three) and grid-only ones (1..9 times
+/// powers of ten). plotters' own log ticks start at the first power of ten inside the range,
+/// so a range like 0.025..0.85 would get a single label.
+fn log_ticks(range: &std::ops::Range<f64>) -> (Vec<f64>, Vec<f64>) {
+    let within = |mantissas: &[f64]| -> Vec<f64> {
+        let (k0, k1) = (range.start.log10().floor() as i32, range.end.log10().ceil() as i32);
+        (k0..=k1).flat_map(|k| mantissas.iter().map(move |m| m * 10f64.powi(k))).filter(|v| range.contains(v)).collect()
+    };
+    let all: Vec<f64> = (1..=9).map(f64::from).collect();
+    let bold = within(&[1.0, 2.0, 5.0]);
+    let bold = if bold.len() < 3 { within(&all) } else { bold };
+    (bold, within(&all))
+}
+
 /// Tick labels with three significant digits at most, without trailing zeros.
 fn tick(v: &f64) -> String {
     if *v <= 0.0 || !v.is_finite() {
@@ -105,6 +121,11 @@ fn tick(v: &f64) -> String {
     }
 }
 
+fn log_axis(range: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> {
+    let (bold, light) = log_ticks(&range);
+    range.log_scale().with_key_points(bold).with_light_points(light)
+}
+
 fn draw_log_log<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, series: &[Series], text: &ChartText) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     root.fill(&WHITE)?;
     let xs = log_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
@@ -114,7 +135,7 @@ fn draw_log_log<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, series: &[Ser
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(72)
-        .build_cartesian_2d(xs.log_scale(), ys.log_scale())?;
+        .build_cartesian_2d(log_axis(xs), log_axis(ys))?;
     chart
         .configure_mesh()
         .x_desc(text.x_label.as_str())
@@ -123,8 +144,8 @@ fn draw_log_log<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, series: &[Ser
         .y_label_formatter(&tick)
         .label_style(("sans-serif", 14))
         .axis_desc_style(("sans-serif", 16))
-        .light_line_style(RGBColor(235, 235, 235))
-        .bold_line_style(RGBColor(200, 200, 200))
+        .light_line_style(RGBColor(238, 238, 238))
+        .bold_line_style(RGBColor(190, 190, 190))
         .draw()?;
     for (i, s) in series.iter().enumerate() {
         let colour = COLOURS[i % COLOURS.len()];
@@ -210,6 +231,16 @@ mod tests {
     fn ticks_read_well() {
         let t = |v: f64| tick(&v);
         assert_eq!([t(0.001), t(0.02), t(0.5), t(1.0), t(20.0), t(100.0), t(0.0456)], ["0.001", "0.02", "0.5", "1", "20", "100", "0.0456"]);
+    }
+
+    #[test]
+    fn log_ticks_label_every_decade_part() {
+        let (bold, light) = log_ticks(&(0.025..0.85));
+        let r = |v: &[f64]| v.iter().map(|x| (x * 1e6).round() / 1e6).collect::<Vec<_>>();
+        assert_eq!(r(&bold), [0.05, 0.1, 0.2, 0.5]);
+        assert_eq!(light.len(), 7 + 8);
+        let (bold, _) = log_ticks(&(0.5..1.5));
+        assert_eq!(r(&bold), [0.5, 0.6, 0.7, 0.8, 0.9, 1.0]);
     }
 
     #[test]
