@@ -143,7 +143,8 @@ fn fmt3(v: Vec3) -> String {
 impl Scene {
     /// Appends `quad` as two emissive triangles with a new material called `name`. New
     /// vertices get the quad's front normal where the scene has normals and UV (0, 0) where
-    /// it has UVs, keeping those all-or-nothing.
+    /// it has UVs, keeping those all-or-nothing. `quad` is taken as valid: make it with
+    /// [`QuadLight::new`] or parse it, which check it.
     pub fn add_quad_light(&mut self, quad: &QuadLight, name: &str) {
         let base = self.positions.len() as u32;
         let c = quad.corner;
