@@ -1,5 +1,8 @@
-//! Benchmarks (not tests): GPU-timestamped, warmed up, repeated, median reported.
+//! Benchmarks (not tests): traversal speed (GPU-timestamped, warmed up, repeated, median
+//! reported) and convergence runs (RMSE against a reference over render time, with charts).
 
+pub mod chart;
+pub mod converge;
 pub mod json;
 pub mod traversal;
 

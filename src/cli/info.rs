@@ -20,8 +20,8 @@ pub fn run(args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if args.builtin || args.scene.scene.is_some() {
         return super::info_scene::run(&args.scene);
     }
-    if args.scene.has_camera_flags() || args.scene.strict {
-        anyhow::bail!("camera flags and --strict need a scene: give a scene file or --builtin");
+    if args.scene.has_camera_flags() || args.scene.strict || !args.scene.added_lights().is_empty() {
+        anyhow::bail!("camera flags, light flags and --strict need a scene: give a scene file or --builtin");
     }
     devices(opts)
 }

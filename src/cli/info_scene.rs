@@ -79,6 +79,9 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
             lum
         );
     }
+    for (quad, name) in args.added_lights() {
+        println!("  added {name}: --quad-light \"{quad}\" (area {:.4}, front {})", quad.area(), fmt_vec(quad.front()));
+    }
     let srgb = s.textures.iter().filter(|t| t.srgb).count();
     println!(
         "textures:     {} ({} sRGB, {} linear), {}",

@@ -1,6 +1,7 @@
 //! Command-line parsing and the subcommands.
 
 mod bench;
+mod converge;
 mod diff;
 mod info;
 mod info_scene;
@@ -36,6 +37,8 @@ pub enum Command {
     /// Benchmarks with GPU timestamps (warm-up, repetitions, median).
     #[command(subcommand)]
     Bench(bench::BenchCommand),
+    /// Speed against accuracy: RMSE vs a reference over render time, per integrator (CSV, charts).
+    Converge(Box<converge::ConvergeArgs>),
 }
 
 pub fn run() -> anyhow::Result<()> {
@@ -50,5 +53,6 @@ pub fn run() -> anyhow::Result<()> {
         Command::View(args) => view::run(&args, &opts),
         Command::Bench(cmd) => bench::run(&cmd, &opts),
         Command::Diff(args) => diff::run(&args),
+        Command::Converge(args) => converge::run(&args, &opts),
     }
 }

@@ -4,8 +4,8 @@
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use anyhow::{bail, Context as _};
-use bidir::scene::{self, Camera, LoadOptions, Scene, DEFAULT_IMAGE_SIZE};
+use anyhow::bail;
+use bidir::scene::{self, Camera, LoadOptions, QuadLight, Scene, DEFAULT_IMAGE_SIZE};
 use glam::Vec3;
 
 #[derive(clap::Args, Debug, Clone, Default)]
@@ -39,6 +39,19 @@ pub struct SceneArgs {
     /// name, as an error instead of a warning
     #[arg(long)]
     pub strict: bool,
+    /// Add an emissive parallelogram (repeatable; quote it, ';' ends a shell command):
+    /// corner C, edges E1 and E2, radiance R,G,B. Its corners are C, C+E1, C+E1+E2, C+E2; it
+    /// emits from its front face only, the side from which C, C+E1, C+E1+E2 run
+    /// counter-clockwise (normal E1 x E2). Each quad gets its own black emissive material.
+    /// Example: --quad-light "-1,10,-1;2,0,0;0,0,2;50,50,50" (2x2, facing down)
+    #[arg(long = "quad-light", value_name = "C;E1;E2;R,G,B", allow_hyphen_values = true)]
+    pub quad_lights: Vec<QuadLight>,
+    /// Add the modified Sponza's lights (thesis 5.2.2): a small, very bright sun shining
+    /// down through the atrium's open roof at 24 degrees from the zenith and a large, dim blue
+    /// sky above it. Placed for ../shared/scenes/sponza/Sponza.gltf; `bidir info SCENE
+    /// --sponza-sun-sky` prints them as --quad-light values
+    #[arg(long)]
+    pub sponza_sun_sky: bool,
 }
 
 /// A loaded scene with the camera the flags chose.
@@ -64,7 +77,20 @@ impl SceneArgs {
             || self.height.is_some()
     }
 
-    /// Loads the scene file (or the built-in Cornell box) and resolves the camera.
+    /// The emissive quads the flags add, each with its material name.
+    pub fn added_lights(&self) -> Vec<(QuadLight, String)> {
+        let mut lights: Vec<(QuadLight, String)> = Vec::new();
+        if self.sponza_sun_sky {
+            let [sun, sky] = QuadLight::sponza_sun_sky();
+            lights.extend([(sun, "sponza-sun".to_owned()), (sky, "sponza-sky".to_owned())]);
+        }
+        lights.extend(self.quad_lights.iter().enumerate().map(|(i, q)| (*q, format!("quad-light-{i}"))));
+        lights
+    }
+
+    /// Loads the scene file (or the built-in Cornell box), resolves the camera, then adds the
+    /// lights of `--quad-light` / `--sponza-sun-sky` (after the camera, so a scene without
+    /// cameras is framed on its own geometry, not on lights far above it).
     pub fn load(&self) -> anyhow::Result<LoadedScene> {
         let start = Instant::now();
         let (scene, warnings) = match &self.scene {
@@ -76,6 +102,10 @@ impl SceneArgs {
         };
         let load_time = start.elapsed();
         let (camera, camera_index) = self.resolve_camera(&scene)?;
+        let mut scene = scene;
+        for (quad, name) in self.added_lights() {
+            scene.add_quad_light(&quad, &name);
+        }
         Ok(LoadedScene { scene, warnings, camera, camera_index, load_time })
     }
 
@@ -135,23 +165,8 @@ fn find_camera(scene: &Scene, sel: &str) -> anyhow::Result<usize> {
     bail!("--camera {sel}: no such camera in {}; it has: {}", scene.source, names.join(", "))
 }
 
-/// `x,y,z`, e.g. `278,273,-800`.
-pub fn parse_vec3(s: &str) -> Result<Vec3, String> {
-    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
-    if parts.len() != 3 {
-        return Err(format!("expected three numbers separated by commas (like 278,273,-800), got '{s}'"));
-    }
-    let mut v = [0.0f32; 3];
-    for (out, p) in v.iter_mut().zip(&parts) {
-        *out = p
-            .parse::<f32>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .with_context(|| format!("'{p}' in '{s}' is not a finite number"))
-            .map_err(|e| e.to_string())?;
-    }
-    Ok(Vec3::from_array(v))
-}
+/// `x,y,z`, e.g. `278,273,-800` (shared with `--quad-light`, hence in the library).
+pub use bidir::scene::parse_vec3;
 
 #[cfg(test)]
 mod tests {
@@ -214,5 +229,39 @@ mod tests {
         assert_eq!(i, None);
         assert_eq!((c.width, c.height), (100, 50));
         assert!(c.eye.z < 0.0 && (c.target - s.bounds().center()).length() < 1e-3);
+    }
+
+    #[test]
+    fn light_flags_parse_and_add_emitters() {
+        let a = args(&["--quad-light", "-100,500,-100;0,0,50;40,0,0;5,5,5", "--quad-light", "0,0,0;1,0,0;0,1,0;0,0,2"]).unwrap();
+        assert_eq!(a.quad_lights.len(), 2);
+        assert_eq!(a.quad_lights[0].corner, Vec3::new(-100.0, 500.0, -100.0));
+        let base = Scene::builtin_cornell_box();
+        let l = a.load().unwrap();
+        assert_eq!(l.scene.triangle_count(), base.triangle_count() + 4);
+        assert_eq!(l.scene.emitters().len(), base.emitters().len() + 4);
+        let names: Vec<&str> = l.scene.materials.iter().rev().take(2).map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["quad-light-1", "quad-light-0"]);
+        // The camera is resolved before the lights are added.
+        assert_eq!(l.camera, Camera::cornell_box());
+
+        let l = args(&["--sponza-sun-sky"]).unwrap().load().unwrap();
+        assert_eq!(l.scene.emitters().len(), base.emitters().len() + 4);
+        let sun = l.scene.materials.iter().find(|m| m.name == "sponza-sun").expect("a sun material");
+        assert!(sun.emission.min_element() > 1000.0);
+        assert!(l.scene.materials.iter().any(|m| m.name == "sponza-sky"));
+    }
+
+    #[test]
+    fn bad_light_flags_are_refused_with_the_reason() {
+        let err = |a: &[&str]| args(a).err().expect("refused").to_string();
+        let e = err(&["--quad-light", "0,0,0;1,0,0;0,1,0"]);
+        assert!(e.contains("--quad-light") && e.contains("CORNER;EDGE1;EDGE2;R,G,B"), "{e}");
+        let e = err(&["--quad-light", "0,0,0;1,0,0;2,0,0;1,1,1"]);
+        assert!(e.contains("parallel or zero"), "{e}");
+        let e = err(&["--quad-light", "0,0,0;1,0,0;0,1,0;1,1,-1"]);
+        assert!(e.contains("radiance 1,1,-1 must be >= 0"), "{e}");
+        let e = err(&["--quad-light", "0,0,0;1,0,0;0,1,z;1,1,1"]);
+        assert!(e.contains("edge2: 'z' in '0,1,z' is not a finite number"), "{e}");
     }
 }

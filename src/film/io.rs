@@ -16,20 +16,26 @@ pub enum ImageIoError {
 /// clamped), chosen by extension. The file appears complete or not at all.
 pub fn write_image(path: &Path, img: &RgbImage, exposure: f32) -> Result<(), ImageIoError> {
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("exr") => write_atomically(path, |tmp| write_exr(tmp, img).map_err(|e| e.to_string())),
+        Some("png") => write_atomically(path, |tmp| write_png_rgb8(tmp, &to_srgb8(img, exposure), img.width, img.height)),
+        _ => Err(ImageIoError::Extension { path: path.to_path_buf() }),
+    }
+}
+
+/// Runs `write` on a temporary file beside `path` (hidden, named for this process) and renames
+/// it onto `path`, so readers see the whole file or none of it; the temporary file is removed
+/// when anything fails.
+pub fn write_atomically(path: &Path, write: impl FnOnce(&Path) -> Result<(), String>) -> Result<(), ImageIoError> {
     let werr = |msg: String| ImageIoError::Write { path: path.to_path_buf(), msg };
     let file_name = path.file_name().ok_or_else(|| werr("not a file path".into()))?;
     let mut tmp_name = std::ffi::OsString::from(".");
     tmp_name.push(file_name);
     tmp_name.push(format!(".{}.tmp", std::process::id()));
     let tmp = path.with_file_name(tmp_name);
-    let result = match ext.as_deref() {
-        Some("exr") => write_exr(&tmp, img).map_err(|e| werr(e.to_string())),
-        Some("png") => write_png(&tmp, img, exposure).map_err(werr),
-        _ => return Err(ImageIoError::Extension { path: path.to_path_buf() }),
-    };
-    if let Err(e) = result {
+    if let Err(e) = write(&tmp) {
         let _ = std::fs::remove_file(&tmp);
-        return Err(e);
+        return Err(werr(e));
     }
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
@@ -54,17 +60,21 @@ pub fn linear_to_srgb(x: f32) -> f32 {
     }
 }
 
-fn write_png(path: &Path, img: &RgbImage, exposure: f32) -> Result<(), String> {
+/// 8-bit sRGB of `exposure`-scaled (stops) linear values, clamped; non-finite values black.
+pub fn to_srgb8(img: &RgbImage, exposure: f32) -> Vec<u8> {
     let scale = 2f32.powf(exposure);
-    let bytes: Vec<u8> = img
-        .data
+    img.data
         .iter()
         .map(|&v| {
             let v = if v.is_finite() { v * scale } else { 0.0 };
             (linear_to_srgb(v.clamp(0.0, 1.0)) * 255.0 + 0.5) as u8
         })
-        .collect();
-    image::save_buffer_with_format(path, &bytes, img.width, img.height, image::ColorType::Rgb8, image::ImageFormat::Png).map_err(|e| e.to_string())
+        .collect()
+}
+
+/// Writes 8-bit RGB rows (top to bottom) as PNG; not atomic by itself (see [`write_atomically`]).
+pub fn write_png_rgb8(path: &Path, rgb: &[u8], width: u32, height: u32) -> Result<(), String> {
+    image::save_buffer_with_format(path, rgb, width, height, image::ColorType::Rgb8, image::ImageFormat::Png).map_err(|e| e.to_string())
 }
 
 /// Reads the first RGB(A) layer of an EXR file as linear RGB.

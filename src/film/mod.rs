@@ -4,7 +4,7 @@
 mod io;
 pub mod metrics;
 
-pub use io::{linear_to_srgb, read_exr, write_image, ImageIoError};
+pub use io::{linear_to_srgb, read_exr, to_srgb8, write_atomically, write_image, write_png_rgb8, ImageIoError};
 
 /// A linear RGB float image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq)]

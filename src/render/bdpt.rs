@@ -12,9 +12,11 @@ pub enum Join {
 }
 
 impl Join {
+    /// The name `from_str` reads back (k = 1 is `single`).
     pub fn name(self) -> String {
         match self {
             Join::Full => "full".into(),
+            Join::K(1) => "single".into(),
             Join::K(k) => format!("k={k}"),
         }
     }

@@ -9,7 +9,9 @@
 //! keys) and `gltf/` read files; `builder.rs` assembles the one compact vertex/triangle list
 //! both loaders share (normal/UV filling, degenerate triangles); `texture.rs` decodes images
 //! in parallel; `camera.rs` holds the pinhole conventions; `stats.rs` the derived data
-//! (emitters and their power, bounds, byte counts); `builtin.rs` the embedded Cornell box.
+//! (emitters and their power, bounds, byte counts); `builtin.rs` the embedded Cornell box;
+//! `quad_light.rs` emissive quads added from the command line (`--quad-light`, the modified
+//! Sponza's sun and sky).
 
 mod builder;
 mod builtin;
@@ -19,6 +21,7 @@ mod gltf;
 mod mtl;
 mod obj;
 mod obj_check;
+mod quad_light;
 mod stats;
 mod texture;
 mod warnings;
@@ -28,6 +31,7 @@ pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
 pub use error::SceneError;
 pub use gltf::load_gltf;
 pub use obj::{load_obj, load_obj_str};
+pub use quad_light::{parse_vec3, QuadLight, QuadLightError};
 pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts};
 pub use texture::srgb_to_linear;
 
