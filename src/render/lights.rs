@@ -3,12 +3,8 @@
 
 use crate::gpu::abi::{GpuAlias, GpuEmitter};
 use crate::scene::Scene;
-use glam::Vec3;
 
-/// Rec. 709 luminance of linear RGB.
-pub fn luminance(c: Vec3) -> f32 {
-    0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z
-}
+pub use crate::scene::luminance;
 
 /// Emitters with their alias table.
 #[derive(Clone, Debug, Default)]

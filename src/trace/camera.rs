@@ -23,19 +23,10 @@ pub fn gpu_camera(cam: &Camera) -> GpuCamera {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Vec3;
 
     #[test]
     fn cornell_camera_right_is_minus_x() {
-        let cam = Camera {
-            name: "c".into(),
-            eye: Vec3::new(278.0, 273.0, -800.0),
-            target: Vec3::new(278.0, 273.0, -799.0),
-            up: Vec3::Y,
-            fov_y_deg: 39.3077,
-            width: 256,
-            height: 256,
-        };
+        let cam = Camera::cornell_box();
         let g = gpu_camera(&cam);
         assert!(g.right.x < 0.0 && g.right.y.abs() < 1e-6, "right = forward x up = -x");
         assert!((g.up.y - (39.3077f32.to_radians() / 2.0).tan()).abs() < 1e-6);
