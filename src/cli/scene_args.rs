@@ -93,7 +93,7 @@ impl SceneArgs {
     /// cameras is framed on its own geometry, not on lights far above it).
     pub fn load(&self) -> anyhow::Result<LoadedScene> {
         let start = Instant::now();
-        let (scene, warnings) = match &self.scene {
+        let (mut scene, warnings) = match &self.scene {
             Some(path) => {
                 let loaded = scene::load(path, &LoadOptions { strict: self.strict })?;
                 (loaded.scene, loaded.warnings)
@@ -102,7 +102,6 @@ impl SceneArgs {
         };
         let load_time = start.elapsed();
         let (camera, camera_index) = self.resolve_camera(&scene)?;
-        let mut scene = scene;
         for (quad, name) in self.added_lights() {
             scene.add_quad_light(&quad, &name);
         }
@@ -242,8 +241,17 @@ mod tests {
         assert_eq!(l.scene.emitters().len(), base.emitters().len() + 4);
         let names: Vec<&str> = l.scene.materials.iter().rev().take(2).map(|m| m.name.as_str()).collect();
         assert_eq!(names, ["quad-light-1", "quad-light-0"]);
-        // The camera is resolved before the lights are added.
-        assert_eq!(l.camera, Camera::cornell_box());
+
+        // A scene without cameras is framed on its geometry, not on lights added above it.
+        let obj = std::env::temp_dir().join(format!("bidir-scene-args-{}.obj", std::process::id()));
+        std::fs::write(&obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        let path = obj.to_str().unwrap();
+        let plain = args(&[path]).unwrap().load().unwrap();
+        let lit = args(&[path, "--quad-light", "0,100,0;1,0,0;0,0,1;1,1,1"]).unwrap().load().unwrap();
+        std::fs::remove_file(&obj).unwrap();
+        assert_eq!(plain.camera_index, None);
+        assert_eq!(lit.camera, plain.camera);
+        assert_eq!(lit.scene.emitters().len(), 2);
 
         let l = args(&["--sponza-sun-sky"]).unwrap().load().unwrap();
         assert_eq!(l.scene.emitters().len(), base.emitters().len() + 4);
