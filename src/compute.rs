@@ -2,7 +2,7 @@
 //! sum (stream compaction and light-path offsets build on them).
 
 use crate::gpu::{abi, kernels};
-use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Result};
+use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result};
 
 /// Sum and exclusive-scan kernels, built once.
 pub struct Scan {
@@ -40,51 +40,70 @@ impl Scan {
 
     /// In-place exclusive prefix sum of the first `count` u32s of `data`.
     pub fn exclusive_scan(&self, ctx: &Context, data: &Buffer, count: u32) -> Result<()> {
-        // One block-sums buffer per level: count/256, count/256^2, ... down to one block.
+        let plan = ScanPlan::new(ctx, count)?;
+        ctx.submit("exclusive_scan", |rec| self.record(rec, &plan, data))
+    }
+
+    /// Records the in-place exclusive prefix sum of the first `plan.count` u32s of `data`
+    /// into `rec` (so a scan can sit between other passes of one submission).
+    pub fn record(&self, rec: &mut Recorder, plan: &ScanPlan, data: &Buffer) -> Result<()> {
+        if plan.levels.is_empty() {
+            if plan.count == 1 {
+                rec.fill_buffer_range(data, 0, 4, 0);
+            }
+            return Ok(());
+        }
+        // Down: scan each level's blocks, writing block totals to the next level.
+        for (i, (n, sums)) in plan.levels.iter().enumerate() {
+            let target = if i == 0 { data } else { &plan.levels[i - 1].1 };
+            let push = abi::ScanPush { count: *n, ..Default::default() };
+            rec.dispatch(
+                &self.block,
+                &[Bind::buffer(abi::SCAN_BIND_DATA, target), Bind::buffer(abi::SCAN_BIND_BLOCK_SUMS, sums)],
+                bytemuck::bytes_of(&push),
+                [self.block.groups_for(*n), 1, 1],
+            )?;
+        }
+        // Up: add each level's scanned block offsets back into the level below.
+        for i in (0..plan.levels.len().saturating_sub(1)).rev() {
+            let (n, sums) = &plan.levels[i];
+            let target = if i == 0 { data } else { &plan.levels[i - 1].1 };
+            let push = abi::ScanPush { count: *n, ..Default::default() };
+            rec.dispatch(
+                &self.add,
+                &[Bind::buffer(abi::SCAN_BIND_DATA, target), Bind::buffer(abi::SCAN_BIND_BLOCK_SUMS, sums)],
+                bytemuck::bytes_of(&push),
+                [self.add.groups_for(*n), 1, 1],
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// The block-sum buffers a scan of `count` elements needs (count/256, count/256^2, ... down
+/// to one block), allocated once so the scan can be recorded every frame.
+pub struct ScanPlan {
+    count: u32,
+    levels: Vec<(u32, Buffer)>,
+}
+
+impl ScanPlan {
+    pub fn new(ctx: &Context, count: u32) -> Result<Self> {
         let mut levels = Vec::new();
         let mut n = count;
         while n > 1 {
-            let blocks = self.block.groups_for(n);
+            let blocks = n.div_ceil(abi::SCAN_WG_SIZE);
             levels.push((n, ctx.create_buffer(&format!("scan.block_sums[{}]", levels.len()), blocks as u64 * 4, Memory::Device)?));
             if blocks == 1 {
                 break;
             }
             n = blocks;
         }
-        if levels.is_empty() {
-            if count == 1 {
-                ctx.submit("scan single", |rec| {
-                    rec.fill_buffer_range(data, 0, 4, 0);
-                    Ok(())
-                })?;
-            }
-            return Ok(());
-        }
-        ctx.submit("exclusive_scan", |rec| {
-            // Down: scan each level's blocks, writing block totals to the next level.
-            for (i, (n, sums)) in levels.iter().enumerate() {
-                let target = if i == 0 { data } else { &levels[i - 1].1 };
-                let push = abi::ScanPush { count: *n, ..Default::default() };
-                rec.dispatch(
-                    &self.block,
-                    &[Bind::buffer(abi::SCAN_BIND_DATA, target), Bind::buffer(abi::SCAN_BIND_BLOCK_SUMS, sums)],
-                    bytemuck::bytes_of(&push),
-                    [self.block.groups_for(*n), 1, 1],
-                )?;
-            }
-            // Up: add each level's scanned block offsets back into the level below.
-            for i in (0..levels.len().saturating_sub(1)).rev() {
-                let (n, sums) = &levels[i];
-                let target = if i == 0 { data } else { &levels[i - 1].1 };
-                let push = abi::ScanPush { count: *n, ..Default::default() };
-                rec.dispatch(
-                    &self.add,
-                    &[Bind::buffer(abi::SCAN_BIND_DATA, target), Bind::buffer(abi::SCAN_BIND_BLOCK_SUMS, sums)],
-                    bytemuck::bytes_of(&push),
-                    [self.add.groups_for(*n), 1, 1],
-                )?;
-            }
-            Ok(())
-        })
+        Ok(ScanPlan { count, levels })
+    }
+
+    /// Elements scanned.
+    pub fn count(&self) -> u32 {
+        self.count
     }
 }

@@ -103,3 +103,11 @@ fn bdpt_single_join_matches_reference() {
     assert_close("bdpt:single vs reference", &img, &reference);
     assert_close("bdpt:single vs pt-nee", &img, pt_nee());
 }
+
+#[test]
+fn bdpt_light_vertex_cache_matches_reference() {
+    let Some(reference) = reference() else { return };
+    let img = render(Integrator::Bdpt(Join::Lvc(0)));
+    assert_close("bdpt:lvc vs reference", &img, &reference);
+    assert_close("bdpt:lvc vs pt-nee", &img, pt_nee());
+}

@@ -89,3 +89,11 @@ fn furnace_bdpt_k_step_and_single() {
     check(Integrator::Bdpt(bidir::render::Join::K(2)), 0.8, 0.25, 96);
     check(Integrator::Bdpt(bidir::render::Join::K(1)), 0.5, 1.0, 24);
 }
+
+#[test]
+fn furnace_bdpt_light_vertex_cache() {
+    // rho = 0.8: light paths often outgrow the 8-slot reservoir, so the cache's per-path
+    // stored/seen correction is exercised too.
+    check(Integrator::Bdpt(bidir::render::Join::Lvc(0)), 0.8, 0.25, 96);
+    check(Integrator::Bdpt(bidir::render::Join::Lvc(1)), 0.5, 1.0, 24);
+}

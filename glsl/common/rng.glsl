@@ -50,18 +50,30 @@ uint nested_uniform_scramble(uint x, uint seed) {
 
 // sobol_point(index, dim) comes from the generated bidir_sobol.glsl.
 
-// Uniform in [0, 1): the top 24 bits of the next value.
-float rng_next(inout Rng r) {
+// The next 32 random bits.
+uint rng_next_uint(inout Rng r) {
     if (SAMPLER == SAMPLER_SOBOL) {
         uint group_seed = pcg_hash(r.state ^ pcg_hash(r.dim / 4u));
         uint shuffled = nested_uniform_scramble(r.index, group_seed);
         uint k = r.dim % 4u;
-        uint x = nested_uniform_scramble(sobol_point(shuffled, k), pcg_hash(group_seed ^ (k + 1u)));
         r.dim++;
-        return float(x >> 8u) * (1.0 / 16777216.0);
+        return nested_uniform_scramble(sobol_point(shuffled, k), pcg_hash(group_seed ^ (k + 1u)));
     }
     r.state = pcg_hash(r.state);
-    return float(r.state >> 8u) * (1.0 / 16777216.0);
+    return r.state;
+}
+
+// Uniform in [0, 1): the top 24 bits of the next value.
+float rng_next(inout Rng r) {
+    return float(rng_next_uint(r) >> 8u) * (1.0 / 16777216.0);
+}
+
+// Uniform integer in [0, n): the high word of a 32 x 32-bit product (Lemire 2019 without the
+// rejection step; the bias is below n / 2^32, where a float's 24 bits would give n / 2^24).
+uint rng_below(inout Rng r, uint n) {
+    uint hi, lo;
+    umulExtended(rng_next_uint(r), n, hi, lo);
+    return hi;
 }
 
 #endif

@@ -1,10 +1,11 @@
 #version 460
 // BDPT, pass 2: one camera subpath per pixel, joined to the light subpath of the same index.
 // At each vertex: s = 0 when it is an emitter, s = 1 with a fresh light sample, and s >= 2
-// with stored light vertices — all of them (full join) or `join_k` chosen uniformly (k-step
-// join). A connection's contribution is divided by the probability that it was evaluated
-// (the reservoir's L / n and k-step's k / stored), so with the fixed full-BDPT MIS weights
-// the estimator stays unbiased whichever join runs (docs/integrators.md).
+// with stored light vertices — all of them (full join), `join_k` chosen uniformly (k-step
+// join), or `join_k` drawn from every path's vertices (light vertex cache). A connection's
+// contribution is divided by the probability that it was evaluated (the reservoir's L / n,
+// k-step's k / stored, the cache's k / total), so with the fixed full-BDPT MIS weights the
+// estimator stays unbiased whichever join runs (docs/integrators.md).
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -20,6 +21,9 @@ layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { BdptPush pc; };
+// The light vertex cache (JOIN_LVC): stored slots of every light path, densely listed.
+layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
+layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 
 // Connection of camera vertex (p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc) to light vertex y.
 vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_in, float pd, vec3 f, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
@@ -117,7 +121,28 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
             }
             // s >= 2: stored light vertices. Vertex y has light subpath segments y.wi.w, so
             // the full path has y.wi.w + 1 + depth segments.
-            if (lc.x > 0u) {
+            if (pc.join == JOIN_LVC) {
+                // Light vertex cache: `joins` vertices drawn uniformly from the `total` stored
+                // by all light paths. A drawn vertex y of path p was evaluated with
+                // probability joins / total given the cache, and stored with p's reservoir
+                // probability stored / seen; dividing by both and by the number of light
+                // paths makes the expectation the full join's (docs/integrators.md).
+                uint total = lvc_total;
+                if (total > 0u) {
+                    uint joins = pc.join_k > 0u ? pc.join_k : max(1u, uint(float(total) / float(pc.light_paths) + 0.5));
+                    float scale = float(total) / (float(joins) * float(pc.light_paths));
+                    for (uint j = 0u; j < joins; j++) {
+                        uint slot = lvc_index[rng_below(rng, total)];
+                        uvec2 c = light_counts[slot / pc.light_path_len];
+                        LightVertex y = light_vertices[slot];
+                        if (pc.max_depth != 0u && uint(y.wi.w) + 1u + depth > pc.max_depth) {
+                            continue;
+                        }
+                        float inv_q = scale * float(c.y) / float(c.x);
+                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc, y, stats);
+                    }
+                }
+            } else if (lc.x > 0u) {
                 bool full = pc.join == JOIN_FULL || pc.join_k >= lc.x;
                 uint joins = full ? lc.x : pc.join_k;
                 // Evaluation probability of a vertex: reservoir (stored / seen) times the

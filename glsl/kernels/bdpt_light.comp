@@ -21,6 +21,8 @@ layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_SPLAT) buffer Splat { float splat[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { BdptPush pc; };
+// Stored vertices per path, for the light vertex cache's scan (written whatever the join).
+layout(std430, binding = BIND_LVC_OFFSETS) writeonly buffer LvcOffsets { uint lvc_offsets[]; };
 
 // Strategy t = 1: joins the light vertex at `p` to the eye and splats its contribution.
 void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, float pd, vec3 beta_f, float d_vcm, float d_vc, inout uvec2 stats) {
@@ -73,6 +75,7 @@ void main() {
     uint base = path * pc.light_path_len;
     if (pc.emitter_count == 0u) {
         light_counts[path] = uvec2(0u);
+        lvc_offsets[path] = 0u;
         return;
     }
     Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
@@ -85,6 +88,7 @@ void main() {
     float emission_pdf_w = direct_pdf_a * cos0 / PI;
     if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
         light_counts[path] = uvec2(0u);
+        lvc_offsets[path] = 0u;
         return;
     }
     vec3 beta = ls.le * cos0 / emission_pdf_w;
@@ -168,4 +172,5 @@ void main() {
         }
     }
     light_counts[path] = uvec2(stored, seen);
+    lvc_offsets[path] = stored;
 }

@@ -16,7 +16,7 @@ pub struct RenderArgs {
     /// pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N
     #[arg(long, default_value = "pt-nee")]
     pub integrator: Integrator,
-    /// BDPT join (overrides the one in --integrator): full | single | k=N.
+    /// BDPT join (overrides the one in --integrator): full | single | k=N | lvc | lvc=N.
     #[arg(long)]
     pub join: Option<Join>,
     /// Samples per pixel (default 64 unless --time is given).

@@ -15,7 +15,7 @@ pub struct ViewArgs {
     /// pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N (keys 1/2/3 switch)
     #[arg(long, default_value = "pt-nee")]
     pub integrator: Integrator,
-    /// BDPT join (overrides the one in --integrator): full | single | k=N.
+    /// BDPT join (overrides the one in --integrator): full | single | k=N | lvc | lvc=N.
     #[arg(long)]
     pub join: Option<Join>,
     #[arg(long, default_value_t = 0)]

@@ -83,9 +83,17 @@ gpu_consts! {
     pub const BIND_LIGHT_VERTICES: u32 = 18;
     pub const BIND_LIGHT_COUNTS: u32 = 19;
     pub const BIND_SPLAT: u32 = 20;
+    /// Light vertex cache (bdpt:lvc): per light path its stored-vertex count, scanned in
+    /// place into offsets; the dense list of stored-vertex slots; and its length.
+    pub const BIND_LVC_OFFSETS: u32 = 22;
+    pub const BIND_LVC_INDEX: u32 = 23;
+    pub const BIND_LVC_TOTAL: u32 = 24;
     /// BDPT joins (BdptPush::join).
     pub const JOIN_FULL: u32 = 0;
     pub const JOIN_K: u32 = 1;
+    /// Light vertex cache (Davidovic et al. 2014): `join_k` vertices (0: the mean stored per
+    /// light path) drawn uniformly from every light path's stored vertices.
+    pub const JOIN_LVC: u32 = 2;
     /// Invocations per workgroup of the integrator kernels (PT_WG_SIZE x 1).
     pub const PT_WG_SIZE: u32 = 64;
     /// `GpuTexture::flags` bit: texels are sRGB-encoded.

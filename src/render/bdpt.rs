@@ -9,6 +9,10 @@ pub enum Join {
     Full,
     /// `k` stored light vertices chosen uniformly (with replacement) per camera vertex.
     K(u32),
+    /// The light vertex cache of Davidovič et al. 2014: `k` vertices drawn uniformly from the
+    /// vertices of every light path of the iteration (0: as many as a light path stores on
+    /// average, so the work matches the full join's but is the same for every thread).
+    Lvc(u32),
 }
 
 impl Join {
@@ -18,6 +22,8 @@ impl Join {
             Join::Full => "full".into(),
             Join::K(1) => "single".into(),
             Join::K(k) => format!("k={k}"),
+            Join::Lvc(0) => "lvc".into(),
+            Join::Lvc(k) => format!("lvc={k}"),
         }
     }
 }
@@ -28,23 +34,40 @@ impl std::str::FromStr for Join {
         match s {
             "full" => Ok(Join::Full),
             "single" => Ok(Join::K(1)),
-            _ => match s.strip_prefix("k=").map(str::parse::<u32>) {
-                Some(Ok(k)) if k >= 1 => Ok(Join::K(k)),
-                _ => Err(format!("unknown join '{s}' (full | single | k=N with N >= 1)")),
+            "lvc" => Ok(Join::Lvc(0)),
+            _ => match (s.strip_prefix("k=").map(str::parse::<u32>), s.strip_prefix("lvc=").map(str::parse::<u32>)) {
+                (Some(Ok(k)), _) if k >= 1 => Ok(Join::K(k)),
+                (_, Some(Ok(k))) if k >= 1 => Ok(Join::Lvc(k)),
+                _ => Err(format!("unknown join '{s}' (full | single | k=N | lvc | lvc=N, with N >= 1)")),
             },
         }
     }
 }
 
-/// The megakernel BDPT: a light-subpath pass and a camera-subpath pass per iteration.
+/// What the light vertex cache adds to the megakernel: a scan of the stored counts and a
+/// pass that lists every stored slot densely.
+struct Lvc {
+    scan: crate::compute::Scan,
+    plan: crate::compute::ScanPlan,
+    compact: Kernel,
+    index: Buffer,
+    total: Buffer,
+}
+
+/// The megakernel BDPT: a light-subpath pass and a camera-subpath pass per iteration (with
+/// the light vertex cache, a scan and a listing pass between them).
 pub struct Bdpt {
     light: Kernel,
     camera: Kernel,
     vertices: Buffer,
     counts: Buffer,
+    /// Per light path its stored count, then (scanned) its first cache entry.
+    lvc_offsets: Buffer,
+    /// The light vertex cache's scan, list and length (only for `Join::Lvc`).
+    lvc: Option<Lvc>,
     pub join: Join,
     pub light_path_len: u32,
-    /// Bytes of light-vertex storage.
+    /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list).
     pub vertex_bytes: u64,
 }
 
@@ -71,14 +94,27 @@ impl Bdpt {
             VkError::Alloc { bytes, .. } => RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len")),
             e => e.into(),
         })?;
+        let lvc = match join {
+            Join::Lvc(_) => Some(Lvc {
+                scan: crate::compute::Scan::new(ctx)?,
+                plan: crate::compute::ScanPlan::new(ctx, paths)?,
+                compact: ctx.create_kernel(&kernels::LVC_COMPACT, &[])?,
+                index: ctx.create_buffer("bdpt.lvc_index", paths as u64 * light_path_len as u64 * 4, Memory::Device)?,
+                total: ctx.create_buffer("bdpt.lvc_total", 16, Memory::Device)?,
+            }),
+            _ => None,
+        };
+        let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4);
         Ok(Bdpt {
+            lvc_offsets: ctx.create_buffer("bdpt.lvc_offsets", paths as u64 * 4, Memory::Device)?,
+            lvc,
             light: ctx.create_kernel(&kernels::BDPT_LIGHT, &specs)?,
             camera: ctx.create_kernel(&kernels::BDPT_CAMERA, &specs)?,
             vertices,
             counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
             join,
             light_path_len,
-            vertex_bytes: bytes,
+            vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
         })
     }
 
@@ -90,7 +126,20 @@ impl Bdpt {
         binds.push(Bind::buffer(abi::BIND_RENDER_STATS, &film.stats));
         binds.push(Bind::buffer(abi::BIND_SPLAT, film.splat.as_ref().expect("BDPT films have a splat buffer")));
         binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
+        binds.push(Bind::buffer(abi::BIND_LVC_OFFSETS, &self.lvc_offsets));
+        if let Some(lvc) = &self.lvc {
+            binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &lvc.index));
+            binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &lvc.total));
+        } else {
+            // The camera kernel declares the cache; the megakernel joins never read it.
+            binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &self.lvc_offsets));
+            binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &self.lvc_offsets));
+        }
         rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(push.light_paths), 1, 1])?;
+        if let Some(lvc) = &self.lvc {
+            lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets)?;
+            rec.dispatch(&lvc.compact, &binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(push.light_paths), 1, 1])?;
+        }
         let n = crate::trace::tiled_invocations(film.width, film.height);
         rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])
     }
@@ -106,5 +155,11 @@ mod tests {
         assert_eq!("k=4".parse::<Join>().unwrap(), Join::K(4));
         assert!("k=0".parse::<Join>().is_err());
         assert!("k=x".parse::<Join>().is_err());
+        assert_eq!("lvc".parse::<Join>().unwrap(), Join::Lvc(0));
+        assert_eq!("lvc=3".parse::<Join>().unwrap(), Join::Lvc(3));
+        assert!("lvc=0".parse::<Join>().is_err());
+        for j in [Join::Full, Join::K(1), Join::K(4), Join::Lvc(0), Join::Lvc(2)] {
+            assert_eq!(j.name().parse::<Join>().unwrap(), j);
+        }
     }
 }

@@ -62,7 +62,7 @@ impl std::str::FromStr for Integrator {
             "bdpt" => Ok(Integrator::Bdpt(Join::Full)),
             _ => match s.strip_prefix("bdpt:") {
                 Some(j) => Ok(Integrator::Bdpt(j.parse()?)),
-                None => Err(format!("unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N)")),
+                None => Err(format!("unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N)")),
             },
         }
     }
@@ -281,9 +281,10 @@ impl Renderer {
                 self.ctx.submit("render pass", |rec| pt.record(rec, &self.scene, &self.film, &push))?;
             }
             Kernels::Bdpt(b) => {
-                let join_k = match b.join {
-                    Join::Full => 0,
-                    Join::K(k) => k,
+                let (join, join_k) = match b.join {
+                    Join::Full => (crate::gpu::abi::JOIN_FULL, 0),
+                    Join::K(k) => (crate::gpu::abi::JOIN_K, k),
+                    Join::Lvc(k) => (crate::gpu::abi::JOIN_LVC, k),
                 };
                 self.ctx.submit("bdpt pass", |rec| {
                     for i in 0..spp {
@@ -296,7 +297,7 @@ impl Renderer {
                             max_depth: s.max_depth,
                             rr_depth: s.rr_depth,
                             light_path_len: b.light_path_len,
-                            join: if b.join == Join::Full { crate::gpu::abi::JOIN_FULL } else { crate::gpu::abi::JOIN_K },
+                            join,
                             join_k,
                             light_paths: self.film.width * self.film.height,
                             pad0: 0,
