@@ -26,6 +26,16 @@ float luminance(vec3 c) {
     return dot(c, vec3(0.2126, 0.7152, 0.0722));
 }
 
+// Importance (light-path throughput) scattered at a vertex with shading normals is not
+// symmetric with radiance: the adjoint BSDF picks up |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|)
+// (Veach 1997, section 5.3.2, eq. 5.20), wo toward the vertex the light came from, wi the
+// direction it leaves in. It is 1 where ns = ng (flat shading). Applied at every light-path
+// scattering and at the light vertex of every connection; camera paths need none.
+float shading_normal_adjoint(vec3 wo, vec3 wi, vec3 ns, vec3 ng) {
+    float den = abs(dot(wo, ng)) * abs(dot(wi, ns));
+    return den > 0.0 ? abs(dot(wo, ns)) * abs(dot(wi, ng)) / den : 0.0;
+}
+
 // Distance from the eye to the image plane on which a pixel is 1 x 1.
 float image_plane_distance(GpuCamera cam) {
     return float(cam.size.y) / (2.0 * length(cam.up.xyz));

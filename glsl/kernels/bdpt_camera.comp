@@ -25,8 +25,9 @@ layout(push_constant) uniform Push { BdptPush pc; };
 layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 
-// Connection of camera vertex (p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc) to light vertex y.
-vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_in, float pd, vec3 f, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
+// Connection of camera vertex (p, ns_f, ng_f, cos_back, pd, f, d_vcm, d_vc) to light vertex y;
+// cos_back is the shading cosine toward the previous camera vertex (0 below the hemisphere).
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_back, float pd, vec3 f, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
     vec3 v = y.pos.xyz - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
@@ -36,7 +37,7 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_in, float pd, vec3 f, float
         return vec3(0.0);
     }
     float cam_dir_pdf_w = pd * cos_c / PI;
-    float cam_rev_pdf_w = pd * cos_in / PI;
+    float cam_rev_pdf_w = pd * cos_back / PI;
     float light_dir_pdf_w = y.ng.w * cos_y / PI;
     float light_rev_pdf_w = y.ng.w * max(0.0, dot(y.ns.xyz, y.wi.xyz)) / PI;
     float cam_dir_pdf_a = cam_dir_pdf_w * cos_y / dist2;
@@ -44,6 +45,9 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_in, float pd, vec3 f, float
     float w_light = mis(cam_dir_pdf_a) * (y.pos.w + y.ns.w * mis(light_rev_pdf_w));
     float w_camera = mis(light_dir_pdf_a) * (d_vcm + d_vc * mis(cam_rev_pdf_w));
     float g = cos_c * cos_y / dist2;
+    if (HAS_NORMALS != 0u) {
+        g *= shading_normal_adjoint(y.wi.xyz, -dir, y.ns.xyz, y.ng.xyz);
+    }
     vec3 contrib = f * y.beta_f.rgb * (g / (w_light + 1.0 + w_camera));
     if (max3(contrib) <= 0.0 || !visible_between(p, ng_f, y.pos.xyz, y.ng.xyz, stats)) {
         return vec3(0.0);
@@ -72,6 +76,9 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
         vec3 ng_f = s.front ? s.ng : -s.ng;
         vec3 ns_f = s.front ? s.ns : -s.ns;
         float cos_in = abs(dot(ns_f, -d));
+        // Pdf of sampling the way back (light paths' view): zero where a tilted shading
+        // normal puts the previous vertex below the shading hemisphere.
+        float cos_back = max(0.0, dot(ns_f, -d));
         d_vcm *= mis(h.t * h.t);
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
@@ -82,8 +89,13 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
                 radiance += beta * m.emission.rgb;
             } else {
                 float direct_pdf_a = m.emission.w / pc.emitter_power;
-                float emission_pdf_w = direct_pdf_a * max(0.0, -dot(s.ng, d)) / PI;
-                float w_camera = mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * d_vc;
+                float cos_l = max(0.0, -dot(s.ng, d));
+                float emission_pdf_w = direct_pdf_a * cos_l / PI;
+                // Light sampling and emission see an emitter through its geometric normal:
+                // redo this vertex's solid-angle-to-area step (done above with the shading
+                // cosine) with it, or s = 0 and s = 1 would weigh the path inconsistently.
+                float to_geometric = HAS_NORMALS != 0u ? mis(cos_in / cos_l) : 1.0;
+                float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * d_vc) * to_geometric;
                 radiance += beta * m.emission.rgb / (1.0 + w_camera);
             }
         }
@@ -94,6 +106,12 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
         float refl = HAS_MIRROR != 0u ? m.params.x : 0.0;
         float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
         float pd = max(0.0, 1.0 - refl - refr);
+        // The diffuse lobe is zero unless both directions lie above the shading normal too
+        // (reciprocal, as the light paths need); cos_back is 0 exactly then.
+        bool diffuse_ok = HAS_NORMALS == 0u || cos_back > 0.0;
+        if (!diffuse_ok) {
+            pd = 0.0;
+        }
         vec3 albedo = vec3(0.0);
         if (pd > 0.0) {
             albedo = material_albedo(m, s.uv);
@@ -110,7 +128,7 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
                     float direct_pdf_w = dist2 / (ls.area * cos_l);
                     float emission_pdf_w = cos_l / (ls.area * PI);
                     float bsdf_dir_pdf_w = pd * cos_s / PI;
-                    float bsdf_rev_pdf_w = pd * cos_in / PI;
+                    float bsdf_rev_pdf_w = pd * cos_back / PI;
                     float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
                     float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * f * ls.le * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
@@ -139,7 +157,7 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
                             continue;
                         }
                         float inv_q = scale * float(c.y) / float(c.x);
-                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc, y, stats);
+                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_back, pd, f, d_vcm, d_vc, y, stats);
                     }
                 }
             } else if (lc.x > 0u) {
@@ -154,7 +172,7 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
                     if (pc.max_depth != 0u && uint(y.wi.w) + 1u + depth > pc.max_depth) {
                         continue;
                     }
-                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_in, pd, f, d_vcm, d_vc, y, stats);
+                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_back, pd, f, d_vcm, d_vc, y, stats);
                 }
             }
         }
@@ -162,13 +180,16 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
         // Continue by sampling the BSDF (radiance transport).
         uint lobe = choose_lobe(m, rng_next(rng));
         if (lobe == LOBE_DIFFUSE) {
+            if (!diffuse_ok) {
+                break;
+            }
             vec3 dn = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
             if (dot(dn, ng_f) <= 0.0) {
                 break;
             }
             float cos_out = dot(dn, ns_f);
             float pdf_fwd_w = pd * cos_out / PI;
-            float pdf_rev_w = pd * cos_in / PI;
+            float pdf_rev_w = pd * cos_back / PI;
             beta *= albedo;
             d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
             d_vcm = mis(1.0 / pdf_fwd_w);

@@ -44,7 +44,8 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, float pd, vec3 bet
     float image_to_surface = image_to_solid_angle * cos_to_cam / dist2; // camera pdf_a
     float bsdf_rev_pdf_w = pd * max(0.0, dot(ns_f, wi)) / PI;
     float w_light = mis(image_to_surface / float(pc.light_paths)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
-    vec3 contrib = beta_f * (image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
+    float adjoint = HAS_NORMALS != 0u ? shading_normal_adjoint(wi, w, ns_f, ng_f) : 1.0;
+    vec3 contrib = beta_f * (adjoint * image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
     if (max3(contrib) <= 0.0) {
         return;
     }
@@ -115,6 +116,12 @@ void main() {
         float refl = HAS_MIRROR != 0u ? m.params.x : 0.0;
         float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
         float pd = max(0.0, 1.0 - refl - refr);
+        // The diffuse lobe is zero unless light arrives from above the shading normal too
+        // (the camera paths' BSDF, made reciprocal).
+        bool diffuse_ok = HAS_NORMALS == 0u || dot(ns_f, wi) > 0.0;
+        if (!diffuse_ok) {
+            pd = 0.0;
+        }
         if (pd > 0.0) {
             vec3 beta_f = beta * pd * material_albedo(m, s.uv) / PI;
             // Reservoir: keep the seen-th vertex with probability L / seen.
@@ -135,13 +142,16 @@ void main() {
         // Continue by sampling the BSDF (importance transport: no eta^2 radiance scaling).
         uint lobe = choose_lobe(m, rng_next(rng));
         if (lobe == LOBE_DIFFUSE) {
+            if (!diffuse_ok) {
+                break;
+            }
             vec3 dn = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
             if (dot(dn, ng_f) <= 0.0) {
                 break;
             }
             float cos_out = dot(dn, ns_f);
             float pdf_fwd_w = pd * cos_out / PI;
-            float pdf_rev_w = pd * cos_in / PI;
+            float pdf_rev_w = pd * max(0.0, dot(ns_f, wi)) / PI; // 0 below the shading hemisphere
             beta *= material_albedo(m, s.uv);
             d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
             d_vcm = mis(1.0 / pdf_fwd_w);
@@ -160,6 +170,9 @@ void main() {
             d_vcm = 0.0;
             d_vc *= mis(abs(dot(dn, ns_f)));
             d = dn;
+        }
+        if (HAS_NORMALS != 0u) {
+            beta *= shading_normal_adjoint(wi, d, ns_f, ng_f);
         }
         o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
 

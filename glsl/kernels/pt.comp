@@ -77,6 +77,11 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
             specular = true;
         } else {
+            // The diffuse lobe is zero unless both directions lie above the shading normal
+            // too (a reciprocal BSDF, so light paths can follow it: docs/integrators.md).
+            if (HAS_NORMALS != 0u && dot(ns_f, -d) <= 0.0) {
+                break;
+            }
             vec3 albedo = material_albedo(m, s.uv);
             vec3 p_off = offset_ray_origin(s.p, ng_f);
             // Next-event estimation: an emitter point by power, one shadow ray.

@@ -2,10 +2,11 @@
 //! integrators, with a CSV, charts and the final images (`bidir::bench::converge`).
 
 use super::scene_args::SceneArgs;
+use super::settings_args::SettingsArgs;
 use anyhow::Context as _;
 use bidir::bench::converge::{self, Options, Presentation, Schedule, XAxis};
 use bidir::film;
-use bidir::render::{Integrator, RenderSettings};
+use bidir::render::Integrator;
 use bidir::vk::{Context, ContextOptions};
 use std::path::PathBuf;
 
@@ -22,8 +23,9 @@ pub struct ConvergeArgs {
     /// Converged image of the same scene, camera and size (EXR, linear RGB)
     #[arg(long, value_name = "REF.exr")]
     pub reference: PathBuf,
-    /// Integrators, rendered one after the other: pt | pt-nee | bdpt:full | bdpt:single | bdpt:k=N
-    #[arg(long, value_delimiter = ',', default_value = "pt,pt-nee,bdpt:full,bdpt:single,bdpt:k=4")]
+    /// Integrators, rendered one after the other: pt | pt-nee | bdpt:full | bdpt:single |
+    /// bdpt:k=N | bdpt:lvc | bdpt:lvc=N
+    #[arg(long, value_delimiter = ',', default_value = "pt,pt-nee,bdpt:lvc,bdpt:full,bdpt:single,bdpt:k=4")]
     pub integrators: Vec<Integrator>,
     /// Render-time budget per integrator, in seconds. Render time is the sum of the
     /// integrator's pass times: set-up, read-backs and metrics do not count. Snapshots are
@@ -42,14 +44,8 @@ pub struct ConvergeArgs {
     /// Output directory (created if missing)
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
-    #[arg(long, default_value_t = 0)]
-    pub seed: u32,
-    /// Most path segments (0: unbounded; Russian roulette ends paths)
-    #[arg(long, default_value_t = 0)]
-    pub max_depth: u32,
-    /// BDPT: light vertices kept per light path
-    #[arg(long, default_value_t = 8)]
-    pub light_path_len: u32,
+    #[command(flatten)]
+    pub settings: SettingsArgs,
     /// Exposure in stops for the PNG images
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub exposure: f32,
@@ -71,10 +67,7 @@ pub fn run(args: &ConvergeArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         Some(spp) => Schedule::Spp(spp.clone()),
         None => Schedule::Time { budget_s: args.time.unwrap_or(0.0), points: args.points },
     };
-    let mut settings = RenderSettings::new(Integrator::Pt);
-    settings.seed = args.seed;
-    settings.max_depth = args.max_depth;
-    settings.light_path_len = args.light_path_len;
+    let settings = args.settings.settings(Integrator::Pt)?;
     let options = Options { integrators: args.integrators.clone(), schedule, settings };
     converge::check(&options, &loaded.camera, &reference)?;
 

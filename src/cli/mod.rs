@@ -7,6 +7,7 @@ mod info;
 mod info_scene;
 mod render;
 pub mod scene_args;
+mod settings_args;
 mod view;
 
 use clap::{Parser, Subcommand};

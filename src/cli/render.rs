@@ -1,10 +1,10 @@
 //! `bidir render`: headless progressive rendering to EXR/PNG.
 
 use super::scene_args::SceneArgs;
+use super::settings_args::{IntegratorArgs, SettingsArgs};
 use anyhow::{bail, Context as _};
-use bidir::bvh::TriTest;
 use bidir::film::{self, metrics};
-use bidir::render::{Integrator, Join, RenderSettings, Renderer};
+use bidir::render::Renderer;
 use bidir::vk::{Context, ContextOptions};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
@@ -13,43 +13,22 @@ use std::time::{Duration, Instant};
 pub struct RenderArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N
-    #[arg(long, default_value = "pt-nee")]
-    pub integrator: Integrator,
-    /// BDPT join (overrides the one in --integrator): full | single | k=N | lvc | lvc=N.
-    #[arg(long)]
-    pub join: Option<Join>,
+    #[command(flatten)]
+    pub integrator: IntegratorArgs,
     /// Samples per pixel (default 64 unless --time is given).
     #[arg(long, conflicts_with = "time")]
     pub spp: Option<u32>,
     /// Render passes until this many seconds have passed.
     #[arg(long)]
     pub time: Option<f64>,
-    #[arg(long, default_value_t = 0)]
-    pub seed: u32,
-    /// Random numbers: sobol (Owen-scrambled Sobol', about half the RMSE at equal spp on the
-    /// Cornell box) | independent.
-    #[arg(long, default_value = "sobol")]
-    pub sampler: bidir::render::Sampler,
-    /// Most path segments (0: unbounded; Russian roulette ends paths).
-    #[arg(long, default_value_t = 0)]
-    pub max_depth: u32,
-    /// BDPT: light vertices kept per light path (a reservoir over the whole path).
-    #[arg(long, default_value_t = 8)]
-    pub light_path_len: u32,
+    #[command(flatten)]
+    pub settings: SettingsArgs,
     /// Output image(s): .exr (linear float) or .png (sRGB); may repeat.
     #[arg(short = 'o', long = "output")]
     pub outputs: Vec<PathBuf>,
     /// Exposure in stops applied to PNG output.
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub exposure: f32,
-    /// Ray-triangle test: watertight | woop.
-    #[arg(long, default_value = "watertight")]
-    pub tri_test: TriTest,
-    /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
-    /// what kernel specialisation buys).
-    #[arg(long)]
-    pub all_features: bool,
     /// Print RMSE / mean ratio against this reference EXR at the end.
     #[arg(long)]
     pub reference: Option<PathBuf>,
@@ -74,20 +53,9 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         eprintln!("warning: {w}");
     }
     let camera = loaded.camera.clone();
-    let mut integrator = args.integrator;
-    if let (Some(j), Integrator::Bdpt(_)) = (args.join, integrator) {
-        integrator = Integrator::Bdpt(j);
-    } else if args.join.is_some() {
-        bail!("--join applies to --integrator bdpt only");
-    }
+    let integrator = args.integrator.integrator()?;
+    let settings = args.settings.settings(integrator)?;
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
-    let mut settings = RenderSettings::new(integrator);
-    settings.seed = args.seed;
-    settings.sampler = args.sampler;
-    settings.all_material_code = args.all_features;
-    settings.max_depth = args.max_depth;
-    settings.light_path_len = args.light_path_len;
-    settings.bvh.tri_test = args.tri_test;
     let t_setup = Instant::now();
     let mut r = Renderer::new(&ctx, &loaded.scene, &camera, settings)?;
     let setup = t_setup.elapsed();

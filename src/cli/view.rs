@@ -1,8 +1,8 @@
 //! `bidir view`: the progressive film live in a window (see `bidir::viewer`).
 
 use super::scene_args::SceneArgs;
+use super::settings_args::{IntegratorArgs, SettingsArgs};
 use anyhow::{bail, Context as _};
-use bidir::render::{Integrator, Join, RenderSettings};
 use bidir::viewer::{self, ViewOptions};
 use bidir::vk::{ContextOptions, Vsync};
 use std::path::PathBuf;
@@ -12,20 +12,10 @@ use std::time::Duration;
 pub struct ViewArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N (keys 1/2/3 switch)
-    #[arg(long, default_value = "pt-nee")]
-    pub integrator: Integrator,
-    /// BDPT join (overrides the one in --integrator): full | single | k=N | lvc | lvc=N.
-    #[arg(long)]
-    pub join: Option<Join>,
-    #[arg(long, default_value_t = 0)]
-    pub seed: u32,
-    /// Most path segments (0: unbounded; Russian roulette ends paths).
-    #[arg(long, default_value_t = 0)]
-    pub max_depth: u32,
-    /// BDPT: light vertices kept per light path.
-    #[arg(long, default_value_t = 8)]
-    pub light_path_len: u32,
+    #[command(flatten)]
+    pub integrator: IntegratorArgs,
+    #[command(flatten)]
+    pub settings: SettingsArgs,
     /// Exposure in stops (+/- change it by half a stop).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub exposure: f32,
@@ -58,20 +48,11 @@ pub fn run(args: &ViewArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if !(args.frame_ms > 0.0 && args.frame_ms.is_finite()) {
         bail!("--frame-ms must be a positive number of milliseconds");
     }
-    let mut integrator = args.integrator;
-    if let (Some(j), Integrator::Bdpt(_)) = (args.join, integrator) {
-        integrator = Integrator::Bdpt(j);
-    } else if args.join.is_some() {
-        bail!("--join applies to --integrator bdpt only");
-    }
+    let settings = args.settings.settings(args.integrator.integrator()?)?;
     let loaded = args.scene.load()?;
     for w in &loaded.warnings {
         eprintln!("warning: {w}");
     }
-    let mut settings = RenderSettings::new(integrator);
-    settings.seed = args.seed;
-    settings.max_depth = args.max_depth;
-    settings.light_path_len = args.light_path_len;
     let mut v = ViewOptions::new(loaded.scene, loaded.camera, settings);
     v.exposure = args.exposure;
     v.vsync = if args.no_vsync { Vsync::Off } else { Vsync::On };

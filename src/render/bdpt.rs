@@ -54,7 +54,7 @@ struct Lvc {
     total: Buffer,
 }
 
-/// The megakernel BDPT: a light-subpath pass and a camera-subpath pass per iteration (with
+/// BDPT: a light-subpath pass and a camera-subpath pass per iteration (with
 /// the light vertex cache, a scan and a listing pass between them).
 pub struct Bdpt {
     light: Kernel,
@@ -67,12 +67,27 @@ pub struct Bdpt {
     lvc: Option<Lvc>,
     pub join: Join,
     pub light_path_len: u32,
+    /// Light paths per iteration.
+    pub light_paths: u32,
     /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list).
     pub vertex_bytes: u64,
 }
 
 impl Bdpt {
-    pub fn new(ctx: &Context, scene: &GpuScene, paths: u32, light_path_len: u32, join: Join, sampler: super::Sampler) -> Result<Bdpt, RenderError> {
+    /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
+    pub fn new(ctx: &Context, scene: &GpuScene, pixels: u32, settings: &super::RenderSettings, join: Join) -> Result<Bdpt, RenderError> {
+        let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
+        let ratio = settings.light_path_ratio;
+        if !(ratio > 0.0 && ratio.is_finite()) {
+            return Err(RenderError::Unsupported(format!("light paths per pixel must be a positive number, not {ratio}")));
+        }
+        if ratio != 1.0 && !matches!(join, Join::Lvc(_)) {
+            return Err(RenderError::Unsupported(format!(
+                "the {} join pairs one light path with each pixel; a light-path ratio other than 1 needs the light vertex cache (bdpt:lvc)",
+                join.name()
+            )));
+        }
+        let paths = ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32;
         let info = ctx.info();
         if !info.atomic_float_add {
             return Err(RenderError::Unsupported(format!("{} lacks atomic float add (VK_EXT_shader_atomic_float), which BDPT's light tracing needs", info.name)));
@@ -114,6 +129,7 @@ impl Bdpt {
             counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
             join,
             light_path_len,
+            light_paths: paths,
             vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
         })
     }

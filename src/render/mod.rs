@@ -59,7 +59,8 @@ impl std::str::FromStr for Integrator {
         match s {
             "pt" => Ok(Integrator::Pt),
             "pt-nee" => Ok(Integrator::PtNee),
-            "bdpt" => Ok(Integrator::Bdpt(Join::Full)),
+            // The GPU-native variant won on RMSE against time (docs/integrators.md).
+            "bdpt" => Ok(Integrator::Bdpt(Join::Lvc(0))),
             _ => match s.strip_prefix("bdpt:") {
                 Some(j) => Ok(Integrator::Bdpt(j.parse()?)),
                 None => Err(format!("unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N)")),
@@ -110,6 +111,9 @@ pub struct RenderSettings {
     pub sampler: Sampler,
     /// BDPT: light vertices stored per light path (a reservoir over an unbounded path).
     pub light_path_len: u32,
+    /// BDPT with the light vertex cache: light paths per iteration as a multiple of the
+    /// pixel count (the megakernel joins need 1: they pair a light path with each pixel).
+    pub light_path_ratio: f32,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (to
     /// measure what specialisation buys).
     pub all_material_code: bool,
@@ -121,7 +125,7 @@ pub struct RenderSettings {
 
 impl RenderSettings {
     pub fn new(integrator: Integrator) -> Self {
-        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
+        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, light_path_ratio: 1.0, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
     }
 }
 
@@ -164,7 +168,7 @@ pub struct Renderer {
 fn build_kernels(ctx: &Context, scene: &GpuScene, integrator: Integrator, pixels: u32, settings: &RenderSettings) -> Result<Kernels, RenderError> {
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
-        Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, scene, pixels, settings.light_path_len, join, settings.sampler)?),
+        Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, scene, pixels, settings, join)?),
     })
 }
 
@@ -299,7 +303,7 @@ impl Renderer {
                             light_path_len: b.light_path_len,
                             join,
                             join_k,
-                            light_paths: self.film.width * self.film.height,
+                            light_paths: b.light_paths,
                             pad0: 0,
                             pad1: 0,
                         };
