@@ -8,6 +8,7 @@
 //!   chi-square over emitters and over equal-area sub-triangles of each emitter;
 //! - `sample_dielectric` with binomial tests of the reflection frequency against the exact
 //!   Fresnel reflectance, and total internal reflection beyond the critical angle.
+//!
 //! Every test rejects at significance 1e-3; seeds are fixed, so a pass is reproducible.
 
 mod common;
