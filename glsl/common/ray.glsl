@@ -40,6 +40,12 @@ vec3 sample_cosine_hemisphere(vec3 n, float u1, float u2) {
     return normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(max(0.0, 1.0 - u1)) * n);
 }
 
+// Solid-angle pdf of sample_cosine_hemisphere for a direction at cos(theta) to its normal:
+// cos(theta) / pi above the surface, 0 below (pbrt-v4 section A.5.3).
+float cosine_hemisphere_pdf(float cos_theta) {
+    return max(cos_theta, 0.0) / PI;
+}
+
 // Invocation index -> pixel, in 8x8 tiles (row-major tiles, row-major within a tile), so a
 // subgroup of 32 covers an 8x4 block: neighbouring lanes trace neighbouring rays, which keeps
 // traversal coherent. Dispatch tiled_invocations(size) invocations; `valid` is false for the

@@ -125,6 +125,16 @@ gpu_consts! {
     pub const SPEC_SAMPLER: u32 = 11;
     pub const SAMPLER_INDEPENDENT: u32 = 0;
     pub const SAMPLER_SOBOL: u32 = 1;
+
+    // ---- Bindings and modes: glsl/tests/sampling.comp (tests/sampling.rs) -----------------
+    /// Results, vec4 per sample (two per sample for SAMPLING_EMITTER).
+    pub const SAMPLING_BIND_OUT: u32 = 0;
+    /// Input directions (vec4) for SAMPLING_COSINE_PDF.
+    pub const SAMPLING_BIND_IN: u32 = 1;
+    pub const SAMPLING_COSINE: u32 = 0;
+    pub const SAMPLING_COSINE_PDF: u32 = 1;
+    pub const SAMPLING_EMITTER: u32 = 2;
+    pub const SAMPLING_DIELECTRIC: u32 = 3;
 }
 
 gpu_structs! {
@@ -320,6 +330,20 @@ gpu_structs! {
         pub bgra: u32,
         pub pad0: u32,
         pub pad1: u32,
+    }
+
+    /// Push constants of the sampling test kernel `glsl/tests/sampling.comp`.
+    pub struct SamplingTestPush (48 bytes) {
+        /// SAMPLING_COSINE, SAMPLING_COSINE_PDF, SAMPLING_EMITTER or SAMPLING_DIELECTRIC.
+        pub mode: u32,
+        pub count: u32,
+        pub seed: u32,
+        pub emitter_count: u32,
+        /// Cosine modes: the unit normal (xyz). Dielectric: the incident direction (xyz)
+        /// and eta = n_incident / n_transmitted (w).
+        pub a: Vec4,
+        /// Dielectric: the unit normal on the incident side (xyz).
+        pub b: Vec4,
     }
 
     /// What one invocation of `subgroup_probe.comp` saw.

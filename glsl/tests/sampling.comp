@@ -1,0 +1,53 @@
+#version 460
+// Runs the renderer's own sampling routines from glsl/common/ (nothing copied) so that
+// tests/sampling.rs can check their distributions with chi-square and binomial tests:
+// - SAMPLING_COSINE: sample_cosine_hemisphere about pc.a.xyz, out[i] = (direction, 0);
+// - SAMPLING_COSINE_PDF: cosine_hemisphere_pdf of the direction in[i] about pc.a.xyz,
+//   out[i].x (the pdf the integrators divide by);
+// - SAMPLING_EMITTER: sample_emitter over the bound emitter and alias buffers,
+//   out[2i] = (point, chosen index by choose_emitter with the same number),
+//   out[2i + 1] = (normal, reported pick probability);
+// - SAMPLING_DIELECTRIC: sample_dielectric for incident direction pc.a.xyz, normal pc.b.xyz
+//   and eta pc.a.w, out[i] = (new direction, radiance scale if refracted else 0).
+// Uniform numbers come from rng.glsl (the independent sampler), as in the integrators.
+#include "bidir_abi.glsl"
+#include "ray.glsl"
+#include "rng.glsl"
+
+// bsdf.glsl reads these scene constants (scene.glsl declares them for the integrators).
+layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
+layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 1u;
+#include "bsdf.glsl"
+#include "lights.glsl"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = SAMPLING_BIND_OUT) writeonly buffer Out { vec4 result[]; };
+layout(std430, binding = SAMPLING_BIND_IN) readonly buffer In { vec4 input_dirs[]; };
+layout(push_constant) uniform Push { SamplingTestPush pc; };
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= pc.count) {
+        return;
+    }
+    Rng rng = rng_init(i, 0u, pc.seed);
+    if (pc.mode == SAMPLING_COSINE) {
+        float u1 = rng_next(rng);
+        float u2 = rng_next(rng);
+        result[i] = vec4(sample_cosine_hemisphere(pc.a.xyz, u1, u2), 0.0);
+    } else if (pc.mode == SAMPLING_COSINE_PDF) {
+        result[i] = vec4(cosine_hemisphere_pdf(dot(pc.a.xyz, input_dirs[i].xyz)), 0.0, 0.0, 0.0);
+    } else if (pc.mode == SAMPLING_EMITTER) {
+        float u0 = rng_next(rng);
+        float u1 = rng_next(rng);
+        float u2 = rng_next(rng);
+        LightSample s = sample_emitter(pc.emitter_count, u0, u1, u2);
+        result[2u * i] = vec4(s.p, float(choose_emitter(u0, pc.emitter_count)));
+        result[2u * i + 1u] = vec4(s.n, s.pick);
+    } else if (pc.mode == SAMPLING_DIELECTRIC) {
+        float scale;
+        bool refracted;
+        vec3 d = sample_dielectric(pc.a.xyz, pc.b.xyz, pc.a.w, rng_next(rng), scale, refracted);
+        result[i] = vec4(d, refracted ? scale : 0.0);
+    }
+}

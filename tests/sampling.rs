@@ -1,0 +1,452 @@
+//! The GLSL sampling routines the integrators use, run on the GPU through the test kernel
+//! `glsl/tests/sampling.comp` (which calls the real functions from `glsl/common/`) and checked
+//! against their analytic distributions:
+//! - `sample_cosine_hemisphere` with Pearson's chi-square test over a (cos θ, φ) grid whose
+//!   expected counts are the integral over each cell of the pdf the code reports
+//!   (`cosine_hemisphere_pdf`), which must itself integrate to one;
+//! - `sample_emitter` (alias-table choice by power, uniform point on the triangle) with
+//!   chi-square over emitters and over equal-area sub-triangles of each emitter;
+//! - `sample_dielectric` with binomial tests of the reflection frequency against the exact
+//!   Fresnel reflectance, and total internal reflection beyond the critical angle.
+//!
+//! Every test rejects at significance 1e-3; seeds are fixed, so a pass is reproducible.
+
+mod common;
+
+use bidir::gpu::{abi, kernels};
+use bidir::render::lights::LightTable;
+use bidir::scene::{Material, Scene};
+use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use common::stats::{self, Fit};
+use common::{finish, gpu};
+use glam::{DVec3, Vec3, Vec4};
+use std::f64::consts::PI;
+
+/// Samples per distribution.
+const N: u32 = 1 << 20;
+/// Significance level at which every test rejects.
+const ALPHA: f64 = 1e-3;
+
+/// The sampling kernel with its buffers; unused inputs are bound to placeholders.
+struct Sampler<'a> {
+    ctx: &'a Context,
+    kernel: Kernel,
+    placeholder: Buffer,
+}
+
+impl<'a> Sampler<'a> {
+    fn new(ctx: &'a Context) -> Self {
+        let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+        let placeholder = ctx.create_buffer("sampling.placeholder", 64, Memory::Device).unwrap();
+        Sampler { ctx, kernel, placeholder }
+    }
+
+    /// Runs `push.count` invocations and returns `per_sample` vec4s for each.
+    fn run(&self, push: abi::SamplingTestPush, per_sample: u64, input: Option<&Buffer>, lights: Option<(&Buffer, &Buffer)>) -> Vec<Vec4> {
+        let out = self.ctx.create_buffer("sampling.out", push.count as u64 * per_sample * 16, Memory::Device).unwrap();
+        let (emitters, alias) = lights.unwrap_or((&self.placeholder, &self.placeholder));
+        let binds = [
+            Bind::buffer(abi::SAMPLING_BIND_OUT, &out),
+            Bind::buffer(abi::SAMPLING_BIND_IN, input.unwrap_or(&self.placeholder)),
+            Bind::buffer(abi::BIND_EMITTERS, emitters),
+            Bind::buffer(abi::BIND_ALIAS, alias),
+        ];
+        let groups = self.kernel.groups_for(push.count);
+        self.ctx.submit("sampling", |rec| rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])).unwrap();
+        self.ctx.read_buffer(&out).unwrap()
+    }
+}
+
+fn dv(v: Vec4) -> DVec3 {
+    DVec3::new(v.x as f64, v.y as f64, v.z as f64)
+}
+
+/// An orthonormal frame (t, b, n) built here, independently of the kernel's `onb`: the
+/// cosine distribution is symmetric about n, so φ is uniform in any frame.
+fn frame(n: DVec3) -> (DVec3, DVec3) {
+    let helper = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
+    let t = helper.cross(n).normalize();
+    (t, n.cross(t))
+}
+
+// ---- The statistics themselves ------------------------------------------------------------
+
+#[test]
+fn chi_square_p_values_match_closed_forms_and_tables() {
+    // Even dof have the closed form Q(m, x) = e^-x Σ_{i<m} x^i / i! (DLMF 8.4.10).
+    for dof in [2u32, 4, 10, 40] {
+        for x in [0.1, 1.0, 3.0, 10.0, 25.0, 60.0, 120.0] {
+            let m = dof / 2;
+            let (mut term, mut sum) = (1.0, 1.0);
+            for i in 1..m {
+                term *= (x / 2.0) / i as f64;
+                sum += term;
+            }
+            let exact = (-x / 2.0f64).exp() * sum;
+            let got = stats::chi2_sf(x, dof);
+            assert!((got - exact).abs() <= 1e-12 + 1e-10 * exact, "dof {dof}, x {x}: {got} vs {exact}");
+        }
+    }
+    // Odd dof and large dof: the 1e-3 critical values of standard tables (NIST/SEMATECH
+    // e-Handbook 1.3.6.7.4, three decimals).
+    for (dof, crit) in [(1u32, 10.828), (3, 16.266), (5, 20.515), (11, 31.264), (25, 52.620), (100, 149.449)] {
+        let p = stats::chi2_sf(crit, dof);
+        assert!((p / 1e-3 - 1.0).abs() < 0.003, "dof {dof}: p({crit}) = {p}, expected 1e-3");
+    }
+    // Chi-square with one dof is a squared standard normal: P(|Z| >= 1.96) = 0.049996.
+    assert!((stats::chi2_sf(1.96 * 1.96, 1) - 0.049996).abs() < 1e-5);
+    // Large dof against the Wilson–Hilferty approximation (accurate to ~1e-3 relative in p here).
+    for dof in [300u32, 1000, 5000] {
+        let p = stats::chi2_sf(stats::wilson_hilferty(dof, 3.090232), dof);
+        assert!((p / 1e-3 - 1.0).abs() < 0.05, "dof {dof}: {p}");
+        let p = stats::chi2_sf(stats::wilson_hilferty(dof, 0.0), dof);
+        assert!((p - 0.5).abs() < 0.01, "dof {dof}: median p {p}");
+    }
+}
+
+#[test]
+fn pearson_pools_sparse_cells_and_rejects_impossible_counts() {
+    // Perfect agreement: X^2 = 0, p = 1.
+    let f = stats::pearson(&[10, 20, 30], &[10.0, 20.0, 30.0]);
+    assert_eq!((f.stat, f.dof), (0.0, 2));
+    assert!((f.p - 1.0).abs() < 1e-12);
+    // Three cells expected 2 each pool into one of 6 (observed 1 + 2 + 4 = 7).
+    let f = stats::pearson(&[1, 2, 4, 100], &[2.0, 2.0, 2.0, 100.0]);
+    assert_eq!((f.cells, f.dof), (2, 1));
+    assert!((f.stat - 1.0 / 6.0).abs() < 1e-12, "{}", f.stat);
+    // A count where nothing is expected fails outright.
+    assert_eq!(stats::pearson(&[1, 99], &[0.0, 100.0]).p, 0.0);
+    // A fair coin tossed 10000 times, 5200 heads: z = 4, p = 6.3e-5.
+    let f = stats::binomial(5200, 10_000, 0.5);
+    assert!((f.stat - 16.0).abs() < 1e-9 && (f.p - 6.334e-5).abs() < 1e-7, "{f}");
+}
+
+// ---- Cosine-weighted hemisphere -----------------------------------------------------------
+
+/// Bins of cos θ (edges at sqrt(i / Z), equal probability under the cosine pdf) and of φ.
+const Z_BINS: usize = 16;
+const PHI_BINS: usize = 32;
+/// Midpoint-rule points per cell edge for integrating the reported pdf; the cosine pdf is
+/// linear in cos θ and constant in φ, so the rule is exact for it.
+const QUAD: usize = 4;
+
+fn z_edge(i: usize) -> f64 {
+    (i as f64 / Z_BINS as f64).sqrt()
+}
+
+fn direction(n: DVec3, t: DVec3, b: DVec3, z: f64, phi: f64) -> DVec3 {
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    n * z + t * (r * phi.cos()) + b * (r * phi.sin())
+}
+
+/// Checks sample_cosine_hemisphere about `normal`: chi-square of the samples against the
+/// integral of cosine_hemisphere_pdf over each cell, the pdf's integral over the hemisphere
+/// and the sphere, unit length and no sample below the surface.
+fn check_cosine(s: &Sampler, normal: Vec3, seed: u32) -> Fit {
+    let n = normal.as_dvec3().normalize();
+    let (t, b) = frame(n);
+    let cells = Z_BINS * PHI_BINS;
+
+    // The pdf the code reports, at QUAD x QUAD midpoints of every cell of (cos θ, φ), and at
+    // their mirror images below the surface. dω = d(cos θ) dφ.
+    let mut dirs = Vec::with_capacity(2 * cells * QUAD * QUAD);
+    let mut weights = Vec::with_capacity(cells * QUAD * QUAD);
+    for zi in 0..Z_BINS {
+        let (z0, z1) = (z_edge(zi), z_edge(zi + 1));
+        for pi in 0..PHI_BINS {
+            let dphi = 2.0 * PI / PHI_BINS as f64;
+            for qz in 0..QUAD {
+                for qp in 0..QUAD {
+                    let z = z0 + (z1 - z0) * (qz as f64 + 0.5) / QUAD as f64;
+                    let phi = dphi * (pi as f64 + (qp as f64 + 0.5) / QUAD as f64);
+                    dirs.push(direction(n, t, b, z, phi).as_vec3().extend(0.0));
+                    weights.push((z1 - z0) / QUAD as f64 * dphi / QUAD as f64);
+                }
+            }
+        }
+    }
+    let above = dirs.len();
+    for i in 0..above {
+        let d = dirs[i].truncate() - 2.0 * dirs[i].truncate().dot(normal.normalize()) * normal.normalize();
+        dirs.push(d.extend(0.0));
+    }
+    let input = s.ctx.upload_buffer("sampling.dirs", &dirs).unwrap();
+    let push = abi::SamplingTestPush { mode: abi::SAMPLING_COSINE_PDF, count: dirs.len() as u32, a: normal.extend(0.0), ..Default::default() };
+    let pdf: Vec<f64> = s.run(push, 1, Some(&input), None).iter().map(|v| v.x as f64).collect();
+    let mut expected = vec![0.0f64; cells];
+    for (k, w) in weights.iter().enumerate() {
+        expected[k / (QUAD * QUAD)] += pdf[k] * w;
+    }
+    let integral: f64 = expected.iter().sum();
+    let below: f64 = pdf[above..].iter().zip(&weights).map(|(p, w)| p * w).sum();
+    eprintln!("cosine pdf about {normal}: integral over the hemisphere {integral:.7}, below it {below:.3e}");
+    assert!((integral - 1.0).abs() < 1e-4, "cosine_hemisphere_pdf integrates to {integral} over the hemisphere, not 1");
+    assert!(below == 0.0, "cosine_hemisphere_pdf is nonzero below the surface (integral {below})");
+    for e in &mut expected {
+        *e *= N as f64;
+    }
+
+    // The samples.
+    let push = abi::SamplingTestPush { mode: abi::SAMPLING_COSINE, count: N, seed, a: normal.extend(0.0), ..Default::default() };
+    let samples = s.run(push, 1, None, None);
+    let mut observed = vec![0u64; cells];
+    for v in &samples {
+        let d = dv(*v);
+        assert!((d.length() - 1.0).abs() < 1e-5, "direction {d} is not unit");
+        let z = d.dot(n);
+        assert!(z >= 0.0, "direction {d} below the surface about {n}");
+        let phi = d.dot(b).atan2(d.dot(t)).rem_euclid(2.0 * PI);
+        let zi = ((z * z * Z_BINS as f64) as usize).min(Z_BINS - 1);
+        let pi = ((phi / (2.0 * PI) * PHI_BINS as f64) as usize).min(PHI_BINS - 1);
+        observed[zi * PHI_BINS + pi] += 1;
+    }
+    let fit = stats::pearson(&observed, &expected);
+    eprintln!("sample_cosine_hemisphere about {normal}: {fit}");
+    fit
+}
+
+#[test]
+fn cosine_hemisphere_matches_its_pdf() {
+    let ctx = gpu();
+    let s = Sampler::new(&ctx);
+    // Axis-aligned, tilted, and tilted into the lower half space (the other branch of the
+    // orthonormal basis).
+    let fits = [check_cosine(&s, Vec3::Z, 1), check_cosine(&s, Vec3::new(0.36, -0.48, 0.8), 2), check_cosine(&s, Vec3::new(-0.64, 0.48, -0.6), 3)];
+    for (i, f) in fits.iter().enumerate() {
+        assert!(f.p >= ALPHA, "normal {i}: cosine samples do not follow the reported pdf ({f})");
+    }
+    drop(s);
+    finish(ctx);
+}
+
+// ---- Emitter sampling ---------------------------------------------------------------------
+
+/// Sub-triangles per emitter edge: m^2 congruent cells of equal area.
+const TRI_SPLIT: usize = 8;
+
+/// Rec. 709 luminance, as the emitter weights use.
+fn luminance(c: Vec3) -> f64 {
+    0.2126 * c.x as f64 + 0.7152 * c.y as f64 + 0.0722 * c.z as f64
+}
+
+/// Emitters of different area, radiance and orientation, one that barely emits (its cells
+/// are pooled), and a triangle that does not emit (no emitter).
+fn lights_scene() -> Scene {
+    let p = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+    let tris: Vec<([Vec3; 3], Vec3)> = vec![
+        ([p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)], Vec3::ONE),
+        ([p(-2.0, 1.0, 3.0), p(1.5, 0.5, 2.0), p(0.3, 3.0, 1.0)], Vec3::new(0.2, 0.5, 0.1)),
+        ([p(5.0, 5.0, 5.0), p(5.2, 5.0, 5.1), p(5.1, 5.3, 4.9)], Vec3::new(10.0, 8.0, 6.0)),
+        ([p(0.0, 0.0, -1.0), p(4.0, 0.0, -1.0), p(0.0, 4.0, -1.0)], Vec3::ZERO),
+        ([p(-1.0, -1.0, 2.0), p(1.0, -1.0, 2.0), p(1.0, 1.0, 2.0)], Vec3::new(0.0, 0.0, 3.0)),
+        ([p(-1.0, -1.0, 2.0), p(1.0, 1.0, 2.0), p(-1.0, 1.0, 2.0)], Vec3::new(0.0, 0.0, 3.0)),
+        ([p(3.0, 0.0, 0.0), p(3.0, 0.1, 0.0), p(3.0, 0.0, 0.1)], Vec3::splat(0.002)),
+        ([p(0.0, -3.0, 0.0), p(0.0, -3.0, 2.5), p(2.0, -3.5, 0.5)], Vec3::new(1.0, 0.2, 0.2)),
+    ];
+    let mut scene = Scene { source: "test:lights".into(), ..Default::default() };
+    for (i, (v, le)) in tris.iter().enumerate() {
+        scene.positions.extend_from_slice(v);
+        scene.triangles.push([3 * i as u32, 3 * i as u32 + 1, 3 * i as u32 + 2]);
+        scene.material_ids.push(i as u32);
+        scene.materials.push(Material { name: format!("m{i}"), emission: *le, ..Default::default() });
+    }
+    scene
+}
+
+/// Index of the equal-area sub-triangle of the barycentric point (b1, b2): the triangle is
+/// cut by lines of constant b1, b2 and b0 at multiples of 1/m into m^2 congruent pieces; the
+/// piece is the lattice square (floor(m b1), floor(m b2)) and its half (lower when the
+/// fractional parts sum below 1).
+fn sub_triangle(b1: f64, b2: f64) -> usize {
+    let m = TRI_SPLIT as f64;
+    let (x, y) = (b1.clamp(0.0, 1.0) * m, b2.clamp(0.0, 1.0) * m);
+    let (i, j) = ((x.floor() as usize).min(TRI_SPLIT - 1), (y.floor() as usize).min(TRI_SPLIT - 1));
+    let upper = (x - i as f64) + (y - j as f64) >= 1.0;
+    // Lower pieces have i + j <= m - 1, upper ones i + j <= m - 2; rounding on the far edge
+    // can push a point just past it, into the nearest lower piece.
+    let (i, j, upper) = if i + j > TRI_SPLIT - 1 || (upper && i + j > TRI_SPLIT - 2) {
+        let j = j.min(TRI_SPLIT - 1 - i.min(TRI_SPLIT - 1));
+        (i.min(TRI_SPLIT - 1), j, false)
+    } else {
+        (i, j, upper)
+    };
+    2 * (i * TRI_SPLIT + j) + upper as usize
+}
+
+fn sub_triangle_valid(cell: usize) -> bool {
+    let (upper, ij) = (cell % 2 == 1, cell / 2);
+    let (i, j) = (ij / TRI_SPLIT, ij % TRI_SPLIT);
+    if upper {
+        i + j + 2 <= TRI_SPLIT
+    } else {
+        i + j < TRI_SPLIT
+    }
+}
+
+#[test]
+fn emitter_sampling_follows_power_and_area() {
+    let scene = lights_scene();
+    // The expected choice probabilities, from the scene (not from the table).
+    let mut tris = Vec::new(); // (v0, e1, e2, probability-to-be)
+    for (t, tri) in scene.triangles.iter().enumerate() {
+        let le = scene.materials[scene.material_ids[t] as usize].emission;
+        let [v0, v1, v2] = tri.map(|i| scene.positions[i as usize].as_dvec3());
+        let power = luminance(le) * 0.5 * (v1 - v0).cross(v2 - v0).length();
+        if power > 0.0 {
+            tris.push((v0, v1 - v0, v2 - v0, power));
+        }
+    }
+    let total: f64 = tris.iter().map(|t| t.3).sum();
+    let prob: Vec<f64> = tris.iter().map(|t| t.3 / total).collect();
+    let table = LightTable::build(&scene);
+    assert_eq!(table.emitters.len(), tris.len(), "one emitter per emitting triangle");
+
+    let ctx = gpu();
+    let s = Sampler::new(&ctx);
+    let emitters = ctx.upload_buffer("sampling.emitters", &table.emitters).unwrap();
+    let alias = ctx.upload_buffer("sampling.alias", &table.alias).unwrap();
+    let count = tris.len() as u32;
+    let push = abi::SamplingTestPush { mode: abi::SAMPLING_EMITTER, count: N, seed: 7, emitter_count: count, ..Default::default() };
+    let out = s.run(push, 2, None, Some((&emitters, &alias)));
+
+    let cells = 2 * TRI_SPLIT * TRI_SPLIT;
+    let mut chosen = vec![0u64; tris.len()];
+    let mut joint = vec![0u64; tris.len() * cells];
+    for pair in out.chunks_exact(2) {
+        let (p, idx) = (dv(pair[0]), pair[0].w);
+        let e = idx as usize;
+        assert!(idx == e as f32 && e < tris.len(), "choose_emitter returned {idx}");
+        let (v0, e1, e2, _) = tris[e];
+        // The point lies on emitter e (the one choose_emitter picked with the same number):
+        // barycentrics by least squares in the triangle's plane, then the distance off it.
+        let r = p - v0;
+        let (a, bb, c) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+        let det = a * c - bb * bb;
+        let (r1, r2) = (r.dot(e1), r.dot(e2));
+        let b1 = (c * r1 - bb * r2) / det;
+        let b2 = (a * r2 - bb * r1) / det;
+        let scale = e1.length().max(e2.length());
+        let off = (r - b1 * e1 - b2 * e2).length();
+        assert!(off < 1e-5 * (scale + v0.length()), "point {p} is {off} off emitter {e}");
+        assert!(b1 > -1e-5 && b2 > -1e-5 && b1 + b2 < 1.0 + 1e-5, "point {p} outside emitter {e} (barycentrics {b1}, {b2})");
+        // Its reported front normal and choice probability.
+        let n = dv(pair[1]);
+        assert!((n - e1.cross(e2).normalize()).length() < 1e-5, "emitter {e}: normal {n}");
+        assert!((pair[1].w as f64 / prob[e] - 1.0).abs() < 1e-5, "emitter {e}: pick {} vs {}", pair[1].w, prob[e]);
+        chosen[e] += 1;
+        joint[e * cells + sub_triangle(b1, b2)] += 1;
+    }
+
+    let expected: Vec<f64> = prob.iter().map(|p| p * N as f64).collect();
+    let choice = stats::pearson(&chosen, &expected);
+    eprintln!("emitter choice: observed {chosen:?}\n  expected {:?}\n  {choice}", expected.iter().map(|e| e.round()).collect::<Vec<_>>());
+    let per_cell = 1.0 / (TRI_SPLIT * TRI_SPLIT) as f64;
+    let expected_joint: Vec<f64> = (0..joint.len()).map(|k| if sub_triangle_valid(k % cells) { prob[k / cells] * N as f64 * per_cell } else { 0.0 }).collect();
+    let points = stats::pearson(&joint, &expected_joint);
+    eprintln!("emitter x equal-area sub-triangle ({} pieces each): {points}, {} cells after pooling", TRI_SPLIT * TRI_SPLIT, points.cells);
+    assert!(choice.p >= ALPHA, "emitters are not chosen in proportion to their power ({choice})");
+    assert!(points.p >= ALPHA, "points are not uniform over the chosen emitters ({points})");
+    drop((s, emitters, alias));
+    finish(ctx);
+}
+
+#[test]
+fn sub_triangles_tile_the_triangle_equally() {
+    // A fine lattice of barycentric points hits every valid piece equally often (each piece
+    // has the same area), and no invalid one: the binning itself is right.
+    let cells = 2 * TRI_SPLIT * TRI_SPLIT;
+    let mut hits = vec![0u64; cells];
+    let k = 64 * TRI_SPLIT;
+    for i in 0..k {
+        for j in 0..k - i {
+            // Centroids of the k^2 lattice sub-triangles.
+            for (di, dj) in [(1.0 / 3.0, 1.0 / 3.0), (2.0 / 3.0, 2.0 / 3.0)] {
+                let (b1, b2) = ((i as f64 + di) / k as f64, (j as f64 + dj) / k as f64);
+                if b1 + b2 < 1.0 {
+                    hits[sub_triangle(b1, b2)] += 1;
+                }
+            }
+        }
+    }
+    let valid: Vec<u64> = (0..cells).filter(|&c| sub_triangle_valid(c)).map(|c| hits[c]).collect();
+    assert_eq!(valid.len(), TRI_SPLIT * TRI_SPLIT);
+    assert!(valid.iter().all(|&h| h == valid[0]), "{valid:?}");
+    assert_eq!(valid.iter().sum::<u64>(), hits.iter().sum::<u64>());
+}
+
+// ---- Smooth dielectric --------------------------------------------------------------------
+
+/// Exact Fresnel reflectance of unpolarised light at a smooth dielectric, eta = n_i / n_t
+/// (pbrt-v4 eq. 9.6 with Snell's law eq. 9.2); 1 beyond the critical angle.
+fn fresnel(cos_i: f64, eta: f64) -> f64 {
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if sin2_t >= 1.0 {
+        return 1.0;
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    // In terms of the indices n_i = eta, n_t = 1.
+    let r_par = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    let r_perp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    0.5 * (r_par * r_par + r_perp * r_perp)
+}
+
+#[test]
+fn dielectric_reflects_with_fresnel_probability() {
+    let ctx = gpu();
+    let s = Sampler::new(&ctx);
+    let ior = 1.5f64;
+    let n = DVec3::new(0.36, -0.48, 0.8);
+    let (t, _) = frame(n);
+    let mut fits = Vec::new();
+    // From outside (eta = 1 / 1.5) and from inside (eta = 1.5, critical angle 41.81°).
+    let cases: Vec<(f64, f64)> =
+        [0.0, 30.0, 60.0, 80.0, 88.0].iter().map(|&a| (1.0 / ior, a)).chain([0.0, 25.0, 40.0, 41.5, 42.0, 60.0, 85.0].iter().map(|&a| (ior, a))).collect();
+    for (k, &(eta, deg)) in cases.iter().enumerate() {
+        let theta = deg.to_radians();
+        let d = (t * theta.sin() - n * theta.cos()).normalize();
+        let cos_i = -d.dot(n);
+        let push = abi::SamplingTestPush {
+            mode: abi::SAMPLING_DIELECTRIC,
+            count: N,
+            seed: 100 + k as u32,
+            a: d.as_vec3().extend(eta as f32),
+            b: n.as_vec3().extend(0.0),
+            ..Default::default()
+        };
+        let out = s.run(push, 1, None, None);
+        let f = fresnel(cos_i, eta);
+        let mirror = d - 2.0 * d.dot(n) * n;
+        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+        let mut reflected = 0u64;
+        for v in &out {
+            let w = dv(*v);
+            if v.w == 0.0 {
+                reflected += 1;
+                assert!((w - mirror).length() < 1e-5, "eta {eta} at {deg}°: reflection {w} vs {mirror}");
+            } else {
+                // Snell's law in vector form (pbrt-v4 eq. 9.4): eta d + (eta cos_i - cos_t) n.
+                let cos_t = (1.0 - sin2_t).sqrt();
+                let refr = eta * d + (eta * cos_i - cos_t) * n;
+                assert!((w - refr).length() < 1e-5, "eta {eta} at {deg}°: refraction {w} vs {refr}");
+                assert!((v.w as f64 / (eta * eta) - 1.0).abs() < 1e-5, "radiance scale {} vs eta^2 {}", v.w, eta * eta);
+            }
+        }
+        let freq = reflected as f64 / N as f64;
+        if f >= 1.0 {
+            eprintln!("eta {eta:.4}, {deg:4}°: total internal reflection, reflected {reflected} of {N}");
+            assert_eq!(reflected, N as u64, "eta {eta} at {deg}° is beyond the critical angle: every sample must reflect");
+        } else {
+            let fit = stats::binomial(reflected, N as u64, f);
+            eprintln!("eta {eta:.4}, {deg:4}°: F = {f:.6}, reflected {freq:.6} ({fit})");
+            fits.push(fit);
+        }
+    }
+    let all = stats::combine(&fits);
+    eprintln!("all angles: {all}");
+    for f in &fits {
+        assert!(f.p >= ALPHA / fits.len() as f64, "reflection frequency differs from the exact Fresnel reflectance ({f})");
+    }
+    assert!(all.p >= ALPHA, "reflection frequencies differ from the exact Fresnel reflectance ({all})");
+    drop(s);
+    finish(ctx);
+}
