@@ -41,21 +41,32 @@ impl Scan {
     /// In-place exclusive prefix sum of the first `count` u32s of `data`.
     pub fn exclusive_scan(&self, ctx: &Context, data: &Buffer, count: u32) -> Result<()> {
         let plan = ScanPlan::new(ctx, count)?;
-        ctx.submit("exclusive_scan", |rec| self.record(rec, &plan, data))
+        ctx.submit("exclusive_scan", |rec| self.record(rec, &plan, data, count))
     }
 
-    /// Records the in-place exclusive prefix sum of the first `plan.count` u32s of `data`
-    /// into `rec` (so a scan can sit between other passes of one submission).
-    pub fn record(&self, rec: &mut Recorder, plan: &ScanPlan, data: &Buffer) -> Result<()> {
-        if plan.levels.is_empty() {
-            if plan.count == 1 {
+    /// Records the in-place exclusive prefix sum of the first `count` (at most `plan.count`)
+    /// u32s of `data` into `rec` (so a scan can sit between other passes of one submission).
+    pub fn record(&self, rec: &mut Recorder, plan: &ScanPlan, data: &Buffer, count: u32) -> Result<()> {
+        assert!(count <= plan.count, "scan of {count} elements with a plan for {}", plan.count);
+        // Level sizes for this count; the plan's buffers (sized for plan.count) hold them.
+        let mut levels: Vec<(u32, &Buffer)> = Vec::new();
+        let mut n = count;
+        for (_, sums) in &plan.levels {
+            if n <= 1 {
+                break;
+            }
+            levels.push((n, sums));
+            n = n.div_ceil(abi::SCAN_WG_SIZE);
+        }
+        if levels.is_empty() {
+            if count == 1 {
                 rec.fill_buffer_range(data, 0, 4, 0);
             }
             return Ok(());
         }
         // Down: scan each level's blocks, writing block totals to the next level.
-        for (i, (n, sums)) in plan.levels.iter().enumerate() {
-            let target = if i == 0 { data } else { &plan.levels[i - 1].1 };
+        for (i, (n, sums)) in levels.iter().enumerate() {
+            let target = if i == 0 { data } else { levels[i - 1].1 };
             let push = abi::ScanPush { count: *n, ..Default::default() };
             rec.dispatch(
                 &self.block,
@@ -65,15 +76,15 @@ impl Scan {
             )?;
         }
         // Up: add each level's scanned block offsets back into the level below.
-        for i in (0..plan.levels.len().saturating_sub(1)).rev() {
-            let (n, sums) = &plan.levels[i];
-            let target = if i == 0 { data } else { &plan.levels[i - 1].1 };
-            let push = abi::ScanPush { count: *n, ..Default::default() };
+        for i in (0..levels.len().saturating_sub(1)).rev() {
+            let (n, sums) = levels[i];
+            let target = if i == 0 { data } else { levels[i - 1].1 };
+            let push = abi::ScanPush { count: n, ..Default::default() };
             rec.dispatch(
                 &self.add,
                 &[Bind::buffer(abi::SCAN_BIND_DATA, target), Bind::buffer(abi::SCAN_BIND_BLOCK_SUMS, sums)],
                 bytemuck::bytes_of(&push),
-                [self.add.groups_for(*n), 1, 1],
+                [self.add.groups_for(n), 1, 1],
             )?;
         }
         Ok(())

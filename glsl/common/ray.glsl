@@ -59,6 +59,11 @@ uvec2 tiled_pixel(uint i, uvec2 size, out bool valid) {
     return p;
 }
 
+// Invocations tiled_pixel covers for an image of `size` (whole 8 x 8 tiles).
+uint tiled_count(uvec2 size) {
+    return ((size.x + 7u) / 8u) * ((size.y + 7u) / 8u) * 64u;
+}
+
 // Primary ray direction through image position `p` (pixels, row 0 on top) of camera `cam`.
 vec3 camera_direction(GpuCamera cam, vec2 p) {
     vec2 ndc = vec2(2.0 * p.x / float(cam.size.x) - 1.0, 1.0 - 2.0 * p.y / float(cam.size.y));

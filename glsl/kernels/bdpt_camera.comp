@@ -21,6 +21,7 @@ layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { BdptPush pc; };
+layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[]; };
 // The light vertex cache (JOIN_LVC): stored slots of every light path, densely listed.
 layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
@@ -55,7 +56,8 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_back, float pd, vec3 f, flo
     return contrib;
 }
 
-vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
+// `path`: the light path of this camera sample (megakernel joins).
+vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;
     vec3 d = camera_direction(pc.camera, xy);
@@ -63,8 +65,8 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
     vec3 radiance = vec3(0.0);
     float d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
     float d_vc = 0.0;
-    uvec2 lc = light_counts[pixel];   // (stored, seen) of this pixel's light path
-    uint base = pixel * pc.light_path_len;
+    uvec2 lc = light_counts[path];   // (stored, seen) of this sample's light path
+    uint base = path * pc.light_path_len;
 
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
@@ -147,8 +149,8 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
                 // paths makes the expectation the full join's (docs/integrators.md).
                 uint total = lvc_total;
                 if (total > 0u) {
-                    uint joins = pc.join_k > 0u ? pc.join_k : max(1u, uint(float(total) / float(pc.light_paths) + 0.5));
-                    float scale = float(total) / (float(joins) * float(pc.light_paths));
+                    uint joins = pc.join_k > 0u ? pc.join_k : max(1u, uint(float(total) / float(pc.light_path_total) + 0.5));
+                    float scale = float(total) / (float(joins) * float(pc.light_path_total));
                     for (uint j = 0u; j < joins; j++) {
                         uint slot = lvc_index[rng_below(rng, total)];
                         uvec2 c = light_counts[slot / pc.light_path_len];
@@ -223,18 +225,29 @@ vec3 camera_path(uint pixel, vec2 xy, inout Rng rng) {
 }
 
 void main() {
+    // Invocation -> (slice, pixel): slice j is camera sample sample_base + j, joined (by the
+    // megakernel joins) to light path j * pixels + pixel.
+    uint tiles = tiled_count(pc.camera.size.xy);
+    uint samples = max(pc.camera_samples, 1u);
+    uint slice = gl_GlobalInvocationID.x / tiles;
     bool valid;
-    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x, pc.camera.size.xy, valid);
-    if (!valid) {
+    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x % tiles, pc.camera.size.xy, valid);
+    if (!valid || slice >= samples) {
         return;
     }
+    uint pixels = pc.camera.size.x * pc.camera.size.y;
     uint pixel = px.y * pc.camera.size.x + px.x;
-    Rng rng = rng_init(pixel, pc.sample_base, pc.seed);
+    Rng rng = rng_init(pixel, pc.sample_base + slice, pc.seed);
     vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
-    vec3 l = camera_path(pixel, xy, rng);
+    vec3 l = camera_path(slice * pixels + pixel, xy, rng);
+    vec4 add = vec4(l, 1.0);
     if (any(isnan(l)) || any(isinf(l))) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);
-        return;
+        add = vec4(0.0);
     }
-    accum[pixel] += vec4(l, 1.0);
+    if (samples == 1u) {
+        accum[pixel] += add;
+    } else {
+        slices_out[slice * pixels + pixel] = add;
+    }
 }

@@ -68,7 +68,7 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, float pd, vec3 bet
 
 void main() {
     uint path = gl_GlobalInvocationID.x;
-    if (path >= pc.light_paths) {
+    if (path >= pc.light_path_total) {
         return;
     }
     uvec2 stats = uvec2(0u);

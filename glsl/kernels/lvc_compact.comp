@@ -15,7 +15,7 @@ layout(push_constant) uniform Push { BdptPush pc; };
 
 void main() {
     uint path = gl_GlobalInvocationID.x;
-    if (path >= pc.light_paths) {
+    if (path >= pc.light_path_total) {
         return;
     }
     uint offset = lvc_offsets[path];
@@ -23,7 +23,7 @@ void main() {
     for (uint j = 0u; j < stored; j++) {
         lvc_index[offset + j] = path * pc.light_path_len + j;
     }
-    if (path == pc.light_paths - 1u) {
+    if (path == pc.light_path_total - 1u) {
         lvc_total = offset + stored;
     }
 }

@@ -18,6 +18,7 @@ layout(constant_id = SPEC_NEE) const uint NEE = 1u;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { PtPush pc; };
+layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[]; };
 
 float max3(vec3 v) {
     return max(v.x, max(v.y, v.z));
@@ -124,9 +125,13 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
 }
 
 void main() {
+    // Invocation -> (slice, pixel): slice j takes samples j, j + S, j + 2S, ... of the pass.
+    uint tiles = tiled_count(pc.camera.size.xy);
+    uint slices = max(pc.slices, 1u);
+    uint slice = gl_GlobalInvocationID.x / tiles;
     bool valid;
-    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x, pc.camera.size.xy, valid);
-    if (!valid) {
+    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x % tiles, pc.camera.size.xy, valid);
+    if (!valid || slice >= slices) {
         return;
     }
     uint pixel = px.y * pc.camera.size.x + px.x;
@@ -134,7 +139,7 @@ void main() {
     vec3 sum = vec3(0.0);
     float count = 0.0;
     uint bad = 0u;
-    for (uint s = 0u; s < pc.spp; s++) {
+    for (uint s = slice; s < pc.spp; s += slices) {
         Rng rng = rng_init(pixel, pc.sample_base + s, pc.seed);
         vec2 jitter = vec2(rng_next(rng), rng_next(rng));
         vec3 l = trace_path(xy + jitter, rng);
@@ -145,7 +150,11 @@ void main() {
         sum += l;
         count += 1.0;
     }
-    accum[pixel] += vec4(sum, count);
+    if (slices == 1u) {
+        accum[pixel] += vec4(sum, count);
+    } else {
+        slices_out[slice * pc.camera.size.x * pc.camera.size.y + pixel] = vec4(sum, count);
+    }
     if (bad > 0u) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], bad);
     }

@@ -47,6 +47,10 @@ pub struct SettingsArgs {
     /// rarely matter). The other joins pair one light path with each pixel.
     #[arg(long, default_value_t = 1.0, value_name = "RATIO")]
     pub light_paths: f32,
+    /// Samples of a pixel rendered at once, each by its own GPU thread (0: enough to fill
+    /// the GPU, 1 on CPU devices).
+    #[arg(long, default_value_t = 0, value_name = "N")]
+    pub sample_slices: u32,
     /// Ray-triangle test: watertight | woop.
     #[arg(long, default_value = "watertight")]
     pub tri_test: TriTest,
@@ -68,6 +72,7 @@ impl SettingsArgs {
         s.max_depth = self.max_depth;
         s.light_path_len = self.light_path_len;
         s.light_path_ratio = self.light_paths;
+        s.sample_slices = self.sample_slices;
         s.bvh.tri_test = self.tri_test;
         s.all_material_code = self.all_features;
         Ok(s)

@@ -88,6 +88,9 @@ gpu_consts! {
     pub const BIND_LVC_OFFSETS: u32 = 22;
     pub const BIND_LVC_INDEX: u32 = 23;
     pub const BIND_LVC_TOTAL: u32 = 24;
+    /// Sample slices (vec4 per slice and pixel: rgb sum, count) that film_slices.comp adds
+    /// into the film in a fixed order, when a pass runs several samples of a pixel at once.
+    pub const BIND_SLICES: u32 = 25;
     /// BDPT joins (BdptPush::join).
     pub const JOIN_FULL: u32 = 0;
     pub const JOIN_K: u32 = 1;
@@ -274,7 +277,9 @@ gpu_structs! {
         pub max_depth: u32,
         /// First bounce at which Russian roulette applies.
         pub rr_depth: u32,
-        pub pad0: u32,
+        /// Sample slices: invocations per pixel, each taking every slices-th sample of the
+        /// pass into its own slice of BIND_SLICES (1: one invocation adds into the film).
+        pub slices: u32,
     }
 
     /// A stored light-subpath vertex (a diffuse-capable hit), for BDPT connections. MIS
@@ -309,8 +314,20 @@ gpu_structs! {
         pub join: u32,
         /// Light vertices joined per camera vertex for JOIN_K.
         pub join_k: u32,
-        /// Light paths per iteration (one per pixel).
+        /// Light paths per camera sample (pixels x the light-path ratio): light tracing and
+        /// the MIS weights count with it.
         pub light_paths: u32,
+        /// Camera samples per pixel in this iteration, one slice each (1: added straight
+        /// into the film).
+        pub camera_samples: u32,
+        /// Light paths traced in this iteration: light_paths x camera_samples.
+        pub light_path_total: u32,
+    }
+
+    /// Push constants of `film_slices.comp`.
+    pub struct SlicesPush (16 bytes) {
+        pub pixels: u32,
+        pub slices: u32,
         pub pad0: u32,
         pub pad1: u32,
     }

@@ -67,15 +67,19 @@ pub struct Bdpt {
     lvc: Option<Lvc>,
     pub join: Join,
     pub light_path_len: u32,
-    /// Light paths per iteration.
+    /// Light paths per camera sample.
     pub light_paths: u32,
+    /// Most camera samples per pixel in one iteration (the store holds light_paths x this).
+    pub max_camera_samples: u32,
     /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list).
     pub vertex_bytes: u64,
 }
 
 impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
-    pub fn new(ctx: &Context, scene: &GpuScene, pixels: u32, settings: &super::RenderSettings, join: Join) -> Result<Bdpt, RenderError> {
+    /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
+    /// paths are traced together).
+    pub fn new(ctx: &Context, scene: &GpuScene, pixels: u32, settings: &super::RenderSettings, join: Join, camera_samples: u32) -> Result<Bdpt, RenderError> {
         let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
         let ratio = settings.light_path_ratio;
         if !(ratio > 0.0 && ratio.is_finite()) {
@@ -87,7 +91,9 @@ impl Bdpt {
                 join.name()
             )));
         }
-        let paths = ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32;
+        let per_sample = ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32;
+        let camera_samples = camera_samples.max(1);
+        let paths = per_sample.saturating_mul(camera_samples);
         let info = ctx.info();
         if !info.atomic_float_add {
             return Err(RenderError::Unsupported(format!("{} lacks atomic float add (VK_EXT_shader_atomic_float), which BDPT's light tracing needs", info.name)));
@@ -129,7 +135,8 @@ impl Bdpt {
             counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
             join,
             light_path_len,
-            light_paths: paths,
+            light_paths: per_sample,
+            max_camera_samples: camera_samples,
             vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
         })
     }
@@ -143,6 +150,7 @@ impl Bdpt {
         binds.push(Bind::buffer(abi::BIND_SPLAT, film.splat.as_ref().expect("BDPT films have a splat buffer")));
         binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
         binds.push(Bind::buffer(abi::BIND_LVC_OFFSETS, &self.lvc_offsets));
+        binds.push(Bind::buffer(abi::BIND_SLICES, film.slices_buffer()));
         if let Some(lvc) = &self.lvc {
             binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &lvc.index));
             binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &lvc.total));
@@ -151,13 +159,17 @@ impl Bdpt {
             binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &self.lvc_offsets));
             binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &self.lvc_offsets));
         }
-        rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(push.light_paths), 1, 1])?;
+        let total = push.light_path_total;
+        assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
+        rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
         if let Some(lvc) = &self.lvc {
-            lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets)?;
-            rec.dispatch(&lvc.compact, &binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(push.light_paths), 1, 1])?;
+            lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;
+            rec.dispatch(&lvc.compact, &binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
         }
-        let n = crate::trace::tiled_invocations(film.width, film.height);
-        rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])
+        let samples = push.camera_samples.max(1);
+        let n = crate::trace::tiled_invocations(film.width, film.height) * samples;
+        rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])?;
+        film.record_add_slices(rec, samples)
     }
 }
 

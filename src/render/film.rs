@@ -13,16 +13,31 @@ pub struct Film {
     pub(crate) accum: Buffer,
     pub(crate) stats: Buffer,
     pub(crate) splat: Option<Buffer>,
+    /// Per-slice partial sums when a pass renders several samples of a pixel at once (see
+    /// `Renderer`'s sample slices), added into `accum` by `film_slices.comp`.
+    pub(crate) slices: Option<(Buffer, crate::vk::Kernel)>,
+    /// Slices the buffer holds (1: none).
+    pub max_slices: u32,
     pub width: u32,
     pub height: u32,
 }
 
 impl Film {
-    pub fn new(ctx: &Context, width: u32, height: u32, with_splat: bool) -> Result<Film> {
+    /// A cleared film; `max_slices` > 1 adds room for that many sample slices.
+    pub fn new(ctx: &Context, width: u32, height: u32, with_splat: bool, max_slices: u32) -> Result<Film> {
         let accum = ctx.create_buffer("film.accum", width as u64 * height as u64 * 16, Memory::Device)?;
+        let max_slices = max_slices.max(1);
+        let slices = if max_slices > 1 {
+            Some((
+                ctx.create_buffer("film.slices", max_slices as u64 * width as u64 * height as u64 * 16, Memory::Device)?,
+                ctx.create_kernel(&crate::gpu::kernels::FILM_SLICES, &[])?,
+            ))
+        } else {
+            None
+        };
         let stats = ctx.create_buffer("film.stats", abi::STAT_COUNT as u64 * 4, Memory::Device)?;
         let splat = if with_splat { Some(ctx.create_buffer("film.splat", width as u64 * height as u64 * 12, Memory::Device)?) } else { None };
-        let f = Film { accum, stats, splat, width, height };
+        let f = Film { accum, stats, splat, slices, max_slices, width, height };
         f.clear(ctx)?;
         Ok(f)
     }
@@ -55,6 +70,29 @@ impl Film {
             img.data[3 * i..3 * i + 3].copy_from_slice(&c);
         }
         Ok(img)
+    }
+
+    /// The slices buffer for kernels to bind (the film's own accumulation buffer stands in
+    /// when there is none; kernels then write `accum` directly).
+    pub(crate) fn slices_buffer(&self) -> &Buffer {
+        self.slices.as_ref().map_or(&self.accum, |(b, _)| b)
+    }
+
+    /// Records the addition of the first `slices` slices into the film (nothing for 1).
+    pub(crate) fn record_add_slices(&self, rec: &mut crate::vk::Recorder, slices: u32) -> Result<()> {
+        if slices <= 1 {
+            return Ok(());
+        }
+        let (buf, kernel) = self.slices.as_ref().expect("a film with sample slices");
+        assert!(slices <= self.max_slices);
+        let pixels = self.width * self.height;
+        let push = abi::SlicesPush { pixels, slices, ..Default::default() };
+        rec.dispatch(
+            kernel,
+            &[crate::vk::Bind::buffer(abi::BIND_ACCUM, &self.accum), crate::vk::Bind::buffer(abi::BIND_SLICES, buf)],
+            bytemuck::bytes_of(&push),
+            [kernel.groups_for(pixels), 1, 1],
+        )
     }
 
     pub fn nan_samples(&self, ctx: &Context) -> Result<u32> {

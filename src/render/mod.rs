@@ -117,6 +117,10 @@ pub struct RenderSettings {
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (to
     /// measure what specialisation buys).
     pub all_material_code: bool,
+    /// Samples of a pixel a pass renders at once, each by its own invocation (0: as many as
+    /// it takes to give the GPU about 2^18 invocations; 1 on CPU devices, which are full
+    /// anyway). Small images otherwise leave a large GPU mostly idle.
+    pub sample_slices: u32,
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
     /// responsive and far from the GPU timeout).
     pub pass_target: Duration,
@@ -125,7 +129,7 @@ pub struct RenderSettings {
 
 impl RenderSettings {
     pub fn new(integrator: Integrator) -> Self {
-        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, light_path_ratio: 1.0, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
+        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, light_path_ratio: 1.0, sample_slices: 0, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
     }
 }
 
@@ -162,13 +166,38 @@ pub struct Renderer {
     samples: u32,
     /// Samples per pixel per submission, adapted to `pass_target`.
     pass_spp: u32,
+    /// Most sample slices per pass (the film's and BDPT's storage are sized for it).
+    slices: u32,
+}
+
+/// Invocations that keep a large GPU busy (132 SMs x 2,048 resident threads on an H100).
+const TARGET_INVOCATIONS: u64 = 1 << 18;
+/// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
+const SLICED_STORE_BYTES: u64 = 1 << 30;
+
+/// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`).
+fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
+    if settings.sample_slices > 0 {
+        return settings.sample_slices;
+    }
+    if ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU {
+        return 1;
+    }
+    let mut s = TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64);
+    if let Integrator::Bdpt(_) = settings.integrator {
+        let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
+        let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
+        let limit = SLICED_STORE_BYTES.min(ctx.info().max_storage_buffer_range as u64);
+        s = s.min((limit / store.max(1)).max(1));
+    }
+    s as u32
 }
 
 /// The kernels of `integrator` for a film of `pixels` pixels.
-fn build_kernels(ctx: &Context, scene: &GpuScene, integrator: Integrator, pixels: u32, settings: &RenderSettings) -> Result<Kernels, RenderError> {
+fn build_kernels(ctx: &Context, scene: &GpuScene, integrator: Integrator, pixels: u32, settings: &RenderSettings, slices: u32) -> Result<Kernels, RenderError> {
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
-        Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, scene, pixels, settings, join)?),
+        Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, scene, pixels, settings, join, slices)?),
     })
 }
 
@@ -189,9 +218,11 @@ impl Renderer {
         if settings.all_material_code {
             gscene.features = gscene.features.with_all_material_code();
         }
-        let kernels = build_kernels(ctx, &gscene, settings.integrator, camera.width * camera.height, &settings)?;
-        let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)))?;
-        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1 })
+        let pixels = camera.width * camera.height;
+        let slices = sample_slices(ctx, &settings, pixels);
+        let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
+        let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)), slices)?;
+        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1, slices })
     }
 
     pub fn gpu_scene(&self) -> &GpuScene {
@@ -233,14 +264,16 @@ impl Renderer {
         }
         if (camera.width, camera.height) != (self.film.width, self.film.height) {
             let pixels = camera.width * camera.height;
+            let slices = sample_slices(&self.ctx, &self.settings, pixels);
             // Path tracers keep their kernels; BDPT's store is sized by the pixel count.
             let bdpt = matches!(self.kernels, Kernels::Bdpt(_));
-            let kernels = if bdpt { Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings)?) } else { None };
-            let film = Film::new(&self.ctx, camera.width, camera.height, bdpt)?;
+            let kernels = if bdpt { Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings, slices)?) } else { None };
+            let film = Film::new(&self.ctx, camera.width, camera.height, bdpt, slices)?;
             if let Some(k) = kernels {
                 self.kernels = k;
             }
             self.film = film;
+            self.slices = slices;
         }
         self.reset(Some(camera))
     }
@@ -248,10 +281,15 @@ impl Renderer {
     /// Switches to another integrator, keeping the scene and its BVH on the GPU, and clears
     /// the film. On error the renderer is unchanged.
     pub fn set_integrator(&mut self, integrator: Integrator) -> Result<(), RenderError> {
-        let kernels = build_kernels(&self.ctx, &self.scene, integrator, self.film.width * self.film.height, &self.settings)?;
-        let film = Film::new(&self.ctx, self.film.width, self.film.height, matches!(kernels, Kernels::Bdpt(_)))?;
+        let pixels = self.film.width * self.film.height;
+        let mut settings = self.settings.clone();
+        settings.integrator = integrator;
+        let slices = sample_slices(&self.ctx, &settings, pixels);
+        let kernels = build_kernels(&self.ctx, &self.scene, integrator, pixels, &settings, slices)?;
+        let film = Film::new(&self.ctx, self.film.width, self.film.height, matches!(kernels, Kernels::Bdpt(_)), slices)?;
         self.kernels = kernels;
         self.film = film;
+        self.slices = slices;
         self.settings.integrator = integrator;
         self.pass_spp = 1;
         self.samples = 0;
@@ -280,7 +318,7 @@ impl Renderer {
                     emitter_power: self.scene.emitter_power,
                     max_depth: s.max_depth,
                     rr_depth: s.rr_depth,
-                    pad0: 0,
+                    slices: self.slices.min(spp),
                 };
                 self.ctx.submit("render pass", |rec| pt.record(rec, &self.scene, &self.film, &push))?;
             }
@@ -291,10 +329,14 @@ impl Renderer {
                     Join::Lvc(k) => (crate::gpu::abi::JOIN_LVC, k),
                 };
                 self.ctx.submit("bdpt pass", |rec| {
-                    for i in 0..spp {
+                    // Iterations of up to `slices` camera samples per pixel, their light
+                    // paths traced together.
+                    let mut done = 0;
+                    while done < spp {
+                        let samples = self.slices.min(spp - done);
                         let push = BdptPush {
                             camera: self.camera,
-                            sample_base: self.samples + i,
+                            sample_base: self.samples + done,
                             seed: s.seed,
                             emitter_count: self.scene.emitter_count,
                             emitter_power: self.scene.emitter_power,
@@ -304,10 +346,11 @@ impl Renderer {
                             join,
                             join_k,
                             light_paths: b.light_paths,
-                            pad0: 0,
-                            pad1: 0,
+                            camera_samples: samples,
+                            light_path_total: b.light_paths * samples,
                         };
                         b.record(rec, &self.scene, &self.film, &push)?;
+                        done += samples;
                     }
                     Ok(())
                 })?;

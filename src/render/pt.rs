@@ -21,7 +21,10 @@ impl PathTracer {
         let mut binds = scene.binds();
         binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
         binds.push(Bind::buffer(abi::BIND_RENDER_STATS, &film.stats));
-        let n = crate::trace::tiled_invocations(film.width, film.height);
-        rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(push), [self.kernel.groups_for(n), 1, 1])
+        binds.push(Bind::buffer(abi::BIND_SLICES, film.slices_buffer()));
+        let slices = push.slices.max(1);
+        let n = crate::trace::tiled_invocations(film.width, film.height) * slices;
+        rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(push), [self.kernel.groups_for(n), 1, 1])?;
+        film.record_add_slices(rec, slices)
     }
 }
