@@ -222,3 +222,151 @@ fn sponza_matches_cpu_hit_for_hit() {
     assert!(hit > 50_000 && miss > 1_000);
     finish(ctx);
 }
+
+/// The alpha of `scene`'s triangle `tri` at barycentrics (u, v) of vertices 1 and 2, as
+/// glsl/common/scene.glsl computes it (interpolated UV, bilinear filtering between texel
+/// centres, repeat wrap, uv (0, 0) at the image's top-left corner); `None` if opaque.
+fn cpu_alpha(scene: &bidir::scene::Scene, tri: u32, u: f32, v: f32) -> Option<(f32, f32)> {
+    let m = &scene.materials[scene.material_ids[tri as usize] as usize];
+    let mask = m.alpha?;
+    let uvs = scene.uvs.as_ref()?;
+    let [a, b, c] = scene.triangles[tri as usize].map(|i| uvs[i as usize]);
+    let uv = (1.0 - u - v) * a + u * b + v * c;
+    let t = &scene.textures[mask.texture as usize];
+    let (w, h) = (t.width as i32, t.height as i32);
+    let p = uv * glam::Vec2::new(w as f32, h as f32) - 0.5;
+    let (i, f) = (p.floor(), p - p.floor());
+    let texel = |x: i32, y: i32| t.rgba8[((y.rem_euclid(h) * w + x.rem_euclid(w)) * 4 + 3) as usize] as f32 / 255.0;
+    let (x, y) = (i.x as i32, i.y as i32);
+    let top = texel(x, y) * (1.0 - f.x) + texel(x + 1, y) * f.x;
+    let bottom = texel(x, y + 1) * (1.0 - f.x) + texel(x + 1, y + 1) * f.x;
+    Some((top * (1.0 - f.y) + bottom * f.y, mask.cutoff))
+}
+
+/// Writes the alpha-test scene (OBJ + MTL + two PNG masks) into a fresh directory: two
+/// alpha-masked quads (z = 0: an RGBA mask, UVs over [0, 2]² so it repeats; z = -0.5: a grey
+/// mask, whose luminance is its alpha, under skewed UVs reaching negative values) in front of
+/// an opaque quad (z = -1). Masks are 16x16 texels: fully transparent, fully opaque or random.
+fn write_alpha_scene(rng: &mut Pcg) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("bidir-alpha-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let level = |rng: &mut Pcg| match rng.below(5) {
+        0 | 1 => 0u8,
+        2 | 3 => 255,
+        _ => rng.below(256) as u8,
+    };
+    let rgba: Vec<u8> = (0..16 * 16).flat_map(|_| [200, 180, 90, level(rng)]).collect();
+    image::save_buffer(dir.join("mask_rgba.png"), &rgba, 16, 16, image::ExtendedColorType::Rgba8).unwrap();
+    let grey: Vec<u8> = (0..16 * 16).map(|_| level(rng)).collect();
+    image::save_buffer(dir.join("mask_grey.png"), &grey, 16, 16, image::ExtendedColorType::L8).unwrap();
+    std::fs::write(
+        dir.join("alpha.mtl"),
+        "newmtl leaves\nKd 0.5 0.6 0.2\nmap_d mask_rgba.png\n\nnewmtl fence\nKd 0.7 0.7 0.7\nmap_d mask_grey.png\n\nnewmtl wall\nKd 0.8 0.8 0.8\n",
+    )
+    .unwrap();
+    // OBJ texture coordinates have v upwards; the loader flips them (uv (0, 0) top-left).
+    std::fs::write(
+        dir.join("alpha.obj"),
+        "mtllib alpha.mtl\n\
+         v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n\
+         v -1 -1 -0.5\nv 1 -1 -0.5\nv 1 1 -0.5\nv -1 1 -0.5\n\
+         v -2 -2 -1\nv 2 -2 -1\nv 2 2 -1\nv -2 2 -1\n\
+         vt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n\
+         vt -0.3 0.1\nvt 1.1 -0.4\nvt 1.6 0.9\nvt 0.2 1.3\n\
+         vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n\
+         usemtl leaves\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n\
+         usemtl fence\nf 5/5 6/6 7/7\nf 5/5 7/7 8/8\n\
+         usemtl wall\nf 9/9 10/10 11/11\nf 9/9 11/11 12/12\n",
+    )
+    .unwrap();
+    dir.join("alpha.obj")
+}
+
+#[test]
+fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
+    let mut rng = Pcg::new(15);
+    let path = write_alpha_scene(&mut rng);
+    let scene = bidir::scene::load(&path, &Default::default()).expect("the alpha scene loads").scene;
+    std::fs::remove_dir_all(path.parent().unwrap()).ok();
+    assert_eq!(scene.materials.iter().filter(|m| m.alpha.is_some()).count(), 2);
+    assert!(bidir::render::SceneFeatures::of(&scene).alpha);
+    // Rays from in front (z = 3) and from between the back quads (z = -0.75, facing +z, so
+    // masks are also seen from behind), to random points past the masks: whole rays
+    // (closest hit) and segments that stop before the opaque quad (any-hit verdicts that
+    // depend only on the masks).
+    let point = |rng: &mut Pcg, z: f32, r: f32| Vec3::new((rng.next_f32() * 2.0 - 1.0) * r, (rng.next_f32() * 2.0 - 1.0) * r, z);
+    let mut rays = Vec::new();
+    for i in 0..60_000 {
+        let (o, target, stop) = match i % 4 {
+            0 | 1 => (point(&mut rng, 3.0, 1.5), point(&mut rng, -1.0, 1.2), false),
+            2 => (point(&mut rng, 3.0, 1.5), point(&mut rng, -0.75, 1.0), true),
+            _ => (point(&mut rng, -0.75, 0.9), point(&mut rng, 2.0, 1.5), i % 8 == 3),
+        };
+        let d = (target - o).normalize();
+        rays.push(ray(o, d, if stop { (target - o).length() } else { 3.0e38 }));
+    }
+    let ctx = gpu();
+    for tri_test in [TriTest::Watertight, TriTest::Woop] {
+        let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, ..Default::default() }).unwrap();
+        let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
+        let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
+        let mut opts = bidir::trace::TraceOptions::new(tri_test);
+        opts.alpha = Some(gscene.features);
+        let tracer = Tracer::with_options(&ctx, &opts).unwrap();
+        let closest = tracer.trace_with(&ctx, &gscene.binds(), &rays, false).unwrap();
+        let any = tracer.trace_with(&ctx, &gscene.binds(), &rays, true).unwrap();
+        let (mut compared, mut near_cutoff, mut through_mask, mut occluded, mut unoccluded) = (0, 0, 0, 0, 0);
+        let mut per_layer = [0usize; 3];
+        // Layer of a triangle: 0 (z = 0), 1 (z = -0.5), 2 (z = -1).
+        let layer = |tri: u32| (-2.0 * scene.positions[scene.triangles[tri as usize][0] as usize].z).round() as usize;
+        for (i, r) in rays.iter().enumerate() {
+            let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
+            // The reference with the same cutoff; a ray whose alpha lands within 1e-3 of the
+            // cutoff is not compared (GPU and CPU may round the UV differently).
+            let ambiguous = std::cell::Cell::new(false);
+            let accept = |tri: u32, h: &bidir::bvh::intersect::TriHit| match cpu_alpha(&scene, tri, h.u, h.v) {
+                None => true,
+                Some((a, cutoff)) => {
+                    if (a - cutoff).abs() < 1e-3 {
+                        ambiguous.set(true);
+                    }
+                    a >= cutoff
+                }
+            };
+            let want = cpu.closest_where(o, d, 0.0, tmax, accept);
+            let want_any = cpu.any_where(o, d, 0.0, tmax, accept);
+            if ambiguous.get() {
+                near_cutoff += 1;
+                continue;
+            }
+            compared += 1;
+            let g = closest[i];
+            match want {
+                None => assert_eq!(g.tri, NO_HIT, "ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU (alpha) missed", g.tri, g.t),
+                Some((tri, h)) => {
+                    assert_ne!(g.tri, NO_HIT, "ray {i} ({o}, {d}): CPU (alpha) hit triangle {tri} at t={}, GPU missed", h.t);
+                    let gtri = bvh.tri_ids[g.tri as usize];
+                    // The two triangles of a quad share a diagonal: a tie there is fine.
+                    assert!(layer(gtri) == layer(tri) && (g.t - h.t).abs() <= 1e-4 * h.t, "ray {i} ({o}, {d}): GPU triangle {gtri} t={}, CPU (alpha) triangle {tri} t={}", g.t, h.t);
+                    per_layer[layer(tri)] += 1;
+                    if cpu.closest(o, d, 0.0, tmax).is_some_and(|(t0, _)| layer(t0) != layer(tri)) {
+                        through_mask += 1;
+                    }
+                }
+            }
+            assert_eq!(any[i].tri != NO_HIT, want_any, "ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict with alpha");
+            if tmax < 1e30 {
+                if want_any { occluded += 1 } else { unoccluded += 1 }
+            }
+        }
+        eprintln!(
+            "alpha [{}]: {compared} rays compared ({near_cutoff} within 1e-3 of the cutoff skipped); closest hits on leaves/fence/wall {per_layer:?}, {through_mask} through a transparent texel; segments {occluded} occluded, {unoccluded} unoccluded",
+            tri_test.name()
+        );
+        assert!(near_cutoff * 100 < rays.len(), "too many rays near the cutoff: {near_cutoff}");
+        assert!(per_layer.iter().all(|&n| n > 2_000) && through_mask > 10_000, "the rays must see every layer and pass through holes");
+        assert!(occluded > 2_000 && unoccluded > 2_000, "segments must be both blocked and let through");
+        drop((gscene, tracer));
+    }
+    finish(ctx);
+}

@@ -37,6 +37,10 @@ pub struct TraversalArgs {
     /// Disable spatial pre-splits.
     #[arg(long)]
     pub no_pre_split: bool,
+    /// Honour alpha masks as the integrators do (skip triangles where their alpha texture is
+    /// below the cutoff); default: geometry only.
+    #[arg(long)]
+    pub alpha: bool,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -63,8 +67,9 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.quality = a.quality;
     o.build.max_leaf_tris = a.leaf_size;
     o.build.pre_split = !a.no_pre_split;
+    o.alpha = a.alpha;
     let cam = bidir::trace::gpu_camera(&loaded.camera);
-    let report = traversal::run(&ctx, &loaded.scene.positions, &loaded.scene.triangles, &cam, &o)?;
+    let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();
     if let Some(path) = &a.json {
         let tmp = path.with_extension("json.tmp");

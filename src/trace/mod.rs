@@ -12,6 +12,7 @@ use crate::gpu::{
     abi::{self, GpuCamera, GpuHit, GpuRay, SecondaryPush, TracePush},
     kernels,
 };
+use crate::render::SceneFeatures;
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
 
 /// Invocations that cover a `width` x `height` image in whole 8x8 tiles (the order of
@@ -37,6 +38,11 @@ impl GpuBvh {
             bytes: (std::mem::size_of_val(bvh.nodes.as_slice()) + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
         })
     }
+
+    /// Bindings of the BVH buffers (glsl/common/traverse.glsl).
+    pub fn binds(&self) -> Vec<Bind<'_>> {
+        vec![Bind::buffer(abi::BIND_NODES, &self.nodes), Bind::buffer(abi::BIND_TRIS, &self.tris)]
+    }
 }
 
 /// Which secondary rays to spawn from hits.
@@ -48,6 +54,24 @@ pub enum Secondary {
     Diffuse,
 }
 
+/// What the trace kernels are specialised for.
+#[derive(Clone, Copy, Debug)]
+pub struct TraceOptions {
+    pub tri_test: TriTest,
+    /// Count nodes and triangles tested (slower; for reports, not timing).
+    pub stats: bool,
+    /// Skip alpha-masked triangles where their alpha texture is below the cutoff, as the
+    /// integrators do (trace_alpha.comp, through glsl/common/scene.glsl): the features of the
+    /// scene whose buffers (`GpuScene::binds`) are then given to `record_trace`.
+    pub alpha: Option<SceneFeatures>,
+}
+
+impl TraceOptions {
+    pub fn new(tri_test: TriTest) -> Self {
+        TraceOptions { tri_test, stats: false, alpha: None }
+    }
+}
+
 /// Trace and ray-generation kernels specialised for one triangle test.
 pub struct Tracer {
     closest: Kernel,
@@ -57,62 +81,77 @@ pub struct Tracer {
     gen_diffuse: Kernel,
     compact: Kernel,
     scan: Scan,
-    tri_test: TriTest,
+    opts: TraceOptions,
 }
 
 impl Tracer {
     /// `stats`: count nodes and triangles tested (slower; for reports, not timing).
     pub fn new(ctx: &Context, tri_test: TriTest, stats: bool) -> Result<Tracer> {
-        let base = [Spec { id: abi::SPEC_TRI_TEST, value: tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: stats as u32 }];
+        Tracer::with_options(ctx, &TraceOptions { stats, ..TraceOptions::new(tri_test) })
+    }
+
+    pub fn with_options(ctx: &Context, opts: &TraceOptions) -> Result<Tracer> {
+        let base = [Spec { id: abi::SPEC_TRI_TEST, value: opts.tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: opts.stats as u32 }];
+        let mut trace_specs = base.to_vec();
+        let source = match &opts.alpha {
+            Some(features) => {
+                trace_specs.extend(features.specs());
+                &kernels::TRACE_ALPHA
+            }
+            None => &kernels::TRACE,
+        };
         let with = |id, value| {
-            let mut s = base.to_vec();
+            let mut s = trace_specs.clone();
             s.push(Spec { id, value });
             s
         };
         Ok(Tracer {
-            closest: ctx.create_kernel(&kernels::TRACE, &with(abi::SPEC_ANY_HIT, 0))?,
-            any: ctx.create_kernel(&kernels::TRACE, &with(abi::SPEC_ANY_HIT, 1))?,
+            closest: ctx.create_kernel(source, &with(abi::SPEC_ANY_HIT, 0))?,
+            any: ctx.create_kernel(source, &with(abi::SPEC_ANY_HIT, 1))?,
             gen_primary: ctx.create_kernel(&kernels::GEN_PRIMARY, &[])?,
             gen_shadow: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 0 }])?,
             gen_diffuse: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 1 }])?,
             compact: ctx.create_kernel(&kernels::COMPACT_RAYS, &[])?,
             scan: Scan::new(ctx)?,
-            tri_test,
+            opts: *opts,
         })
     }
 
     pub fn tri_test(&self) -> TriTest {
-        self.tri_test
+        self.opts.tri_test
     }
 
-    /// Records a trace of `count` rays into `hits` (one `GpuHit` each). `stats` receives two
-    /// u32 counters (nodes, triangles) when the tracer counts them.
-    pub fn record_trace(&self, rec: &mut Recorder, bvh: &GpuBvh, rays: &Buffer, hits: &Buffer, stats: &Buffer, count: u32, any_hit: bool) -> Result<()> {
+    pub fn options(&self) -> &TraceOptions {
+        &self.opts
+    }
+
+    /// Records a trace of `count` rays into `hits` (one `GpuHit` each). `geometry`: the BVH's
+    /// bindings (`GpuBvh::binds`), or the whole scene's (`GpuScene::binds`) for a tracer with
+    /// `alpha`. `stats` receives two u32 counters (nodes, triangles) when the tracer counts
+    /// them.
+    #[allow(clippy::too_many_arguments)]
+    pub fn record_trace(&self, rec: &mut Recorder, geometry: &[Bind], rays: &Buffer, hits: &Buffer, stats: &Buffer, count: u32, any_hit: bool) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
         let push = TracePush { count, ..Default::default() };
-        rec.dispatch(
-            k,
-            &[
-                Bind::buffer(abi::BIND_NODES, &bvh.nodes),
-                Bind::buffer(abi::BIND_TRIS, &bvh.tris),
-                Bind::buffer(abi::BIND_RAYS, rays),
-                Bind::buffer(abi::BIND_HITS, hits),
-                Bind::buffer(abi::BIND_STATS, stats),
-            ],
-            bytemuck::bytes_of(&push),
-            [k.groups_for(count), 1, 1],
-        )
+        let mut binds = geometry.to_vec();
+        binds.extend([Bind::buffer(abi::BIND_RAYS, rays), Bind::buffer(abi::BIND_HITS, hits), Bind::buffer(abi::BIND_STATS, stats)]);
+        rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [k.groups_for(count), 1, 1])
     }
 
     /// Traces host rays and returns their hits (for tests and tools).
     pub fn trace(&self, ctx: &Context, bvh: &GpuBvh, rays: &[GpuRay], any_hit: bool) -> Result<Vec<GpuHit>> {
+        self.trace_with(ctx, &bvh.binds(), rays, any_hit)
+    }
+
+    /// As `trace`, with the given geometry bindings (see `record_trace`).
+    pub fn trace_with(&self, ctx: &Context, geometry: &[Bind], rays: &[GpuRay], any_hit: bool) -> Result<Vec<GpuHit>> {
         let count = rays.len() as u32;
         let ray_buf = ctx.upload_buffer("trace.rays", rays)?;
         let hits = ctx.create_buffer("trace.hits", rays.len() as u64 * 16, Memory::Device)?;
         let stats = ctx.create_buffer("trace.stats", 8, Memory::Device)?;
         ctx.submit("trace", |rec| {
             rec.fill_buffer(&stats, 0);
-            self.record_trace(rec, bvh, &ray_buf, &hits, &stats, count, any_hit)
+            self.record_trace(rec, geometry, &ray_buf, &hits, &stats, count, any_hit)
         })?;
         ctx.read_buffer(&hits)
     }
