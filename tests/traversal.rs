@@ -5,7 +5,7 @@ mod common;
 
 use bidir::bvh::{BuildOptions, Bvh, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
-use bidir::trace::{GpuBvh, Tracer};
+use bidir::trace::{GpuBvh, TraceOptions, Tracer};
 use bidir::vk::Context;
 use common::{finish, geometry, gpu, Pcg};
 use glam::Vec3;
@@ -14,51 +14,78 @@ fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
     GpuRay { origin: o.extend(0.0), dir: d.extend(tmax) }
 }
 
-/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray; returns
-/// (hits, misses) of the closest-hit pass.
+/// The trace kernels every scene is checked with: one invocation per ray, and persistent
+/// threads with a handful of workgroups (so every subgroup fetches many batches) and with the
+/// device's default count.
+fn variants(tri_test: TriTest) -> Vec<(&'static str, TraceOptions)> {
+    let base = TraceOptions::new(tri_test);
+    vec![
+        ("per-ray", base),
+        ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
+        ("persistent default", TraceOptions { persistent: Some(0), ..base }),
+    ]
+}
+
+/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for every trace
+/// variant; returns (hits, misses) of the closest-hit pass.
 fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
     let bvh = Bvh::build(positions, tris, &opts).unwrap();
     let cpu = CpuTracer::new(&bvh, positions, tris);
     let scale = positions.iter().fold(0f32, |m, p| m.max(p.abs().max_element()));
+    let want: Vec<_> = rays.iter().map(|r| cpu.closest(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
+    let want_any: Vec<bool> = rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
     let gbvh = GpuBvh::upload(ctx, &bvh).unwrap();
-    let tracer = Tracer::new(ctx, opts.tri_test, false).unwrap();
-    let closest: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, false).unwrap();
-    let any: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, true).unwrap();
-    let (mut hits, mut misses, mut ties) = (0, 0, 0);
-    for (i, r) in rays.iter().enumerate() {
-        let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
-        let want = cpu.closest(o, d, r.origin.w, tmax);
-        let g = closest[i];
-        match want {
-            None => {
-                assert_eq!(g.tri, NO_HIT, "{name} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU missed", g.tri, g.t);
-                misses += 1;
-            }
-            Some((tri, h)) => {
-                assert_ne!(g.tri, NO_HIT, "{name} ray {i} ({o}, {d}): CPU hit triangle {tri} at t={}, GPU missed", h.t);
-                let gtri = bvh.tri_ids[g.tri as usize];
-                if gtri != tri {
-                    // A tie: two triangles at the same distance (a shared edge or vertex).
-                    assert!((g.t - h.t).abs() <= 1e-6 * h.t.abs(), "{name} ray {i}: GPU triangle {gtri} t={}, CPU triangle {tri} t={}", g.t, h.t);
-                    ties += 1;
-                } else {
-                    // Same triangle. Its t is computed with the same operations on both sides,
-                    // but GPUs round some of them differently (Vulkan allows 2.5 ulp division),
-                    // and t is ill-conditioned for grazing hits and far-off vertices (the edge
-                    // functions cancel), so its error is absolute, a few ulps of the coordinates
-                    // (an H100: 3e-5 at Cornell scale). Only a guard against gross errors; the
-                    // requirement is the triangle itself.
-                    let tol = 1e-3 * h.t.abs() + 1e-5 * scale.max(o.abs().max_element());
-                    assert!((g.t - h.t).abs() <= tol, "{name} ray {i}: t GPU {} CPU {}", g.t, h.t);
+    let (mut hits, mut misses) = (0, 0);
+    for (variant, trace_opts) in variants(opts.tri_test) {
+        let tracer = Tracer::with_options(ctx, &trace_opts).unwrap();
+        let closest: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, false).unwrap();
+        let any: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, true).unwrap();
+        let mut ties = 0;
+        (hits, misses) = (0, 0);
+        for (i, r) in rays.iter().enumerate() {
+            let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
+            let g = closest[i];
+            match want[i] {
+                None => {
+                    assert_eq!(g.tri, NO_HIT, "{name} {variant} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU missed", g.tri, g.t);
+                    misses += 1;
                 }
-                hits += 1;
+                Some((tri, h)) => {
+                    assert_ne!(g.tri, NO_HIT, "{name} {variant} ray {i} ({o}, {d}): CPU hit triangle {tri} at t={}, GPU missed", h.t);
+                    let gtri = bvh.tri_ids[g.tri as usize];
+                    if gtri != tri {
+                        // A tie: two triangles at the same distance (a shared edge or vertex).
+                        assert!(
+                            (g.t - h.t).abs() <= 1e-6 * h.t.abs(),
+                            "{name} {variant} ray {i}: GPU triangle {gtri} t={}, CPU triangle {tri} t={}",
+                            g.t,
+                            h.t
+                        );
+                        ties += 1;
+                    } else {
+                        // Same triangle. Its t is computed with the same operations on both sides,
+                        // but GPUs round some of them differently (Vulkan allows 2.5 ulp division),
+                        // and t is ill-conditioned for grazing hits and far-off vertices (the edge
+                        // functions cancel), so its error is absolute, a few ulps of the coordinates
+                        // (an H100: 3e-5 at Cornell scale). Only a guard against gross errors; the
+                        // requirement is the triangle itself.
+                        let tol = 1e-3 * h.t.abs() + 1e-5 * scale.max(o.abs().max_element());
+                        assert!((g.t - h.t).abs() <= tol, "{name} {variant} ray {i}: t GPU {} CPU {}", g.t, h.t);
+                    }
+                    hits += 1;
+                }
             }
+            assert_eq!(any[i].tri != NO_HIT, want_any[i], "{name} {variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict");
         }
-        let cpu_any = cpu.any(o, d, r.origin.w, tmax);
-        assert_eq!(any[i].tri != NO_HIT, cpu_any, "{name} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict");
+        eprintln!(
+            "{name} [{}, {variant}]: {} rays, {hits} hits ({ties} ties), {misses} misses; {} nodes, depth {}",
+            opts.tri_test.name(),
+            rays.len(),
+            bvh.nodes.len(),
+            bvh.depth
+        );
     }
-    eprintln!("{name} [{}]: {} rays, {hits} hits ({ties} ties), {misses} misses; {} nodes, depth {}", opts.tri_test.name(), rays.len(), bvh.nodes.len(), bvh.depth);
-    drop((gbvh, tracer));
+    drop(gbvh);
     (hits, misses)
 }
 
@@ -310,63 +337,64 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, ..Default::default() }).unwrap();
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
-        let mut opts = bidir::trace::TraceOptions::new(tri_test);
-        opts.alpha = Some(gscene.features);
-        let tracer = Tracer::with_options(&ctx, &opts).unwrap();
-        let closest = tracer.trace_with(&ctx, &gscene.binds(), &rays, false).unwrap();
-        let any = tracer.trace_with(&ctx, &gscene.binds(), &rays, true).unwrap();
-        let (mut compared, mut near_cutoff, mut through_mask, mut occluded, mut unoccluded) = (0, 0, 0, 0, 0);
-        let mut per_layer = [0usize; 3];
-        // Layer of a triangle: 0 (z = 0), 1 (z = -0.5), 2 (z = -1).
-        let layer = |tri: u32| (-2.0 * scene.positions[scene.triangles[tri as usize][0] as usize].z).round() as usize;
-        for (i, r) in rays.iter().enumerate() {
-            let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
-            // The reference with the same cutoff; a ray whose alpha lands within 1e-3 of the
-            // cutoff is not compared (GPU and CPU may round the UV differently).
-            let ambiguous = std::cell::Cell::new(false);
-            let accept = |tri: u32, h: &bidir::bvh::intersect::TriHit| match cpu_alpha(&scene, tri, h.u, h.v) {
-                None => true,
-                Some((a, cutoff)) => {
-                    if (a - cutoff).abs() < 1e-3 {
-                        ambiguous.set(true);
+        for (variant, mut opts) in variants(tri_test) {
+            opts.alpha = Some(gscene.features);
+            let tracer = Tracer::with_options(&ctx, &opts).unwrap();
+            let closest = tracer.trace_with(&ctx, &gscene.binds(), &rays, false).unwrap();
+            let any = tracer.trace_with(&ctx, &gscene.binds(), &rays, true).unwrap();
+            let (mut compared, mut near_cutoff, mut through_mask, mut occluded, mut unoccluded) = (0, 0, 0, 0, 0);
+            let mut per_layer = [0usize; 3];
+            // Layer of a triangle: 0 (z = 0), 1 (z = -0.5), 2 (z = -1).
+            let layer = |tri: u32| (-2.0 * scene.positions[scene.triangles[tri as usize][0] as usize].z).round() as usize;
+            for (i, r) in rays.iter().enumerate() {
+                let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
+                // The reference with the same cutoff; a ray whose alpha lands within 1e-3 of the
+                // cutoff is not compared (GPU and CPU may round the UV differently).
+                let ambiguous = std::cell::Cell::new(false);
+                let accept = |tri: u32, h: &bidir::bvh::intersect::TriHit| match cpu_alpha(&scene, tri, h.u, h.v) {
+                    None => true,
+                    Some((a, cutoff)) => {
+                        if (a - cutoff).abs() < 1e-3 {
+                            ambiguous.set(true);
+                        }
+                        a >= cutoff
                     }
-                    a >= cutoff
+                };
+                let want = cpu.closest_where(o, d, 0.0, tmax, accept);
+                let want_any = cpu.any_where(o, d, 0.0, tmax, accept);
+                if ambiguous.get() {
+                    near_cutoff += 1;
+                    continue;
                 }
-            };
-            let want = cpu.closest_where(o, d, 0.0, tmax, accept);
-            let want_any = cpu.any_where(o, d, 0.0, tmax, accept);
-            if ambiguous.get() {
-                near_cutoff += 1;
-                continue;
-            }
-            compared += 1;
-            let g = closest[i];
-            match want {
-                None => assert_eq!(g.tri, NO_HIT, "ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU (alpha) missed", g.tri, g.t),
-                Some((tri, h)) => {
-                    assert_ne!(g.tri, NO_HIT, "ray {i} ({o}, {d}): CPU (alpha) hit triangle {tri} at t={}, GPU missed", h.t);
-                    let gtri = bvh.tri_ids[g.tri as usize];
-                    // The two triangles of a quad share a diagonal: a tie there is fine.
-                    assert!(layer(gtri) == layer(tri) && (g.t - h.t).abs() <= 1e-4 * h.t, "ray {i} ({o}, {d}): GPU triangle {gtri} t={}, CPU (alpha) triangle {tri} t={}", g.t, h.t);
-                    per_layer[layer(tri)] += 1;
-                    if cpu.closest(o, d, 0.0, tmax).is_some_and(|(t0, _)| layer(t0) != layer(tri)) {
-                        through_mask += 1;
+                compared += 1;
+                let g = closest[i];
+                match want {
+                    None => assert_eq!(g.tri, NO_HIT, "{variant} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU (alpha) missed", g.tri, g.t),
+                    Some((tri, h)) => {
+                        assert_ne!(g.tri, NO_HIT, "{variant} ray {i} ({o}, {d}): CPU (alpha) hit triangle {tri} at t={}, GPU missed", h.t);
+                        let gtri = bvh.tri_ids[g.tri as usize];
+                        // The two triangles of a quad share a diagonal: a tie there is fine.
+                        assert!(layer(gtri) == layer(tri) && (g.t - h.t).abs() <= 1e-4 * h.t, "{variant} ray {i} ({o}, {d}): GPU triangle {gtri} t={}, CPU (alpha) triangle {tri} t={}", g.t, h.t);
+                        per_layer[layer(tri)] += 1;
+                        if cpu.closest(o, d, 0.0, tmax).is_some_and(|(t0, _)| layer(t0) != layer(tri)) {
+                            through_mask += 1;
+                        }
                     }
                 }
+                assert_eq!(any[i].tri != NO_HIT, want_any, "{variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict with alpha");
+                if tmax < 1e30 {
+                    if want_any { occluded += 1 } else { unoccluded += 1 }
+                }
             }
-            assert_eq!(any[i].tri != NO_HIT, want_any, "ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict with alpha");
-            if tmax < 1e30 {
-                if want_any { occluded += 1 } else { unoccluded += 1 }
-            }
+            eprintln!(
+                "alpha [{}, {variant}]: {compared} rays compared ({near_cutoff} within 1e-3 of the cutoff skipped); closest hits on leaves/fence/wall {per_layer:?}, {through_mask} through a transparent texel; segments {occluded} occluded, {unoccluded} unoccluded",
+                tri_test.name()
+            );
+            assert!(near_cutoff * 100 < rays.len(), "too many rays near the cutoff: {near_cutoff}");
+            assert!(per_layer.iter().all(|&n| n > 2_000) && through_mask > 10_000, "the rays must see every layer and pass through holes");
+            assert!(occluded > 2_000 && unoccluded > 2_000, "segments must be both blocked and let through");
         }
-        eprintln!(
-            "alpha [{}]: {compared} rays compared ({near_cutoff} within 1e-3 of the cutoff skipped); closest hits on leaves/fence/wall {per_layer:?}, {through_mask} through a transparent texel; segments {occluded} occluded, {unoccluded} unoccluded",
-            tri_test.name()
-        );
-        assert!(near_cutoff * 100 < rays.len(), "too many rays near the cutoff: {near_cutoff}");
-        assert!(per_layer.iter().all(|&n| n > 2_000) && through_mask > 10_000, "the rays must see every layer and pass through holes");
-        assert!(occluded > 2_000 && unoccluded > 2_000, "segments must be both blocked and let through");
-        drop((gscene, tracer));
+        drop(gscene);
     }
     finish(ctx);
 }

@@ -45,11 +45,14 @@ pub struct Options {
     /// Skip alpha-masked triangles where their texture is transparent, as the integrators do
     /// (trace_alpha.comp with the scene's materials, UVs and textures); default: geometry only.
     pub alpha: bool,
+    /// Persistent threads with this many workgroups (0: the device default); None: one
+    /// invocation per ray (see `TraceOptions::persistent`).
+    pub persistent: Option<u32>,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { kinds: RayKind::ALL.to_vec(), warmup: 3, repetitions: 9, build: BuildOptions::default(), light: None, alpha: false }
+        Options { kinds: RayKind::ALL.to_vec(), warmup: 3, repetitions: 9, build: BuildOptions::default(), light: None, alpha: false, persistent: None }
     }
 }
 
@@ -75,6 +78,8 @@ pub struct Report {
     /// Alpha masks honoured (`Options::alpha`), and how many materials have one.
     pub alpha: bool,
     pub alpha_materials: usize,
+    /// Workgroups of the persistent kernel (None: one invocation per ray).
+    pub persistent_groups: Option<u32>,
     pub bvh_build_ms: f64,
     pub bvh_nodes: usize,
     pub bvh_leaves: usize,
@@ -113,6 +118,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     };
     let mut trace_opts = TraceOptions::new(opts.build.tri_test);
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
+    trace_opts.persistent = opts.persistent;
     let timing = Tracer::with_options(ctx, &trace_opts)?;
     let counting = Tracer::with_options(ctx, &TraceOptions { stats: true, ..trace_opts })?;
 
@@ -195,6 +201,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         tri_test: opts.build.tri_test,
         alpha: opts.alpha,
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
+        persistent_groups: timing.persistent_groups(),
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.nodes.len(),
         bvh_leaves: bvh.leaves,
@@ -216,6 +223,8 @@ impl Report {
             ("tri_test", Json::Str(self.tri_test.name().into())),
             ("alpha", Json::Bool(self.alpha)),
             ("alpha_materials", Json::Int(self.alpha_materials as i64)),
+            ("persistent", Json::Bool(self.persistent_groups.is_some())),
+            ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
             ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
@@ -258,7 +267,8 @@ impl Report {
             self.device,
             self.triangles,
             self.tri_test.name(),
-            if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() },
+            if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
+                + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)")),
             self.width,
             self.height,
             self.bvh_build_ms,

@@ -41,6 +41,14 @@ pub struct TraversalArgs {
     /// below the cutoff); default: geometry only.
     #[arg(long)]
     pub alpha: bool,
+    /// Persistent threads (Aila & Laine 2009): launch only enough workgroups to fill the GPU;
+    /// subgroups fetch batches of rays from a global counter.
+    #[arg(long)]
+    pub persistent: bool,
+    /// Workgroups of the persistent kernel (implies --persistent) [default: SMs × resident
+    /// warps per SM × 32 / 64 where the driver reports SMs (NVIDIA: 4224 on an H100), else 1024].
+    #[arg(long, value_name = "N")]
+    pub persistent_groups: Option<u32>,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -68,6 +76,12 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.max_leaf_tris = a.leaf_size;
     o.build.pre_split = !a.no_pre_split;
     o.alpha = a.alpha;
+    o.persistent = match (a.persistent, a.persistent_groups) {
+        (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
+        (_, Some(n)) => Some(n),
+        (true, None) => Some(0),
+        (false, None) => None,
+    };
     let cam = bidir::trace::gpu_camera(&loaded.camera);
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();

@@ -66,6 +66,8 @@ gpu_consts! {
     pub const BIND_STATS: u32 = 5;
     pub const BIND_RAYS_OUT: u32 = 6;
     pub const BIND_FLAGS: u32 = 7;
+    /// Persistent trace kernels: the next ray to fetch (one u32, zeroed before each launch).
+    pub const BIND_RAY_COUNTER: u32 = 22;
 
     // ---- Scene and integrator bindings (glsl/common/scene.glsl) ----------------------------
     pub const BIND_PRIM_INFO: u32 = 8;
@@ -117,6 +119,9 @@ gpu_consts! {
     pub const SPEC_SAMPLER: u32 = 11;
     pub const SAMPLER_INDEPENDENT: u32 = 0;
     pub const SAMPLER_SOBOL: u32 = 1;
+    /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
+    /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
+    pub const SPEC_PERSISTENT: u32 = 12;
 }
 
 gpu_structs! {
@@ -177,8 +182,9 @@ gpu_structs! {
     pub struct TracePush (16 bytes) {
         pub count: u32,
         pub seed: u32,
+        /// Persistent trace kernels: most ray batches one subgroup fetches.
+        pub max_batches: u32,
         pub pad0: u32,
-        pub pad1: u32,
     }
 
     /// A pinhole camera as kernels use it: `dir = forward + x * right + y * up` for

@@ -64,12 +64,55 @@ pub struct TraceOptions {
     /// integrators do (trace_alpha.comp, through glsl/common/scene.glsl): the features of the
     /// scene whose buffers (`GpuScene::binds`) are then given to `record_trace`.
     pub alpha: Option<SceneFeatures>,
+    /// Persistent threads (Aila & Laine 2009, section 3): launch this many workgroups, whose
+    /// subgroups fetch batches of rays from a global counter until none are left; 0: the
+    /// device's default (`default_persistent_groups`). `None`: one invocation per ray.
+    pub persistent: Option<u32>,
 }
 
 impl TraceOptions {
     pub fn new(tri_test: TriTest) -> Self {
-        TraceOptions { tri_test, stats: false, alpha: None }
+        TraceOptions { tri_test, stats: false, alpha: None, persistent: None }
     }
+}
+
+/// Workgroups a persistent trace kernel launches by default. Where the device reports its
+/// streaming multiprocessors (VK_NV_shader_sm_builtins: the H100 has 132, each keeping up to
+/// 64 warps resident), enough to fill every one at full occupancy: SMs × resident warps × 32
+/// lanes / TRACE_WG_SIZE (H100: 4224). That is an upper bound — registers may allow fewer
+/// resident — but a harmless one: groups beyond those resident start only as others finish,
+/// i.e. when the ray queue is (nearly) empty, and leave at once. Elsewhere 1024 groups (65,536
+/// invocations; lavapipe runs them on its few CPU threads).
+pub fn default_persistent_groups(info: &crate::vk::DeviceInfo) -> u32 {
+    if info.sm_count > 0 && info.warps_per_sm > 0 {
+        (info.sm_count * info.warps_per_sm * info.subgroup_size.max(1) / abi::TRACE_WG_SIZE).max(1)
+    } else {
+        1024
+    }
+}
+
+/// Most ray batches one subgroup of a persistent kernel may fetch on `info`'s device: no limit
+/// on GPUs; 32 on CPU devices. llvmpipe (lavapipe) gives each invocation a budget of 65,535
+/// loop iterations in all (gallivm's loop limiter, meant to stop infinite loops) and then
+/// silently leaves every loop; its few threads run the first workgroups to the end, so one
+/// subgroup would fetch hundreds of batches (measured: rays lost after ~1,200 batches of the
+/// Cornell box, wrong hits before that). 32 batches of ≤ 8 rays stay far below the budget.
+pub fn persistent_batch_cap(info: &crate::vk::DeviceInfo) -> u32 {
+    if info.device_type == crate::vk::PhysicalDeviceType::CPU {
+        32
+    } else {
+        u32::MAX
+    }
+}
+
+/// (workgroups, batches per subgroup) of a persistent launch over `count` rays: `groups`
+/// workgroups, or more where `max_batches` batches of each subgroup could not cover every
+/// ray (each subgroup fetches whole batches of its size, so a workgroup covers
+/// TRACE_WG_SIZE × max_batches rays), and never more than one invocation per ray needs.
+pub fn persistent_launch(count: u32, groups: u32, max_batches: u32) -> (u32, u32) {
+    let per_ray = count.div_ceil(abi::TRACE_WG_SIZE);
+    let needed = (count as u64).div_ceil(abi::TRACE_WG_SIZE as u64 * max_batches.max(1) as u64) as u32;
+    (groups.max(needed).min(per_ray), max_batches.max(1))
 }
 
 /// Trace and ray-generation kernels specialised for one triangle test.
@@ -82,6 +125,12 @@ pub struct Tracer {
     compact: Kernel,
     scan: Scan,
     opts: TraceOptions,
+    /// Persistent kernels: workgroups launched.
+    persistent: Option<u32>,
+    /// Their ray counter (bound to every trace kernel, which declares it).
+    counter: Buffer,
+    /// Most ray batches one subgroup of a persistent kernel fetches.
+    max_batches: u32,
 }
 
 impl Tracer {
@@ -93,6 +142,8 @@ impl Tracer {
     pub fn with_options(ctx: &Context, opts: &TraceOptions) -> Result<Tracer> {
         let base = [Spec { id: abi::SPEC_TRI_TEST, value: opts.tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: opts.stats as u32 }];
         let mut trace_specs = base.to_vec();
+        trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
+        let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
         let source = match &opts.alpha {
             Some(features) => {
                 trace_specs.extend(features.specs());
@@ -114,6 +165,9 @@ impl Tracer {
             compact: ctx.create_kernel(&kernels::COMPACT_RAYS, &[])?,
             scan: Scan::new(ctx)?,
             opts: *opts,
+            persistent,
+            counter: ctx.create_buffer("trace.ray_counter", 4, Memory::Device)?,
+            max_batches: persistent_batch_cap(ctx.info()),
         })
     }
 
@@ -125,6 +179,11 @@ impl Tracer {
         &self.opts
     }
 
+    /// Workgroups a persistent tracer launches (None: not persistent).
+    pub fn persistent_groups(&self) -> Option<u32> {
+        self.persistent
+    }
+
     /// Records a trace of `count` rays into `hits` (one `GpuHit` each). `geometry`: the BVH's
     /// bindings (`GpuBvh::binds`), or the whole scene's (`GpuScene::binds`) for a tracer with
     /// `alpha`. `stats` receives two u32 counters (nodes, triangles) when the tracer counts
@@ -132,10 +191,16 @@ impl Tracer {
     #[allow(clippy::too_many_arguments)]
     pub fn record_trace(&self, rec: &mut Recorder, geometry: &[Bind], rays: &Buffer, hits: &Buffer, stats: &Buffer, count: u32, any_hit: bool) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
-        let push = TracePush { count, ..Default::default() };
+        let mut push = TracePush { count, ..Default::default() };
         let mut binds = geometry.to_vec();
         binds.extend([Bind::buffer(abi::BIND_RAYS, rays), Bind::buffer(abi::BIND_HITS, hits), Bind::buffer(abi::BIND_STATS, stats)]);
-        rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [k.groups_for(count), 1, 1])
+        binds.push(Bind::buffer(abi::BIND_RAY_COUNTER, &self.counter));
+        let mut groups = k.groups_for(count);
+        if let Some(persistent_groups) = self.persistent {
+            rec.fill_buffer(&self.counter, 0);
+            (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches);
+        }
+        rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])
     }
 
     /// Traces host rays and returns their hits (for tests and tools).
@@ -213,5 +278,25 @@ impl Tracer {
         })?;
         let offsets: Vec<u32> = ctx.read_buffer(flags)?;
         Ok(offsets[count as usize])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn persistent_launch_covers_every_ray() {
+        let wg = abi::TRACE_WG_SIZE;
+        for count in [1u32, 63, 64, 65, 90_000, 2_073_600] {
+            for groups in [1u32, 3, 1024, 4224] {
+                for cap in [1u32, 32, u32::MAX] {
+                    let (g, b) = persistent_launch(count, groups, cap);
+                    assert!(g >= 1 && g <= count.div_ceil(wg), "{count} {groups} {cap}: {g} groups");
+                    assert!(g as u64 * wg as u64 * b as u64 >= count as u64, "{count} {groups} {cap}: {g} x {b} batches");
+                    assert!(g >= groups.min(count.div_ceil(wg)));
+                }
+            }
+        }
     }
 }
