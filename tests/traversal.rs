@@ -3,7 +3,7 @@
 
 mod common;
 
-use bidir::bvh::{BuildOptions, Bvh, CpuTracer, TriTest};
+use bidir::bvh::{BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
 use bidir::trace::{GpuBvh, TraceOptions, Tracer};
 use bidir::vk::Context;
@@ -17,8 +17,8 @@ fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
 /// The trace kernels every scene is checked with: one invocation per ray, and persistent
 /// threads with a handful of workgroups (so every subgroup fetches many batches) and with the
 /// device's default count.
-fn variants(tri_test: TriTest) -> Vec<(&'static str, TraceOptions)> {
-    let base = TraceOptions::new(tri_test);
+fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOptions)> {
+    let base = TraceOptions { layout, ..TraceOptions::new(tri_test) };
     vec![
         ("per-ray", base),
         ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
@@ -26,9 +26,16 @@ fn variants(tri_test: TriTest) -> Vec<(&'static str, TraceOptions)> {
     ]
 }
 
-/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for every trace
-/// variant; returns (hits, misses) of the closest-hit pass.
+/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for both node
+/// layouts and every trace variant; returns (hits, misses) of the closest-hit pass.
 fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
+    let a = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2, ..opts });
+    let b = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Cwbvh, ..opts });
+    assert_eq!(a, b, "{name}: the two layouts' CPU references disagree on hits");
+    a
+}
+
+fn check_layout(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
     let bvh = Bvh::build(positions, tris, &opts).unwrap();
     let cpu = CpuTracer::new(&bvh, positions, tris);
     let scale = positions.iter().fold(0f32, |m, p| m.max(p.abs().max_element()));
@@ -36,7 +43,7 @@ fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]],
     let want_any: Vec<bool> = rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
     let gbvh = GpuBvh::upload(ctx, &bvh).unwrap();
     let (mut hits, mut misses) = (0, 0);
-    for (variant, trace_opts) in variants(opts.tri_test) {
+    for (variant, trace_opts) in variants(opts.tri_test, opts.layout) {
         let tracer = Tracer::with_options(ctx, &trace_opts).unwrap();
         let closest: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, false).unwrap();
         let any: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, true).unwrap();
@@ -78,10 +85,11 @@ fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]],
             assert_eq!(any[i].tri != NO_HIT, want_any[i], "{name} {variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict");
         }
         eprintln!(
-            "{name} [{}, {variant}]: {} rays, {hits} hits ({ties} ties), {misses} misses; {} nodes, depth {}",
+            "{name} [{}, {}, {variant}]: {} rays, {hits} hits ({ties} ties), {misses} misses; {} nodes, depth {}",
             opts.tri_test.name(),
+            opts.layout.name(),
             rays.len(),
-            bvh.nodes.len(),
+            bvh.node_count(),
             bvh.depth
         );
     }
@@ -162,16 +170,17 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     let (p, t) = geometry::icosphere(5, Vec3::ZERO, 1.0);
     let rays = edge_rays(&mut rng, &p, &t, 1_000_000);
     let mut leaks = Vec::new();
-    for test in [TriTest::Watertight, TriTest::Woop] {
-        let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, ..Default::default() }).unwrap();
+    for (test, layout) in [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)] {
+        let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, layout, ..Default::default() }).unwrap();
         let g = GpuBvh::upload(&ctx, &bvh).unwrap();
-        let tracer = Tracer::new(&ctx, test, false).unwrap();
+        let tracer = Tracer::with_options(&ctx, &TraceOptions { layout, ..TraceOptions::new(test) }).unwrap();
         let hits = tracer.trace(&ctx, &g, &rays, false).unwrap();
         let missed = hits.iter().filter(|h| h.tri == NO_HIT).count();
-        eprintln!("{}: {missed} of {} edge/vertex rays leaked ({:.4} %)", test.name(), rays.len(), 100.0 * missed as f64 / rays.len() as f64);
+        eprintln!("{} [{}]: {missed} of {} edge/vertex rays leaked ({:.4} %)", test.name(), layout.name(), rays.len(), 100.0 * missed as f64 / rays.len() as f64);
         leaks.push(missed);
     }
     assert_eq!(leaks[0], 0, "watertight test leaked rays through shared edges");
+    assert_eq!(leaks[2], 0, "watertight test leaked rays through shared edges (compressed wide BVH)");
     finish(ctx);
 }
 
@@ -333,11 +342,11 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         rays.push(ray(o, d, if stop { (target - o).length() } else { 3.0e38 }));
     }
     let ctx = gpu();
-    for tri_test in [TriTest::Watertight, TriTest::Woop] {
-        let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, ..Default::default() }).unwrap();
+    for (tri_test, layout) in [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)] {
+        let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, layout, ..Default::default() }).unwrap();
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
-        for (variant, mut opts) in variants(tri_test) {
+        for (variant, mut opts) in variants(tri_test, layout) {
             opts.alpha = Some(gscene.features);
             let tracer = Tracer::with_options(&ctx, &opts).unwrap();
             let closest = tracer.trace_with(&ctx, &gscene.binds(), &rays, false).unwrap();
@@ -387,8 +396,9 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
                 }
             }
             eprintln!(
-                "alpha [{}, {variant}]: {compared} rays compared ({near_cutoff} within 1e-3 of the cutoff skipped); closest hits on leaves/fence/wall {per_layer:?}, {through_mask} through a transparent texel; segments {occluded} occluded, {unoccluded} unoccluded",
-                tri_test.name()
+                "alpha [{}, {}, {variant}]: {compared} rays compared ({near_cutoff} within 1e-3 of the cutoff skipped); closest hits on leaves/fence/wall {per_layer:?}, {through_mask} through a transparent texel; segments {occluded} occluded, {unoccluded} unoccluded",
+                tri_test.name(),
+                layout.name()
             );
             assert!(near_cutoff * 100 < rays.len(), "too many rays near the cutoff: {near_cutoff}");
             assert!(per_layer.iter().all(|&n| n > 2_000) && through_mask > 10_000, "the rays must see every layer and pass through holes");

@@ -4,7 +4,7 @@
 //! traversal kernel timed with GPU timestamps: warm-up runs, then repetitions, median.
 
 use super::median;
-use crate::bvh::{BuildOptions, Bvh, TriTest};
+use crate::bvh::{BuildOptions, Bvh, BvhLayout, TriTest};
 use crate::gpu::abi::GpuCamera;
 use crate::bvh::BvhError;
 use crate::render::{GpuScene, SceneFeatures};
@@ -75,6 +75,7 @@ pub struct Report {
     pub device: String,
     pub triangles: usize,
     pub tri_test: TriTest,
+    pub layout: BvhLayout,
     /// Alpha masks honoured (`Options::alpha`), and how many materials have one.
     pub alpha: bool,
     pub alpha_materials: usize,
@@ -117,6 +118,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         None => gbvh.binds(),
     };
     let mut trace_opts = TraceOptions::new(opts.build.tri_test);
+    trace_opts.layout = opts.build.layout;
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
     trace_opts.persistent = opts.persistent;
     let timing = Tracer::with_options(ctx, &trace_opts)?;
@@ -199,11 +201,12 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         device: ctx.info().name.clone(),
         triangles: triangles.len(),
         tri_test: opts.build.tri_test,
+        layout: opts.build.layout,
         alpha: opts.alpha,
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
         persistent_groups: timing.persistent_groups(),
         bvh_build_ms: build_ms,
-        bvh_nodes: bvh.nodes.len(),
+        bvh_nodes: bvh.node_count(),
         bvh_leaves: bvh.leaves,
         bvh_depth: bvh.depth,
         bvh_bytes: gbvh.bytes,
@@ -221,6 +224,7 @@ impl Report {
             ("device", Json::Str(self.device.clone())),
             ("triangles", Json::Int(self.triangles as i64)),
             ("tri_test", Json::Str(self.tri_test.name().into())),
+            ("bvh_layout", Json::Str(self.layout.name().into())),
             ("alpha", Json::Bool(self.alpha)),
             ("alpha_materials", Json::Int(self.alpha_materials as i64)),
             ("persistent", Json::Bool(self.persistent_groups.is_some())),
@@ -263,7 +267,7 @@ impl Report {
 
     pub fn print(&self) {
         println!(
-            "device {} | {} triangles | {} test{} | {}x{} | BVH {:.1} ms build, {} nodes, {} leaves, depth {}, {:.1} MiB",
+            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build, {} nodes, {} leaves, depth {}, {:.1} MiB",
             self.device,
             self.triangles,
             self.tri_test.name(),
@@ -271,6 +275,7 @@ impl Report {
                 + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)")),
             self.width,
             self.height,
+            self.layout.name(),
             self.bvh_build_ms,
             self.bvh_nodes,
             self.bvh_leaves,

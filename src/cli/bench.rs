@@ -31,7 +31,11 @@ pub struct TraversalArgs {
     /// obvhs build quality 0 (fastest) .. 4 (slowest, best).
     #[arg(long, default_value_t = 2)]
     pub quality: u32,
-    /// Most triangles per leaf (1..=16).
+    /// BVH node layout: bvh2 (binary, Aila & Laine) | cwbvh (compressed 8-wide, Ylitie et al.
+    /// 2017; leaves of at most 3 triangles).
+    #[arg(long, default_value = "bvh2")]
+    pub bvh: bidir::bvh::BvhLayout,
+    /// Most triangles per leaf (1..=16; 1..=3 with --bvh cwbvh).
     #[arg(long, default_value_t = 4)]
     pub leaf_size: u32,
     /// Disable spatial pre-splits.
@@ -75,6 +79,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.quality = a.quality;
     o.build.max_leaf_tris = a.leaf_size;
     o.build.pre_split = !a.no_pre_split;
+    o.build.layout = a.bvh;
     o.alpha = a.alpha;
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),

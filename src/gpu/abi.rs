@@ -47,6 +47,13 @@ gpu_consts! {
     pub const TRACE_WG_SIZE: u32 = 64;
     /// Traversal stack entries per ray; BVHs deeper than this are rejected at build time.
     pub const TRAVERSAL_STACK_SIZE: u32 = 64;
+    /// Entries of the compressed-wide-BVH traversal stack (node groups); deeper trees are
+    /// rejected at build time.
+    pub const CWBVH_STACK_SIZE: u32 = 32;
+    /// `TraceOptions::layout` / `BuildOptions::layout`: the binary Aila–Laine layout
+    /// (`BvhNode`) or the compressed 8-wide BVH (`CwbvhNode`).
+    pub const BVH_LAYOUT_BVH2: u32 = 0;
+    pub const BVH_LAYOUT_CWBVH: u32 = 1;
     /// Stack bottom marker (never a node index).
     pub const TRAVERSAL_SENTINEL: u32 = 0x7fff_ffff;
     /// A leaf child pointer has bit 31 set; bits 0..27 hold its first triangle and bits 27..31
@@ -152,6 +159,24 @@ gpu_structs! {
         /// (c0.min.z, c0.max.z, c1.min.z, c1.max.z)
         pub c01_z: Vec4,
         pub children: IVec4,
+    }
+
+    /// A compressed 8-wide BVH node (Ylitie, Karras & Laine 2017, "Efficient Incoherent Ray
+    /// Traversal on GPUs Through Compressed Wide BVHs", section 3.1), byte for byte obvhs'
+    /// `CwBvhNode`: child boxes quantised to 8 bits on a grid of origin `p` and power-of-two
+    /// cell size 2^(e - 127) per axis.
+    pub struct CwbvhNode (80 bytes) {
+        /// (p.x, p.y, p.z as f32 bits, e.x | e.y << 8 | e.z << 16 | imask << 24); imask bit i:
+        /// child slot i is an inner node.
+        pub p_e: UVec4,
+        /// (first child node, first triangle, child_meta bytes 0..4, 4..8). A leaf's meta byte:
+        /// triangle offset (bits 0..5) and count in unary (bits 5..8); an inner child's:
+        /// 0b001 << 5 | (24 + slot).
+        pub meta: UVec4,
+        /// Quantised child bounds, one byte per child: (min x 0..4, 4..8, max x 0..4, 4..8).
+        pub qx: UVec4,
+        pub qy: UVec4,
+        pub qz: UVec4,
     }
 
     /// A triangle in leaf order, encoded for the chosen test: watertight stores the three

@@ -6,7 +6,7 @@ mod camera;
 
 pub use camera::gpu_camera;
 
-use crate::bvh::{Bvh, TriTest};
+use crate::bvh::{Bvh, BvhLayout, TriTest};
 use crate::compute::Scan;
 use crate::gpu::{
     abi::{self, GpuCamera, GpuHit, GpuRay, SecondaryPush, TracePush},
@@ -23,19 +23,26 @@ pub fn tiled_invocations(width: u32, height: u32) -> u32 {
 
 /// A BVH in GPU memory.
 pub struct GpuBvh {
+    /// `BvhNode`s or `CwbvhNode`s, as `layout` says.
     pub nodes: Buffer,
     pub tris: Buffer,
     pub tri_test: TriTest,
+    pub layout: BvhLayout,
     pub bytes: u64,
 }
 
 impl GpuBvh {
     pub fn upload(ctx: &Context, bvh: &Bvh) -> Result<GpuBvh> {
+        let nodes = match bvh.layout {
+            BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
+            BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
+        };
         Ok(GpuBvh {
-            nodes: ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
+            nodes,
             tris: ctx.upload_buffer("bvh.tris", &bvh.tris)?,
             tri_test: bvh.tri_test,
-            bytes: (std::mem::size_of_val(bvh.nodes.as_slice()) + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
+            layout: bvh.layout,
+            bytes: (bvh.node_bytes() + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
         })
     }
 
@@ -68,11 +75,13 @@ pub struct TraceOptions {
     /// subgroups fetch batches of rays from a global counter until none are left; 0: the
     /// device's default (`default_persistent_groups`). `None`: one invocation per ray.
     pub persistent: Option<u32>,
+    /// Node layout of the BVHs traced (must match `GpuBvh::layout`).
+    pub layout: BvhLayout,
 }
 
 impl TraceOptions {
     pub fn new(tri_test: TriTest) -> Self {
-        TraceOptions { tri_test, stats: false, alpha: None, persistent: None }
+        TraceOptions { tri_test, stats: false, alpha: None, persistent: None, layout: BvhLayout::Bvh2 }
     }
 }
 
@@ -144,12 +153,17 @@ impl Tracer {
         let mut trace_specs = base.to_vec();
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
         let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
-        let source = match &opts.alpha {
-            Some(features) => {
+        let source = match (&opts.alpha, opts.layout) {
+            (Some(features), layout) => {
                 trace_specs.extend(features.specs());
-                &kernels::TRACE_ALPHA
+                if layout == BvhLayout::Cwbvh {
+                    &kernels::TRACE_ALPHA_CWBVH
+                } else {
+                    &kernels::TRACE_ALPHA
+                }
             }
-            None => &kernels::TRACE,
+            (None, BvhLayout::Bvh2) => &kernels::TRACE,
+            (None, BvhLayout::Cwbvh) => &kernels::TRACE_CWBVH,
         };
         let with = |id, value| {
             let mut s = trace_specs.clone();
