@@ -14,16 +14,21 @@ fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
     GpuRay { origin: o.extend(0.0), dir: d.extend(tmax) }
 }
 
-/// The trace kernels every scene is checked with: one invocation per ray, and persistent
-/// threads with a handful of workgroups (so every subgroup fetches many batches) and with the
-/// device's default count.
+/// The trace kernels every scene is checked with: one invocation per ray, persistent threads
+/// with a handful of workgroups (so every subgroup fetches many batches; more on llvmpipe,
+/// see `persistent_batch_cap`) and with the device's default count, and for the binary
+/// layout the plain (not speculative) while-while loop.
 fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOptions)> {
     let base = TraceOptions { layout, ..TraceOptions::new(tri_test) };
-    vec![
+    let mut v = vec![
         ("per-ray", base),
         ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
         ("persistent default", TraceOptions { persistent: Some(0), ..base }),
-    ]
+    ];
+    if layout == BvhLayout::Bvh2 {
+        v.push(("not speculative", TraceOptions { speculative: false, ..base }));
+    }
+    v
 }
 
 /// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for both node

@@ -37,6 +37,7 @@ struct TraceHit {
 #else
 
 layout(std430, binding = BIND_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
+layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
 
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
@@ -90,7 +91,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                 leaf = node;
                 node = stack[sp--];
             }
-            if (subgroupAll(leaf < 0)) {
+            if (SPECULATIVE != 0u ? subgroupAll(leaf < 0) : leaf < 0) {
                 break;
             }
         }

@@ -48,11 +48,22 @@ pub struct Options {
     /// Persistent threads with this many workgroups (0: the device default); None: one
     /// invocation per ray (see `TraceOptions::persistent`).
     pub persistent: Option<u32>,
+    /// Binary layout: speculative traversal (default) or plain while-while.
+    pub speculative: bool,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { kinds: RayKind::ALL.to_vec(), warmup: 3, repetitions: 9, build: BuildOptions::default(), light: None, alpha: false, persistent: None }
+        Options {
+            kinds: RayKind::ALL.to_vec(),
+            warmup: 3,
+            repetitions: 9,
+            build: BuildOptions::default(),
+            light: None,
+            alpha: false,
+            persistent: None,
+            speculative: true,
+        }
     }
 }
 
@@ -81,6 +92,7 @@ pub struct Report {
     pub alpha_materials: usize,
     /// Workgroups of the persistent kernel (None: one invocation per ray).
     pub persistent_groups: Option<u32>,
+    pub speculative: bool,
     pub bvh_build_ms: f64,
     pub bvh_nodes: usize,
     pub bvh_leaves: usize,
@@ -119,6 +131,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     };
     let mut trace_opts = TraceOptions::new(opts.build.tri_test);
     trace_opts.layout = opts.build.layout;
+    trace_opts.speculative = opts.speculative;
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
     trace_opts.persistent = opts.persistent;
     let timing = Tracer::with_options(ctx, &trace_opts)?;
@@ -205,6 +218,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         alpha: opts.alpha,
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
         persistent_groups: timing.persistent_groups(),
+        speculative: opts.speculative && opts.build.layout == BvhLayout::Bvh2,
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.node_count(),
         bvh_leaves: bvh.leaves,
@@ -229,6 +243,7 @@ impl Report {
             ("alpha_materials", Json::Int(self.alpha_materials as i64)),
             ("persistent", Json::Bool(self.persistent_groups.is_some())),
             ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
+            ("speculative", Json::Bool(self.speculative)),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
             ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
@@ -272,7 +287,8 @@ impl Report {
             self.triangles,
             self.tri_test.name(),
             if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
-                + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)")),
+                + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
+                + if self.layout == BvhLayout::Bvh2 && !self.speculative { ", not speculative" } else { "" },
             self.width,
             self.height,
             self.layout.name(),

@@ -53,6 +53,10 @@ pub struct TraversalArgs {
     /// warps per SM × 32 / 64 where the driver reports SMs (NVIDIA: 4224 on an H100), else 1024].
     #[arg(long, value_name = "N")]
     pub persistent_groups: Option<u32>,
+    /// Binary BVH: plain while-while traversal, each lane testing its leaf at once, instead of
+    /// the speculative one (Aila & Laine 2009).
+    #[arg(long)]
+    pub no_speculative: bool,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -81,6 +85,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.pre_split = !a.no_pre_split;
     o.build.layout = a.bvh;
     o.alpha = a.alpha;
+    o.speculative = !a.no_speculative;
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),

@@ -129,6 +129,10 @@ gpu_consts! {
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
     pub const SPEC_PERSISTENT: u32 = 12;
+    /// Binary BVH traversal: 1 (default) speculative — a lane holding a leaf keeps descending
+    /// until every active lane of its subgroup holds one; 0: each lane tests its leaf at once
+    /// (Aila & Laine 2009's plain while-while).
+    pub const SPEC_SPECULATIVE: u32 = 13;
 }
 
 gpu_structs! {
