@@ -17,7 +17,7 @@ fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
 /// The trace kernels every scene is checked with: one invocation per ray, persistent threads
 /// with a handful of workgroups (so every subgroup fetches many batches; more on llvmpipe,
 /// see `persistent_batch_cap`) and with the device's default count, and for the binary
-/// layout the plain (not speculative) while-while loop.
+/// layout the plain (not speculative) while-while loop, for the wide one triangle postponing.
 fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOptions)> {
     let base = TraceOptions { layout, ..TraceOptions::new(tri_test) };
     let mut v = vec![
@@ -25,8 +25,12 @@ fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOpt
         ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
         ("persistent default", TraceOptions { persistent: Some(0), ..base }),
     ];
-    if layout == BvhLayout::Bvh2 {
-        v.push(("not speculative", TraceOptions { speculative: false, ..base }));
+    match layout {
+        BvhLayout::Bvh2 => v.push(("not speculative", TraceOptions { speculative: false, ..base })),
+        BvhLayout::Cwbvh => {
+            v.push(("postponing", TraceOptions { postpone: true, ..base }));
+            v.push(("postponing, persistent 3 groups", TraceOptions { postpone: true, persistent: Some(3), ..base }));
+        }
     }
     v
 }

@@ -1,6 +1,6 @@
 // Compressed wide BVH traversal: Ylitie, Karras & Laine 2017, "Efficient Incoherent Ray
-// Traversal on GPUs Through Compressed Wide BVHs", section 4 (algorithm 1), without triangle
-// postponing. Included by traverse.glsl when TRAVERSE_CWBVH is defined; same interface as its
+// Traversal on GPUs Through Compressed Wide BVHs", section 4 (algorithm 1), triangle
+// postponing optional (SPEC_CWBVH_POSTPONE). Needs GL_KHR_shader_subgroup_ballot. Included by traverse.glsl when TRAVERSE_CWBVH is defined; same interface as its
 // binary trace_ray. Node format: CwbvhNode in src/gpu/abi.rs (obvhs' CwBvhNode).
 //
 // The stack holds node groups: (first child node, hit bits) where bits 24..31 mark hit inner
@@ -8,9 +8,12 @@
 // time by the octant of the direction they are best visited from, so the highest set bit is
 // the nearest child for this ray) and bits 0..7 carry the node's imask, which locates a
 // child's node (first child + inner children in lower slots). A triangle group holds the
-// node's first triangle and one bit per triangle of the hit leaves (bits 0..23).
+// node's first triangle and one bit per triangle of the hit leaves (bits 0..23); postponed
+// ones share the stack (no bit above 23 tells them apart). Each level of the tree holds at
+// most one node group and one triangle group there.
 
 layout(std430, binding = BIND_NODES) readonly buffer CwbvhNodes { CwbvhNode cwbvh_nodes[]; };
+layout(constant_id = SPEC_CWBVH_POSTPONE) const uint CWBVH_POSTPONE = 0u;
 
 // 2^-22: four units of rounding (of float's 2^-24) on each term of a quantised slab distance.
 const float CWBVH_SLAB_SLACK = 1.0 / 4194304.0;
@@ -107,11 +110,18 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             uint hits = cwbvh_intersect_children(n, o, idir, neg, tmin, hit.t, oct_inv4);
             node_group = uvec2(n.meta.x, (hits & 0xff000000u) | (n.p_e.w >> 24));
             tri_group = uvec2(n.meta.y, hits & 0x00ffffffu);
-        } else if (sp > 0) {
-            node_group = stack[--sp];
-            continue;
         } else {
-            break;
+            // A postponed triangle group from the stack (node groups pushed there always hold
+            // node bits), or nothing.
+            tri_group = node_group;
+            node_group = uvec2(0u);
+        }
+        // Triangle postponing (Ylitie et al., section 4): when few lanes of the subgroup have
+        // triangles to test, defer them and keep descending rather than idle the others.
+        if (CWBVH_POSTPONE != 0u && tri_group.y != 0u && node_group.y > 0x00ffffffu &&
+            subgroupBallotBitCount(subgroupBallot(tri_group.y != 0u)) * 5u < gl_SubgroupSize) {
+            stack[sp++] = tri_group;
+            tri_group = uvec2(0u);
         }
         while (tri_group.y != 0u) {
             uint bit = uint(findMSB(tri_group.y));
@@ -133,6 +143,12 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                     return hit;
                 }
             }
+        }
+        if (node_group.y <= 0x00ffffffu) {
+            if (sp == 0) {
+                break;
+            }
+            node_group = stack[--sp];
         }
     }
     return hit;

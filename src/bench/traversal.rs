@@ -50,6 +50,8 @@ pub struct Options {
     pub persistent: Option<u32>,
     /// Binary layout: speculative traversal (default) or plain while-while.
     pub speculative: bool,
+    /// Compressed wide layout: triangle postponing.
+    pub postpone: bool,
 }
 
 impl Default for Options {
@@ -63,6 +65,7 @@ impl Default for Options {
             alpha: false,
             persistent: None,
             speculative: true,
+            postpone: false,
         }
     }
 }
@@ -93,6 +96,7 @@ pub struct Report {
     /// Workgroups of the persistent kernel (None: one invocation per ray).
     pub persistent_groups: Option<u32>,
     pub speculative: bool,
+    pub postpone: bool,
     pub bvh_build_ms: f64,
     pub bvh_nodes: usize,
     pub bvh_leaves: usize,
@@ -132,6 +136,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let mut trace_opts = TraceOptions::new(opts.build.tri_test);
     trace_opts.layout = opts.build.layout;
     trace_opts.speculative = opts.speculative;
+    trace_opts.postpone = opts.postpone;
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
     trace_opts.persistent = opts.persistent;
     let timing = Tracer::with_options(ctx, &trace_opts)?;
@@ -219,6 +224,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
         persistent_groups: timing.persistent_groups(),
         speculative: opts.speculative && opts.build.layout == BvhLayout::Bvh2,
+        postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.node_count(),
         bvh_leaves: bvh.leaves,
@@ -244,6 +250,7 @@ impl Report {
             ("persistent", Json::Bool(self.persistent_groups.is_some())),
             ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
             ("speculative", Json::Bool(self.speculative)),
+            ("postpone", Json::Bool(self.postpone)),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
             ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
@@ -288,7 +295,8 @@ impl Report {
             self.tri_test.name(),
             if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
                 + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
-                + if self.layout == BvhLayout::Bvh2 && !self.speculative { ", not speculative" } else { "" },
+                + if self.layout == BvhLayout::Bvh2 && !self.speculative { ", not speculative" } else { "" }
+                + if self.postpone { ", triangle postponing" } else { "" },
             self.width,
             self.height,
             self.layout.name(),

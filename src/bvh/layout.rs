@@ -131,8 +131,9 @@ pub(crate) fn convert_wide(src: Bvh2, positions: &[Vec3], triangles: &[[u32; 3]]
             }
         }
     }
-    // Each level holds at most one pending node group on the stack.
-    if depth + 1 > abi::CWBVH_STACK_SIZE as usize {
+    // Each level holds at most one pending node group and one postponed triangle group on the
+    // stack.
+    if 2 * (depth + 1) > abi::CWBVH_STACK_SIZE as usize {
         return Err(BvhError::TooDeep { depth, max: abi::CWBVH_STACK_SIZE });
     }
     Ok(Bvh { layout: BvhLayout::Cwbvh, nodes: Vec::new(), wide_nodes, tris, tri_ids, tri_test: test, depth, leaves, build_time: Duration::ZERO, source: src })

@@ -57,6 +57,10 @@ pub struct TraversalArgs {
     /// the speculative one (Aila & Laine 2009).
     #[arg(long)]
     pub no_speculative: bool,
+    /// Compressed wide BVH: postpone triangle tests while few lanes have any (Ylitie et al.
+    /// 2017, section 4).
+    #[arg(long)]
+    pub postpone: bool,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -86,6 +90,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.layout = a.bvh;
     o.alpha = a.alpha;
     o.speculative = !a.no_speculative;
+    o.postpone = a.postpone;
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),

@@ -47,8 +47,9 @@ gpu_consts! {
     pub const TRACE_WG_SIZE: u32 = 64;
     /// Traversal stack entries per ray; BVHs deeper than this are rejected at build time.
     pub const TRAVERSAL_STACK_SIZE: u32 = 64;
-    /// Entries of the compressed-wide-BVH traversal stack (node groups); deeper trees are
-    /// rejected at build time.
+    /// Entries of the compressed-wide-BVH traversal stack (node groups and postponed triangle
+    /// groups, at most one of each per level); trees deeper than half of it are rejected at
+    /// build time.
     pub const CWBVH_STACK_SIZE: u32 = 32;
     /// `TraceOptions::layout` / `BuildOptions::layout`: the binary Aila–Laine layout
     /// (`BvhNode`) or the compressed 8-wide BVH (`CwbvhNode`).
@@ -133,6 +134,10 @@ gpu_consts! {
     /// until every active lane of its subgroup holds one; 0: each lane tests its leaf at once
     /// (Aila & Laine 2009's plain while-while).
     pub const SPEC_SPECULATIVE: u32 = 13;
+    /// Compressed wide BVH traversal: 1 postpones triangle tests while fewer than a fifth of
+    /// the subgroup's lanes have any (Ylitie et al. 2017, section 4); 0 (default) tests them
+    /// at once.
+    pub const SPEC_CWBVH_POSTPONE: u32 = 14;
 }
 
 gpu_structs! {

@@ -80,11 +80,13 @@ pub struct TraceOptions {
     /// Binary layout: speculative while-while traversal (Aila & Laine 2009), the default;
     /// false: plain while-while (see SPEC_SPECULATIVE).
     pub speculative: bool,
+    /// Compressed wide layout: triangle postponing (see SPEC_CWBVH_POSTPONE).
+    pub postpone: bool,
 }
 
 impl TraceOptions {
     pub fn new(tri_test: TriTest) -> Self {
-        TraceOptions { tri_test, stats: false, alpha: None, persistent: None, layout: BvhLayout::Bvh2, speculative: true }
+        TraceOptions { tri_test, stats: false, alpha: None, persistent: None, layout: BvhLayout::Bvh2, speculative: true, postpone: false }
     }
 }
 
@@ -155,8 +157,9 @@ impl Tracer {
         let base = [Spec { id: abi::SPEC_TRI_TEST, value: opts.tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: opts.stats as u32 }];
         let mut trace_specs = base.to_vec();
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
-        if opts.layout == BvhLayout::Bvh2 {
-            trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 });
+        match opts.layout {
+            BvhLayout::Bvh2 => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
+            BvhLayout::Cwbvh => trace_specs.push(Spec { id: abi::SPEC_CWBVH_POSTPONE, value: opts.postpone as u32 }),
         }
         let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
         let source = match (&opts.alpha, opts.layout) {
