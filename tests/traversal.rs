@@ -3,9 +3,9 @@
 
 mod common;
 
-use bidir::bvh::{BuildOptions, Bvh, CpuTracer, TriTest};
+use bidir::bvh::{BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
-use bidir::trace::{GpuBvh, Tracer};
+use bidir::trace::{GpuBvh, TraceOptions, Tracer};
 use bidir::vk::Context;
 use common::{finish, geometry, gpu, Pcg};
 use glam::Vec3;
@@ -14,51 +14,95 @@ fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
     GpuRay { origin: o.extend(0.0), dir: d.extend(tmax) }
 }
 
-/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray; returns
-/// (hits, misses) of the closest-hit pass.
+/// The trace kernels every scene is checked with: one invocation per ray, persistent threads
+/// with a handful of workgroups (so every subgroup fetches many batches; more on llvmpipe,
+/// see `persistent_batch_cap`) and with the device's default count, and for the binary
+/// layout the plain (not speculative) while-while loop, for the wide one triangle postponing.
+fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOptions)> {
+    let base = TraceOptions { layout, ..TraceOptions::new(tri_test) };
+    let mut v = vec![
+        ("per-ray", base),
+        ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
+        ("persistent default", TraceOptions { persistent: Some(0), ..base }),
+    ];
+    match layout {
+        BvhLayout::Bvh2 => v.push(("not speculative", TraceOptions { speculative: false, ..base })),
+        BvhLayout::Cwbvh => {
+            v.push(("postponing", TraceOptions { postpone: true, ..base }));
+            v.push(("postponing, persistent 3 groups", TraceOptions { postpone: true, persistent: Some(3), ..base }));
+        }
+    }
+    v
+}
+
+/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for both node
+/// layouts and every trace variant; returns (hits, misses) of the closest-hit pass.
 fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
+    let a = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2, ..opts });
+    let b = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Cwbvh, ..opts });
+    assert_eq!(a, b, "{name}: the two layouts' CPU references disagree on hits");
+    a
+}
+
+fn check_layout(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
     let bvh = Bvh::build(positions, tris, &opts).unwrap();
     let cpu = CpuTracer::new(&bvh, positions, tris);
     let scale = positions.iter().fold(0f32, |m, p| m.max(p.abs().max_element()));
+    let want: Vec<_> = rays.iter().map(|r| cpu.closest(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
+    let want_any: Vec<bool> = rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
     let gbvh = GpuBvh::upload(ctx, &bvh).unwrap();
-    let tracer = Tracer::new(ctx, opts.tri_test, false).unwrap();
-    let closest: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, false).unwrap();
-    let any: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, true).unwrap();
-    let (mut hits, mut misses, mut ties) = (0, 0, 0);
-    for (i, r) in rays.iter().enumerate() {
-        let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
-        let want = cpu.closest(o, d, r.origin.w, tmax);
-        let g = closest[i];
-        match want {
-            None => {
-                assert_eq!(g.tri, NO_HIT, "{name} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU missed", g.tri, g.t);
-                misses += 1;
-            }
-            Some((tri, h)) => {
-                assert_ne!(g.tri, NO_HIT, "{name} ray {i} ({o}, {d}): CPU hit triangle {tri} at t={}, GPU missed", h.t);
-                let gtri = bvh.tri_ids[g.tri as usize];
-                if gtri != tri {
-                    // A tie: two triangles at the same distance (a shared edge or vertex).
-                    assert!((g.t - h.t).abs() <= 1e-6 * h.t.abs(), "{name} ray {i}: GPU triangle {gtri} t={}, CPU triangle {tri} t={}", g.t, h.t);
-                    ties += 1;
-                } else {
-                    // Same triangle. Its t is computed with the same operations on both sides,
-                    // but GPUs round some of them differently (Vulkan allows 2.5 ulp division),
-                    // and t is ill-conditioned for grazing hits and far-off vertices (the edge
-                    // functions cancel), so its error is absolute, a few ulps of the coordinates
-                    // (an H100: 3e-5 at Cornell scale). Only a guard against gross errors; the
-                    // requirement is the triangle itself.
-                    let tol = 1e-3 * h.t.abs() + 1e-5 * scale.max(o.abs().max_element());
-                    assert!((g.t - h.t).abs() <= tol, "{name} ray {i}: t GPU {} CPU {}", g.t, h.t);
+    let (mut hits, mut misses) = (0, 0);
+    for (variant, trace_opts) in variants(opts.tri_test, opts.layout) {
+        let tracer = Tracer::with_options(ctx, &trace_opts).unwrap();
+        let closest: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, false).unwrap();
+        let any: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, true).unwrap();
+        let mut ties = 0;
+        (hits, misses) = (0, 0);
+        for (i, r) in rays.iter().enumerate() {
+            let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
+            let g = closest[i];
+            match want[i] {
+                None => {
+                    assert_eq!(g.tri, NO_HIT, "{name} {variant} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU missed", g.tri, g.t);
+                    misses += 1;
                 }
-                hits += 1;
+                Some((tri, h)) => {
+                    assert_ne!(g.tri, NO_HIT, "{name} {variant} ray {i} ({o}, {d}): CPU hit triangle {tri} at t={}, GPU missed", h.t);
+                    let gtri = bvh.tri_ids[g.tri as usize];
+                    if gtri != tri {
+                        // A tie: two triangles at the same distance (a shared edge or vertex).
+                        assert!(
+                            (g.t - h.t).abs() <= 1e-6 * h.t.abs(),
+                            "{name} {variant} ray {i}: GPU triangle {gtri} t={}, CPU triangle {tri} t={}",
+                            g.t,
+                            h.t
+                        );
+                        ties += 1;
+                    } else {
+                        // Same triangle. Its t is computed with the same operations on both sides,
+                        // but GPUs round some of them differently (Vulkan allows 2.5 ulp division),
+                        // and t is ill-conditioned for grazing hits and far-off vertices (the edge
+                        // functions cancel), so its error is absolute, a few ulps of the coordinates
+                        // (an H100: 3e-5 at Cornell scale). Only a guard against gross errors; the
+                        // requirement is the triangle itself.
+                        let tol = 1e-3 * h.t.abs() + 1e-5 * scale.max(o.abs().max_element());
+                        assert!((g.t - h.t).abs() <= tol, "{name} {variant} ray {i}: t GPU {} CPU {}", g.t, h.t);
+                    }
+                    hits += 1;
+                }
             }
+            assert_eq!(any[i].tri != NO_HIT, want_any[i], "{name} {variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict");
         }
-        let cpu_any = cpu.any(o, d, r.origin.w, tmax);
-        assert_eq!(any[i].tri != NO_HIT, cpu_any, "{name} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict");
+        eprintln!(
+            "{name} [{}, {}, {variant}]: {} rays, {hits} hits ({ties} ties), {misses} misses; {} nodes, depth {}",
+            opts.tri_test.name(),
+            opts.layout.name(),
+            rays.len(),
+            bvh.node_count(),
+            bvh.depth
+        );
     }
-    eprintln!("{name} [{}]: {} rays, {hits} hits ({ties} ties), {misses} misses; {} nodes, depth {}", opts.tri_test.name(), rays.len(), bvh.nodes.len(), bvh.depth);
-    drop((gbvh, tracer));
+    drop(gbvh);
     (hits, misses)
 }
 
@@ -135,16 +179,17 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     let (p, t) = geometry::icosphere(5, Vec3::ZERO, 1.0);
     let rays = edge_rays(&mut rng, &p, &t, 1_000_000);
     let mut leaks = Vec::new();
-    for test in [TriTest::Watertight, TriTest::Woop] {
-        let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, ..Default::default() }).unwrap();
+    for (test, layout) in [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)] {
+        let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, layout, ..Default::default() }).unwrap();
         let g = GpuBvh::upload(&ctx, &bvh).unwrap();
-        let tracer = Tracer::new(&ctx, test, false).unwrap();
+        let tracer = Tracer::with_options(&ctx, &TraceOptions { layout, ..TraceOptions::new(test) }).unwrap();
         let hits = tracer.trace(&ctx, &g, &rays, false).unwrap();
         let missed = hits.iter().filter(|h| h.tri == NO_HIT).count();
-        eprintln!("{}: {missed} of {} edge/vertex rays leaked ({:.4} %)", test.name(), rays.len(), 100.0 * missed as f64 / rays.len() as f64);
+        eprintln!("{} [{}]: {missed} of {} edge/vertex rays leaked ({:.4} %)", test.name(), layout.name(), rays.len(), 100.0 * missed as f64 / rays.len() as f64);
         leaks.push(missed);
     }
     assert_eq!(leaks[0], 0, "watertight test leaked rays through shared edges");
+    assert_eq!(leaks[2], 0, "watertight test leaked rays through shared edges (compressed wide BVH)");
     finish(ctx);
 }
 
@@ -220,5 +265,155 @@ fn sponza_matches_cpu_hit_for_hit() {
     let ctx = gpu();
     let (hit, miss) = check_scene(&ctx, "sponza", &scene.positions, &scene.triangles, &rays, BuildOptions::default());
     assert!(hit > 50_000 && miss > 1_000);
+    finish(ctx);
+}
+
+/// The alpha of `scene`'s triangle `tri` at barycentrics (u, v) of vertices 1 and 2, as
+/// glsl/common/scene.glsl computes it (interpolated UV, bilinear filtering between texel
+/// centres, repeat wrap, uv (0, 0) at the image's top-left corner); `None` if opaque.
+fn cpu_alpha(scene: &bidir::scene::Scene, tri: u32, u: f32, v: f32) -> Option<(f32, f32)> {
+    let m = &scene.materials[scene.material_ids[tri as usize] as usize];
+    let mask = m.alpha?;
+    let uvs = scene.uvs.as_ref()?;
+    let [a, b, c] = scene.triangles[tri as usize].map(|i| uvs[i as usize]);
+    let uv = (1.0 - u - v) * a + u * b + v * c;
+    let t = &scene.textures[mask.texture as usize];
+    let (w, h) = (t.width as i32, t.height as i32);
+    let p = uv * glam::Vec2::new(w as f32, h as f32) - 0.5;
+    let (i, f) = (p.floor(), p - p.floor());
+    let texel = |x: i32, y: i32| t.rgba8[((y.rem_euclid(h) * w + x.rem_euclid(w)) * 4 + 3) as usize] as f32 / 255.0;
+    let (x, y) = (i.x as i32, i.y as i32);
+    let top = texel(x, y) * (1.0 - f.x) + texel(x + 1, y) * f.x;
+    let bottom = texel(x, y + 1) * (1.0 - f.x) + texel(x + 1, y + 1) * f.x;
+    Some((top * (1.0 - f.y) + bottom * f.y, mask.cutoff))
+}
+
+/// Writes the alpha-test scene (OBJ + MTL + two PNG masks) into a fresh directory: two
+/// alpha-masked quads (z = 0: an RGBA mask, UVs over [0, 2]² so it repeats; z = -0.5: a grey
+/// mask, whose luminance is its alpha, under skewed UVs reaching negative values) in front of
+/// an opaque quad (z = -1). Masks are 16x16 texels: fully transparent, fully opaque or random.
+fn write_alpha_scene(rng: &mut Pcg) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("bidir-alpha-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let level = |rng: &mut Pcg| match rng.below(5) {
+        0 | 1 => 0u8,
+        2 | 3 => 255,
+        _ => rng.below(256) as u8,
+    };
+    let rgba: Vec<u8> = (0..16 * 16).flat_map(|_| [200, 180, 90, level(rng)]).collect();
+    image::save_buffer(dir.join("mask_rgba.png"), &rgba, 16, 16, image::ExtendedColorType::Rgba8).unwrap();
+    let grey: Vec<u8> = (0..16 * 16).map(|_| level(rng)).collect();
+    image::save_buffer(dir.join("mask_grey.png"), &grey, 16, 16, image::ExtendedColorType::L8).unwrap();
+    std::fs::write(
+        dir.join("alpha.mtl"),
+        "newmtl leaves\nKd 0.5 0.6 0.2\nmap_d mask_rgba.png\n\nnewmtl fence\nKd 0.7 0.7 0.7\nmap_d mask_grey.png\n\nnewmtl wall\nKd 0.8 0.8 0.8\n",
+    )
+    .unwrap();
+    // OBJ texture coordinates have v upwards; the loader flips them (uv (0, 0) top-left).
+    std::fs::write(
+        dir.join("alpha.obj"),
+        "mtllib alpha.mtl\n\
+         v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n\
+         v -1 -1 -0.5\nv 1 -1 -0.5\nv 1 1 -0.5\nv -1 1 -0.5\n\
+         v -2 -2 -1\nv 2 -2 -1\nv 2 2 -1\nv -2 2 -1\n\
+         vt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n\
+         vt -0.3 0.1\nvt 1.1 -0.4\nvt 1.6 0.9\nvt 0.2 1.3\n\
+         vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n\
+         usemtl leaves\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n\
+         usemtl fence\nf 5/5 6/6 7/7\nf 5/5 7/7 8/8\n\
+         usemtl wall\nf 9/9 10/10 11/11\nf 9/9 11/11 12/12\n",
+    )
+    .unwrap();
+    dir.join("alpha.obj")
+}
+
+#[test]
+fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
+    let mut rng = Pcg::new(15);
+    let path = write_alpha_scene(&mut rng);
+    let scene = bidir::scene::load(&path, &Default::default()).expect("the alpha scene loads").scene;
+    std::fs::remove_dir_all(path.parent().unwrap()).ok();
+    assert_eq!(scene.materials.iter().filter(|m| m.alpha.is_some()).count(), 2);
+    assert!(bidir::render::SceneFeatures::of(&scene).alpha);
+    // Rays from in front (z = 3) and from between the back quads (z = -0.75, facing +z, so
+    // masks are also seen from behind), to random points past the masks: whole rays
+    // (closest hit) and segments that stop before the opaque quad (any-hit verdicts that
+    // depend only on the masks).
+    let point = |rng: &mut Pcg, z: f32, r: f32| Vec3::new((rng.next_f32() * 2.0 - 1.0) * r, (rng.next_f32() * 2.0 - 1.0) * r, z);
+    let mut rays = Vec::new();
+    for i in 0..60_000 {
+        let (o, target, stop) = match i % 4 {
+            0 | 1 => (point(&mut rng, 3.0, 1.5), point(&mut rng, -1.0, 1.2), false),
+            2 => (point(&mut rng, 3.0, 1.5), point(&mut rng, -0.75, 1.0), true),
+            _ => (point(&mut rng, -0.75, 0.9), point(&mut rng, 2.0, 1.5), i % 8 == 3),
+        };
+        let d = (target - o).normalize();
+        rays.push(ray(o, d, if stop { (target - o).length() } else { 3.0e38 }));
+    }
+    let ctx = gpu();
+    for (tri_test, layout) in [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)] {
+        let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, layout, ..Default::default() }).unwrap();
+        let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
+        let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
+        for (variant, mut opts) in variants(tri_test, layout) {
+            opts.alpha = Some(gscene.features);
+            let tracer = Tracer::with_options(&ctx, &opts).unwrap();
+            let closest = tracer.trace_with(&ctx, &gscene.binds(), &rays, false).unwrap();
+            let any = tracer.trace_with(&ctx, &gscene.binds(), &rays, true).unwrap();
+            let (mut compared, mut near_cutoff, mut through_mask, mut occluded, mut unoccluded) = (0, 0, 0, 0, 0);
+            let mut per_layer = [0usize; 3];
+            // Layer of a triangle: 0 (z = 0), 1 (z = -0.5), 2 (z = -1).
+            let layer = |tri: u32| (-2.0 * scene.positions[scene.triangles[tri as usize][0] as usize].z).round() as usize;
+            for (i, r) in rays.iter().enumerate() {
+                let (o, d, tmax) = (r.origin.truncate(), r.dir.truncate(), r.dir.w);
+                // The reference with the same cutoff; a ray whose alpha lands within 1e-3 of the
+                // cutoff is not compared (GPU and CPU may round the UV differently).
+                let ambiguous = std::cell::Cell::new(false);
+                let accept = |tri: u32, h: &bidir::bvh::intersect::TriHit| match cpu_alpha(&scene, tri, h.u, h.v) {
+                    None => true,
+                    Some((a, cutoff)) => {
+                        if (a - cutoff).abs() < 1e-3 {
+                            ambiguous.set(true);
+                        }
+                        a >= cutoff
+                    }
+                };
+                let want = cpu.closest_where(o, d, 0.0, tmax, accept);
+                let want_any = cpu.any_where(o, d, 0.0, tmax, accept);
+                if ambiguous.get() {
+                    near_cutoff += 1;
+                    continue;
+                }
+                compared += 1;
+                let g = closest[i];
+                match want {
+                    None => assert_eq!(g.tri, NO_HIT, "{variant} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU (alpha) missed", g.tri, g.t),
+                    Some((tri, h)) => {
+                        assert_ne!(g.tri, NO_HIT, "{variant} ray {i} ({o}, {d}): CPU (alpha) hit triangle {tri} at t={}, GPU missed", h.t);
+                        let gtri = bvh.tri_ids[g.tri as usize];
+                        // The two triangles of a quad share a diagonal: a tie there is fine.
+                        assert!(layer(gtri) == layer(tri) && (g.t - h.t).abs() <= 1e-4 * h.t, "{variant} ray {i} ({o}, {d}): GPU triangle {gtri} t={}, CPU (alpha) triangle {tri} t={}", g.t, h.t);
+                        per_layer[layer(tri)] += 1;
+                        if cpu.closest(o, d, 0.0, tmax).is_some_and(|(t0, _)| layer(t0) != layer(tri)) {
+                            through_mask += 1;
+                        }
+                    }
+                }
+                assert_eq!(any[i].tri != NO_HIT, want_any, "{variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict with alpha");
+                if tmax < 1e30 {
+                    if want_any { occluded += 1 } else { unoccluded += 1 }
+                }
+            }
+            eprintln!(
+                "alpha [{}, {}, {variant}]: {compared} rays compared ({near_cutoff} within 1e-3 of the cutoff skipped); closest hits on leaves/fence/wall {per_layer:?}, {through_mask} through a transparent texel; segments {occluded} occluded, {unoccluded} unoccluded",
+                tri_test.name(),
+                layout.name()
+            );
+            assert!(near_cutoff * 100 < rays.len(), "too many rays near the cutoff: {near_cutoff}");
+            assert!(per_layer.iter().all(|&n| n > 2_000) && through_mask > 10_000, "the rays must see every layer and pass through holes");
+            assert!(occluded > 2_000 && unoccluded > 2_000, "segments must be both blocked and let through");
+        }
+        drop(gscene);
+    }
     finish(ctx);
 }

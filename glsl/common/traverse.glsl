@@ -5,13 +5,13 @@
 // subgroup converged. Correct for any subgroup size: the vote only steers scheduling.
 //
 // Needs GL_KHR_shader_subgroup_vote and the ABI header. Declares the node and triangle
-// buffers at BIND_NODES / BIND_TRIS.
+// buffers at BIND_NODES / BIND_TRIS. With TRAVERSE_CWBVH defined before inclusion, the nodes
+// are compressed 8-wide ones and trace_ray is the one of traverse_cwbvh.glsl.
 #ifndef BIDIR_TRAVERSE_GLSL
 #define BIDIR_TRAVERSE_GLSL
 
 #include "intersect.glsl"
 
-layout(std430, binding = BIND_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
 layout(std430, binding = BIND_TRIS) readonly buffer BvhTris { GpuTri bvh_tris[]; };
 
 layout(constant_id = SPEC_STATS) const uint TRAVERSAL_STATS = 0u;
@@ -31,6 +31,13 @@ struct TraceHit {
     uint prim;
     vec2 bary;
 };
+
+#ifdef TRAVERSE_CWBVH
+#include "traverse_cwbvh.glsl"
+#else
+
+layout(std430, binding = BIND_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
+layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
 
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
@@ -84,7 +91,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                 leaf = node;
                 node = stack[sp--];
             }
-            if (subgroupAll(leaf < 0)) {
+            if (SPECULATIVE != 0u ? subgroupAll(leaf < 0) : leaf < 0) {
                 break;
             }
         }
@@ -119,4 +126,5 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     return hit;
 }
 
+#endif // TRAVERSE_CWBVH
 #endif

@@ -4,11 +4,13 @@
 //! traversal kernel timed with GPU timestamps: warm-up runs, then repetitions, median.
 
 use super::median;
-use crate::bvh::{BuildOptions, Bvh, TriTest};
+use crate::bvh::{BuildOptions, Bvh, BvhLayout, TriTest};
 use crate::gpu::abi::GpuCamera;
-use crate::trace::{GpuBvh, Secondary, Tracer};
 use crate::bvh::BvhError;
-use crate::vk::{Buffer, Context, Memory, VkError};
+use crate::render::{GpuScene, SceneFeatures};
+use crate::scene::Scene;
+use crate::trace::{GpuBvh, Secondary, TraceOptions, Tracer};
+use crate::vk::{Bind, Buffer, Context, Memory, VkError};
 use glam::Vec3;
 use std::time::Instant;
 
@@ -40,11 +42,31 @@ pub struct Options {
     pub build: BuildOptions,
     /// Point light for shadow rays; default: above the centre of the bounds by their height.
     pub light: Option<Vec3>,
+    /// Skip alpha-masked triangles where their texture is transparent, as the integrators do
+    /// (trace_alpha.comp with the scene's materials, UVs and textures); default: geometry only.
+    pub alpha: bool,
+    /// Persistent threads with this many workgroups (0: the device default); None: one
+    /// invocation per ray (see `TraceOptions::persistent`).
+    pub persistent: Option<u32>,
+    /// Binary layout: speculative traversal (default) or plain while-while.
+    pub speculative: bool,
+    /// Compressed wide layout: triangle postponing.
+    pub postpone: bool,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { kinds: RayKind::ALL.to_vec(), warmup: 3, repetitions: 9, build: BuildOptions::default(), light: None }
+        Options {
+            kinds: RayKind::ALL.to_vec(),
+            warmup: 3,
+            repetitions: 9,
+            build: BuildOptions::default(),
+            light: None,
+            alpha: false,
+            persistent: None,
+            speculative: true,
+            postpone: false,
+        }
     }
 }
 
@@ -67,6 +89,14 @@ pub struct Report {
     pub device: String,
     pub triangles: usize,
     pub tri_test: TriTest,
+    pub layout: BvhLayout,
+    /// Alpha masks honoured (`Options::alpha`), and how many materials have one.
+    pub alpha: bool,
+    pub alpha_materials: usize,
+    /// Workgroups of the persistent kernel (None: one invocation per ray).
+    pub persistent_groups: Option<u32>,
+    pub speculative: bool,
+    pub postpone: bool,
     pub bvh_build_ms: f64,
     pub bvh_nodes: usize,
     pub bvh_leaves: usize,
@@ -89,14 +119,28 @@ pub enum BenchError {
     NoRays(&'static str),
 }
 
-/// Runs the benchmark on a triangle mesh seen through `camera`.
-pub fn run(ctx: &Context, positions: &[Vec3], triangles: &[[u32; 3]], camera: &GpuCamera, opts: &Options) -> Result<Report, BenchError> {
+/// Runs the benchmark on a scene seen through `camera` (only its triangles, unless
+/// `opts.alpha`).
+pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> Result<Report, BenchError> {
+    let (positions, triangles) = (&scene.positions[..], &scene.triangles[..]);
     let t0 = Instant::now();
     let bvh = Bvh::build(positions, triangles, &opts.build)?;
     let build_ms = t0.elapsed().as_secs_f64() * 1e3;
     let gbvh = GpuBvh::upload(ctx, &bvh)?;
-    let timing = Tracer::new(ctx, opts.build.tri_test, false)?;
-    let counting = Tracer::new(ctx, opts.build.tri_test, true)?;
+    // With alpha, the whole scene as the integrators see it (its BVH buffers included).
+    let gscene = if opts.alpha { Some(GpuScene::upload(ctx, scene, &bvh)?) } else { None };
+    let geometry: Vec<Bind> = match &gscene {
+        Some(s) => s.binds(),
+        None => gbvh.binds(),
+    };
+    let mut trace_opts = TraceOptions::new(opts.build.tri_test);
+    trace_opts.layout = opts.build.layout;
+    trace_opts.speculative = opts.speculative;
+    trace_opts.postpone = opts.postpone;
+    trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
+    trace_opts.persistent = opts.persistent;
+    let timing = Tracer::with_options(ctx, &trace_opts)?;
+    let counting = Tracer::with_options(ctx, &TraceOptions { stats: true, ..trace_opts })?;
 
     let (lo, hi) = positions.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
     let light = opts.light.unwrap_or(Vec3::new((lo.x + hi.x) * 0.5, hi.y + (hi.y - lo.y), (lo.z + hi.z) * 0.5));
@@ -117,7 +161,7 @@ pub fn run(ctx: &Context, positions: &[Vec3], triangles: &[[u32; 3]], camera: &G
     ctx.submit("bench primary", |rec| {
         timing.record_primary(rec, camera, &primary)?;
         rec.fill_buffer(&stats, 0);
-        timing.record_trace(rec, &gbvh, &primary, &primary_hits, &stats, n, false)
+        timing.record_trace(rec, &geometry, &primary, &primary_hits, &stats, n, false)
     })?;
 
     let mut results = Vec::new();
@@ -141,7 +185,7 @@ pub fn run(ctx: &Context, positions: &[Vec3], triangles: &[[u32; 3]], camera: &G
             ctx.submit("bench trace", |rec| {
                 rec.reset_timer(&timer);
                 rec.timestamp(&timer, 0);
-                timing.record_trace(rec, &gbvh, rays, &hits, &stats, count, any_hit)?;
+                timing.record_trace(rec, &geometry, rays, &hits, &stats, count, any_hit)?;
                 rec.timestamp(&timer, 1);
                 Ok(())
             })?;
@@ -152,7 +196,7 @@ pub fn run(ctx: &Context, positions: &[Vec3], triangles: &[[u32; 3]], camera: &G
         // One more pass with counters for node/triangle tests per ray.
         ctx.submit("bench count", |rec| {
             rec.fill_buffer(&stats, 0);
-            counting.record_trace(rec, &gbvh, rays, &hits, &stats, count, any_hit)
+            counting.record_trace(rec, &geometry, rays, &hits, &stats, count, any_hit)
         })?;
         let s: Vec<u32> = ctx.read_buffer(&stats)?;
         let h: Vec<crate::gpu::abi::GpuHit> = ctx.read_buffer(&hits)?;
@@ -175,8 +219,14 @@ pub fn run(ctx: &Context, positions: &[Vec3], triangles: &[[u32; 3]], camera: &G
         device: ctx.info().name.clone(),
         triangles: triangles.len(),
         tri_test: opts.build.tri_test,
+        layout: opts.build.layout,
+        alpha: opts.alpha,
+        alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
+        persistent_groups: timing.persistent_groups(),
+        speculative: opts.speculative && opts.build.layout == BvhLayout::Bvh2,
+        postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         bvh_build_ms: build_ms,
-        bvh_nodes: bvh.nodes.len(),
+        bvh_nodes: bvh.node_count(),
         bvh_leaves: bvh.leaves,
         bvh_depth: bvh.depth,
         bvh_bytes: gbvh.bytes,
@@ -194,6 +244,13 @@ impl Report {
             ("device", Json::Str(self.device.clone())),
             ("triangles", Json::Int(self.triangles as i64)),
             ("tri_test", Json::Str(self.tri_test.name().into())),
+            ("bvh_layout", Json::Str(self.layout.name().into())),
+            ("alpha", Json::Bool(self.alpha)),
+            ("alpha_materials", Json::Int(self.alpha_materials as i64)),
+            ("persistent", Json::Bool(self.persistent_groups.is_some())),
+            ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
+            ("speculative", Json::Bool(self.speculative)),
+            ("postpone", Json::Bool(self.postpone)),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
             ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
@@ -232,12 +289,17 @@ impl Report {
 
     pub fn print(&self) {
         println!(
-            "device {} | {} triangles | {} test | {}x{} | BVH {:.1} ms build, {} nodes, {} leaves, depth {}, {:.1} MiB",
+            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build, {} nodes, {} leaves, depth {}, {:.1} MiB",
             self.device,
             self.triangles,
             self.tri_test.name(),
+            if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
+                + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
+                + if self.layout == BvhLayout::Bvh2 && !self.speculative { ", not speculative" } else { "" }
+                + if self.postpone { ", triangle postponing" } else { "" },
             self.width,
             self.height,
+            self.layout.name(),
             self.bvh_build_ms,
             self.bvh_nodes,
             self.bvh_leaves,

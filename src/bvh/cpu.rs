@@ -31,6 +31,18 @@ impl<'a> CpuTracer<'a> {
 
     /// Closest hit in (tmin, tmax): original triangle index and hit.
     pub fn closest(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32) -> Option<(u32, TriHit)> {
+        self.closest_where(origin, dir, tmin, tmax, |_, _| true)
+    }
+
+    /// Whether anything is hit in (tmin, tmax).
+    pub fn any(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32) -> bool {
+        self.any_where(origin, dir, tmin, tmax, |_, _| true)
+    }
+
+    /// As `closest`, counting only hits `accept(original triangle, hit)` keeps (alpha masks:
+    /// false where the texture is transparent); a rejected hit neither shortens the ray nor
+    /// ends the search.
+    pub fn closest_where(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, accept: impl Fn(u32, &TriHit) -> bool) -> Option<(u32, TriHit)> {
         let pr = PreparedRay::new(origin, dir, tmin);
         let ray = Ray::new(origin.into(), dir.into(), tmin, tmax);
         let mut best: Option<(u32, TriHit)> = None;
@@ -38,7 +50,7 @@ impl<'a> CpuTracer<'a> {
         let src = &self.bvh.source;
         src.ray_traverse(ray, &mut hit, |r, id| {
             let orig = src.primitive_indices[id];
-            match intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax) {
+            match intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax).filter(|h| accept(orig, h)) {
                 Some(h) => {
                     if best.is_none_or(|(_, b)| h.t < b.t) {
                         best = Some((orig, h));
@@ -51,14 +63,14 @@ impl<'a> CpuTracer<'a> {
         best
     }
 
-    /// Whether anything is hit in (tmin, tmax).
-    pub fn any(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32) -> bool {
+    /// As `any`, counting only hits `accept` keeps (see `closest_where`).
+    pub fn any_where(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, accept: impl Fn(u32, &TriHit) -> bool) -> bool {
         let pr = PreparedRay::new(origin, dir, tmin);
         let ray = Ray::new(origin.into(), dir.into(), tmin, tmax);
         let src = &self.bvh.source;
         !src.ray_traverse_miss(ray, |r, id| {
             let orig = src.primitive_indices[id];
-            intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax).map_or(f32::INFINITY, |h| h.t)
+            intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax).filter(|h| accept(orig, h)).map_or(f32::INFINITY, |h| h.t)
         })
     }
 }

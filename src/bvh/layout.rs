@@ -1,8 +1,8 @@
 //! obvhs' BVH2 to the GPU layout: inner nodes in depth-first order holding both child boxes,
 //! leaves folded into their parent's child pointer, triangles copied into leaf order.
 
-use super::{intersect, Bvh, BvhError, TriTest};
-use crate::gpu::abi::{self, BvhNode, GpuTri};
+use super::{intersect, Bvh, BvhError, BvhLayout, TriTest};
+use crate::gpu::abi::{self, BvhNode, CwbvhNode, GpuTri};
 use glam::{IVec4, Vec3, Vec4};
 use obvhs::{aabb::Aabb, bvh2::Bvh2};
 
@@ -95,7 +95,48 @@ pub(crate) fn convert(src: Bvh2, positions: &[Vec3], triangles: &[[u32; 3]], tes
         return Err(BvhError::TooDeep { depth, max: abi::TRAVERSAL_STACK_SIZE });
     }
     let (nodes, tris, tri_ids, leaves) = (b.nodes, b.tris, b.tri_ids, b.leaves);
-    Ok(Bvh { nodes, tris, tri_ids, tri_test: test, depth, leaves, build_time: Duration::ZERO, source: src })
+    Ok(Bvh { layout: BvhLayout::Bvh2, nodes, wide_nodes: Vec::new(), tris, tri_ids, tri_test: test, depth, leaves, build_time: Duration::ZERO, source: src })
+}
+
+/// obvhs' BVH2 (one triangle per leaf) to its compressed 8-wide BVH (leaves of up to
+/// `max_leaf_tris` <= 3 triangles, children ordered for the ray octant), nodes copied byte
+/// for byte, triangles in its primitive order.
+pub(crate) fn convert_wide(src: Bvh2, positions: &[Vec3], triangles: &[[u32; 3]], test: TriTest, max_leaf_tris: u32) -> Result<Bvh, BvhError> {
+    let wide = obvhs::cwbvh::bvh2_to_cwbvh::bvh2_to_cwbvh(&src, max_leaf_tris.clamp(1, 3), true, false);
+    let wide_nodes: Vec<CwbvhNode> = wide.nodes.iter().map(|n| bytemuck::cast::<obvhs::cwbvh::node::CwBvhNode, CwbvhNode>(*n)).collect();
+    let tri_ids = wide.primitive_indices.clone();
+    let tris = tri_ids
+        .iter()
+        .map(|&id| {
+            let [v0, v1, v2] = triangles[id as usize].map(|v| positions[v as usize]);
+            intersect::encode(test, v0, v1, v2)
+        })
+        .collect();
+    // Depth (levels of wide nodes below the root) and leaves, by an explicit walk.
+    let (mut depth, mut leaves) = (0usize, 0usize);
+    let mut todo = vec![(0usize, 0usize)];
+    while let Some((i, d)) = todo.pop() {
+        depth = depth.max(d);
+        let n = &wide.nodes[i];
+        let mut inner = 0;
+        for slot in 0..8 {
+            if n.child_meta[slot] == 0 {
+                continue;
+            }
+            if n.imask & (1 << slot) != 0 {
+                todo.push((n.child_base_idx as usize + inner, d + 1));
+                inner += 1;
+            } else {
+                leaves += 1;
+            }
+        }
+    }
+    // Each level holds at most one pending node group and one postponed triangle group on the
+    // stack.
+    if 2 * (depth + 1) > abi::CWBVH_STACK_SIZE as usize {
+        return Err(BvhError::TooDeep { depth, max: abi::CWBVH_STACK_SIZE });
+    }
+    Ok(Bvh { layout: BvhLayout::Cwbvh, nodes: Vec::new(), wide_nodes, tris, tri_ids, tri_test: test, depth, leaves, build_time: Duration::ZERO, source: src })
 }
 
 #[cfg(test)]

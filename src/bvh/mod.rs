@@ -18,7 +18,38 @@ mod layout;
 pub use cpu::CpuTracer;
 pub use intersect::TriTest;
 
-use crate::gpu::abi::{BvhNode, GpuTri};
+use crate::gpu::abi::{self, BvhNode, CwbvhNode, GpuTri};
+
+/// The node layout the GPU traverses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BvhLayout {
+    /// Binary, both children's boxes in each node (Aila & Laine 2009), leaves of up to
+    /// `max_leaf_tris` triangles.
+    Bvh2,
+    /// Compressed 8-wide (Ylitie, Karras & Laine 2017), built by obvhs from the same binary
+    /// tree (with one triangle per leaf); leaves of up to min(`max_leaf_tris`, 3) triangles.
+    Cwbvh,
+}
+
+impl BvhLayout {
+    pub fn name(self) -> &'static str {
+        match self {
+            BvhLayout::Bvh2 => "bvh2",
+            BvhLayout::Cwbvh => "cwbvh",
+        }
+    }
+}
+
+impl std::str::FromStr for BvhLayout {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "bvh2" => Ok(BvhLayout::Bvh2),
+            "cwbvh" => Ok(BvhLayout::Cwbvh),
+            _ => Err(format!("unknown BVH layout {s:?}: expected bvh2 | cwbvh")),
+        }
+    }
+}
 use glam::Vec3;
 use std::time::{Duration, Instant};
 
@@ -32,13 +63,14 @@ pub struct BuildOptions {
     /// Split large triangles' boxes before building (the role the thesis' SBVH spatial splits
     /// play); a triangle can then sit in several leaves.
     pub pre_split: bool,
-    /// Most triangles in a leaf (1..=16).
+    /// Most triangles in a leaf (1..=16; 1..=3 for the compressed wide BVH).
     pub max_leaf_tris: u32,
+    pub layout: BvhLayout,
 }
 
 impl Default for BuildOptions {
     fn default() -> Self {
-        BuildOptions { tri_test: TriTest::Watertight, quality: 2, pre_split: true, max_leaf_tris: 4 }
+        BuildOptions { tri_test: TriTest::Watertight, quality: 2, pre_split: true, max_leaf_tris: 4, layout: BvhLayout::Bvh2 }
     }
 }
 
@@ -58,8 +90,11 @@ pub enum BvhError {
 /// A BVH in GPU layout.
 #[derive(Clone)]
 pub struct Bvh {
-    /// Inner nodes; the root is node 0.
+    pub layout: BvhLayout,
+    /// Inner nodes of the binary layout; the root is node 0 (empty for `BvhLayout::Cwbvh`).
     pub nodes: Vec<BvhNode>,
+    /// Nodes of the compressed wide layout; the root is node 0 (empty for `BvhLayout::Bvh2`).
+    pub wide_nodes: Vec<CwbvhNode>,
     /// Triangles in leaf order.
     pub tris: Vec<GpuTri>,
     /// Original triangle index of each entry of `tris`.
@@ -104,16 +139,33 @@ impl Bvh {
             _ => obvhs::BvhBuildParams::very_slow_build(),
         };
         params.pre_split = opts.pre_split;
-        params.max_prims_per_leaf = opts.max_leaf_tris.clamp(1, crate::gpu::abi::LEAF_MAX_TRIS);
+        params.max_prims_per_leaf = match opts.layout {
+            BvhLayout::Bvh2 => opts.max_leaf_tris.clamp(1, abi::LEAF_MAX_TRIS),
+            // The wide conversion chooses its own leaves (SAH) from single-triangle ones.
+            BvhLayout::Cwbvh => 1,
+        };
         let mut core = Duration::ZERO;
         let bvh2 = obvhs::bvh2::builder::build_bvh2_from_tris(&obvhs_tris, params, &mut core);
-        let mut bvh = layout::convert(bvh2, positions, triangles, opts.tri_test)?;
+        let mut bvh = match opts.layout {
+            BvhLayout::Bvh2 => layout::convert(bvh2, positions, triangles, opts.tri_test)?,
+            BvhLayout::Cwbvh => layout::convert_wide(bvh2, positions, triangles, opts.tri_test, opts.max_leaf_tris.clamp(1, 3))?,
+        };
         bvh.build_time = start.elapsed();
         Ok(bvh)
     }
 
     /// Bytes the BVH takes on the GPU (nodes, triangles, index map).
     pub fn gpu_bytes(&self) -> u64 {
-        (self.nodes.len() * std::mem::size_of::<BvhNode>() + self.tris.len() * std::mem::size_of::<GpuTri>() + self.tri_ids.len() * 4) as u64
+        (self.node_bytes() + self.tris.len() * std::mem::size_of::<GpuTri>() + self.tri_ids.len() * 4) as u64
+    }
+
+    /// Bytes of the node buffer (either layout).
+    pub fn node_bytes(&self) -> usize {
+        std::mem::size_of_val(self.nodes.as_slice()) + std::mem::size_of_val(self.wide_nodes.as_slice())
+    }
+
+    /// Nodes of the layout built.
+    pub fn node_count(&self) -> usize {
+        self.nodes.len() + self.wide_nodes.len()
     }
 }

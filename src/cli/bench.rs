@@ -31,12 +31,36 @@ pub struct TraversalArgs {
     /// obvhs build quality 0 (fastest) .. 4 (slowest, best).
     #[arg(long, default_value_t = 2)]
     pub quality: u32,
-    /// Most triangles per leaf (1..=16).
+    /// BVH node layout: bvh2 (binary, Aila & Laine) | cwbvh (compressed 8-wide, Ylitie et al.
+    /// 2017; leaves of at most 3 triangles).
+    #[arg(long, default_value = "bvh2")]
+    pub bvh: bidir::bvh::BvhLayout,
+    /// Most triangles per leaf (1..=16; 1..=3 with --bvh cwbvh).
     #[arg(long, default_value_t = 4)]
     pub leaf_size: u32,
     /// Disable spatial pre-splits.
     #[arg(long)]
     pub no_pre_split: bool,
+    /// Honour alpha masks as the integrators do (skip triangles where their alpha texture is
+    /// below the cutoff); default: geometry only.
+    #[arg(long)]
+    pub alpha: bool,
+    /// Persistent threads (Aila & Laine 2009): launch only enough workgroups to fill the GPU;
+    /// subgroups fetch batches of rays from a global counter.
+    #[arg(long)]
+    pub persistent: bool,
+    /// Workgroups of the persistent kernel (implies --persistent) [default: SMs × resident
+    /// warps per SM × 32 / 64 where the driver reports SMs (NVIDIA: 4224 on an H100), else 1024].
+    #[arg(long, value_name = "N")]
+    pub persistent_groups: Option<u32>,
+    /// Binary BVH: plain while-while traversal, each lane testing its leaf at once, instead of
+    /// the speculative one (Aila & Laine 2009).
+    #[arg(long)]
+    pub no_speculative: bool,
+    /// Compressed wide BVH: postpone triangle tests while few lanes have any (Ylitie et al.
+    /// 2017, section 4).
+    #[arg(long)]
+    pub postpone: bool,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -63,8 +87,18 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.quality = a.quality;
     o.build.max_leaf_tris = a.leaf_size;
     o.build.pre_split = !a.no_pre_split;
+    o.build.layout = a.bvh;
+    o.alpha = a.alpha;
+    o.speculative = !a.no_speculative;
+    o.postpone = a.postpone;
+    o.persistent = match (a.persistent, a.persistent_groups) {
+        (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
+        (_, Some(n)) => Some(n),
+        (true, None) => Some(0),
+        (false, None) => None,
+    };
     let cam = bidir::trace::gpu_camera(&loaded.camera);
-    let report = traversal::run(&ctx, &loaded.scene.positions, &loaded.scene.triangles, &cam, &o)?;
+    let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();
     if let Some(path) = &a.json {
         let tmp = path.with_extension("json.tmp");

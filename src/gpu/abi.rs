@@ -47,6 +47,14 @@ gpu_consts! {
     pub const TRACE_WG_SIZE: u32 = 64;
     /// Traversal stack entries per ray; BVHs deeper than this are rejected at build time.
     pub const TRAVERSAL_STACK_SIZE: u32 = 64;
+    /// Entries of the compressed-wide-BVH traversal stack (node groups and postponed triangle
+    /// groups, at most one of each per level); trees deeper than half of it are rejected at
+    /// build time.
+    pub const CWBVH_STACK_SIZE: u32 = 32;
+    /// `TraceOptions::layout` / `BuildOptions::layout`: the binary Aila–Laine layout
+    /// (`BvhNode`) or the compressed 8-wide BVH (`CwbvhNode`).
+    pub const BVH_LAYOUT_BVH2: u32 = 0;
+    pub const BVH_LAYOUT_CWBVH: u32 = 1;
     /// Stack bottom marker (never a node index).
     pub const TRAVERSAL_SENTINEL: u32 = 0x7fff_ffff;
     /// A leaf child pointer has bit 31 set; bits 0..27 hold its first triangle and bits 27..31
@@ -66,6 +74,8 @@ gpu_consts! {
     pub const BIND_STATS: u32 = 5;
     pub const BIND_RAYS_OUT: u32 = 6;
     pub const BIND_FLAGS: u32 = 7;
+    /// Persistent trace kernels: the next ray to fetch (one u32, zeroed before each launch).
+    pub const BIND_RAY_COUNTER: u32 = 26;
 
     // ---- Scene and integrator bindings (glsl/common/scene.glsl) ----------------------------
     pub const BIND_PRIM_INFO: u32 = 8;
@@ -138,6 +148,18 @@ gpu_consts! {
     pub const SAMPLING_COSINE_PDF: u32 = 1;
     pub const SAMPLING_EMITTER: u32 = 2;
     pub const SAMPLING_DIELECTRIC: u32 = 3;
+
+    /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
+    /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
+    pub const SPEC_PERSISTENT: u32 = 12;
+    /// Binary BVH traversal: 1 (default) speculative — a lane holding a leaf keeps descending
+    /// until every active lane of its subgroup holds one; 0: each lane tests its leaf at once
+    /// (Aila & Laine 2009's plain while-while).
+    pub const SPEC_SPECULATIVE: u32 = 13;
+    /// Compressed wide BVH traversal: 1 postpones triangle tests while fewer than a fifth of
+    /// the subgroup's lanes have any (Ylitie et al. 2017, section 4); 0 (default) tests them
+    /// at once.
+    pub const SPEC_CWBVH_POSTPONE: u32 = 14;
 }
 
 gpu_structs! {
@@ -170,6 +192,24 @@ gpu_structs! {
         pub children: IVec4,
     }
 
+    /// A compressed 8-wide BVH node (Ylitie, Karras & Laine 2017, "Efficient Incoherent Ray
+    /// Traversal on GPUs Through Compressed Wide BVHs", section 3.1), byte for byte obvhs'
+    /// `CwBvhNode`: child boxes quantised to 8 bits on a grid of origin `p` and power-of-two
+    /// cell size 2^(e - 127) per axis.
+    pub struct CwbvhNode (80 bytes) {
+        /// (p.x, p.y, p.z as f32 bits, e.x | e.y << 8 | e.z << 16 | imask << 24); imask bit i:
+        /// child slot i is an inner node.
+        pub p_e: UVec4,
+        /// (first child node, first triangle, child_meta bytes 0..4, 4..8). A leaf's meta byte:
+        /// triangle offset (bits 0..5) and count in unary (bits 5..8); an inner child's:
+        /// 0b001 << 5 | (24 + slot).
+        pub meta: UVec4,
+        /// Quantised child bounds, one byte per child: (min x 0..4, 4..8, max x 0..4, 4..8).
+        pub qx: UVec4,
+        pub qy: UVec4,
+        pub qz: UVec4,
+    }
+
     /// A triangle in leaf order, encoded for the chosen test: watertight stores the three
     /// vertices (xyz); Woop stores the rows of the world-to-unit-triangle affine map
     /// (xyz = row, w = translation), thesis eq. 2.29–2.32.
@@ -198,8 +238,9 @@ gpu_structs! {
     pub struct TracePush (16 bytes) {
         pub count: u32,
         pub seed: u32,
+        /// Persistent trace kernels: most ray batches one subgroup fetches.
+        pub max_batches: u32,
         pub pad0: u32,
-        pub pad1: u32,
     }
 
     /// A pinhole camera as kernels use it: `dir = forward + x * right + y * up` for

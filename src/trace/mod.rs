@@ -6,12 +6,13 @@ mod camera;
 
 pub use camera::gpu_camera;
 
-use crate::bvh::{Bvh, TriTest};
+use crate::bvh::{Bvh, BvhLayout, TriTest};
 use crate::compute::Scan;
 use crate::gpu::{
     abi::{self, GpuCamera, GpuHit, GpuRay, SecondaryPush, TracePush},
     kernels,
 };
+use crate::render::SceneFeatures;
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
 
 /// Invocations that cover a `width` x `height` image in whole 8x8 tiles (the order of
@@ -22,20 +23,32 @@ pub fn tiled_invocations(width: u32, height: u32) -> u32 {
 
 /// A BVH in GPU memory.
 pub struct GpuBvh {
+    /// `BvhNode`s or `CwbvhNode`s, as `layout` says.
     pub nodes: Buffer,
     pub tris: Buffer,
     pub tri_test: TriTest,
+    pub layout: BvhLayout,
     pub bytes: u64,
 }
 
 impl GpuBvh {
     pub fn upload(ctx: &Context, bvh: &Bvh) -> Result<GpuBvh> {
+        let nodes = match bvh.layout {
+            BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
+            BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
+        };
         Ok(GpuBvh {
-            nodes: ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
+            nodes,
             tris: ctx.upload_buffer("bvh.tris", &bvh.tris)?,
             tri_test: bvh.tri_test,
-            bytes: (std::mem::size_of_val(bvh.nodes.as_slice()) + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
+            layout: bvh.layout,
+            bytes: (bvh.node_bytes() + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
         })
+    }
+
+    /// Bindings of the BVH buffers (glsl/common/traverse.glsl).
+    pub fn binds(&self) -> Vec<Bind<'_>> {
+        vec![Bind::buffer(abi::BIND_NODES, &self.nodes), Bind::buffer(abi::BIND_TRIS, &self.tris)]
     }
 }
 
@@ -48,6 +61,74 @@ pub enum Secondary {
     Diffuse,
 }
 
+/// What the trace kernels are specialised for.
+#[derive(Clone, Copy, Debug)]
+pub struct TraceOptions {
+    pub tri_test: TriTest,
+    /// Count nodes and triangles tested (slower; for reports, not timing).
+    pub stats: bool,
+    /// Skip alpha-masked triangles where their alpha texture is below the cutoff, as the
+    /// integrators do (trace_alpha.comp, through glsl/common/scene.glsl): the features of the
+    /// scene whose buffers (`GpuScene::binds`) are then given to `record_trace`.
+    pub alpha: Option<SceneFeatures>,
+    /// Persistent threads (Aila & Laine 2009, section 3): launch this many workgroups, whose
+    /// subgroups fetch batches of rays from a global counter until none are left; 0: the
+    /// device's default (`default_persistent_groups`). `None`: one invocation per ray.
+    pub persistent: Option<u32>,
+    /// Node layout of the BVHs traced (must match `GpuBvh::layout`).
+    pub layout: BvhLayout,
+    /// Binary layout: speculative while-while traversal (Aila & Laine 2009), the default;
+    /// false: plain while-while (see SPEC_SPECULATIVE).
+    pub speculative: bool,
+    /// Compressed wide layout: triangle postponing (see SPEC_CWBVH_POSTPONE).
+    pub postpone: bool,
+}
+
+impl TraceOptions {
+    pub fn new(tri_test: TriTest) -> Self {
+        TraceOptions { tri_test, stats: false, alpha: None, persistent: None, layout: BvhLayout::Bvh2, speculative: true, postpone: false }
+    }
+}
+
+/// Workgroups a persistent trace kernel launches by default. Where the device reports its
+/// streaming multiprocessors (VK_NV_shader_sm_builtins: the H100 has 132, each keeping up to
+/// 64 warps resident), enough to fill every one at full occupancy: SMs × resident warps × 32
+/// lanes / TRACE_WG_SIZE (H100: 4224). That is an upper bound — registers may allow fewer
+/// resident — but a harmless one: groups beyond those resident start only as others finish,
+/// i.e. when the ray queue is (nearly) empty, and leave at once. Elsewhere 1024 groups (65,536
+/// invocations; lavapipe runs them on its few CPU threads).
+pub fn default_persistent_groups(info: &crate::vk::DeviceInfo) -> u32 {
+    if info.sm_count > 0 && info.warps_per_sm > 0 {
+        (info.sm_count * info.warps_per_sm * info.subgroup_size.max(1) / abi::TRACE_WG_SIZE).max(1)
+    } else {
+        1024
+    }
+}
+
+/// Most ray batches one subgroup of a persistent kernel may fetch on `info`'s device: no limit
+/// on GPUs; 32 on CPU devices. llvmpipe (lavapipe) gives each invocation a budget of 65,535
+/// loop iterations in all (gallivm's loop limiter, meant to stop infinite loops) and then
+/// silently leaves every loop; its few threads run the first workgroups to the end, so one
+/// subgroup would fetch hundreds of batches (measured: rays lost after ~1,200 batches of the
+/// Cornell box, wrong hits before that). 32 batches of ≤ 8 rays stay far below the budget.
+pub fn persistent_batch_cap(info: &crate::vk::DeviceInfo) -> u32 {
+    if info.device_type == crate::vk::PhysicalDeviceType::CPU {
+        32
+    } else {
+        u32::MAX
+    }
+}
+
+/// (workgroups, batches per subgroup) of a persistent launch over `count` rays: `groups`
+/// workgroups, or more where `max_batches` batches of each subgroup could not cover every
+/// ray (each subgroup fetches whole batches of its size, so a workgroup covers
+/// TRACE_WG_SIZE × max_batches rays), and never more than one invocation per ray needs.
+pub fn persistent_launch(count: u32, groups: u32, max_batches: u32) -> (u32, u32) {
+    let per_ray = count.div_ceil(abi::TRACE_WG_SIZE);
+    let needed = (count as u64).div_ceil(abi::TRACE_WG_SIZE as u64 * max_batches.max(1) as u64) as u32;
+    (groups.max(needed).min(per_ray), max_batches.max(1))
+}
+
 /// Trace and ray-generation kernels specialised for one triangle test.
 pub struct Tracer {
     closest: Kernel,
@@ -57,62 +138,108 @@ pub struct Tracer {
     gen_diffuse: Kernel,
     compact: Kernel,
     scan: Scan,
-    tri_test: TriTest,
+    opts: TraceOptions,
+    /// Persistent kernels: workgroups launched.
+    persistent: Option<u32>,
+    /// Their ray counter (bound to every trace kernel, which declares it).
+    counter: Buffer,
+    /// Most ray batches one subgroup of a persistent kernel fetches.
+    max_batches: u32,
 }
 
 impl Tracer {
     /// `stats`: count nodes and triangles tested (slower; for reports, not timing).
     pub fn new(ctx: &Context, tri_test: TriTest, stats: bool) -> Result<Tracer> {
-        let base = [Spec { id: abi::SPEC_TRI_TEST, value: tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: stats as u32 }];
+        Tracer::with_options(ctx, &TraceOptions { stats, ..TraceOptions::new(tri_test) })
+    }
+
+    pub fn with_options(ctx: &Context, opts: &TraceOptions) -> Result<Tracer> {
+        let base = [Spec { id: abi::SPEC_TRI_TEST, value: opts.tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: opts.stats as u32 }];
+        let mut trace_specs = base.to_vec();
+        trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
+        match opts.layout {
+            BvhLayout::Bvh2 => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
+            BvhLayout::Cwbvh => trace_specs.push(Spec { id: abi::SPEC_CWBVH_POSTPONE, value: opts.postpone as u32 }),
+        }
+        let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
+        let source = match (&opts.alpha, opts.layout) {
+            (Some(features), layout) => {
+                trace_specs.extend(features.specs());
+                if layout == BvhLayout::Cwbvh {
+                    &kernels::TRACE_ALPHA_CWBVH
+                } else {
+                    &kernels::TRACE_ALPHA
+                }
+            }
+            (None, BvhLayout::Bvh2) => &kernels::TRACE,
+            (None, BvhLayout::Cwbvh) => &kernels::TRACE_CWBVH,
+        };
         let with = |id, value| {
-            let mut s = base.to_vec();
+            let mut s = trace_specs.clone();
             s.push(Spec { id, value });
             s
         };
         Ok(Tracer {
-            closest: ctx.create_kernel(&kernels::TRACE, &with(abi::SPEC_ANY_HIT, 0))?,
-            any: ctx.create_kernel(&kernels::TRACE, &with(abi::SPEC_ANY_HIT, 1))?,
+            closest: ctx.create_kernel(source, &with(abi::SPEC_ANY_HIT, 0))?,
+            any: ctx.create_kernel(source, &with(abi::SPEC_ANY_HIT, 1))?,
             gen_primary: ctx.create_kernel(&kernels::GEN_PRIMARY, &[])?,
             gen_shadow: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 0 }])?,
             gen_diffuse: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 1 }])?,
             compact: ctx.create_kernel(&kernels::COMPACT_RAYS, &[])?,
             scan: Scan::new(ctx)?,
-            tri_test,
+            opts: *opts,
+            persistent,
+            counter: ctx.create_buffer("trace.ray_counter", 4, Memory::Device)?,
+            max_batches: persistent_batch_cap(ctx.info()),
         })
     }
 
     pub fn tri_test(&self) -> TriTest {
-        self.tri_test
+        self.opts.tri_test
     }
 
-    /// Records a trace of `count` rays into `hits` (one `GpuHit` each). `stats` receives two
-    /// u32 counters (nodes, triangles) when the tracer counts them.
-    pub fn record_trace(&self, rec: &mut Recorder, bvh: &GpuBvh, rays: &Buffer, hits: &Buffer, stats: &Buffer, count: u32, any_hit: bool) -> Result<()> {
+    pub fn options(&self) -> &TraceOptions {
+        &self.opts
+    }
+
+    /// Workgroups a persistent tracer launches (None: not persistent).
+    pub fn persistent_groups(&self) -> Option<u32> {
+        self.persistent
+    }
+
+    /// Records a trace of `count` rays into `hits` (one `GpuHit` each). `geometry`: the BVH's
+    /// bindings (`GpuBvh::binds`), or the whole scene's (`GpuScene::binds`) for a tracer with
+    /// `alpha`. `stats` receives two u32 counters (nodes, triangles) when the tracer counts
+    /// them.
+    #[allow(clippy::too_many_arguments)]
+    pub fn record_trace(&self, rec: &mut Recorder, geometry: &[Bind], rays: &Buffer, hits: &Buffer, stats: &Buffer, count: u32, any_hit: bool) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
-        let push = TracePush { count, ..Default::default() };
-        rec.dispatch(
-            k,
-            &[
-                Bind::buffer(abi::BIND_NODES, &bvh.nodes),
-                Bind::buffer(abi::BIND_TRIS, &bvh.tris),
-                Bind::buffer(abi::BIND_RAYS, rays),
-                Bind::buffer(abi::BIND_HITS, hits),
-                Bind::buffer(abi::BIND_STATS, stats),
-            ],
-            bytemuck::bytes_of(&push),
-            [k.groups_for(count), 1, 1],
-        )
+        let mut push = TracePush { count, ..Default::default() };
+        let mut binds = geometry.to_vec();
+        binds.extend([Bind::buffer(abi::BIND_RAYS, rays), Bind::buffer(abi::BIND_HITS, hits), Bind::buffer(abi::BIND_STATS, stats)]);
+        binds.push(Bind::buffer(abi::BIND_RAY_COUNTER, &self.counter));
+        let mut groups = k.groups_for(count);
+        if let Some(persistent_groups) = self.persistent {
+            rec.fill_buffer(&self.counter, 0);
+            (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches);
+        }
+        rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])
     }
 
     /// Traces host rays and returns their hits (for tests and tools).
     pub fn trace(&self, ctx: &Context, bvh: &GpuBvh, rays: &[GpuRay], any_hit: bool) -> Result<Vec<GpuHit>> {
+        self.trace_with(ctx, &bvh.binds(), rays, any_hit)
+    }
+
+    /// As `trace`, with the given geometry bindings (see `record_trace`).
+    pub fn trace_with(&self, ctx: &Context, geometry: &[Bind], rays: &[GpuRay], any_hit: bool) -> Result<Vec<GpuHit>> {
         let count = rays.len() as u32;
         let ray_buf = ctx.upload_buffer("trace.rays", rays)?;
         let hits = ctx.create_buffer("trace.hits", rays.len() as u64 * 16, Memory::Device)?;
         let stats = ctx.create_buffer("trace.stats", 8, Memory::Device)?;
         ctx.submit("trace", |rec| {
             rec.fill_buffer(&stats, 0);
-            self.record_trace(rec, bvh, &ray_buf, &hits, &stats, count, any_hit)
+            self.record_trace(rec, geometry, &ray_buf, &hits, &stats, count, any_hit)
         })?;
         ctx.read_buffer(&hits)
     }
@@ -174,5 +301,25 @@ impl Tracer {
         })?;
         let offsets: Vec<u32> = ctx.read_buffer(flags)?;
         Ok(offsets[count as usize])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn persistent_launch_covers_every_ray() {
+        let wg = abi::TRACE_WG_SIZE;
+        for count in [1u32, 63, 64, 65, 90_000, 2_073_600] {
+            for groups in [1u32, 3, 1024, 4224] {
+                for cap in [1u32, 32, u32::MAX] {
+                    let (g, b) = persistent_launch(count, groups, cap);
+                    assert!(g >= 1 && g <= count.div_ceil(wg), "{count} {groups} {cap}: {g} groups");
+                    assert!(g as u64 * wg as u64 * b as u64 >= count as u64, "{count} {groups} {cap}: {g} x {b} batches");
+                    assert!(g >= groups.min(count.div_ceil(wg)));
+                }
+            }
+        }
     }
 }

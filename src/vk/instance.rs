@@ -229,6 +229,10 @@ pub struct DeviceInfo {
     /// VK_EXT_shader_atomic_float with atomic float add on storage buffers (light-tracing
     /// splats of BDPT need it).
     pub atomic_float_add: bool,
+    /// Streaming multiprocessors and the most warps each keeps resident (VK_NV_shader_sm_builtins;
+    /// 0 where the device does not report them).
+    pub sm_count: u32,
+    pub warps_per_sm: u32,
     /// Why bidir cannot use this device; empty when it can.
     pub missing: Vec<String>,
 }
@@ -283,6 +287,11 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
         let mut subgroup = vk::PhysicalDeviceSubgroupProperties::default();
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
         let mut size_control = vk::PhysicalDeviceSubgroupSizeControlProperties::default();
+        let mut sm = vk::PhysicalDeviceShaderSMBuiltinsPropertiesNV::default();
+        let exts = instance
+            .enumerate_device_extension_properties(pd)
+            .ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
+        let has_ext = |n: &CStr| exts.iter().any(|e| e.extension_name_as_c_str() == Ok(n));
         {
             let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut subgroup);
             if api >= vk::API_VERSION_1_2 {
@@ -291,15 +300,15 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             if api >= vk::API_VERSION_1_3 {
                 props2 = props2.push_next(&mut size_control);
             }
+            // Only queried (never enabled): how many SMs, and warps each keeps resident.
+            if has_ext(ash::nv::shader_sm_builtins::NAME) {
+                props2 = props2.push_next(&mut sm);
+            }
             instance.get_physical_device_properties2(pd, &mut props2);
         }
         let features = instance.get_physical_device_features(pd);
         let mem = instance.get_physical_device_memory_properties(pd);
         let queues = instance.get_physical_device_queue_family_properties(pd);
-        let exts = instance
-            .enumerate_device_extension_properties(pd)
-            .ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
-        let has_ext = |n: &CStr| exts.iter().any(|e| e.extension_name_as_c_str() == Ok(n));
         // Prefer a queue family with graphics + compute (the viewer presents from it), then any
         // compute family.
         let family = queues
@@ -365,6 +374,8 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             push_descriptor,
             shader_int64: features.shader_int64 == vk::TRUE,
             atomic_float_add,
+            sm_count: sm.shader_sm_count,
+            warps_per_sm: sm.shader_warps_per_sm,
             missing,
         })
     }

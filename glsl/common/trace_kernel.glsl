@@ -1,0 +1,70 @@
+// The body of the trace kernels (trace.comp: geometry only; trace_alpha.comp: through
+// scene.glsl, so alpha-masked triangles are skipped exactly as the integrators skip them).
+// Traces a buffer of rays: closest hit, or any hit when SPEC_ANY_HIT is set (shadow rays).
+// The includer has included the ABI header and traverse.glsl (directly or via scene.glsl),
+// and enabled GL_KHR_shader_subgroup_ballot.
+#ifndef BIDIR_TRACE_KERNEL_GLSL
+#define BIDIR_TRACE_KERNEL_GLSL
+
+layout(local_size_x = TRACE_WG_SIZE) in;
+layout(constant_id = SPEC_ANY_HIT) const uint ANY_HIT = 0u;
+layout(constant_id = SPEC_PERSISTENT) const uint PERSISTENT = 0u;
+layout(std430, binding = BIND_RAYS) readonly buffer Rays { GpuRay rays[]; };
+layout(std430, binding = BIND_HITS) writeonly buffer Hits { GpuHit hits[]; };
+layout(std430, binding = BIND_STATS) buffer Stats { uint stat_nodes; uint stat_tris; };
+layout(std430, binding = BIND_RAY_COUNTER) coherent buffer RayCounter { uint next_ray; };
+layout(push_constant) uniform Push { TracePush pc; };
+
+void trace_one(uint i, inout uvec2 stats) {
+    GpuRay r = rays[i];
+    TraceHit h = TraceHit(r.dir.w, NO_HIT, vec2(0.0));
+    if (r.dir.w >= 0.0) {
+        h = trace_ray(r.origin.xyz, r.dir.xyz, r.origin.w, r.dir.w, ANY_HIT != 0u, stats);
+    }
+    hits[i] = GpuHit(h.t, h.prim, h.bary.x, h.bary.y);
+}
+
+void main() {
+    uvec2 stats = uvec2(0u);
+    if (PERSISTENT != 0u) {
+        // Persistent threads (Aila & Laine 2009, section 3): only as many workgroups as the
+        // GPU keeps resident are launched, and each subgroup fetches a batch of
+        // gl_SubgroupSize rays from a global counter whenever all its lanes are done, until
+        // the rays run out; the hardware's block scheduler never has to balance the long tail
+        // of slow rays. The batch is traced by the lanes active at the fetch, each striding
+        // by their count (one step when the subgroup is converged, as it is in practice), so
+        // no ray is skipped or traced twice whatever the subgroup size or convergence.
+        // At most pc.max_batches batches per subgroup: the host sizes the launch so that
+        // this still covers every ray (see Tracer::record_trace; it matters on llvmpipe).
+        for (uint batch = 0u; batch < pc.max_batches; batch++) {
+            uint base = 0u;
+            if (subgroupElect()) {
+                base = atomicAdd(next_ray, gl_SubgroupSize);
+            }
+            base = subgroupBroadcastFirst(base);
+            if (base >= pc.count) {
+                break; // uniform: every active lane holds the same base
+            }
+            uvec4 lanes = subgroupBallot(true);
+            uint stride = subgroupBallotBitCount(lanes);
+            uint end = min(base + gl_SubgroupSize, pc.count);
+            for (uint i = base + subgroupBallotExclusiveBitCount(lanes); i < end; i += stride) {
+                trace_one(i, stats);
+            }
+        }
+    } else {
+        uint i = gl_GlobalInvocationID.x;
+        if (i < pc.count) {
+            trace_one(i, stats);
+        }
+    }
+    if (TRAVERSAL_STATS != 0u) {
+        uvec2 s = subgroupAdd(stats);
+        if (subgroupElect()) {
+            atomicAdd(stat_nodes, s.x);
+            atomicAdd(stat_tris, s.y);
+        }
+    }
+}
+
+#endif
