@@ -190,3 +190,27 @@ fn furnace_sample_slices() {
         finish(ctx);
     }
 }
+
+/// Many samples per pixel in one pass on a tiny image: each invocation then loops over many
+/// samples. (llvmpipe ends any loop of an invocation after 65,535 iterations in total without
+/// a word, so on CPU devices passes keep few samples per invocation; a truncated loop would
+/// show here as a dark image.)
+#[test]
+fn furnace_many_samples_per_pass() {
+    let ctx = gpu();
+    let mut scene = furnace_scene(0.8, 0.25);
+    scene.cameras[0].width = 8;
+    scene.cameras[0].height = 8;
+    let mut settings = RenderSettings::new(Integrator::Pt);
+    settings.pass_target = std::time::Duration::from_secs(600); // as many samples per pass as allowed
+    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
+    r.render_spp(1 << 14, |_| {}).unwrap();
+    let img = r.image().unwrap();
+    let (mean, se) = mean_and_se(&img.data);
+    let err = mean / 1.25 - 1.0;
+    eprintln!("pt, 8x8 pixels, 2^14 spp: mean {mean:.5} expected 1.25 ({:+.3} %), 4 sigma {:.3} %", 100.0 * err, 400.0 * se / 1.25);
+    assert!(4.0 * se / 1.25 < 0.005, "test too noisy to resolve 0.5 %");
+    assert!(err.abs() < 0.005, "furnace mean {mean} vs 1.25 ({:+.3} %) with many samples per pass", 100.0 * err);
+    drop(r);
+    finish(ctx);
+}

@@ -369,8 +369,21 @@ impl Renderer {
         let target = self.settings.pass_target.as_secs_f64();
         // Grow fast while passes are tiny (fast GPUs), cautiously near the target.
         let scale = (target / took.max(1e-6)).clamp(0.25, if took < target / 16.0 { 16.0 } else { 4.0 });
-        self.pass_spp = ((spp as f64 * scale) as u32).clamp(1, 4096);
+        self.pass_spp = ((spp as f64 * scale) as u32).clamp(1, self.max_pass_spp());
         Ok(spp)
+    }
+
+    /// Most samples per pixel in one pass. On CPU devices 16: llvmpipe (Mesa's gallivm loop
+    /// limiter) silently ends every loop of an invocation once it has run 65,535 iterations
+    /// in all, so a pass of many samples (each one path of bounces, each bounce a traversal
+    /// loop) per invocation would drop samples' light and darken the image
+    /// (`furnace_many_samples_per_pass`).
+    fn max_pass_spp(&self) -> u32 {
+        if self.ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU {
+            16
+        } else {
+            4096
+        }
     }
 
     /// Renders until `spp` samples per pixel in total.
