@@ -32,6 +32,27 @@ struct TraceHit {
     vec2 bary;
 };
 
+// Tests leaf triangle `i` (leaf order) against the ray: true if it is hit nearer than `hit`
+// (and, with alpha testing, not through a hole), `hit` then holding it. Both layouts' leaf
+// loops call it.
+bool test_leaf_triangle(PreparedRay pr, uint i, inout TraceHit hit, inout uvec2 stats) {
+    if (TRAVERSAL_STATS != 0u) {
+        stats.y++;
+    }
+    float t;
+    vec2 bary;
+    if (!intersect_tri(pr, bvh_tris[i], hit.t, t, bary)) {
+        return false;
+    }
+#ifdef TRAVERSE_WITH_ALPHA
+    if (HAS_ALPHA != 0u && !traverse_alpha_hit(i, bary)) {
+        return false;
+    }
+#endif
+    hit = TraceHit(t, i, bary);
+    return true;
+}
+
 #ifdef TRAVERSE_CWBVH
 #include "traverse_cwbvh.glsl"
 #else
@@ -100,21 +121,8 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             uint first = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);
             uint count = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;
             for (uint i = first; i < first + count; i++) {
-                if (TRAVERSAL_STATS != 0u) {
-                    stats.y++;
-                }
-                float t;
-                vec2 bary;
-                if (intersect_tri(pr, bvh_tris[i], hit.t, t, bary)) {
-#ifdef TRAVERSE_WITH_ALPHA
-                    if (HAS_ALPHA != 0u && !traverse_alpha_hit(i, bary)) {
-                        continue;
-                    }
-#endif
-                    hit = TraceHit(t, i, bary);
-                    if (any_hit) {
-                        return hit;
-                    }
+                if (test_leaf_triangle(pr, i, hit, stats) && any_hit) {
+                    return hit;
                 }
             }
             leaf = node;

@@ -126,22 +126,8 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
         while (tri_group.y != 0u) {
             uint bit = uint(findMSB(tri_group.y));
             tri_group.y &= ~(1u << bit);
-            uint i = tri_group.x + bit;
-            if (TRAVERSAL_STATS != 0u) {
-                stats.y++;
-            }
-            float t;
-            vec2 bary;
-            if (intersect_tri(pr, bvh_tris[i], hit.t, t, bary)) {
-#ifdef TRAVERSE_WITH_ALPHA
-                if (HAS_ALPHA != 0u && !traverse_alpha_hit(i, bary)) {
-                    continue;
-                }
-#endif
-                hit = TraceHit(t, i, bary);
-                if (any_hit) {
-                    return hit;
-                }
+            if (test_leaf_triangle(pr, tri_group.x + bit, hit, stats) && any_hit) {
+                return hit;
             }
         }
         if (node_group.y <= 0x00ffffffu) {
