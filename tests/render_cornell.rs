@@ -80,34 +80,31 @@ fn pt_and_pt_nee_match_reference_and_each_other() {
     assert_close("pt vs pt-nee", &pt, pt_nee());
 }
 
+/// BDPT with `join` against the reference and against pt-nee.
+fn check_bdpt(join: Join) {
+    let Some(reference) = reference() else { return };
+    let img = render(Integrator::Bdpt(join));
+    let name = Integrator::Bdpt(join).name();
+    assert_close(&format!("{name} vs reference"), &img, &reference);
+    assert_close(&format!("{name} vs pt-nee"), &img, pt_nee());
+}
+
 #[test]
 fn bdpt_full_join_matches_reference_and_pt_nee() {
-    let Some(reference) = reference() else { return };
-    let img = render(Integrator::Bdpt(Join::Full));
-    assert_close("bdpt:full vs reference", &img, &reference);
-    assert_close("bdpt:full vs pt-nee", &img, pt_nee());
+    check_bdpt(Join::Full);
 }
 
 #[test]
 fn bdpt_k_step_join_matches_reference() {
-    let Some(reference) = reference() else { return };
-    let img = render(Integrator::Bdpt(Join::K(4)));
-    assert_close("bdpt:k=4 vs reference", &img, &reference);
-    assert_close("bdpt:k=4 vs pt-nee", &img, pt_nee());
+    check_bdpt(Join::K(4));
 }
 
 #[test]
 fn bdpt_single_join_matches_reference() {
-    let Some(reference) = reference() else { return };
-    let img = render(Integrator::Bdpt(Join::K(1)));
-    assert_close("bdpt:single vs reference", &img, &reference);
-    assert_close("bdpt:single vs pt-nee", &img, pt_nee());
+    check_bdpt(Join::K(1));
 }
 
 #[test]
 fn bdpt_light_vertex_cache_matches_reference() {
-    let Some(reference) = reference() else { return };
-    let img = render(Integrator::Bdpt(Join::Lvc(0)));
-    assert_close("bdpt:lvc vs reference", &img, &reference);
-    assert_close("bdpt:lvc vs pt-nee", &img, pt_nee());
+    check_bdpt(Join::Lvc(0));
 }

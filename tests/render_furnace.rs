@@ -47,11 +47,8 @@ fn check_with(integrator: Integrator, sampler: Sampler, rho: f32, le: f32, spp: 
     let img = r.image().unwrap();
     assert_eq!(r.nan_samples().unwrap(), 0);
     let expect = (le / (1.0 - rho)) as f64;
-    let n = img.data.len() as f64;
-    let mean = img.data.iter().map(|&v| v as f64).sum::<f64>() / n;
-    let var = img.data.iter().map(|&v| (v as f64 - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    // Pixels are independent estimates; channels are equal here, so count pixels only.
-    let sigma = (var / (n / 3.0)).sqrt() / expect;
+    let (mean, se) = mean_and_se(&img.data);
+    let sigma = se / expect;
     let err = mean / expect - 1.0;
     eprintln!("{} {sampler:?} rho={rho} Le={le}: mean {mean:.5} expected {expect:.5} ({:+.3} %), 3 sigma {:.3} %", integrator.name(), err * 100.0, 300.0 * sigma);
     assert!(3.0 * sigma < 0.0025, "test too noisy to resolve 0.5 %: raise spp");
@@ -120,7 +117,8 @@ fn furnace_bdpt_light_vertex_cache_other_light_path_counts() {
     }
 }
 
-/// Mean of the pixels (channels equal) and its standard error.
+/// Mean of the pixels and its standard error. Pixels are independent estimates; channels are
+/// equal here, so only pixels count.
 fn mean_and_se(data: &[f32]) -> (f64, f64) {
     let n = data.len() as f64;
     let mean = data.iter().map(|&v| v as f64).sum::<f64>() / n;
