@@ -102,7 +102,7 @@ impl Bdpt {
         let bytes = paths as u64 * light_path_len as u64 * std::mem::size_of::<LightVertex>() as u64;
         if bytes > info.max_storage_buffer_range as u64 {
             return Err(RenderError::Memory(format!(
-                "BDPT light vertices need {:.1} MiB ({paths} paths x {light_path_len} vertices x {} bytes), over the device's {} MiB storage-buffer limit: lower --light-path-len or the resolution",
+                "BDPT light vertices need {:.1} MiB ({paths} paths x {light_path_len} vertices x {} bytes), over the device's {} MiB storage-buffer limit: lower --light-path-len, --light-paths, --sample-slices or the resolution",
                 bytes as f64 / (1u64 << 20) as f64,
                 std::mem::size_of::<LightVertex>(),
                 info.max_storage_buffer_range >> 20
