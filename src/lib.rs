@@ -9,11 +9,14 @@
 //! - [`render`]: integrators on the GPU, the progressive film, the display tonemap.
 //! - [`viewer`]: `bidir view`, the film live in a window with a fly camera.
 
+#![deny(unsafe_code)]
+
 pub mod compute;
 pub mod bench;
 pub mod bvh;
 pub mod film;
 pub mod gpu;
+pub mod gpu_data;
 pub mod render;
 pub mod scene;
 pub mod trace;

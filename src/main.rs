@@ -1,5 +1,7 @@
 //! The `bidir` command line: wires the library's layers together; `anyhow` lives only here.
 
+#![deny(unsafe_code)]
+
 mod cli;
 
 fn main() -> std::process::ExitCode {

@@ -5,7 +5,8 @@ mod common;
 
 use bidir::bvh::{BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
-use bidir::trace::{GpuBvh, TraceOptions, Tracer};
+use bidir::gpu_data::GpuBvh;
+use bidir::trace::{TraceOptions, Tracer};
 use bidir::vk::Context;
 use common::{finish, geometry, gpu, Pcg};
 use glam::Vec3;
@@ -209,7 +210,7 @@ fn cornell_box_matches_cpu_hit_for_hit() {
     let mut rays = mixed_rays(&mut rng, lo, hi, 90_000);
     // Camera rays through jittered pixels of the reference camera.
     let cam = &scene.cameras[0];
-    let g = bidir::trace::gpu_camera(cam);
+    let g = bidir::gpu_data::gpu_camera(cam);
     for _ in 0..60_000 {
         let (x, y) = (rng.next_f32() * 2.0 - 1.0, 1.0 - rng.next_f32() * 2.0);
         let d = (g.forward + g.right * x + g.up * y).truncate().normalize();
@@ -233,7 +234,7 @@ fn sponza_matches_cpu_hit_for_hit() {
     let loaded = bidir::scene::load(path, &Default::default()).expect("Sponza loads");
     let scene = loaded.scene;
     let cam = scene.cameras.iter().find(|c| c.name == "CameraMain").expect("CameraMain");
-    let g = bidir::trace::gpu_camera(cam);
+    let g = bidir::gpu_data::gpu_camera(cam);
     let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions::default()).unwrap();
     let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
     let mut rng = Pcg::new(14);
@@ -341,7 +342,7 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
     let scene = bidir::scene::load(&path, &Default::default()).expect("the alpha scene loads").scene;
     std::fs::remove_dir_all(path.parent().unwrap()).ok();
     assert_eq!(scene.materials.iter().filter(|m| m.alpha.is_some()).count(), 2);
-    assert!(bidir::render::SceneFeatures::of(&scene).alpha);
+    assert!(bidir::gpu_data::SceneFeatures::of(&scene).alpha);
     // Rays from in front (z = 3) and from between the back quads (z = -0.75, facing +z, so
     // masks are also seen from behind), to random points past the masks: whole rays
     // (closest hit) and segments that stop before the opaque quad (any-hit verdicts that

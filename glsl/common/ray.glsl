@@ -46,22 +46,23 @@ float cosine_hemisphere_pdf(float cos_theta) {
     return max(cos_theta, 0.0) / PI;
 }
 
-// Invocation index -> pixel, in 8x8 tiles (row-major tiles, row-major within a tile), so a
-// subgroup of 32 covers an 8x4 block: neighbouring lanes trace neighbouring rays, which keeps
-// traversal coherent. Dispatch tiled_invocations(size) invocations; `valid` is false for the
-// parts of edge tiles outside the image.
+// Invocation index -> pixel, in TILE_SIZE x TILE_SIZE tiles (row-major tiles, row-major
+// within a tile), so a subgroup covers a compact block: neighbouring lanes trace neighbouring
+// rays, which keeps traversal coherent. Dispatch tiled_invocations(size) invocations; `valid`
+// is false for the parts of edge tiles outside the image.
 uvec2 tiled_pixel(uint i, uvec2 size, out bool valid) {
-    uint tiles_x = (size.x + 7u) / 8u;
-    uint tile = i / 64u;
-    uint within = i % 64u;
-    uvec2 p = uvec2((tile % tiles_x) * 8u + within % 8u, (tile / tiles_x) * 8u + within / 8u);
+    const uint T = TILE_SIZE;
+    uint tiles_x = (size.x + T - 1u) / T;
+    uint tile = i / (T * T);
+    uint within = i % (T * T);
+    uvec2 p = uvec2((tile % tiles_x) * T + within % T, (tile / tiles_x) * T + within / T);
     valid = p.x < size.x && p.y < size.y;
     return p;
 }
 
-// Invocations tiled_pixel covers for an image of `size` (whole 8 x 8 tiles).
+// Invocations tiled_pixel covers for an image of `size` (whole tiles).
 uint tiled_count(uvec2 size) {
-    return ((size.x + 7u) / 8u) * ((size.y + 7u) / 8u) * 64u;
+    return ((size.x + TILE_SIZE - 1u) / TILE_SIZE) * ((size.y + TILE_SIZE - 1u) / TILE_SIZE) * TILE_SIZE * TILE_SIZE;
 }
 
 // Primary ray direction through image position `p` (pixels, row 0 on top) of camera `cam`.

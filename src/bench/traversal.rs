@@ -7,9 +7,10 @@ use super::median;
 use crate::bvh::{BuildOptions, Bvh, BvhLayout, TriTest};
 use crate::gpu::abi::GpuCamera;
 use crate::bvh::BvhError;
-use crate::render::{GpuScene, SceneFeatures};
+use crate::gpu_data::{GpuBvh, SceneFeatures};
+use crate::render::GpuScene;
 use crate::scene::Scene;
-use crate::trace::{GpuBvh, Secondary, TraceOptions, Tracer};
+use crate::trace::{Secondary, TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Memory, VkError};
 use glam::Vec3;
 use std::time::Instant;
@@ -145,7 +146,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let (lo, hi) = positions.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
     let light = opts.light.unwrap_or(Vec3::new((lo.x + hi.x) * 0.5, hi.y + (hi.y - lo.y), (lo.z + hi.z) * 0.5));
 
-    let n = crate::trace::tiled_invocations(camera.size.x, camera.size.y);
+    let n = crate::gpu_data::tiled_invocations(camera.size.x, camera.size.y);
     let pixels = camera.size.x * camera.size.y;
     let ray_bytes = n as u64 * 32;
     let primary = ctx.create_buffer("bench.primary_rays", ray_bytes, Memory::Device)?;

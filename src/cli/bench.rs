@@ -97,7 +97,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         (true, None) => Some(0),
         (false, None) => None,
     };
-    let cam = bidir::trace::gpu_camera(&loaded.camera);
+    let cam = bidir::gpu_data::gpu_camera(&loaded.camera);
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();
     if let Some(path) = &a.json {

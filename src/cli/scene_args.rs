@@ -262,7 +262,7 @@ mod tests {
 
     #[test]
     fn bad_light_flags_are_refused_with_the_reason() {
-        let err = |a: &[&str]| args(a).err().expect("refused").to_string();
+        let err = |a: &[&str]| args(a).expect_err("refused").to_string();
         let e = err(&["--quad-light", "0,0,0;1,0,0;0,1,0"]);
         assert!(e.contains("--quad-light") && e.contains("CORNER;EDGE1;EDGE2;R,G,B"), "{e}");
         let e = err(&["--quad-light", "0,0,0;1,0,0;2,0,0;1,1,1"]);

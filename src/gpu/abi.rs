@@ -18,6 +18,10 @@ gpu_consts! {
     pub const SCAN_WG_SIZE: u32 = 256;
     /// Workgroup edge of 2D image kernels (WG x WG).
     pub const IMAGE_WG_SIZE: u32 = 8;
+    /// Edge of the pixel tiles in which the ray and integrator kernels visit an image
+    /// (`tiled_pixel` in glsl/common/ray.glsl, `gpu_data::tiled_invocations`): with 8, a
+    /// subgroup of 32 covers an 8x4 block, so neighbouring lanes trace neighbouring rays.
+    pub const TILE_SIZE: u32 = 8;
 
     // ---- Bindings: reduce_sum.comp -----------------------------------------------------
     pub const REDUCE_BIND_INPUT: u32 = 0;

@@ -167,7 +167,7 @@ impl Bdpt {
             rec.dispatch(&lvc.compact, &binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
         }
         let samples = push.camera_samples.max(1);
-        let n = crate::trace::tiled_invocations(film.width, film.height) * samples;
+        let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
         rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])?;
         film.record_add_slices(rec, samples)
     }

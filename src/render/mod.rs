@@ -21,11 +21,11 @@ mod tonemap;
 
 pub use bdpt::{Bdpt, Join};
 pub use film::Film;
-pub use gpu_scene::{GpuScene, SceneFeatures};
+pub use gpu_scene::GpuScene;
 pub use pt::PathTracer;
 pub use tonemap::{Tonemap, TonemapSettings};
 
-use crate::bvh::{BuildOptions, Bvh, BvhError};
+use crate::bvh::{BuildOptions, Bvh, BvhError, BvhLayout};
 use crate::film::RgbImage;
 use crate::gpu::abi::{BdptPush, GpuCamera, PtPush};
 use crate::scene::{Camera, Scene};
@@ -151,7 +151,7 @@ pub enum RenderError {
 /// The integrator's kernels.
 enum Kernels {
     Pt(PathTracer),
-    Bdpt(Bdpt),
+    Bdpt(Box<Bdpt>),
 }
 
 /// A scene on the GPU with an integrator and a film.
@@ -175,6 +175,19 @@ const TARGET_INVOCATIONS: u64 = 1 << 18;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
 const SLICED_STORE_BYTES: u64 = 1 << 30;
 
+/// The integrator kernels include only the binary traversal (glsl/common/traverse.glsl):
+/// wide nodes would be read as binary ones and the image would be quietly wrong.
+fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
+    match layout {
+        BvhLayout::Bvh2 => Ok(()),
+        other => Err(RenderError::Unsupported(format!(
+            "the integrators traverse the binary BVH only; the '{}' layout is for `bidir bench traversal --bvh {}`",
+            other.name(),
+            other.name()
+        ))),
+    }
+}
+
 /// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`).
 fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
     if settings.sample_slices > 0 {
@@ -195,9 +208,10 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
 
 /// The kernels of `integrator` for a film of `pixels` pixels.
 fn build_kernels(ctx: &Context, scene: &GpuScene, integrator: Integrator, pixels: u32, settings: &RenderSettings, slices: u32) -> Result<Kernels, RenderError> {
+    check_layout(scene.bvh.layout)?;
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
-        Integrator::Bdpt(join) => Kernels::Bdpt(Bdpt::new(ctx, scene, pixels, settings, join, slices)?),
+        Integrator::Bdpt(join) => Kernels::Bdpt(Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices)?)),
     })
 }
 
@@ -213,6 +227,7 @@ impl Renderer {
         if camera.width == 0 || camera.height == 0 {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
+        check_layout(settings.bvh.layout)?;
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &settings.bvh)?;
         let mut gscene = GpuScene::upload(ctx, scene, &bvh)?;
         if settings.all_material_code {
@@ -222,7 +237,7 @@ impl Renderer {
         let slices = sample_slices(ctx, &settings, pixels);
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
         let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)), slices)?;
-        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::trace::gpu_camera(camera), settings, samples: 0, pass_spp: 1, slices })
+        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::gpu_data::gpu_camera(camera), settings, samples: 0, pass_spp: 1, slices })
     }
 
     pub fn gpu_scene(&self) -> &GpuScene {
@@ -238,11 +253,19 @@ impl Renderer {
     /// Clears the film (e.g. after the camera moved).
     pub fn reset(&mut self, camera: Option<&Camera>) -> Result<(), RenderError> {
         if let Some(c) = camera {
-            self.camera = crate::trace::gpu_camera(c);
+            self.camera = crate::gpu_data::gpu_camera(c);
         }
         self.film.clear(&self.ctx)?;
         self.samples = 0;
         Ok(())
+    }
+
+    /// Renders with `seed` from now on and clears the film: another seed gives an
+    /// independent estimate (another scramble of the same sample sequence), which is how tests
+    /// measure an estimator's own variance.
+    pub fn set_seed(&mut self, seed: u32) -> Result<(), RenderError> {
+        self.settings.seed = seed;
+        self.reset(None)
     }
 
     /// The film the integrator accumulates into (for display passes such as [`Tonemap`]).

@@ -23,7 +23,7 @@ impl PathTracer {
         binds.push(Bind::buffer(abi::BIND_RENDER_STATS, &film.stats));
         binds.push(Bind::buffer(abi::BIND_SLICES, film.slices_buffer()));
         let slices = push.slices.max(1);
-        let n = crate::trace::tiled_invocations(film.width, film.height) * slices;
+        let n = crate::gpu_data::tiled_invocations(film.width, film.height) * slices;
         rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(push), [self.kernel.groups_for(n), 1, 1])?;
         film.record_add_slices(rec, slices)
     }

@@ -2,55 +2,14 @@
 //! buffers, and ray generation (primary, shadow, diffuse) with compaction. Integrators call
 //! the same GLSL traversal inline; this module serves the tests and the benchmark.
 
-mod camera;
-
-pub use camera::gpu_camera;
-
-use crate::bvh::{Bvh, BvhLayout, TriTest};
+use crate::bvh::{BvhLayout, TriTest};
 use crate::compute::Scan;
 use crate::gpu::{
     abi::{self, GpuCamera, GpuHit, GpuRay, SecondaryPush, TracePush},
     kernels,
 };
-use crate::render::SceneFeatures;
+use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
-
-/// Invocations that cover a `width` x `height` image in whole 8x8 tiles (the order of
-/// `tiled_pixel` in glsl/common/ray.glsl).
-pub fn tiled_invocations(width: u32, height: u32) -> u32 {
-    width.div_ceil(8) * 8 * height.div_ceil(8) * 8
-}
-
-/// A BVH in GPU memory.
-pub struct GpuBvh {
-    /// `BvhNode`s or `CwbvhNode`s, as `layout` says.
-    pub nodes: Buffer,
-    pub tris: Buffer,
-    pub tri_test: TriTest,
-    pub layout: BvhLayout,
-    pub bytes: u64,
-}
-
-impl GpuBvh {
-    pub fn upload(ctx: &Context, bvh: &Bvh) -> Result<GpuBvh> {
-        let nodes = match bvh.layout {
-            BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
-            BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
-        };
-        Ok(GpuBvh {
-            nodes,
-            tris: ctx.upload_buffer("bvh.tris", &bvh.tris)?,
-            tri_test: bvh.tri_test,
-            layout: bvh.layout,
-            bytes: (bvh.node_bytes() + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
-        })
-    }
-
-    /// Bindings of the BVH buffers (glsl/common/traverse.glsl).
-    pub fn binds(&self) -> Vec<Bind<'_>> {
-        vec![Bind::buffer(abi::BIND_NODES, &self.nodes), Bind::buffer(abi::BIND_TRIS, &self.tris)]
-    }
-}
 
 /// Which secondary rays to spawn from hits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -247,7 +206,7 @@ impl Tracer {
     /// Records camera rays through pixel centres into `rays`, in 8x8-tile order
     /// (`tiled_invocations` of them; those outside the image have tmax < 0).
     pub fn record_primary(&self, rec: &mut Recorder, cam: &GpuCamera, rays: &Buffer) -> Result<()> {
-        let n = tiled_invocations(cam.size.x, cam.size.y);
+        let n = crate::gpu_data::tiled_invocations(cam.size.x, cam.size.y);
         rec.dispatch(&self.gen_primary, &[Bind::buffer(abi::BIND_RAYS_OUT, rays)], bytemuck::bytes_of(cam), [self.gen_primary.groups_for(n), 1, 1])
     }
 

@@ -404,7 +404,7 @@ impl State {
         self.frame_times.push(took);
         self.frame_spp.push(spp);
         let frames = self.frame_times.len() as u32;
-        if self.title_at.map_or(true, |t| t.elapsed() >= TITLE_PERIOD) {
+        if self.title_at.is_none_or(|t| t.elapsed() >= TITLE_PERIOD) {
             self.window.set_title(&self.stats.title(&self.integrator.name(), self.renderer.samples(), self.exposure));
             self.title_at = Some(Instant::now());
         }

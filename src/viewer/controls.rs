@@ -85,7 +85,7 @@ impl FlyCamera {
 
     /// Moves for `dt` seconds at the current speed. Returns whether the camera changed.
     pub fn fly(&mut self, m: Motion, dt: f32) -> bool {
-        if m.is_zero() || !(dt > 0.0) {
+        if m.is_zero() || dt.is_nan() || dt <= 0.0 {
             return false;
         }
         let (f, r, _) = self.camera.basis();

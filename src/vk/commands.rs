@@ -238,6 +238,7 @@ impl Context {
         // SAFETY: the pool is externally synchronised by its mutex, held through recording.
         let cmd = unsafe { s.device.allocate_command_buffers(&alloc) }.ctx(|| format!("allocate command buffer for {what}"))?[0];
         s.name(cmd, what);
+        // SAFETY: the pool mutex is held for the whole submission; a buffer is freed once, after it ran or failed.
         let free = |cmd| unsafe { s.device.free_command_buffers(*pool, &[cmd]) };
         // SAFETY: fresh command buffer.
         if let Err(result) = unsafe { s.device.begin_command_buffer(cmd, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT)) } {
@@ -278,6 +279,7 @@ impl Context {
         let submitted = unsafe { s.device.queue_submit(*queue, &submit, fence) };
         drop(queue);
         if let Err(result) = submitted {
+            // SAFETY: the fence is not in use: the submission failed, or it signalled.
             unsafe { s.device.destroy_fence(fence, None) };
             free(cmd);
             return Err(VkError::Vk { what: format!("submit {what}"), result });
@@ -286,6 +288,7 @@ impl Context {
         // SAFETY: waiting on a fence of this device.
         match unsafe { s.device.wait_for_fences(&[fence], true, timeout_ns) } {
             Ok(()) => {
+                // SAFETY: the fence is not in use: the submission failed, or it signalled.
                 unsafe { s.device.destroy_fence(fence, None) };
                 free(cmd);
                 Ok(())

@@ -49,9 +49,11 @@ impl ContextOptions {
     /// Defaults, with `BIDIR_VALIDATION=1` turning validation on, `BIDIR_DEVICE` choosing the
     /// device and `BIDIR_GPU_TIMEOUT_S` the submission timeout.
     pub fn from_env() -> Self {
-        let mut o = ContextOptions::default();
-        o.validation = std::env::var("BIDIR_VALIDATION").is_ok_and(|v| v == "1" || v.eq_ignore_ascii_case("true"));
-        o.device = std::env::var("BIDIR_DEVICE").ok().filter(|s| !s.is_empty());
+        let mut o = ContextOptions {
+            validation: std::env::var("BIDIR_VALIDATION").is_ok_and(|v| v == "1" || v.eq_ignore_ascii_case("true")),
+            device: std::env::var("BIDIR_DEVICE").ok().filter(|s| !s.is_empty()),
+            ..ContextOptions::default()
+        };
         if let Some(s) = std::env::var("BIDIR_GPU_TIMEOUT_S").ok().and_then(|s| s.parse::<f64>().ok()) {
             o.gpu_timeout = Duration::from_secs_f64(s.max(0.001));
         }
@@ -298,6 +300,7 @@ fn create_device(
     let pool = match unsafe { device.create_command_pool(&pool_info, None) } {
         Ok(p) => p,
         Err(result) => {
+            // SAFETY: nothing was created from the device yet; it is destroyed once, on this error path.
             unsafe { device.destroy_device(None) };
             return Err(VkError::Vk { what: "vkCreateCommandPool".into(), result });
         }

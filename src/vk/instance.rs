@@ -339,7 +339,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
         if !push_descriptor {
             missing.push("VK_KHR_push_descriptor".into());
         }
-        if !subgroup_in_compute || !(ops.basic && ops.vote && ops.arithmetic && ops.ballot) {
+        if !(subgroup_in_compute && ops.basic && ops.vote && ops.arithmetic && ops.ballot) {
             missing.push("subgroup basic/vote/arithmetic/ballot operations in compute".into());
         }
         let (min_sg, max_sg) = if api >= vk::API_VERSION_1_3 && size_control.max_subgroup_size > 0 {

@@ -8,9 +8,26 @@ use super::{
     error::{Result, VkError, VkResultExt},
     reflect::{Module, ReflectedBinding},
 };
-use crate::gpu::kernels::KernelSource;
 use ash::vk;
 use std::sync::Arc;
+
+/// One compiled compute kernel: its SPIR-V, embedded by build.rs (`gpu::kernels` lists them).
+#[derive(Clone, Copy, Debug)]
+pub struct KernelSource {
+    /// File stem, e.g. `reduce_sum`; also its debug name.
+    pub name: &'static str,
+    /// Source path relative to the crate root.
+    pub file: &'static str,
+    /// SPIR-V words as bytes (not necessarily 4-byte aligned; use `spirv_words`).
+    pub spirv: &'static [u8],
+}
+
+impl KernelSource {
+    /// The SPIR-V as aligned 32-bit words.
+    pub fn spirv_words(&self) -> Vec<u32> {
+        self.spirv.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()
+    }
+}
 
 /// A compiled compute pipeline.
 pub struct Kernel {

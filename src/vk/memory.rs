@@ -265,6 +265,7 @@ impl Context {
         // SAFETY: memory from an allocation made for this image's requirements.
         if let Err(result) = unsafe { s.device.bind_image_memory(raw, allocation.memory(), allocation.offset()) } {
             let _ = s.allocator.lock().unwrap_or_else(|e| e.into_inner()).free(allocation);
+            // SAFETY: the image was never used and no view of it exists; destroyed once, on this error path.
             unsafe { s.device.destroy_image(raw, None) };
             return Err(VkError::Vk { what: format!("vkBindImageMemory '{name}'"), result });
         }
@@ -278,6 +279,7 @@ impl Context {
             Ok(v) => v,
             Err(result) => {
                 let _ = s.allocator.lock().unwrap_or_else(|e| e.into_inner()).free(allocation);
+                // SAFETY: the image was never used and no view of it exists; destroyed once, on this error path.
                 unsafe { s.device.destroy_image(raw, None) };
                 return Err(VkError::Vk { what: format!("vkCreateImageView '{name}'"), result });
             }

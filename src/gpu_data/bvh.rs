@@ -1,0 +1,36 @@
+//! The BVH in GPU memory, bound the same way by the integrators and the trace kernels.
+
+use crate::bvh::{Bvh, BvhLayout, TriTest};
+use crate::gpu::abi;
+use crate::vk::{Bind, Buffer, Context, Result};
+
+/// A BVH in GPU memory.
+pub struct GpuBvh {
+    /// `BvhNode`s or `CwbvhNode`s, as `layout` says.
+    pub nodes: Buffer,
+    pub tris: Buffer,
+    pub tri_test: TriTest,
+    pub layout: BvhLayout,
+    pub bytes: u64,
+}
+
+impl GpuBvh {
+    pub fn upload(ctx: &Context, bvh: &Bvh) -> Result<GpuBvh> {
+        let nodes = match bvh.layout {
+            BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
+            BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
+        };
+        Ok(GpuBvh {
+            nodes,
+            tris: ctx.upload_buffer("bvh.tris", &bvh.tris)?,
+            tri_test: bvh.tri_test,
+            layout: bvh.layout,
+            bytes: (bvh.node_bytes() + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
+        })
+    }
+
+    /// Bindings of the BVH buffers (glsl/common/traverse.glsl).
+    pub fn binds(&self) -> Vec<Bind<'_>> {
+        vec![Bind::buffer(abi::BIND_NODES, &self.nodes), Bind::buffer(abi::BIND_TRIS, &self.tris)]
+    }
+}

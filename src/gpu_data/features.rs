@@ -1,0 +1,48 @@
+//! What a scene uses, as specialisation constants: kernels run no code for what is absent.
+
+use crate::gpu::abi;
+use crate::scene::Scene;
+use crate::vk::Spec;
+
+/// What a scene uses; each is a specialisation constant of the integrator kernels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SceneFeatures {
+    pub normals: bool,
+    pub uvs: bool,
+    pub textures: bool,
+    pub mirror: bool,
+    pub glass: bool,
+    pub alpha: bool,
+}
+
+impl SceneFeatures {
+    pub fn of(scene: &Scene) -> SceneFeatures {
+        let m = &scene.materials;
+        SceneFeatures {
+            normals: scene.normals.is_some(),
+            uvs: scene.uvs.is_some(),
+            textures: scene.uvs.is_some() && !scene.textures.is_empty() && m.iter().any(|m| m.albedo_texture.is_some() || m.alpha.is_some()),
+            mirror: m.iter().any(|m| m.reflectivity > 0.0),
+            glass: m.iter().any(|m| m.refractivity > 0.0),
+            alpha: scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some()),
+        }
+    }
+
+    /// The same scene with the code for mirrors, glass, textures and alpha compiled in even
+    /// where it has none (only to measure what specialisation buys; vertex attributes stay as
+    /// they are, since their buffers are only uploaded when present).
+    pub fn with_all_material_code(self) -> SceneFeatures {
+        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, ..self }
+    }
+
+    pub fn specs(&self) -> Vec<Spec> {
+        vec![
+            Spec { id: abi::SPEC_HAS_NORMALS, value: self.normals as u32 },
+            Spec { id: abi::SPEC_HAS_UVS, value: self.uvs as u32 },
+            Spec { id: abi::SPEC_HAS_TEXTURES, value: self.textures as u32 },
+            Spec { id: abi::SPEC_HAS_MIRROR, value: self.mirror as u32 },
+            Spec { id: abi::SPEC_HAS_GLASS, value: self.glass as u32 },
+            Spec { id: abi::SPEC_HAS_ALPHA, value: self.alpha as u32 },
+        ]
+    }
+}
