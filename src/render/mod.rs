@@ -16,12 +16,14 @@ mod bdpt;
 mod film;
 pub mod gpu_scene;
 pub mod lights;
+mod pacing;
 mod pt;
 mod tonemap;
 
 pub use bdpt::{Bdpt, Join};
 pub use film::Film;
 pub use gpu_scene::GpuScene;
+pub use pacing::PassModel;
 pub use pt::PathTracer;
 pub use tonemap::{Tonemap, TonemapSettings};
 
@@ -164,8 +166,8 @@ pub struct Renderer {
     settings: RenderSettings,
     /// Samples per pixel accumulated so far.
     samples: u32,
-    /// Samples per pixel per submission, adapted to `pass_target`.
-    pass_spp: u32,
+    /// How long passes take, learnt from the passes so far: sizes the next one.
+    pacing: PassModel,
     /// Most sample slices per pass (the film's and BDPT's storage are sized for it).
     slices: u32,
 }
@@ -237,7 +239,7 @@ impl Renderer {
         let slices = sample_slices(ctx, &settings, pixels);
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
         let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)), slices)?;
-        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::gpu_data::gpu_camera(camera), settings, samples: 0, pass_spp: 1, slices })
+        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::gpu_data::gpu_camera(camera), settings, samples: 0, pacing: PassModel::default(), slices })
     }
 
     pub fn gpu_scene(&self) -> &GpuScene {
@@ -314,7 +316,7 @@ impl Renderer {
         self.film = film;
         self.slices = slices;
         self.settings.integrator = integrator;
-        self.pass_spp = 1;
+        self.pacing = PassModel::default();
         self.samples = 0;
         Ok(())
     }
@@ -383,16 +385,15 @@ impl Renderer {
         Ok(())
     }
 
-    /// One adaptive pass (sized to `pass_target`), at most `max_spp` samples.
+    /// One adaptive pass, at most `max_spp` samples: sized by the pass model to take about
+    /// `pass_target`, or one sample per pixel while nothing has been measured (calibration).
     fn adaptive_pass(&mut self, max_spp: u32) -> Result<u32, RenderError> {
-        let spp = self.pass_spp.min(max_spp).max(1);
+        let target = self.settings.pass_target.as_secs_f64();
+        let sized = if self.pacing.known() { self.pacing.spp_within(target) } else { 1 };
+        let spp = sized.clamp(1, self.max_pass_spp()).min(max_spp).max(1);
         let t = Instant::now();
         self.pass(spp)?;
-        let took = t.elapsed().as_secs_f64();
-        let target = self.settings.pass_target.as_secs_f64();
-        // Grow fast while passes are tiny (fast GPUs), cautiously near the target.
-        let scale = (target / took.max(1e-6)).clamp(0.25, if took < target / 16.0 { 16.0 } else { 4.0 });
-        self.pass_spp = ((spp as f64 * scale) as u32).clamp(1, self.max_pass_spp());
+        self.pacing.record(spp, t.elapsed().as_secs_f64());
         Ok(spp)
     }
 
@@ -419,17 +420,28 @@ impl Renderer {
         Ok(())
     }
 
-    /// Renders passes until `time` has passed (at least one sample).
+    /// Renders passes until `time` has passed (at least one sample). After one calibration
+    /// pass (none if this renderer has rendered before) every pass is sized by the pass model
+    /// to fill what is left of the budget, up to `pass_target`, so the render runs at the
+    /// GPU's steady rate from its first moments; a last pass that would overshoot the budget by
+    /// more than 10 % is not started.
     pub fn render_time(&mut self, time: Duration, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
         let start = Instant::now();
+        let budget = time.as_secs_f64();
         loop {
-            let left = time.saturating_sub(start.elapsed());
-            if self.samples > 0 && left.is_zero() {
+            let left = budget - start.elapsed().as_secs_f64();
+            if self.samples > 0 && left <= 0.0 {
                 break;
             }
-            // Shrink the pass so it ends near the deadline.
-            let per_spp = self.settings.pass_target.as_secs_f64() / self.pass_spp.max(1) as f64;
-            let cap = if self.samples == 0 { 1 } else { ((left.as_secs_f64() / per_spp.max(1e-9)) as u32).max(1) };
+            let cap = if !self.pacing.known() {
+                1
+            } else {
+                match self.pacing.spp_within(left) {
+                    0 if self.samples > 0 && self.pacing.seconds(1) - left > 0.1 * budget => break,
+                    0 => 1,
+                    n => n,
+                }
+            };
             self.adaptive_pass(cap)?;
             progress(Progress { samples: self.samples, elapsed: start.elapsed() });
         }

@@ -1,0 +1,95 @@
+//! How long a pass of `spp` samples per pixel takes: `overhead + spp * per_spp`, fitted to the
+//! last two passes of different sizes. Time-budgeted rendering sizes its passes from it, so a
+//! render reaches the GPU's steady rate after one small calibration pass instead of ramping up
+//! from one sample per pixel, and its last pass ends near the deadline.
+
+/// A linear model of pass time, learnt from measured passes.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PassModel {
+    /// Fixed cost of a pass (submission, fence wait, host work), seconds.
+    overhead_s: f64,
+    /// Cost of one more sample per pixel, seconds.
+    per_spp_s: f64,
+    /// The last pass measured: (spp, seconds).
+    last: Option<(u32, f64)>,
+}
+
+impl PassModel {
+    /// Whether at least one pass has been measured.
+    pub fn known(&self) -> bool {
+        self.last.is_some()
+    }
+
+    /// Learns from a pass of `spp` samples per pixel that took `seconds`.
+    pub fn record(&mut self, spp: u32, seconds: f64) {
+        let seconds = seconds.max(1e-9);
+        let fit = self.last.and_then(|(s0, t0)| {
+            if s0 == spp {
+                return None;
+            }
+            let per = (seconds - t0) / (spp as f64 - s0 as f64);
+            // A first pass slowed by one-time costs would make the slope too shallow and the
+            // next pass too long: the overhead may explain at most half of the larger pass.
+            let (s_big, t_big) = if spp > s0 { (spp, seconds) } else { (s0, t0) };
+            let per = per.max(0.5 * t_big / s_big as f64);
+            (per > 0.0).then(|| (per, (t_big - s_big as f64 * per).max(0.0)))
+        });
+        match fit {
+            Some((per, overhead)) => {
+                self.per_spp_s = per;
+                self.overhead_s = overhead;
+            }
+            // One size only (or timing noise): all of it per sample, an overestimate that
+            // makes the next pass smaller than it could be, never larger.
+            None if self.last.map_or(true, |(s0, _)| s0 != spp) || self.per_spp_s <= 0.0 => {
+                self.per_spp_s = seconds / spp.max(1) as f64;
+                self.overhead_s = 0.0;
+            }
+            // The same size again: keep the fit, refreshing the per-sample cost.
+            None => self.per_spp_s = ((seconds - self.overhead_s) / spp.max(1) as f64).max(1e-12),
+        }
+        self.last = Some((spp, seconds));
+    }
+
+    /// Predicted seconds of a pass of `spp`.
+    pub fn seconds(&self, spp: u32) -> f64 {
+        self.overhead_s + spp as f64 * self.per_spp_s
+    }
+
+    /// Most samples per pixel a pass may have to end within `seconds` (0 where even one would
+    /// not).
+    pub fn spp_within(&self, seconds: f64) -> u32 {
+        if self.per_spp_s <= 0.0 {
+            return 0;
+        }
+        ((seconds - self.overhead_s) / self.per_spp_s).floor().clamp(0.0, u32::MAX as f64) as u32
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_pass_sizes_recover_overhead_and_rate() {
+        let mut m = PassModel::default();
+        assert!(!m.known());
+        m.record(1, 0.010 + 0.001);
+        // One pass: everything is charged to the sample (conservative).
+        assert!((m.seconds(1) - 0.011).abs() < 1e-12);
+        m.record(100, 0.010 + 0.100);
+        assert!((m.overhead_s - 0.010).abs() < 1e-9 && (m.per_spp_s - 0.001).abs() < 1e-9);
+        assert_eq!(m.spp_within(0.110), 100);
+        assert_eq!(m.spp_within(0.005), 0);
+    }
+
+    #[test]
+    fn noisy_or_repeated_sizes_stay_sane() {
+        let mut m = PassModel::default();
+        m.record(10, 0.02);
+        m.record(20, 0.01); // faster with more samples: noise, not a negative cost
+        assert!(m.per_spp_s > 0.0 && m.overhead_s >= 0.0);
+        m.record(20, 0.02);
+        assert!(m.per_spp_s > 0.0);
+    }
+}
