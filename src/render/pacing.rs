@@ -41,7 +41,7 @@ impl PassModel {
             }
             // One size only (or timing noise): all of it per sample, an overestimate that
             // makes the next pass smaller than it could be, never larger.
-            None if self.last.map_or(true, |(s0, _)| s0 != spp) || self.per_spp_s <= 0.0 => {
+            None if self.last.is_none_or(|(s0, _)| s0 != spp) || self.per_spp_s <= 0.0 => {
                 self.per_spp_s = seconds / spp.max(1) as f64;
                 self.overhead_s = 0.0;
             }
