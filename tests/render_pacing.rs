@@ -21,9 +21,9 @@ fn first_quarter_of_a_time_budget_runs_near_the_steady_rate() {
     r.render_time(budget, |p| points.push((p.elapsed.as_secs_f64(), p.samples as f64))).unwrap();
     let total = budget.as_secs_f64();
     // The first quarter: the last pass to end within it.
-    let &(t_q, s_q) = points.iter().filter(|(t, _)| *t <= 0.25 * total).last().expect("a pass ended in the first quarter");
+    let &(t_q, s_q) = points.iter().rfind(|(t, _)| *t <= 0.25 * total).expect("a pass ended in the first quarter");
     // The steady rate: the second half.
-    let &(t_h, s_h) = points.iter().filter(|(t, _)| *t <= 0.5 * total).last().unwrap();
+    let &(t_h, s_h) = points.iter().rfind(|(t, _)| *t <= 0.5 * total).unwrap();
     let &(t_end, s_end) = points.last().unwrap();
     let first = s_q / t_q;
     let steady = (s_end - s_h) / (t_end - t_h);
