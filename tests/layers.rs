@@ -55,7 +55,7 @@ fn crate_paths(code: &str) -> Vec<String> {
             // Top-level names of the group: the first identifier of each comma-separated item
             // at nesting depth 0.
             let (mut depth, mut start) = (0, 0);
-            let bytes = group[..end].as_bytes();
+            let bytes = &group.as_bytes()[..end];
             for (j, &b) in bytes.iter().enumerate().chain(std::iter::once((end, &b','))) {
                 match b {
                     b'{' => depth += 1,
