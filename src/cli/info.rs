@@ -8,6 +8,11 @@ pub struct InfoArgs {
     /// Report on the built-in Cornell box
     #[arg(long, conflicts_with = "scene")]
     pub builtin: bool,
+    /// Compile every integrator's kernels for the scene (or the built-in Cornell box) on the
+    /// chosen device and print the driver's statistics of each: registers, spills, shared
+    /// memory (VK_KHR_pipeline_executable_properties, where the driver offers it)
+    #[arg(long)]
+    pub kernels: bool,
     #[command(flatten)]
     pub scene: SceneArgs,
 }
@@ -17,6 +22,9 @@ fn gib(bytes: u64) -> String {
 }
 
 pub fn run(args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    if args.kernels {
+        return super::info_kernels::run(&args.scene, opts);
+    }
     if args.builtin || args.scene.scene.is_some() {
         return super::info_scene::run(&args.scene);
     }

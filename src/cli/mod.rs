@@ -4,6 +4,7 @@ mod bench;
 mod converge;
 mod diff;
 mod info;
+mod info_kernels;
 mod info_scene;
 mod render;
 pub mod scene_args;

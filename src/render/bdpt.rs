@@ -76,6 +76,12 @@ pub struct Bdpt {
 }
 
 impl Bdpt {
+    /// The kernels an iteration runs (the light-vertex cache's scan kernels are shared
+    /// utilities, `compute::Scan`).
+    pub fn kernels(&self) -> Vec<&Kernel> {
+        vec![&self.light, &self.camera]
+    }
+
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together).

@@ -321,6 +321,14 @@ impl Renderer {
         Ok(())
     }
 
+    /// The integrator's kernels (e.g. for their compile statistics, `Kernel::statistics`).
+    pub fn kernels(&self) -> Vec<&crate::vk::Kernel> {
+        match &self.kernels {
+            Kernels::Pt(pt) => pt.kernels(),
+            Kernels::Bdpt(b) => b.kernels(),
+        }
+    }
+
     /// Bytes of integrator-specific GPU memory (BDPT light vertices).
     pub fn integrator_bytes(&self) -> u64 {
         match &self.kernels {

@@ -8,6 +8,11 @@ pub struct PathTracer {
 }
 
 impl PathTracer {
+    /// The kernels a pass runs.
+    pub fn kernels(&self) -> Vec<&Kernel> {
+        vec![&self.kernel]
+    }
+
     pub fn new(ctx: &Context, scene: &GpuScene, nee: bool, sampler: super::Sampler) -> Result<PathTracer> {
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });

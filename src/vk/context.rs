@@ -31,6 +31,9 @@ pub struct ContextOptions {
     pub instance_extensions: Vec<&'static CStr>,
     /// Extra device extensions (the swapchain for the viewer).
     pub device_extensions: Vec<&'static CStr>,
+    /// Ask the driver to keep each kernel's compile statistics (registers, spills, ...:
+    /// `Kernel::statistics`), where it offers VK_KHR_pipeline_executable_properties.
+    pub kernel_statistics: bool,
 }
 
 impl Default for ContextOptions {
@@ -41,6 +44,7 @@ impl Default for ContextOptions {
             gpu_timeout: Duration::from_secs(60),
             instance_extensions: vec![],
             device_extensions: vec![],
+            kernel_statistics: false,
         }
     }
 }
@@ -76,6 +80,8 @@ pub(crate) struct Shared {
     pub device: ash::Device,
     debug_device: Option<ash::ext::debug_utils::Device>,
     pub push_descriptor: ash::khr::push_descriptor::Device,
+    /// Present when kernels are created with their statistics captured.
+    pub pipeline_executables: Option<ash::khr::pipeline_executable_properties::Device>,
     pub allocator: ManuallyDrop<Mutex<Allocator>>,
     pub queue: Mutex<vk::Queue>,
     pub command_pool: Mutex<vk::CommandPool>,
@@ -163,6 +169,8 @@ impl Context {
             Ok((device, queue, pool, allocator)) => {
                 let debug_device = parts.debug_utils.as_ref().map(|_| ash::ext::debug_utils::Device::new(&parts.instance, &device));
                 let push_descriptor = ash::khr::push_descriptor::Device::new(&parts.instance, &device);
+                let pipeline_executables = (opts.kernel_statistics && info.kernel_statistics)
+                    .then(|| ash::khr::pipeline_executable_properties::Device::new(&parts.instance, &device));
                 let queue_family = info.queue_family.expect("usable devices have a compute queue");
                 let shared = Shared {
                     entry: parts.entry,
@@ -174,6 +182,7 @@ impl Context {
                     device,
                     debug_device,
                     push_descriptor,
+                    pipeline_executables,
                     allocator: ManuallyDrop::new(Mutex::new(allocator)),
                     queue: Mutex::new(queue),
                     command_pool: Mutex::new(pool),
@@ -254,6 +263,10 @@ fn create_device(
         ext_ptrs.push(ash::ext::shader_atomic_float::NAME.as_ptr());
     }
     ext_ptrs.extend(opts.device_extensions.iter().map(|e| e.as_ptr()));
+    let statistics = opts.kernel_statistics && info.kernel_statistics;
+    if statistics {
+        ext_ptrs.push(ash::khr::pipeline_executable_properties::NAME.as_ptr());
+    }
 
     // Enable the optional features bidir's kernels use where the device has them.
     let mut f13 = vk::PhysicalDeviceVulkan13Features::default();
@@ -284,6 +297,10 @@ fn create_device(
         .push_next(&mut e12);
     if info.api_version >= vk::API_VERSION_1_3 {
         create = create.push_next(&mut e13);
+    }
+    let mut executable_info = vk::PhysicalDevicePipelineExecutablePropertiesFeaturesKHR::default().pipeline_executable_info(true);
+    if statistics {
+        create = create.push_next(&mut executable_info);
     }
     let mut atomic_float = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default().shader_buffer_float32_atomic_add(true);
     if info.atomic_float_add {

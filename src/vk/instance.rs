@@ -233,6 +233,9 @@ pub struct DeviceInfo {
     /// 0 where the device does not report them).
     pub sm_count: u32,
     pub warps_per_sm: u32,
+    /// VK_KHR_pipeline_executable_properties: the driver reports each kernel's registers,
+    /// spills, shared memory and the like (`ContextOptions::kernel_statistics`).
+    pub kernel_statistics: bool,
     /// Why bidir cannot use this device; empty when it can.
     pub missing: Vec<String>,
 }
@@ -376,6 +379,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             atomic_float_add,
             sm_count: sm.shader_sm_count,
             warps_per_sm: sm.shader_warps_per_sm,
+            kernel_statistics: has_ext(ash::khr::pipeline_executable_properties::NAME),
             missing,
         })
     }

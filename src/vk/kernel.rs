@@ -41,7 +41,53 @@ pub struct Kernel {
     local_size: [u32; 3],
 }
 
+/// One compile statistic of a kernel, as the driver names it (e.g. NVIDIA's "Register
+/// Count", Mesa's "Private memory"), from VK_KHR_pipeline_executable_properties.
+#[derive(Clone, Debug)]
+pub struct KernelStatistic {
+    /// The executable (shader stage) it belongs to.
+    pub executable: String,
+    pub name: String,
+    pub value: String,
+    pub description: String,
+}
+
 impl Kernel {
+    /// The driver's compile statistics of this kernel (registers, spills, shared memory, ...);
+    /// empty unless the context was created with `ContextOptions::kernel_statistics` on a
+    /// device that offers them (`DeviceInfo::kernel_statistics`).
+    pub fn statistics(&self) -> Result<Vec<KernelStatistic>> {
+        let Some(pe) = &self.shared.pipeline_executables else { return Ok(Vec::new()) };
+        let text = |c: &[std::ffi::c_char]| {
+            // SAFETY: the driver writes NUL-terminated strings into these fixed-size arrays.
+            unsafe { std::ffi::CStr::from_ptr(c.as_ptr()) }.to_string_lossy().into_owned()
+        };
+        let info = vk::PipelineInfoKHR::default().pipeline(self.pipeline);
+        // SAFETY: a live pipeline of this device, created with CAPTURE_STATISTICS_KHR.
+        let executables =
+            unsafe { pe.get_pipeline_executable_properties(&info) }.ctx(|| format!("executables of kernel {}", self.name))?;
+        let mut out = Vec::new();
+        for (i, exe) in executables.iter().enumerate() {
+            let ei = vk::PipelineExecutableInfoKHR::default().pipeline(self.pipeline).executable_index(i as u32);
+            // SAFETY: as above; `i` is below the executable count just returned.
+            let stats = unsafe { pe.get_pipeline_executable_statistics(&ei) }.ctx(|| format!("statistics of kernel {}", self.name))?;
+            for st in &stats {
+                // SAFETY: `format` says which member of the union the driver wrote.
+                let value = unsafe {
+                    match st.format {
+                        vk::PipelineExecutableStatisticFormatKHR::BOOL32 => (st.value.b32 == vk::TRUE).to_string(),
+                        vk::PipelineExecutableStatisticFormatKHR::INT64 => st.value.i64.to_string(),
+                        vk::PipelineExecutableStatisticFormatKHR::UINT64 => st.value.u64.to_string(),
+                        vk::PipelineExecutableStatisticFormatKHR::FLOAT64 => format!("{:.3}", st.value.f64),
+                        _ => "?".into(),
+                    }
+                };
+                out.push(KernelStatistic { executable: text(&exe.name), name: text(&st.name), value, description: text(&st.description) });
+            }
+        }
+        Ok(out)
+    }
+
     pub fn name(&self) -> &str {
         &self.name
     }
@@ -148,7 +194,12 @@ impl Context {
             if !specs.is_empty() {
                 stage = stage.specialization_info(&spec_info);
             }
-            let info = [vk::ComputePipelineCreateInfo::default().stage(stage).layout(pipeline_layout)];
+            let flags = if s.pipeline_executables.is_some() {
+                vk::PipelineCreateFlags::CAPTURE_STATISTICS_KHR
+            } else {
+                vk::PipelineCreateFlags::empty()
+            };
+            let info = [vk::ComputePipelineCreateInfo::default().stage(stage).layout(pipeline_layout).flags(flags)];
             let result = s.device.create_compute_pipelines(vk::PipelineCache::null(), &info, None);
             s.device.destroy_shader_module(shader, None);
             let pipeline = match result {

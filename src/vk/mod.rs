@@ -39,6 +39,6 @@ pub use commands::{Bind, Recorder, Resource, Timer};
 pub use context::{Context, ContextOptions};
 pub use error::{Result, VkError};
 pub use instance::{choose_device, list_devices, DeviceInfo, MemoryHeap, SubgroupOps};
-pub use kernel::{Kernel, KernelSource, Spec};
+pub use kernel::{Kernel, KernelSource, KernelStatistic, Spec};
 pub use memory::{Buffer, Image, Memory};
 pub use swapchain::{surface_extensions, Presented, Swapchain, Vsync, SWAPCHAIN_EXTENSION};

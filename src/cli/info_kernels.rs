@@ -1,0 +1,29 @@
+//! `bidir info --kernels`: every integrator's kernels compiled for a scene on the chosen
+//! device, with the driver's compile statistics (registers, spills, shared memory, ...), the
+//! first thing to read when a kernel is slower than its work explains.
+
+use super::scene_args::SceneArgs;
+use bidir::render::{Integrator, Join, RenderSettings, Renderer};
+use bidir::vk::{Context, ContextOptions};
+
+pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    let loaded = scene_args.load()?;
+    let mut opts = opts.clone();
+    opts.kernel_statistics = true;
+    let ctx = Context::new(&opts)?;
+    println!("device: {}", ctx.info().name);
+    if !ctx.info().kernel_statistics {
+        println!("  the driver does not offer VK_KHR_pipeline_executable_properties: no kernel statistics");
+        return Ok(());
+    }
+    let integrators = [Integrator::Pt, Integrator::PtNee, Integrator::Bdpt(Join::Lvc(0)), Integrator::Bdpt(Join::Full)];
+    for integrator in integrators {
+        let r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrator))?;
+        for kernel in r.kernels() {
+            let stats = kernel.statistics()?;
+            let line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
+            println!("{} / {} ({} statistics): {}", integrator.name(), kernel.name(), stats.len(), line.join("; "));
+        }
+    }
+    Ok(())
+}
