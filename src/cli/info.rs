@@ -17,6 +17,9 @@ fn gib(bytes: u64) -> String {
 }
 
 pub fn run(args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    if let Some(p) = args.scene.scene.as_ref().filter(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"))) {
+        return super::merge::info(p);
+    }
     if args.builtin || args.scene.scene.is_some() {
         return super::info_scene::run(&args.scene);
     }

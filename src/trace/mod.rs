@@ -4,7 +4,7 @@
 
 mod camera;
 
-pub use camera::gpu_camera;
+pub use camera::{gpu_camera, gpu_camera_window};
 
 use crate::bvh::{Bvh, BvhLayout, TriTest};
 use crate::compute::Scan;
