@@ -33,10 +33,12 @@ fn render_ranges_merge_info_and_refusal() {
     let d = dir();
     let (a, b, whole, merged, png) = (d.join("a.exr"), d.join("b.exr"), d.join("whole.exr"), d.join("merged.exr"), d.join("merged.png"));
     let common = ["render", "--width", "16", "--height", "12", "--seed", "3"];
-    let with = |extra: &[&str]| common.iter().chain(extra).copied().collect::<Vec<&str>>();
-    ok(&with(&["--sample-range", "0..3", "-o", s(&a)]));
-    ok(&with(&["--sample-range", "3..8", "--crop", "0,0,16,12", "-o", s(&b)]));
-    ok(&with(&["--spp", "8", "-o", s(&whole)]));
+    fn with<'a>(common: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
+        common.iter().chain(extra).copied().collect()
+    }
+    ok(&with(&common, &["--sample-range", "0..3", "-o", s(&a)]));
+    ok(&with(&common, &["--sample-range", "3..8", "--crop", "0,0,16,12", "-o", s(&b)]));
+    ok(&with(&common, &["--spp", "8", "-o", s(&whole)]));
     let out = ok(&["merge", s(&a), s(&b), "-o", s(&merged), "-o", s(&png)]);
     assert!(out.contains("samples 0..8 (8 spp)"), "{out}");
     assert!(png.exists());
