@@ -1,6 +1,6 @@
 //! One render on several Vulkan devices at once (`--device all` or a list): every device
 //! takes passes — runs of sample indices — from a shared counter, so a faster device renders
-//! more of them, and the host adds the devices' film sums. Each pass is rendered with the
+//! more of them (once all are set up), and the host adds the devices' film sums. Each pass is rendered with the
 //! random numbers a single-device render uses for its sample indices, so the sum is the
 //! single-device image (up to float summation order).
 
@@ -9,7 +9,7 @@ use crate::film::part::Accumulation;
 use crate::scene::{Camera, Scene};
 use crate::vk::{Context, ContextOptions};
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Mutex;
+use std::sync::{Barrier, Mutex};
 use std::time::{Duration, Instant};
 
 /// How far one device has got.
@@ -37,9 +37,13 @@ pub fn render_on_devices(devices: &[ContextOptions], scene: &Scene, camera: &Cam
     let next = AtomicU64::new(0);
     let status = Mutex::new(vec![DeviceProgress::default(); devices.len()]);
     let stop = || next.store(u64::MAX / 2, Ordering::SeqCst);
+    // Passes start once every device is set up (or has failed), so that a device whose
+    // kernels compile first does not take the whole render before the others can start.
+    let ready = Barrier::new(devices.len());
     let run = |i: usize, opts: &ContextOptions| -> Result<(Accumulation, u64, Vec<String>), RenderError> {
-        let ctx = Context::new(opts)?;
-        let mut r = Renderer::new(&ctx, scene, camera, settings.clone())?;
+        let setup = Context::new(opts).map_err(RenderError::from).and_then(|ctx| Renderer::new(&ctx, scene, camera, settings.clone()).map(|r| (ctx, r)));
+        ready.wait();
+        let (ctx, mut r) = setup?;
         status.lock().unwrap_or_else(|e| e.into_inner())[i].name = format!("{} #{i}", ctx.info().name);
         // Whole BDPT iterations where the counter allows (see `Renderer::pass_at`).
         let align = r.sample_slices().max(1);
