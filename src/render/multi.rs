@@ -30,6 +30,9 @@ pub struct MultiRender {
     pub validation: Vec<String>,
 }
 
+/// One device's film sums, dropped NaN/Inf samples and validation messages.
+type DeviceResult = Result<(Accumulation, u64, Vec<String>), RenderError>;
+
 /// Renders samples `settings.sample_start ..` `+ spp` of every pixel on the devices of
 /// `devices` (one context each; the same device may appear twice). `progress` is called
 /// after every pass of any device with all devices' progress.
@@ -40,7 +43,7 @@ pub fn render_on_devices(devices: &[ContextOptions], scene: &Scene, camera: &Cam
     // Passes start once every device is set up (or has failed), so that a device whose
     // kernels compile first does not take the whole render before the others can start.
     let ready = Barrier::new(devices.len());
-    let run = |i: usize, opts: &ContextOptions| -> Result<(Accumulation, u64, Vec<String>), RenderError> {
+    let run = |i: usize, opts: &ContextOptions| -> DeviceResult {
         let setup = Context::new(opts).map_err(RenderError::from).and_then(|ctx| Renderer::new(&ctx, scene, camera, settings.clone()).map(|r| (ctx, r)));
         ready.wait();
         let (ctx, mut r) = setup?;
@@ -69,7 +72,7 @@ pub fn render_on_devices(devices: &[ContextOptions], scene: &Scene, camera: &Cam
         drop(r);
         Ok((sums, nan, ctx.close()?))
     };
-    let results: Vec<Result<(Accumulation, u64, Vec<String>), RenderError>> = std::thread::scope(|sc| {
+    let results: Vec<DeviceResult> = std::thread::scope(|sc| {
         let handles: Vec<_> = devices
             .iter()
             .enumerate()
