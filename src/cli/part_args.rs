@@ -21,9 +21,15 @@ pub struct PartArgs {
 }
 
 impl PartArgs {
-    pub fn apply(&self, settings: &mut RenderSettings) {
+    /// Sets the sample start and crop of `settings`; a crop outside `camera`'s image is an
+    /// error before any GPU work.
+    pub fn apply(&self, settings: &mut RenderSettings, camera: &bidir::scene::Camera) -> anyhow::Result<()> {
+        if let Some(c) = self.crop {
+            c.check(camera.width, camera.height).map_err(|e| anyhow::anyhow!("--crop: {e}"))?;
+        }
         settings.sample_start = self.sample_range.map_or(0, |r| r.start);
         settings.crop = self.crop;
+        Ok(())
     }
 }
 

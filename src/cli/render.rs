@@ -57,7 +57,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let camera = loaded.camera.clone();
     let integrator = args.integrator.integrator()?;
     let mut settings = args.settings.settings(integrator)?;
-    args.part.apply(&mut settings);
+    args.part.apply(&mut settings, &camera)?;
     let info_settings = settings.clone();
     if let Some(devices) = super::render_devices::device_list(opts)? {
         return super::render_devices::run(args, &loaded, &settings, &devices, &outputs, reference);

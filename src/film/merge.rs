@@ -19,8 +19,9 @@ fn names(parts: &[(PathBuf, Part)], idx: &[usize]) -> String {
 /// Merges `parts` (path, part). Refused, naming the files: parts that differ in any of
 /// [`keys::MUST_MATCH`], overlapping sample ranges in a window, overlapping windows, windows
 /// with different sample ranges, and windows that leave a hole in the rectangle they span.
-/// Sample ranges missing between the first and the last are reported as warnings (the
-/// merge is still an unbiased estimate, with fewer samples).
+/// Sample ranges missing between the first and the last, and tiles missing around the
+/// rectangle the windows span, are reported as warnings (the merge is still an unbiased
+/// estimate, with fewer samples; or a crop of the image).
 pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
     let merr = |m: String| Err(PartError::Merge(m));
     let Some((first_path, first)) = parts.first() else { return merr("nothing to merge".into()) };
@@ -76,6 +77,9 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
     }
     let ranges = window_ranges[0].2.clone();
     let mut warnings = Vec::new();
+    if bounds != Crop::full(first.full.0, first.full.1) {
+        warnings.push(format!("the parts cover window {bounds} of the {}x{} image, not all of it: the merge is that window", first.full.0, first.full.1));
+    }
     for w in ranges.windows(2) {
         if w[0].end < w[1].start {
             warnings.push(format!("samples {}..{} are missing (no part holds them): the merge has {} spp", w[0].end, w[1].start, ranges.iter().map(|r| r.len() as u64).sum::<u64>()));
