@@ -13,7 +13,10 @@ pub struct Merged {
 }
 
 fn names(parts: &[(PathBuf, Part)], idx: &[usize]) -> String {
-    idx.iter().map(|&i| parts[i].0.display().to_string()).collect::<Vec<_>>().join(", ")
+    idx.iter()
+        .map(|&i| parts[i].0.display().to_string())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// Merges `parts` (path, part). Refused, naming the files: parts that differ in any of
@@ -24,16 +27,29 @@ fn names(parts: &[(PathBuf, Part)], idx: &[usize]) -> String {
 /// estimate, with fewer samples; or a crop of the image).
 pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
     let merr = |m: String| Err(PartError::Merge(m));
-    let Some((first_path, first)) = parts.first() else { return merr("nothing to merge".into()) };
+    let Some((first_path, first)) = parts.first() else {
+        return merr("nothing to merge".into());
+    };
     for (path, p) in &parts[1..] {
         for key in keys::MUST_MATCH {
-            let (a, b) = (first.info.get(key).unwrap_or("(none)"), p.info.get(key).unwrap_or("(none)"));
+            let (a, b) = (
+                first.info.get(key).unwrap_or("(none)"),
+                p.info.get(key).unwrap_or("(none)"),
+            );
             if a != b {
-                return merr(format!("{key} differs: {} has '{a}', {} has '{b}'", first_path.display(), path.display()));
+                return merr(format!(
+                    "{key} differs: {} has '{a}', {} has '{b}'",
+                    first_path.display(),
+                    path.display()
+                ));
             }
         }
         if p.sums.light.is_some() != first.sums.light.is_some() {
-            return merr(format!("{} has light-tracing sums and {} has none", first_path.display(), path.display()));
+            return merr(format!(
+                "{} has light-tracing sums and {} has none",
+                first_path.display(),
+                path.display()
+            ));
         }
     }
     // Windows, each with its parts' sample ranges.
@@ -43,18 +59,41 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
     }
     let mut window_ranges: Vec<(Crop, Vec<usize>, Vec<SampleRange>)> = Vec::new();
     for (crop, idx) in &windows {
-        let mut ranges: Vec<(SampleRange, usize)> = idx.iter().flat_map(|&i| parts[i].1.ranges.iter().map(move |r| (*r, i))).collect();
+        let mut ranges: Vec<(SampleRange, usize)> = idx
+            .iter()
+            .flat_map(|&i| parts[i].1.ranges.iter().map(move |r| (*r, i)))
+            .collect();
         ranges.sort();
         for w in ranges.windows(2) {
             if w[1].0.start < w[0].0.end {
-                return merr(format!("sample ranges {} ({}) and {} ({}) overlap in window {crop}", w[0].0, parts[w[0].1].0.display(), w[1].0, parts[w[1].1].0.display()));
+                return merr(format!(
+                    "sample ranges {} ({}) and {} ({}) overlap in window {crop}",
+                    w[0].0,
+                    parts[w[0].1].0.display(),
+                    w[1].0,
+                    parts[w[1].1].0.display()
+                ));
             }
         }
-        window_ranges.push((*crop, idx.clone(), ranges.into_iter().map(|r| r.0).collect()));
+        window_ranges.push((
+            *crop,
+            idx.clone(),
+            ranges.into_iter().map(|r| r.0).collect(),
+        ));
     }
-    for (a, b) in window_ranges.iter().enumerate().flat_map(|(i, a)| window_ranges[i + 1..].iter().map(move |b| (a, b))) {
+    for (a, b) in window_ranges
+        .iter()
+        .enumerate()
+        .flat_map(|(i, a)| window_ranges[i + 1..].iter().map(move |b| (a, b)))
+    {
         if a.0.overlaps(&b.0) {
-            return merr(format!("tiles {} (crop {}) and {} (crop {}) overlap", names(parts, &a.1), a.0, names(parts, &b.1), b.0));
+            return merr(format!(
+                "tiles {} (crop {}) and {} (crop {}) overlap",
+                names(parts, &a.1),
+                a.0,
+                names(parts, &b.1),
+                b.0
+            ));
         }
         if a.2 != b.2 {
             return merr(format!(
@@ -68,10 +107,18 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
             ));
         }
     }
-    let bounds = window_ranges.iter().fold(window_ranges[0].0, |u, w| u.union(&w.0));
+    let bounds = window_ranges
+        .iter()
+        .fold(window_ranges[0].0, |u, w| u.union(&w.0));
     let covered: u64 = window_ranges.iter().map(|w| w.0.pixels()).sum();
     if covered != bounds.pixels() {
-        let hole = (bounds.y0..bounds.y1).flat_map(|y| (bounds.x0..bounds.x1).map(move |x| (x, y))).find(|&(x, y)| !window_ranges.iter().any(|w| x >= w.0.x0 && x < w.0.x1 && y >= w.0.y0 && y < w.0.y1));
+        let hole = (bounds.y0..bounds.y1)
+            .flat_map(|y| (bounds.x0..bounds.x1).map(move |x| (x, y)))
+            .find(|&(x, y)| {
+                !window_ranges
+                    .iter()
+                    .any(|w| x >= w.0.x0 && x < w.0.x1 && y >= w.0.y0 && y < w.0.y1)
+            });
         let (x, y) = hole.unwrap_or_default();
         return merr(format!("tiles are missing: they cover {covered} of the {} pixels of window {bounds} (pixel {x},{y} is in none)", bounds.pixels()));
     }
@@ -82,7 +129,12 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
     }
     for w in ranges.windows(2) {
         if w[0].end < w[1].start {
-            warnings.push(format!("samples {}..{} are missing (no part holds them): the merge has {} spp", w[0].end, w[1].start, ranges.iter().map(|r| r.len() as u64).sum::<u64>()));
+            warnings.push(format!(
+                "samples {}..{} are missing (no part holds them): the merge has {} spp",
+                w[0].end,
+                w[1].start,
+                ranges.iter().map(|r| r.len() as u64).sum::<u64>()
+            ));
         }
     }
     let mut sums = Accumulation::new(bounds.width(), bounds.height(), first.sums.light.is_some());
@@ -102,8 +154,20 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
     info.set(keys::CROP, bounds.to_string());
     info.set(keys::SAMPLE_RANGE, format_ranges(&joined));
     info.set(keys::SPP, sums.spp.to_string());
-    let time: f64 = parts.iter().filter_map(|(_, p)| p.info.get(keys::RENDER_TIME)?.parse::<f64>().ok()).sum();
+    let time: f64 = parts
+        .iter()
+        .filter_map(|(_, p)| p.info.get(keys::RENDER_TIME)?.parse::<f64>().ok())
+        .sum();
     info.set(keys::RENDER_TIME, format!("{time:.3}"));
     info.set(keys::MERGED_FROM, parts.len().to_string());
-    Ok(Merged { part: Part { info, full: first.full, crop: bounds, ranges: joined, sums }, warnings })
+    Ok(Merged {
+        part: Part {
+            info,
+            full: first.full,
+            crop: bounds,
+            ranges: joined,
+            sums,
+        },
+        warnings,
+    })
 }

@@ -27,7 +27,13 @@ pub struct Accumulation {
 impl Accumulation {
     pub fn new(width: u32, height: u32, with_light: bool) -> Accumulation {
         let n = width as usize * height as usize;
-        Accumulation { width, height, camera: vec![[0.0; 4]; n], light: with_light.then(|| vec![[0.0; 3]; n]), spp: 0 }
+        Accumulation {
+            width,
+            height,
+            camera: vec![[0.0; 4]; n],
+            light: with_light.then(|| vec![[0.0; 3]; n]),
+            spp: 0,
+        }
     }
 
     /// The estimate: camera sums over their counts plus light sums over the samples.
@@ -48,7 +54,10 @@ impl Accumulation {
     pub fn add_at(&mut self, o: &Accumulation, at: (u32, u32)) {
         for y in 0..o.height {
             for x in 0..o.width {
-                let (src, dst) = ((y * o.width + x) as usize, ((y + at.1) * self.width + x + at.0) as usize);
+                let (src, dst) = (
+                    (y * o.width + x) as usize,
+                    ((y + at.1) * self.width + x + at.0) as usize,
+                );
                 for k in 0..4 {
                     self.camera[dst][k] += o.camera[src][k];
                 }
@@ -92,7 +101,10 @@ pub struct RenderInfo {
 
 impl RenderInfo {
     pub fn get(&self, key: &str) -> Option<&str> {
-        self.entries.iter().find(|(k, _)| k == key).map(|(_, v)| v.as_str())
+        self.entries
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, v)| v.as_str())
     }
     /// Sets `key` (in place if present, else appended).
     pub fn set(&mut self, key: &str, value: impl Into<String>) {
@@ -106,7 +118,11 @@ impl RenderInfo {
 
 /// Sample ranges as `a..b,c..d`.
 pub fn format_ranges(ranges: &[SampleRange]) -> String {
-    ranges.iter().map(|r| r.to_string()).collect::<Vec<_>>().join(",")
+    ranges
+        .iter()
+        .map(|r| r.to_string())
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 /// A part read back: its metadata, window, sample ranges and sums.
@@ -129,33 +145,74 @@ pub enum PartError {
 }
 
 fn ferr(path: &Path, msg: impl Into<String>) -> PartError {
-    PartError::File { path: path.to_path_buf(), msg: msg.into() }
+    PartError::File {
+        path: path.to_path_buf(),
+        msg: msg.into(),
+    }
 }
 
 /// Writes a part: the estimate, the sums and `info` (which must name `full_size`, `crop`),
 /// atomically.
-pub fn write_part(path: &Path, sums: &Accumulation, info: &RenderInfo, crop: Crop) -> Result<(), PartError> {
+pub fn write_part(
+    path: &Path,
+    sums: &Accumulation,
+    info: &RenderInfo,
+    crop: Crop,
+) -> Result<(), PartError> {
     use exr::prelude::*;
     let img = sums.resolve();
     let (w, h) = (sums.width as usize, sums.height as usize);
     let mut channels: Vec<AnyChannel<FlatSamples>> = Vec::new();
-    let mut add = |name: &str, v: Vec<f32>| channels.push(AnyChannel::new(name, FlatSamples::F32(v)));
+    let mut add =
+        |name: &str, v: Vec<f32>| channels.push(AnyChannel::new(name, FlatSamples::F32(v)));
     for (k, c) in ["R", "G", "B"].iter().enumerate() {
         add(c, img.data.iter().skip(k).step_by(3).copied().collect());
-        add(&format!("camera.{c}"), sums.camera.iter().map(|p| p[k] as f32).collect());
+        add(
+            &format!("camera.{c}"),
+            sums.camera.iter().map(|p| p[k] as f32).collect(),
+        );
         if let Some(l) = &sums.light {
-            add(&format!("light.{c}"), l.iter().map(|p| p[k] as f32).collect());
+            add(
+                &format!("light.{c}"),
+                l.iter().map(|p| p[k] as f32).collect(),
+            );
         }
     }
-    add("camera.N", sums.camera.iter().map(|p| p[3] as f32).collect());
-    let mut attrs = LayerAttributes { layer_position: Vec2(crop.x0 as i32, crop.y0 as i32), ..LayerAttributes::default() };
+    add(
+        "camera.N",
+        sums.camera.iter().map(|p| p[3] as f32).collect(),
+    );
+    let mut attrs = LayerAttributes {
+        layer_position: Vec2(crop.x0 as i32, crop.y0 as i32),
+        ..LayerAttributes::default()
+    };
     for (k, v) in &info.entries {
-        attrs.other.insert(Text::from(format!("{PREFIX}{k}").as_str()), AttributeValue::Text(Text::from(v.as_str())));
+        attrs.other.insert(
+            Text::from(format!("{PREFIX}{k}").as_str()),
+            AttributeValue::Text(Text::from(v.as_str())),
+        );
     }
-    let layer = Layer::new((w, h), attrs, Encoding::default(), AnyChannels::sort(SmallVec::from_vec(channels)));
-    let full = info.get(keys::FULL_SIZE).and_then(parse_size).unwrap_or((crop.x1, crop.y1));
-    let image = Image::new(ImageAttributes::new(IntegerBounds::new((0, 0), (full.0 as usize, full.1 as usize))), layer);
-    super::write_atomically(path, |tmp| image.write().to_file(tmp).map_err(|e| e.to_string())).map_err(|e| ferr(path, e.to_string()))
+    let layer = Layer::new(
+        (w, h),
+        attrs,
+        Encoding::default(),
+        AnyChannels::sort(SmallVec::from_vec(channels)),
+    );
+    let full = info
+        .get(keys::FULL_SIZE)
+        .and_then(parse_size)
+        .unwrap_or((crop.x1, crop.y1));
+    let image = Image::new(
+        ImageAttributes::new(IntegerBounds::new(
+            (0, 0),
+            (full.0 as usize, full.1 as usize),
+        )),
+        layer,
+    );
+    super::write_atomically(path, |tmp| {
+        image.write().to_file(tmp).map_err(|e| e.to_string())
+    })
+    .map_err(|e| ferr(path, e.to_string()))
 }
 
 fn parse_size(s: &str) -> Option<(u32, u32)> {
@@ -167,34 +224,132 @@ fn parse_size(s: &str) -> Option<(u32, u32)> {
 /// what is missing).
 pub fn read_part(path: &Path) -> Result<Part, PartError> {
     use exr::prelude::*;
-    let image = read().no_deep_data().largest_resolution_level().all_channels().all_layers().all_attributes().from_file(path).map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
-    let layer = image.layer_data.first().ok_or_else(|| ferr(path, "no image layer"))?;
+    let image = read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .all_channels()
+        .all_layers()
+        .all_attributes()
+        .from_file(path)
+        .map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
+    let layer = image
+        .layer_data
+        .first()
+        .ok_or_else(|| ferr(path, "no image layer"))?;
     let mut info = RenderInfo::default();
-    let mut attrs: Vec<(String, String)> = layer.attributes.other.iter().chain(image.attributes.other.iter()).filter_map(|(k, v)| match v {
-        AttributeValue::Text(t) => k.to_string().strip_prefix(PREFIX).map(|k| (k.to_string(), t.to_string())),
-        _ => None,
-    }).collect();
+    let mut attrs: Vec<(String, String)> = layer
+        .attributes
+        .other
+        .iter()
+        .chain(image.attributes.other.iter())
+        .filter_map(|(k, v)| match v {
+            AttributeValue::Text(t) => k
+                .to_string()
+                .strip_prefix(PREFIX)
+                .map(|k| (k.to_string(), t.to_string())),
+            _ => None,
+        })
+        .collect();
     // HashMap order is arbitrary: print in the order parts are written.
-    let order = [keys::VERSION, keys::SCENE, keys::SCENE_HASH, keys::CAMERA, keys::FULL_SIZE, keys::CROP, keys::INTEGRATOR, keys::SETTINGS, keys::SEED, keys::SAMPLE_RANGE, keys::SPP, keys::RENDER_TIME, keys::DEVICE, keys::MERGED_FROM];
-    attrs.sort_by_key(|(k, _)| (order.iter().position(|o| o == k).unwrap_or(order.len()), k.clone()));
+    let order = [
+        keys::VERSION,
+        keys::SCENE,
+        keys::SCENE_HASH,
+        keys::CAMERA,
+        keys::FULL_SIZE,
+        keys::CROP,
+        keys::INTEGRATOR,
+        keys::SETTINGS,
+        keys::SEED,
+        keys::SAMPLE_RANGE,
+        keys::SPP,
+        keys::RENDER_TIME,
+        keys::DEVICE,
+        keys::MERGED_FROM,
+    ];
+    attrs.sort_by_key(|(k, _)| {
+        (
+            order.iter().position(|o| o == k).unwrap_or(order.len()),
+            k.clone(),
+        )
+    });
     info.entries = attrs;
-    let need = |k: &str| info.get(k).ok_or_else(|| ferr(path, format!("no bidir.{k} attribute: not a part written by bidir render")));
-    let full = parse_size(need(keys::FULL_SIZE)?).ok_or_else(|| ferr(path, "bidir.full_size is not WxH"))?;
-    let crop: super::Crop = need(keys::CROP)?.parse().map_err(|e: String| ferr(path, e))?;
+    let need = |k: &str| {
+        info.get(k).ok_or_else(|| {
+            ferr(
+                path,
+                format!("no bidir.{k} attribute: not a part written by bidir render"),
+            )
+        })
+    };
+    let full = parse_size(need(keys::FULL_SIZE)?)
+        .ok_or_else(|| ferr(path, "bidir.full_size is not WxH"))?;
+    let crop: super::Crop = need(keys::CROP)?
+        .parse()
+        .map_err(|e: String| ferr(path, e))?;
     crop.check(full.0, full.1).map_err(|e| ferr(path, e))?;
-    let ranges = need(keys::SAMPLE_RANGE)?.split(',').map(|r| r.parse::<SampleRange>()).collect::<std::result::Result<Vec<_>, String>>().map_err(|e| ferr(path, e))?;
+    let ranges = need(keys::SAMPLE_RANGE)?
+        .split(',')
+        .map(|r| r.parse::<SampleRange>())
+        .collect::<std::result::Result<Vec<_>, String>>()
+        .map_err(|e| ferr(path, e))?;
     let (w, h) = (layer.size.0 as u32, layer.size.1 as u32);
     if (w, h) != (crop.width(), crop.height()) {
-        return Err(ferr(path, format!("the image is {w}x{h} but its crop {crop} is {}x{}", crop.width(), crop.height())));
+        return Err(ferr(
+            path,
+            format!(
+                "the image is {w}x{h} but its crop {crop} is {}x{}",
+                crop.width(),
+                crop.height()
+            ),
+        ));
     }
-    let channel = |name: &str| layer.channel_data.list.iter().find(|c| c.name.to_string() == name).map(|c| c.sample_data.values_as_f32().map(f64::from).collect::<Vec<f64>>());
-    let req = |name: &str| channel(name).ok_or_else(|| ferr(path, format!("no {name} channel: not a part written by bidir render")));
-    let cam = [req("camera.R")?, req("camera.G")?, req("camera.B")?, req("camera.N")?];
+    let channel = |name: &str| {
+        layer
+            .channel_data
+            .list
+            .iter()
+            .find(|c| c.name.to_string() == name)
+            .map(|c| {
+                c.sample_data
+                    .values_as_f32()
+                    .map(f64::from)
+                    .collect::<Vec<f64>>()
+            })
+    };
+    let req = |name: &str| {
+        channel(name).ok_or_else(|| {
+            ferr(
+                path,
+                format!("no {name} channel: not a part written by bidir render"),
+            )
+        })
+    };
+    let cam = [
+        req("camera.R")?,
+        req("camera.G")?,
+        req("camera.B")?,
+        req("camera.N")?,
+    ];
     let light = match (channel("light.R"), channel("light.G"), channel("light.B")) {
         (Some(r), Some(g), Some(b)) => Some((0..r.len()).map(|i| [r[i], g[i], b[i]]).collect()),
         _ => None,
     };
     let spp: u64 = ranges.iter().map(|r| r.len() as u64).sum();
-    let sums = Accumulation { width: w, height: h, camera: (0..cam[0].len()).map(|i| [cam[0][i], cam[1][i], cam[2][i], cam[3][i]]).collect(), light, spp };
-    Ok(Part { info, full, crop, ranges, sums })
+    let sums = Accumulation {
+        width: w,
+        height: h,
+        camera: (0..cam[0].len())
+            .map(|i| [cam[0][i], cam[1][i], cam[2][i], cam[3][i]])
+            .collect(),
+        light,
+        spp,
+    };
+    Ok(Part {
+        info,
+        full,
+        crop,
+        ranges,
+        sums,
+    })
 }

@@ -36,7 +36,14 @@ type DeviceResult = Result<(Accumulation, u64, Vec<String>), RenderError>;
 /// Renders samples `settings.sample_start ..` `+ spp` of every pixel on the devices of
 /// `devices` (one context each; the same device may appear twice). `progress` is called
 /// after every pass of any device with all devices' progress.
-pub fn render_on_devices(devices: &[ContextOptions], scene: &Scene, camera: &Camera, settings: &RenderSettings, spp: u32, progress: &(dyn Fn(&[DeviceProgress]) + Sync)) -> Result<MultiRender, RenderError> {
+pub fn render_on_devices(
+    devices: &[ContextOptions],
+    scene: &Scene,
+    camera: &Camera,
+    settings: &RenderSettings,
+    spp: u32,
+    progress: &(dyn Fn(&[DeviceProgress]) + Sync),
+) -> Result<MultiRender, RenderError> {
     let next = AtomicU64::new(0);
     let status = Mutex::new(vec![DeviceProgress::default(); devices.len()]);
     let stop = || next.store(u64::MAX / 2, Ordering::SeqCst);
@@ -44,10 +51,13 @@ pub fn render_on_devices(devices: &[ContextOptions], scene: &Scene, camera: &Cam
     // kernels compile first does not take the whole render before the others can start.
     let ready = Barrier::new(devices.len());
     let run = |i: usize, opts: &ContextOptions| -> DeviceResult {
-        let setup = Context::new(opts).map_err(RenderError::from).and_then(|ctx| Renderer::new(&ctx, scene, camera, settings.clone()).map(|r| (ctx, r)));
+        let setup = Context::new(opts)
+            .map_err(RenderError::from)
+            .and_then(|ctx| Renderer::new(&ctx, scene, camera, settings.clone()).map(|r| (ctx, r)));
         ready.wait();
         let (ctx, mut r) = setup?;
-        status.lock().unwrap_or_else(|e| e.into_inner())[i].name = format!("{} #{i}", ctx.info().name);
+        status.lock().unwrap_or_else(|e| e.into_inner())[i].name =
+            format!("{} #{i}", ctx.info().name);
         // Whole BDPT iterations where the counter allows (see `Renderer::pass_at`).
         let align = r.sample_slices().max(1);
         let start = Instant::now();
@@ -87,7 +97,16 @@ pub fn render_on_devices(devices: &[ContextOptions], scene: &Scene, camera: &Cam
                 })
             })
             .collect();
-        handles.into_iter().map(|h| h.join().unwrap_or_else(|_| Err(RenderError::Unsupported("a device's render thread panicked".into())))).collect()
+        handles
+            .into_iter()
+            .map(|h| {
+                h.join().unwrap_or_else(|_| {
+                    Err(RenderError::Unsupported(
+                        "a device's render thread panicked".into(),
+                    ))
+                })
+            })
+            .collect()
     });
     let mut total: Option<Accumulation> = None;
     let (mut nan_samples, mut validation) = (0, Vec::new());
@@ -104,5 +123,10 @@ pub fn render_on_devices(devices: &[ContextOptions], scene: &Scene, camera: &Cam
         }
     }
     let sums = total.ok_or_else(|| RenderError::Unsupported("no device to render on".into()))?;
-    Ok(MultiRender { sums, nan_samples, devices: status.into_inner().unwrap_or_else(|e| e.into_inner()), validation })
+    Ok(MultiRender {
+        sums,
+        nan_samples,
+        devices: status.into_inner().unwrap_or_else(|e| e.into_inner()),
+        validation,
+    })
 }
