@@ -34,15 +34,26 @@ pub fn run(args: &MergeArgs) -> anyhow::Result<()> {
         }
     }
     let start = std::time::Instant::now();
-    let parts = args
+    // Every header is checked before a pixel is read or anything written; then the parts
+    // are read and added one at a time.
+    let headers = args
         .parts
         .iter()
-        .map(|p| Ok((p.clone(), part::read_part(p)?)))
+        .map(|p| Ok((p.clone(), part::read_part_header(p)?)))
         .collect::<anyhow::Result<Vec<_>>>()?;
-    let merged = merge::merge(&parts)?;
-    for w in &merged.warnings {
+    let plan = merge::plan(&headers)?;
+    for w in &plan.warnings {
         eprintln!("warning: {w}");
     }
+    let mut sums = plan.empty();
+    for (path, head) in &headers {
+        let p = part::read_part(path)?;
+        if p.crop != head.crop || p.ranges != head.ranges {
+            bail!("{}: changed while merging", path.display());
+        }
+        plan.add(&mut sums, &p);
+    }
+    let merged = plan.finish(sums);
     let m = &merged.part;
     // Everything is checked before anything is written.
     for o in &args.outputs {
@@ -54,7 +65,7 @@ pub fn run(args: &MergeArgs) -> anyhow::Result<()> {
     }
     println!(
         "merged {} parts: window {} of {}x{}, samples {} ({} spp), in {:.3} s",
-        parts.len(),
+        headers.len(),
         m.crop,
         m.full.0,
         m.full.1,

@@ -1,7 +1,7 @@
 //! `bidir merge`: parts of one render (disjoint sample ranges, disjoint crop windows) summed
 //! into the image one render of their union makes.
 
-use super::part::{format_ranges, keys, Accumulation, Part, PartError};
+use super::part::{format_ranges, keys, Accumulation, Part, PartError, PartHeader};
 use super::{Crop, SampleRange};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -12,7 +12,7 @@ pub struct Merged {
     pub warnings: Vec<String>,
 }
 
-fn names(parts: &[(PathBuf, Part)], idx: &[usize]) -> String {
+fn names(parts: &[(PathBuf, PartHeader)], idx: &[usize]) -> String {
     idx.iter()
         .map(|&i| parts[i].0.display().to_string())
         .collect::<Vec<_>>()
@@ -26,6 +26,58 @@ fn names(parts: &[(PathBuf, Part)], idx: &[usize]) -> String {
 /// rectangle the windows span, are reported as warnings (the merge is still an unbiased
 /// estimate, with fewer samples; or a crop of the image).
 pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
+    let headers: Vec<(PathBuf, PartHeader)> = parts
+        .iter()
+        .map(|(p, part)| (p.clone(), part.header()))
+        .collect();
+    let plan = plan(&headers)?;
+    let mut sums = plan.empty();
+    for (_, p) in parts {
+        plan.add(&mut sums, p);
+    }
+    Ok(plan.finish(sums))
+}
+
+/// A checked merge: the merged part's header and the warnings, before any pixel is read.
+pub struct Plan {
+    pub header: PartHeader,
+    pub warnings: Vec<String>,
+}
+
+impl Plan {
+    /// The merged window's sums, zero.
+    pub fn empty(&self) -> Accumulation {
+        let mut a = Accumulation::new(
+            self.header.crop.width(),
+            self.header.crop.height(),
+            self.header.has_light,
+        );
+        a.spp = self.header.ranges.iter().map(|r| r.len() as u64).sum();
+        a
+    }
+    /// Adds a part (one of those planned) into `sums`.
+    pub fn add(&self, sums: &mut Accumulation, part: &Part) {
+        let b = self.header.crop;
+        sums.add_at(&part.sums, (part.crop.x0 - b.x0, part.crop.y0 - b.y0));
+    }
+    pub fn finish(self, sums: Accumulation) -> Merged {
+        let h = self.header;
+        Merged {
+            part: Part {
+                info: h.info,
+                full: h.full,
+                crop: h.crop,
+                ranges: h.ranges,
+                sums,
+            },
+            warnings: self.warnings,
+        }
+    }
+}
+
+/// Checks `parts` (path, header) as [`merge`] does and plans the merge: the files are read
+/// one at a time afterwards, so a merge holds one part and the result in memory.
+pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
     let merr = |m: String| Err(PartError::Merge(m));
     let Some((first_path, first)) = parts.first() else {
         return merr("nothing to merge".into());
@@ -44,7 +96,7 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
                 ));
             }
         }
-        if p.sums.light.is_some() != first.sums.light.is_some() {
+        if p.has_light != first.has_light {
             return merr(format!(
                 "{} has light-tracing sums and {} has none",
                 first_path.display(),
@@ -137,11 +189,7 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
             ));
         }
     }
-    let mut sums = Accumulation::new(bounds.width(), bounds.height(), first.sums.light.is_some());
-    sums.spp = ranges.iter().map(|r| r.len() as u64).sum();
-    for (_, p) in parts {
-        sums.add_at(&p.sums, (p.crop.x0 - bounds.x0, p.crop.y0 - bounds.y0));
-    }
+    let spp: u64 = ranges.iter().map(|r| r.len() as u64).sum();
     // Contiguous ranges print as one.
     let mut joined: Vec<SampleRange> = Vec::new();
     for r in &ranges {
@@ -153,20 +201,20 @@ pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
     let mut info = first.info.clone();
     info.set(keys::CROP, bounds.to_string());
     info.set(keys::SAMPLE_RANGE, format_ranges(&joined));
-    info.set(keys::SPP, sums.spp.to_string());
+    info.set(keys::SPP, spp.to_string());
     let time: f64 = parts
         .iter()
         .filter_map(|(_, p)| p.info.get(keys::RENDER_TIME)?.parse::<f64>().ok())
         .sum();
     info.set(keys::RENDER_TIME, format!("{time:.3}"));
     info.set(keys::MERGED_FROM, parts.len().to_string());
-    Ok(Merged {
-        part: Part {
+    Ok(Plan {
+        header: PartHeader {
             info,
             full: first.full,
             crop: bounds,
             ranges: joined,
-            sums,
+            has_light: first.has_light,
         },
         warnings,
     })

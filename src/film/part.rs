@@ -135,6 +135,29 @@ pub struct Part {
     pub sums: Accumulation,
 }
 
+/// What a part is, without its pixels (all a merge checks; read from the EXR header).
+#[derive(Clone, Debug)]
+pub struct PartHeader {
+    pub info: RenderInfo,
+    pub full: (u32, u32),
+    pub crop: Crop,
+    pub ranges: Vec<SampleRange>,
+    /// Whether it has light-tracing sums (BDPT).
+    pub has_light: bool,
+}
+
+impl Part {
+    pub fn header(&self) -> PartHeader {
+        PartHeader {
+            info: self.info.clone(),
+            full: self.full,
+            crop: self.crop,
+            ranges: self.ranges.clone(),
+            has_light: self.sums.light.is_some(),
+        }
+    }
+}
+
 /// Why a part could not be read or written, or parts not merged.
 #[derive(Debug, thiserror::Error)]
 pub enum PartError {
@@ -220,30 +243,18 @@ fn parse_size(s: &str) -> Option<(u32, u32)> {
     Some((w.parse().ok()?, h.parse().ok()?))
 }
 
-/// Reads a part written by [`write_part`] (an EXR without bidir's sums is refused, naming
-/// what is missing).
-pub fn read_part(path: &Path) -> Result<Part, PartError> {
-    use exr::prelude::*;
-    let image = read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .all_layers()
-        .all_attributes()
-        .from_file(path)
-        .map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
-    let layer = image
-        .layer_data
-        .first()
-        .ok_or_else(|| ferr(path, "no image layer"))?;
-    let mut info = RenderInfo::default();
-    let mut attrs: Vec<(String, String)> = layer
-        .attributes
-        .other
-        .iter()
-        .chain(image.attributes.other.iter())
+/// Text attributes `bidir.*` in print order.
+fn render_info<'a>(
+    attrs: impl Iterator<
+        Item = (
+            &'a exr::meta::attribute::Text,
+            &'a exr::meta::attribute::AttributeValue,
+        ),
+    >,
+) -> RenderInfo {
+    let mut entries: Vec<(String, String)> = attrs
         .filter_map(|(k, v)| match v {
-            AttributeValue::Text(t) => k
+            exr::meta::attribute::AttributeValue::Text(t) => k
                 .to_string()
                 .strip_prefix(PREFIX)
                 .map(|k| (k.to_string(), t.to_string())),
@@ -267,13 +278,22 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
         keys::DEVICE,
         keys::MERGED_FROM,
     ];
-    attrs.sort_by_key(|(k, _)| {
+    entries.sort_by_key(|(k, _)| {
         (
             order.iter().position(|o| o == k).unwrap_or(order.len()),
             k.clone(),
         )
     });
-    info.entries = attrs;
+    RenderInfo { entries }
+}
+
+/// The header of a part: metadata checked against the image's size and channels.
+fn header(
+    path: &Path,
+    info: RenderInfo,
+    size: (u32, u32),
+    channels: &[String],
+) -> Result<PartHeader, PartError> {
     let need = |k: &str| {
         info.get(k).ok_or_else(|| {
             ferr(
@@ -293,49 +313,114 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
         .map(|r| r.parse::<SampleRange>())
         .collect::<std::result::Result<Vec<_>, String>>()
         .map_err(|e| ferr(path, e))?;
-    let (w, h) = (layer.size.0 as u32, layer.size.1 as u32);
-    if (w, h) != (crop.width(), crop.height()) {
+    if size != (crop.width(), crop.height()) {
         return Err(ferr(
             path,
             format!(
-                "the image is {w}x{h} but its crop {crop} is {}x{}",
+                "the image is {}x{} but its crop {crop} is {}x{}",
+                size.0,
+                size.1,
                 crop.width(),
                 crop.height()
             ),
         ));
     }
-    let channel = |name: &str| {
+    for name in ["camera.R", "camera.G", "camera.B", "camera.N"] {
+        if !channels.iter().any(|c| c == name) {
+            return Err(ferr(
+                path,
+                format!("no {name} channel: not a part written by bidir render"),
+            ));
+        }
+    }
+    let has_light = ["light.R", "light.G", "light.B"]
+        .iter()
+        .all(|l| channels.iter().any(|c| c == l));
+    Ok(PartHeader {
+        info,
+        full,
+        crop,
+        ranges,
+        has_light,
+    })
+}
+
+/// Reads only the header of a part written by [`write_part`] (for checks before reading
+/// pixels).
+pub fn read_part_header(path: &Path) -> Result<PartHeader, PartError> {
+    let meta = exr::meta::MetaData::read_from_file(path, false)
+        .map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
+    let h = meta
+        .headers
+        .first()
+        .ok_or_else(|| ferr(path, "no image layer"))?;
+    let info = render_info(
+        h.own_attributes
+            .other
+            .iter()
+            .chain(h.shared_attributes.other.iter()),
+    );
+    let channels: Vec<String> = h.channels.list.iter().map(|c| c.name.to_string()).collect();
+    header(
+        path,
+        info,
+        (h.layer_size.0 as u32, h.layer_size.1 as u32),
+        &channels,
+    )
+}
+
+/// Reads a part written by [`write_part`] (an EXR without bidir's sums is refused, naming
+/// what is missing).
+pub fn read_part(path: &Path) -> Result<Part, PartError> {
+    use exr::prelude::*;
+    let image = read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .all_channels()
+        .all_layers()
+        .all_attributes()
+        .from_file(path)
+        .map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
+    let layer = image
+        .layer_data
+        .first()
+        .ok_or_else(|| ferr(path, "no image layer"))?;
+    let info = render_info(
+        layer
+            .attributes
+            .other
+            .iter()
+            .chain(image.attributes.other.iter()),
+    );
+    let names: Vec<String> = layer
+        .channel_data
+        .list
+        .iter()
+        .map(|c| c.name.to_string())
+        .collect();
+    let (w, h) = (layer.size.0 as u32, layer.size.1 as u32);
+    let head = header(path, info, (w, h), &names)?;
+    let channel = |name: &str| -> Vec<f64> {
         layer
             .channel_data
             .list
             .iter()
             .find(|c| c.name.to_string() == name)
-            .map(|c| {
-                c.sample_data
-                    .values_as_f32()
-                    .map(f64::from)
-                    .collect::<Vec<f64>>()
+            .map_or_else(Vec::new, |c| {
+                c.sample_data.values_as_f32().map(f64::from).collect()
             })
     };
-    let req = |name: &str| {
-        channel(name).ok_or_else(|| {
-            ferr(
-                path,
-                format!("no {name} channel: not a part written by bidir render"),
-            )
-        })
-    };
     let cam = [
-        req("camera.R")?,
-        req("camera.G")?,
-        req("camera.B")?,
-        req("camera.N")?,
+        channel("camera.R"),
+        channel("camera.G"),
+        channel("camera.B"),
+        channel("camera.N"),
     ];
-    let light = match (channel("light.R"), channel("light.G"), channel("light.B")) {
-        (Some(r), Some(g), Some(b)) => Some((0..r.len()).map(|i| [r[i], g[i], b[i]]).collect()),
-        _ => None,
-    };
-    let spp: u64 = ranges.iter().map(|r| r.len() as u64).sum();
+    let light = head.has_light.then(|| {
+        let (r, g, b) = (channel("light.R"), channel("light.G"), channel("light.B"));
+        (0..r.len()).map(|i| [r[i], g[i], b[i]]).collect()
+    });
+    let spp: u64 = head.ranges.iter().map(|r| r.len() as u64).sum();
     let sums = Accumulation {
         width: w,
         height: h,
@@ -346,10 +431,10 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
         spp,
     };
     Ok(Part {
-        info,
-        full,
-        crop,
-        ranges,
+        info: head.info,
+        full: head.full,
+        crop: head.crop,
+        ranges: head.ranges,
         sums,
     })
 }
