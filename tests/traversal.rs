@@ -213,7 +213,7 @@ fn cornell_box_matches_cpu_hit_for_hit() {
     let g = bidir::gpu_data::gpu_camera(cam);
     for _ in 0..60_000 {
         let (x, y) = (rng.next_f32() * 2.0 - 1.0, 1.0 - rng.next_f32() * 2.0);
-        let d = (g.forward + g.right * x + g.up * y).truncate().normalize();
+        let d = (g.forward + (g.right * x + g.up * y).truncate()).normalize();
         rays.push(ray(cam.eye, d, 3.0e38));
     }
     for tri_test in [TriTest::Watertight, TriTest::Woop] {
@@ -243,7 +243,7 @@ fn sponza_matches_cpu_hit_for_hit() {
     let mut rays: Vec<GpuRay> = (0..100_000)
         .map(|_| {
             let (x, y) = (rng.next_f32() * 2.0 - 1.0, 1.0 - rng.next_f32() * 2.0);
-            ray(cam.eye, (g.forward + g.right * x + g.up * y).truncate().normalize(), 3.0e38)
+            ray(cam.eye, (g.forward + (g.right * x + g.up * y).truncate()).normalize(), 3.0e38)
         })
         .collect();
     let light = Vec3::new(0.0, 40.0, 0.0);

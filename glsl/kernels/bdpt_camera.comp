@@ -227,19 +227,23 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
 void main() {
     // Invocation -> (slice, pixel): slice j is camera sample sample_base + j, joined (by the
     // megakernel joins) to light path j * pixels + pixel.
-    uint tiles = tiled_count(pc.camera.size.xy);
+    // The film holds the camera's window; random numbers and light paths follow the full
+    // image's pixel.
+    uint tiles = tiled_count(pc.camera.window_size);
     uint samples = max(pc.camera_samples, 1u);
     uint slice = gl_GlobalInvocationID.x / tiles;
     bool valid;
-    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x % tiles, pc.camera.size.xy, valid);
+    uvec2 wp = tiled_pixel(gl_GlobalInvocationID.x % tiles, pc.camera.window_size, valid);
     if (!valid || slice >= samples) {
         return;
     }
-    uint pixels = pc.camera.size.x * pc.camera.size.y;
-    uint pixel = px.y * pc.camera.size.x + px.x;
-    Rng rng = rng_init(pixel, pc.sample_base + slice, pc.seed);
+    uint pixels = pc.camera.window_size.x * pc.camera.window_size.y;
+    uint pixel = wp.y * pc.camera.window_size.x + wp.x;
+    uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
+    uint image_pixel = px.y * pc.camera.size.x + px.x;
+    Rng rng = rng_init(image_pixel, pc.sample_base + slice, pc.seed);
     vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
-    vec3 l = camera_path(slice * pixels + pixel, xy, rng);
+    vec3 l = camera_path(slice * pc.camera.size.x * pc.camera.size.y + image_pixel, xy, rng);
     vec4 add = vec4(l, 1.0);
     if (any(isnan(l)) || any(isinf(l))) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);

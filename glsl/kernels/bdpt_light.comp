@@ -60,7 +60,13 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, float pd, vec3 bet
         atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);
         return;
     }
-    uint pix = uint(raster.y) * pc.camera.size.x + uint(raster.x);
+    // Only the camera's window is on the film.
+    uvec2 origin = uvec2(pc.camera.window_x, pc.camera.window_y);
+    uvec2 wp = uvec2(raster) - origin;
+    if (any(lessThan(uvec2(raster), origin)) || any(greaterThanEqual(wp, pc.camera.window_size))) {
+        return;
+    }
+    uint pix = wp.y * pc.camera.window_size.x + wp.x;
     atomicAdd(splat[3u * pix + 0u], contrib.r);
     atomicAdd(splat[3u * pix + 1u], contrib.g);
     atomicAdd(splat[3u * pix + 2u], contrib.b);

@@ -126,21 +126,24 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
 
 void main() {
     // Invocation -> (slice, pixel): slice j takes samples j, j + S, j + 2S, ... of the pass.
-    uint tiles = tiled_count(pc.camera.size.xy);
+    // The film holds the camera's window; random numbers follow the full image's pixel.
+    uint tiles = tiled_count(pc.camera.window_size);
     uint slices = max(pc.slices, 1u);
     uint slice = gl_GlobalInvocationID.x / tiles;
     bool valid;
-    uvec2 px = tiled_pixel(gl_GlobalInvocationID.x % tiles, pc.camera.size.xy, valid);
+    uvec2 wp = tiled_pixel(gl_GlobalInvocationID.x % tiles, pc.camera.window_size, valid);
     if (!valid || slice >= slices) {
         return;
     }
-    uint pixel = px.y * pc.camera.size.x + px.x;
+    uint pixel = wp.y * pc.camera.window_size.x + wp.x;
+    uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
+    uint image_pixel = px.y * pc.camera.size.x + px.x;
     vec2 xy = vec2(px);
     vec3 sum = vec3(0.0);
     float count = 0.0;
     uint bad = 0u;
     for (uint s = slice; s < pc.spp; s += slices) {
-        Rng rng = rng_init(pixel, pc.sample_base + s, pc.seed);
+        Rng rng = rng_init(image_pixel, pc.sample_base + s, pc.seed);
         vec2 jitter = vec2(rng_next(rng), rng_next(rng));
         vec3 l = trace_path(xy + jitter, rng);
         if (any(isnan(l)) || any(isinf(l))) {
@@ -153,7 +156,7 @@ void main() {
     if (slices == 1u) {
         accum[pixel] += vec4(sum, count);
     } else {
-        slices_out[slice * pc.camera.size.x * pc.camera.size.y + pixel] = vec4(sum, count);
+        slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel] = vec4(sum, count);
     }
     if (bad > 0u) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], bad);

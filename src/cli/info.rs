@@ -25,6 +25,9 @@ pub fn run(args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if args.kernels {
         return super::info_kernels::run(&args.scene, opts);
     }
+    if let Some(p) = args.scene.scene.as_ref().filter(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"))) {
+        return super::merge::info(p);
+    }
     if args.builtin || args.scene.scene.is_some() {
         return super::info_scene::run(&args.scene);
     }

@@ -6,7 +6,10 @@ mod diff;
 mod info;
 mod info_kernels;
 mod info_scene;
+mod merge;
+mod part_args;
 mod render;
+mod render_devices;
 pub mod scene_args;
 mod settings_args;
 mod view;
@@ -17,7 +20,8 @@ use clap::{Parser, Subcommand};
 #[command(name = "bidir", version, about = "Bidirectional path tracing on the GPU through Vulkan compute")]
 pub struct Cli {
     /// Vulkan device: an index from `bidir info` or a substring of its name
-    /// (default: discrete > integrated > CPU). Also BIDIR_DEVICE.
+    /// (default: discrete > integrated > CPU). Also BIDIR_DEVICE. `bidir render` also takes
+    /// `all` or a comma-separated list (e.g. 0,1) and renders on every one at once.
     #[arg(long, global = true)]
     pub device: Option<String>,
     #[command(subcommand)]
@@ -27,13 +31,17 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// List Vulkan devices (subgroup size and operations, memory) and which one bidir picks;
-    /// with a scene file (or --builtin), report on the scene instead (no GPU needed).
+    /// with a scene file (or --builtin), report on the scene instead (no GPU needed); with an
+    /// EXR written by bidir, print its render metadata.
     Info(info::InfoArgs),
     /// Render a scene (default: the built-in Cornell box) to EXR/PNG.
     Render(Box<render::RenderArgs>),
     /// Show the progressive render in a window: drag to look, WASD/QE to move, scroll for
     /// speed, F frame, R reset, 1/2/3 pt/pt-nee/bdpt, +/- exposure, P screenshot, Esc quit.
     View(Box<view::ViewArgs>),
+    /// Merge parts of one render (sample ranges, crop windows) into the image one render of
+    /// their union makes.
+    Merge(merge::MergeArgs),
     /// Compare two EXR images: RMSE, relMSE, mean ratio, heatmap.
     Diff(diff::DiffArgs),
     /// Benchmarks with GPU timestamps (warm-up, repetitions, median).
@@ -55,6 +63,7 @@ pub fn run() -> anyhow::Result<()> {
         Command::View(args) => view::run(&args, &opts),
         Command::Bench(cmd) => bench::run(&cmd, &opts),
         Command::Diff(args) => diff::run(&args),
+        Command::Merge(args) => merge::run(&args),
         Command::Converge(args) => converge::run(&args, &opts),
     }
 }

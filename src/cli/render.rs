@@ -23,6 +23,8 @@ pub struct RenderArgs {
     pub time: Option<f64>,
     #[command(flatten)]
     pub settings: SettingsArgs,
+    #[command(flatten)]
+    pub part: super::part_args::PartArgs,
     /// Output image(s): .exr (linear float) or .png (sRGB); may repeat.
     #[arg(short = 'o', long = "output")]
     pub outputs: Vec<PathBuf>,
@@ -54,13 +56,19 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     }
     let camera = loaded.camera.clone();
     let integrator = args.integrator.integrator()?;
-    let settings = args.settings.settings(integrator)?;
+    let mut settings = args.settings.settings(integrator)?;
+    args.part.apply(&mut settings, &camera)?;
+    let info_settings = settings.clone();
+    if let Some(devices) = super::render_devices::device_list(opts)? {
+        return super::render_devices::run(args, &loaded, &settings, &devices, &outputs, reference);
+    }
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
     let t_setup = Instant::now();
     let mut r = Renderer::new(&ctx, &loaded.scene, &camera, settings)?;
     let setup = t_setup.elapsed();
+    super::part_args::warn_unaligned(&args.part, &info_settings, r.sample_slices());
 
-    let pixels = camera.width as f64 * camera.height as f64;
+    let pixels = settings_window_pixels(&info_settings, &camera);
     let bar = indicatif::ProgressBar::new(0);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:32}] {pos}/{len} {msg} (eta {eta})")
@@ -81,7 +89,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
             })?;
         }
         None => {
-            let spp = args.spp.unwrap_or(64);
+            let spp = args.part.sample_range.map_or(args.spp.unwrap_or(64), |r| r.len());
             if spp == 0 {
                 bail!("--spp must be at least 1");
             }
@@ -96,15 +104,16 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let elapsed = start.elapsed();
     let img = r.image()?;
     let nan = r.nan_samples()?;
-    for o in &outputs {
-        film::write_image(o, &img, args.exposure)?;
-    }
     let spp = r.samples();
+    let range = bidir::film::SampleRange { start: info_settings.sample_start, end: info_settings.sample_start + spp };
+    let info = super::part_args::render_info(&loaded, &info_settings, range, elapsed.as_secs_f64(), &ctx.info().name);
+    let crop = info_settings.crop.unwrap_or(film::Crop::full(camera.width, camera.height));
+    super::part_args::write_outputs(&outputs, &r.sums()?, &img, &info, crop, args.exposure)?;
     println!(
         "{} {}x{} {}: {spp} spp in {:.3} s ({:.2} Msamples/s; setup {:.2} s), {} NaN/Inf samples dropped",
         ctx.info().name,
-        camera.width,
-        camera.height,
+        img.width,
+        img.height,
         integrator.name(),
         elapsed.as_secs_f64(),
         spp as f64 * pixels / elapsed.as_secs_f64() / 1e6,
@@ -127,4 +136,9 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         println!("wrote {}", o.display());
     }
     Ok(())
+}
+
+/// Pixels rendered: the crop window's, or the whole image's.
+fn settings_window_pixels(settings: &bidir::render::RenderSettings, camera: &bidir::scene::Camera) -> f64 {
+    settings.crop.map_or(camera.width as f64 * camera.height as f64, |c| c.pixels() as f64)
 }

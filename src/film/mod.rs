@@ -1,9 +1,13 @@
 //! Images on the host: the resolved film, EXR/PNG files (written to a temporary file and
 //! renamed, so a crash never leaves half an image), and error metrics against references.
 
+mod crop;
 mod io;
+pub mod merge;
 pub mod metrics;
+pub mod part;
 
+pub use crop::{Crop, SampleRange};
 pub use io::{linear_to_srgb, read_exr, to_srgb8, write_atomically, write_image, write_png_rgb8, ImageIoError};
 
 /// A linear RGB float image, rows top to bottom.

@@ -10,7 +10,7 @@
 
 include!("abi_macros.rs");
 
-use glam::{IVec4, UVec4, Vec4};
+use glam::{IVec4, UVec2, UVec4, Vec3, Vec4};
 
 gpu_consts! {
     // ---- Workgroup sizes -------------------------------------------------------------
@@ -249,13 +249,22 @@ gpu_structs! {
 
     /// A pinhole camera as kernels use it: `dir = forward + x * right + y * up` for
     /// x, y in [-1, 1] (right and up are pre-scaled by the field of view and aspect).
+    /// Kernels render the window of `window_size` pixels at (`window_x`, `window_y`) of the
+    /// full image (a crop; the whole image without one): projection and per-pixel random
+    /// numbers use full-image pixels, the film holds the window's.
     pub struct GpuCamera (80 bytes) {
-        pub eye: Vec4,
-        pub forward: Vec4,
+        pub eye: Vec3,
+        /// The window's left column in the full image.
+        pub window_x: u32,
+        pub forward: Vec3,
+        /// The window's top row in the full image.
+        pub window_y: u32,
         pub right: Vec4,
         pub up: Vec4,
-        /// (width, height, 0, 0)
-        pub size: UVec4,
+        /// Full image (width, height) in pixels.
+        pub size: UVec2,
+        /// The window's (width, height): the film's size.
+        pub window_size: UVec2,
     }
 
     /// Push constants of gen_secondary.comp.

@@ -1,6 +1,6 @@
 use crate::gpu::abi::GpuCamera;
 use crate::scene::Camera;
-use glam::UVec4;
+use glam::UVec2;
 
 /// The kernel form of a pinhole camera, with the conventions of
 /// `shared/scenes/cornell-box/README.md`: right = forward x up, row 0 on top, vertical field
@@ -12,12 +12,20 @@ pub fn gpu_camera(cam: &Camera) -> GpuCamera {
     let tan_half = (cam.fov_y_deg.to_radians() * 0.5).tan();
     let aspect = cam.width as f32 / cam.height as f32;
     GpuCamera {
-        eye: cam.eye.extend(0.0),
-        forward: forward.extend(0.0),
+        eye: cam.eye,
+        window_x: 0,
+        forward,
+        window_y: 0,
         right: (right * tan_half * aspect).extend(0.0),
         up: (up * tan_half).extend(0.0),
-        size: UVec4::new(cam.width, cam.height, 0, 0),
+        size: UVec2::new(cam.width, cam.height),
+        window_size: UVec2::new(cam.width, cam.height),
     }
+}
+
+/// `camera` restricted to the window `crop` of its image (the projection is unchanged).
+pub fn gpu_camera_window(camera: &GpuCamera, crop: crate::film::Crop) -> GpuCamera {
+    GpuCamera { window_x: crop.x0, window_y: crop.y0, window_size: UVec2::new(crop.width(), crop.height()), ..*camera }
 }
 
 #[cfg(test)]

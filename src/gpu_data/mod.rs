@@ -9,6 +9,6 @@ mod features;
 mod tiles;
 
 pub use bvh::GpuBvh;
-pub use camera::gpu_camera;
+pub use camera::{gpu_camera, gpu_camera_window};
 pub use features::SceneFeatures;
 pub use tiles::tiled_invocations;

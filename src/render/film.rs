@@ -72,6 +72,20 @@ impl Film {
         Ok(img)
     }
 
+    /// The film's sums after `samples` samples per pixel (one BDPT iteration per sample).
+    pub fn sums(&self, ctx: &Context, samples: u32) -> Result<crate::film::part::Accumulation> {
+        let acc: Vec<Vec4> = ctx.read_buffer(&self.accum)?;
+        let splat: Option<Vec<f32>> = self.splat.as_ref().map(|s| ctx.read_buffer(s)).transpose()?;
+        let n = (self.width * self.height) as usize;
+        Ok(crate::film::part::Accumulation {
+            width: self.width,
+            height: self.height,
+            camera: acc.iter().take(n).map(|a| [a.x as f64, a.y as f64, a.z as f64, a.w as f64]).collect(),
+            light: splat.map(|s| s.chunks_exact(3).take(n).map(|c| [c[0] as f64, c[1] as f64, c[2] as f64]).collect()),
+            spp: samples as u64,
+        })
+    }
+
     /// The slices buffer for kernels to bind (the film's own accumulation buffer stands in
     /// when there is none; kernels then write `accum` directly).
     pub(crate) fn slices_buffer(&self) -> &Buffer {

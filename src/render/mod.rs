@@ -14,6 +14,7 @@
 
 mod bdpt;
 mod film;
+pub mod multi;
 pub mod gpu_scene;
 pub mod lights;
 mod pacing;
@@ -28,7 +29,7 @@ pub use pt::PathTracer;
 pub use tonemap::{Tonemap, TonemapSettings};
 
 use crate::bvh::{BuildOptions, Bvh, BvhError, BvhLayout};
-use crate::film::RgbImage;
+use crate::film::{part::Accumulation, Crop, RgbImage};
 use crate::gpu::abi::{BdptPush, GpuCamera, PtPush};
 use crate::scene::{Camera, Scene};
 use crate::vk::{Context, Image, Recorder, VkError};
@@ -127,11 +128,18 @@ pub struct RenderSettings {
     /// responsive and far from the GPU timeout).
     pub pass_target: Duration,
     pub bvh: BuildOptions,
+    /// Index of the first sample rendered (`--sample-range START..`): a render of samples
+    /// `a..b` uses the random numbers a render from 0 uses for them, so disjoint ranges are
+    /// independent parts of one estimate (see `film::merge`).
+    pub sample_start: u32,
+    /// Render only this window of the camera's image (`--crop`); the projection, the random
+    /// numbers of every pixel and BDPT's light paths stay those of the full image.
+    pub crop: Option<Crop>,
 }
 
 impl RenderSettings {
     pub fn new(integrator: Integrator) -> Self {
-        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, light_path_ratio: 1.0, sample_slices: 0, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default() }
+        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, light_path_ratio: 1.0, sample_slices: 0, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default(), sample_start: 0, crop: None }
     }
 }
 
@@ -144,6 +152,8 @@ pub enum RenderError {
     Bvh(#[from] BvhError),
     #[error("camera '{0}' has an empty image ({1}x{2})")]
     EmptyImage(String, u32, u32),
+    #[error("{0}")]
+    Crop(String),
     #[error("{0}")]
     Unsupported(String),
     #[error("{0}")]
@@ -208,6 +218,23 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
     s as u32
 }
 
+/// The window of `camera`'s image that `settings` render (the whole image without a crop).
+fn window(settings: &RenderSettings, camera: &Camera) -> Result<Crop, RenderError> {
+    let crop = settings.crop.unwrap_or(Crop::full(camera.width, camera.height));
+    crop.check(camera.width, camera.height).map_err(RenderError::Crop)?;
+    Ok(crop)
+}
+
+/// The pixels that size the sample slices: BDPT's light paths are the full image's
+/// whatever the window (so a crop's iterations are the full render's), a path tracer's
+/// invocations are the window's.
+fn slice_pixels(settings: &RenderSettings, full_pixels: u32, window: Crop) -> u32 {
+    match settings.integrator {
+        Integrator::Bdpt(_) => full_pixels,
+        _ => window.pixels() as u32,
+    }
+}
+
 /// The kernels of `integrator` for a film of `pixels` pixels.
 fn build_kernels(ctx: &Context, scene: &GpuScene, integrator: Integrator, pixels: u32, settings: &RenderSettings, slices: u32) -> Result<Kernels, RenderError> {
     check_layout(scene.bvh.layout)?;
@@ -235,11 +262,25 @@ impl Renderer {
         if settings.all_material_code {
             gscene.features = gscene.features.with_all_material_code();
         }
+        let window = window(&settings, camera)?;
         let pixels = camera.width * camera.height;
-        let slices = sample_slices(ctx, &settings, pixels);
+        let slices = sample_slices(ctx, &settings, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
-        let film = Film::new(ctx, camera.width, camera.height, matches!(kernels, Kernels::Bdpt(_)), slices)?;
-        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera: crate::gpu_data::gpu_camera(camera), settings, samples: 0, pacing: PassModel::default(), slices })
+        let film = Film::new(ctx, window.width(), window.height(), matches!(kernels, Kernels::Bdpt(_)), slices)?;
+        let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
+        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera, settings, samples: 0, pacing: PassModel::default(), slices })
+    }
+
+    /// Most samples of a pixel one pass renders at once (BDPT iterations hold this many
+    /// camera samples, aligned to multiples of it: see [`Renderer::pass`]).
+    pub fn sample_slices(&self) -> u32 {
+        self.slices
+    }
+
+    /// The film's sums (camera samples, light-tracing splats) and the samples they hold,
+    /// for parts that merge (`film::part`).
+    pub fn sums(&self) -> Result<Accumulation, RenderError> {
+        Ok(self.film.sums(&self.ctx, self.samples)?)
     }
 
     pub fn gpu_scene(&self) -> &GpuScene {
@@ -255,7 +296,7 @@ impl Renderer {
     /// Clears the film (e.g. after the camera moved).
     pub fn reset(&mut self, camera: Option<&Camera>) -> Result<(), RenderError> {
         if let Some(c) = camera {
-            self.camera = crate::gpu_data::gpu_camera(c);
+            self.camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(c), window(&self.settings, c)?);
         }
         self.film.clear(&self.ctx)?;
         self.samples = 0;
@@ -287,13 +328,14 @@ impl Renderer {
         if camera.width == 0 || camera.height == 0 {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
-        if (camera.width, camera.height) != (self.film.width, self.film.height) {
+        let window = window(&self.settings, camera)?;
+        if (camera.width, camera.height) != (self.camera.size.x, self.camera.size.y) {
             let pixels = camera.width * camera.height;
-            let slices = sample_slices(&self.ctx, &self.settings, pixels);
+            let slices = sample_slices(&self.ctx, &self.settings, slice_pixels(&self.settings, pixels, window));
             // Path tracers keep their kernels; BDPT's store is sized by the pixel count.
             let bdpt = matches!(self.kernels, Kernels::Bdpt(_));
             let kernels = if bdpt { Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings, slices)?) } else { None };
-            let film = Film::new(&self.ctx, camera.width, camera.height, bdpt, slices)?;
+            let film = Film::new(&self.ctx, window.width(), window.height(), bdpt, slices)?;
             if let Some(k) = kernels {
                 self.kernels = k;
             }
@@ -306,10 +348,12 @@ impl Renderer {
     /// Switches to another integrator, keeping the scene and its BVH on the GPU, and clears
     /// the film. On error the renderer is unchanged.
     pub fn set_integrator(&mut self, integrator: Integrator) -> Result<(), RenderError> {
-        let pixels = self.film.width * self.film.height;
+        let pixels = self.camera.size.x * self.camera.size.y;
         let mut settings = self.settings.clone();
         settings.integrator = integrator;
-        let slices = sample_slices(&self.ctx, &settings, pixels);
+        let (x0, y0) = (self.camera.window_x, self.camera.window_y);
+        let window = Crop { x0, y0, x1: x0 + self.film.width, y1: y0 + self.film.height };
+        let slices = sample_slices(&self.ctx, &settings, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(&self.ctx, &self.scene, integrator, pixels, &settings, slices)?;
         let film = Film::new(&self.ctx, self.film.width, self.film.height, matches!(kernels, Kernels::Bdpt(_)), slices)?;
         self.kernels = kernels;
@@ -337,14 +381,21 @@ impl Renderer {
         }
     }
 
-    /// Renders `spp` more samples per pixel in one submission.
+    /// Renders `spp` more samples per pixel in one submission (the ones after those
+    /// rendered so far, from `sample_start`).
     pub fn pass(&mut self, spp: u32) -> Result<(), RenderError> {
+        self.pass_at(self.settings.sample_start + self.samples, spp)
+    }
+
+    /// Renders samples `first..first + spp` of every pixel in one submission and adds them to
+    /// the film (several devices render the passes of one image this way).
+    pub fn pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
         let s = &self.settings;
         match &self.kernels {
             Kernels::Pt(pt) => {
                 let push = PtPush {
                     camera: self.camera,
-                    sample_base: self.samples,
+                    sample_base: first,
                     spp,
                     seed: s.seed,
                     emitter_count: self.scene.emitter_count,
@@ -363,13 +414,17 @@ impl Renderer {
                 };
                 self.ctx.submit("bdpt pass", |rec| {
                     // Iterations of up to `slices` camera samples per pixel, their light
-                    // paths traced together.
+                    // paths traced together. Iterations start at multiples of `slices`
+                    // whatever the pass sizes, so the light paths (and the light vertex
+                    // cache) of a sample depend on its index only: passes, sample ranges and
+                    // devices split one render exactly.
                     let mut done = 0;
                     while done < spp {
-                        let samples = self.slices.min(spp - done);
+                        let base = first + done;
+                        let samples = (self.slices - base % self.slices).min(spp - done);
                         let push = BdptPush {
                             camera: self.camera,
-                            sample_base: self.samples + done,
+                            sample_base: base,
                             seed: s.seed,
                             emitter_count: self.scene.emitter_count,
                             emitter_power: self.scene.emitter_power,
@@ -396,13 +451,31 @@ impl Renderer {
     /// One adaptive pass, at most `max_spp` samples: sized by the pass model to take about
     /// `pass_target`, or one sample per pixel while nothing has been measured (calibration).
     fn adaptive_pass(&mut self, max_spp: u32) -> Result<u32, RenderError> {
+        let first = self.settings.sample_start + self.samples;
+        let mut spp = self.next_pass_spp().min(max_spp).max(1);
+        if matches!(self.kernels, Kernels::Bdpt(_)) && self.slices > 1 {
+            // Whole BDPT iterations (see `pass_at`): a pass ends at a multiple of the slices
+            // unless the render ends first.
+            spp = ((first + spp).next_multiple_of(self.slices) - first).min(max_spp);
+        }
+        self.adaptive_pass_at(first, spp)?;
+        Ok(spp)
+    }
+
+    /// Samples the next adaptive pass would render: sized by the pass model to take about
+    /// `pass_target`, or one sample per pixel while nothing has been measured (calibration).
+    pub fn next_pass_spp(&self) -> u32 {
         let target = self.settings.pass_target.as_secs_f64();
         let sized = if self.pacing.known() { self.pacing.spp_within(target) } else { 1 };
-        let spp = sized.clamp(1, self.max_pass_spp()).min(max_spp).max(1);
+        sized.clamp(1, self.max_pass_spp())
+    }
+
+    /// Renders samples `first..first + spp` and teaches the pass model how long it took.
+    pub fn adaptive_pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
         let t = Instant::now();
-        self.pass(spp)?;
+        self.pass_at(first, spp)?;
         self.pacing.record(spp, t.elapsed().as_secs_f64());
-        Ok(spp)
+        Ok(())
     }
 
     /// Most samples per pixel in one pass. On CPU devices 16: llvmpipe (Mesa's gallivm loop
