@@ -8,6 +8,7 @@ mod info_scene;
 mod render;
 pub mod scene_args;
 mod settings_args;
+pub mod signals;
 mod view;
 
 use clap::{Parser, Subcommand};
@@ -42,9 +43,17 @@ pub enum Command {
     Converge(Box<converge::ConvergeArgs>),
 }
 
+/// Prints a loader's warnings to stderr.
+fn print_warnings(warnings: &[String]) {
+    for w in warnings {
+        eprintln!("warning: {w}");
+    }
+}
+
 pub fn run() -> anyhow::Result<()> {
     let cli = Cli::parse();
     let mut opts = bidir::vk::ContextOptions::from_env();
+    print_warnings(&opts.env_warnings);
     if cli.device.is_some() {
         opts.device = cli.device.clone();
     }

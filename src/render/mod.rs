@@ -17,12 +17,14 @@ mod film;
 pub mod gpu_scene;
 pub mod lights;
 mod pt;
+mod stop;
 mod tonemap;
 
 pub use bdpt::{Bdpt, Join};
 pub use film::Film;
 pub use gpu_scene::{GpuScene, SceneFeatures};
 pub use pt::PathTracer;
+pub use stop::{request_stop, stop_requested};
 pub use tonemap::{Tonemap, TonemapSettings};
 
 use crate::bvh::{BuildOptions, Bvh, BvhError};
@@ -386,22 +388,24 @@ impl Renderer {
         }
     }
 
-    /// Renders until `spp` samples per pixel in total.
+    /// Renders until `spp` samples per pixel in total, or until [`request_stop`] (then after
+    /// the pass in flight).
     pub fn render_spp(&mut self, spp: u32, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
         let start = Instant::now();
-        while self.samples < spp {
+        while self.samples < spp && !(self.samples > 0 && stop_requested()) {
             self.adaptive_pass(spp - self.samples)?;
             progress(Progress { samples: self.samples, elapsed: start.elapsed() });
         }
         Ok(())
     }
 
-    /// Renders passes until `time` has passed (at least one sample).
+    /// Renders passes until `time` has passed or [`request_stop`] is called (at least one
+    /// sample either way).
     pub fn render_time(&mut self, time: Duration, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
         let start = Instant::now();
         loop {
             let left = time.saturating_sub(start.elapsed());
-            if self.samples > 0 && left.is_zero() {
+            if self.samples > 0 && (left.is_zero() || stop_requested()) {
                 break;
             }
             // Shrink the pass so it ends near the deadline.

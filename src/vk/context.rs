@@ -31,6 +31,9 @@ pub struct ContextOptions {
     pub instance_extensions: Vec<&'static CStr>,
     /// Extra device extensions (the swapchain for the viewer).
     pub device_extensions: Vec<&'static CStr>,
+    /// Environment variables [`ContextOptions::from_env`] could not use, for the caller to
+    /// print.
+    pub env_warnings: Vec<String>,
 }
 
 impl Default for ContextOptions {
@@ -41,6 +44,7 @@ impl Default for ContextOptions {
             gpu_timeout: Duration::from_secs(60),
             instance_extensions: vec![],
             device_extensions: vec![],
+            env_warnings: vec![],
         }
     }
 }
@@ -52,8 +56,15 @@ impl ContextOptions {
         let mut o = ContextOptions::default();
         o.validation = std::env::var("BIDIR_VALIDATION").is_ok_and(|v| v == "1" || v.eq_ignore_ascii_case("true"));
         o.device = std::env::var("BIDIR_DEVICE").ok().filter(|s| !s.is_empty());
-        if let Some(s) = std::env::var("BIDIR_GPU_TIMEOUT_S").ok().and_then(|s| s.parse::<f64>().ok()) {
-            o.gpu_timeout = Duration::from_secs_f64(s.max(0.001));
+        if let Ok(v) = std::env::var("BIDIR_GPU_TIMEOUT_S") {
+            match v.trim().parse::<f64>() {
+                Ok(s) if s > 0.0 && s <= 1e6 => o.gpu_timeout = Duration::from_secs_f64(s.max(0.001)),
+                _ => o.env_warnings.push(format!(
+                    "BIDIR_GPU_TIMEOUT_S={} is not a number of seconds in (0, 1000000]; using {} s",
+                    crate::text::quote(&v),
+                    o.gpu_timeout.as_secs_f64()
+                )),
+            }
         }
         o
     }
