@@ -347,6 +347,18 @@ fn glb_truncated() {
 
 // ---- issue 18 ---------------------------------------------------------------------------
 
+/// Found by the loader fuzzer: a `usemtl` name echoed raw (terminal escapes) in the error.
+#[test]
+fn unknown_material_name_is_escaped() {
+    let dir = std::env::temp_dir().join(format!("bidir-usemtl-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("esc.obj");
+    std::fs::write(&obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Stencil\x1b[2J\nf 1 2 3\n").unwrap();
+    let e = scene::load(&obj, &LoadOptions { strict: true }).expect_err("strict").to_string();
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(e.ends_with("unknown material 'Stencil\\u{1b}[2J'"), "{e:?}");
+}
+
 #[test]
 fn gltf_node_with_two_parents() {
     let e = error("gltf_two_parents.gltf");
@@ -383,7 +395,7 @@ fn mtl_huge_emission_is_refused() {
 fn emitted_power_overflow_is_refused() {
     let mut s = scene::Scene::builtin_cornell_box();
     s.positions.iter_mut().for_each(|p| *p *= 1e16);
-    let e = s.check_emission().err().expect("refused").to_string();
+    let e = s.check_emission().expect_err("refused").to_string();
     assert!(e.starts_with(scene::BUILTIN_SOURCE) && e.contains("emitted power") && e.contains("overflows"), "{e}");
     assert!(scene::Scene::builtin_cornell_box().check_emission().is_ok());
 }

@@ -110,7 +110,7 @@ impl Camera {
 
     /// Can this camera form an image?
     pub fn validate(&self) -> Result<(), SceneError> {
-        let bad = |msg: String| Err(SceneError::Camera { name: self.name.clone(), msg });
+        let bad = |msg: String| Err(SceneError::Camera { name: crate::text::quote(&self.name), msg });
         if !(self.eye.is_finite() && self.target.is_finite() && self.up.is_finite()) {
             return bad("eye, target and up must be finite".into());
         }

@@ -152,7 +152,7 @@ impl Scene {
     pub fn check_emission(&self) -> Result<(), SceneError> {
         let err = |msg: String| Err(SceneError::Parse { file: self.source.clone().into(), msg });
         let max = crate::limits::MAX_RADIANCE;
-        if let Some(m) = self.materials.iter().find(|m| !(m.emission.max_element() <= max)) {
+        if let Some(m) = self.materials.iter().find(|m| !m.emission.is_finite() || m.emission.max_element() > max) {
             return err(format!(
                 "material '{}': emitted radiance {:e} is too large (limit {max:e} per channel)",
                 crate::text::quote(&m.name),
@@ -160,7 +160,7 @@ impl Scene {
             ));
         }
         let (power, _) = self.total_emitted_power();
-        if !power.is_finite() || !(luminance(power) <= f32::MAX) {
+        if !power.is_finite() || !luminance(power).is_finite() {
             return err(format!(
                 "the emitted power (pi x area x radiance, summed) overflows float32 ({:e}); make the emitters smaller or dimmer",
                 power.max_element()

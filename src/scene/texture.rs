@@ -108,13 +108,13 @@ impl<'a> Requests<'a> {
                                     file: req.file.clone(),
                                     line,
                                     what: "texture",
-                                    name: req.name.clone(),
+                                    name: crate::text::quote(&req.name),
                                     missing: path.clone(),
                                 },
                                 None => SceneError::Texture {
                                     file: req.file.clone(),
                                     at: req.at.clone(),
-                                    msg: format!("image '{}' not found (looked for {})", req.name, path.display()),
+                                    msg: format!("image '{}' not found (looked for {})", crate::text::quote(&req.name), path.display()),
                                 },
                             },
                             format!(
@@ -128,7 +128,7 @@ impl<'a> Requests<'a> {
                             SceneError::Texture {
                                 file: req.file.clone(),
                                 at: req.at.clone(),
-                                msg: format!("cannot decode texture '{}': {why}", req.name),
+                                msg: format!("cannot decode texture '{}': {}", crate::text::quote(&req.name), crate::text::sanitize(&why)),
                             },
                             format!("{}: cannot decode texture '{}': {why}; using none", req.at, req.name),
                         ),

@@ -155,7 +155,7 @@ fn check_forest(file: &Path, doc: &Document, roots: &[Node]) -> Result<(), Scene
 
 /// `node 3 "Name"`, for messages.
 fn node_element(node: &Node) -> String {
-    format!("node {}{}", node.index(), node.name().map_or(String::new(), |n| format!(" \"{n}\"")))
+    format!("node {}{}", node.index(), node.name().map_or(String::new(), |n| format!(" \"{}\"", crate::text::quote(n))))
 }
 
 /// Whether a file that *requires* extension `ext` can still be loaded, approximately: the
@@ -311,12 +311,7 @@ fn geometry(
         }
         let world = parent * local_matrix(&node).ok_or_else(|| gerr(element(), "transform is not finite".into()))?;
         if let Some(mesh) = node.mesh() {
-            if instances.len() as u64 >= MAX_INSTANCES {
-                return Err(gerr(
-                    element(),
-                    format!("the scene has more than {} mesh instances, the limit", thousands(MAX_INSTANCES)),
-                ));
-            }
+            check_size(instances.len() as u64 + 1, 0, 0).map_err(|msg| gerr(element(), msg))?;
             instances.push((mesh.index(), world));
         }
         if node.skin().is_some() {
@@ -369,17 +364,7 @@ fn geometry(
             tris += p.triangles.len() as u64;
         }
     }
-    if tris > MAX_TRIANGLES || verts > MAX_TRIANGLES * 3 {
-        return Err(gerr(
-            "scene".into(),
-            format!(
-                "{} instances of its meshes make {} triangles, over the limit of {}",
-                thousands(instances.len() as u64),
-                thousands(tris),
-                thousands(MAX_TRIANGLES)
-            ),
-        ));
-    }
+    check_size(instances.len() as u64, tris, verts).map_err(|msg| gerr("scene".into(), msg))?;
     let (verts, tris) = (verts as usize, tris as usize);
     let mut b = Builder::new(with_normals, with_uvs);
     b.reserve(verts, tris);
@@ -397,6 +382,23 @@ fn geometry(
         }
     }
     Ok((b, cameras, used_default))
+}
+
+/// The flattened scene's size against the limits, before it is allocated.
+fn check_size(instances: u64, tris: u64, verts: u64) -> Result<(), String> {
+    if instances > MAX_INSTANCES {
+        return Err(format!("{} mesh instances, over the limit of {}", thousands(instances), thousands(MAX_INSTANCES)));
+    }
+    if tris > MAX_TRIANGLES || verts > 3 * MAX_TRIANGLES {
+        return Err(format!(
+            "{} instances of its meshes make {} triangles ({} vertices), over the limit of {} triangles",
+            thousands(instances),
+            thousands(tris),
+            thousands(verts),
+            thousands(MAX_TRIANGLES)
+        ));
+    }
+    Ok(())
 }
 
 /// The node's local matrix; `None` if not finite. Rotations are normalised (exporters write
@@ -420,7 +422,7 @@ fn read_mesh(
     default_material: u32,
     w: &mut Warnings,
 ) -> Result<Vec<Prim>, SceneError> {
-    let mesh_name = mesh.name().map_or(String::new(), |n| format!(" \"{n}\""));
+    let mesh_name = mesh.name().map_or(String::new(), |n| format!(" \"{}\"", crate::text::quote(n)));
     let mut out = Vec::new();
     for (pi, prim) in mesh.primitives().enumerate() {
         let element = format!("mesh {}{mesh_name}, primitive {pi}", mesh.index());
@@ -529,5 +531,14 @@ mod tests {
         assert_eq!(assemble(Mode::TriangleStrip, &[0, 1, 2, 3]), vec![[0, 1, 2], [2, 1, 3]]);
         assert_eq!(assemble(Mode::TriangleFan, &[0, 1, 2, 3]), vec![[1, 2, 0], [2, 3, 0]]);
         assert!(assemble(Mode::TriangleStrip, &[0, 1]).is_empty());
+    }
+
+    #[test]
+    fn size_limits() {
+        assert!(check_size(1000, 1 << 20, 1 << 20).is_ok());
+        let e = check_size(1 << 20, 1 << 40, 1 << 41).unwrap_err();
+        assert!(e.contains("1,099,511,627,776 triangles") && e.contains("limit of 268,435,456"), "{e}");
+        let e = check_size(1 << 30, 1 << 30, 1 << 30).unwrap_err();
+        assert!(e.contains("1,073,741,824 mesh instances, over the limit of 16,777,216"), "{e}");
     }
 }
