@@ -26,8 +26,11 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
+/// The binary under test; BIDIR_TEST_BIN runs these cases against another build (e.g. an
+/// older one, to see them fail).
 fn bidir(args: &[&str]) -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_bidir"));
+    let bin = std::env::var_os("BIDIR_TEST_BIN").unwrap_or_else(|| env!("CARGO_BIN_EXE_bidir").into());
+    let mut c = Command::new(bin);
     c.args(args)
         .env("BIDIR_VALIDATION", "1")
         .env_remove("BIDIR_GPU_TIMEOUT_S");
