@@ -357,6 +357,11 @@ fn unknown_material_name_is_escaped() {
     let e = scene::load(&obj, &LoadOptions { strict: true }).expect_err("strict").to_string();
     std::fs::remove_dir_all(&dir).ok();
     assert!(e.ends_with("unknown material 'Stencil\\u{1b}[2J'"), "{e:?}");
+    // And a face vertex of garbage (also a fuzzer finding).
+    let e = scene::load_obj_str("esc.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3/\x1b[2J\r\n", &|_| None, &LoadOptions::default())
+        .expect_err("bad face")
+        .to_string();
+    assert!(!e.chars().any(char::is_control) && e.contains("'3/\\u{1b}[2J'"), "{e:?}");
 }
 
 #[test]

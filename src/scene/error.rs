@@ -74,8 +74,9 @@ impl SceneError {
         }
     }
 
+    /// A line error; its message quotes the line, so it is escaped and truncated here.
     pub(crate) fn syntax(file: &Path, line: usize, msg: impl Into<String>) -> Self {
-        SceneError::Syntax { file: file.to_path_buf(), line, msg: msg.into() }
+        SceneError::Syntax { file: file.to_path_buf(), line, msg: crate::text::sanitize(&msg.into()) }
     }
 
     pub(crate) fn io(file: &Path, source: std::io::Error) -> Self {
