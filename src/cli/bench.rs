@@ -86,6 +86,10 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         let layout = if most == 3 { "cwbvh" } else { "bvh2" };
         anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {layout})");
     }
+    if let Some(path) = &a.json {
+        bidir::film::check_writable(path)?;
+    }
+    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
     let mut o = traversal::Options { kinds, warmup: a.warmup, repetitions: a.reps.max(5), ..Default::default() };
@@ -107,9 +111,8 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();
     if let Some(path) = &a.json {
-        let tmp = path.with_extension("json.tmp");
-        std::fs::write(&tmp, report.to_json().to_pretty()).with_context(|| format!("cannot write {}", tmp.display()))?;
-        std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
+        let json = report.to_json().to_pretty();
+        bidir::film::write_atomically(path, |tmp| std::fs::write(tmp, json).map_err(|e| e.to_string()))?;
         println!("wrote {}", path.display());
     }
     Ok(())

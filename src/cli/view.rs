@@ -54,6 +54,8 @@ pub fn run(args: &ViewArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let settings = args.settings.settings(args.integrator.integrator()?)?;
     let loaded = args.scene.load()?;
     super::print_warnings(&loaded.warnings);
+    // Ctrl-C in the terminal: quit at once, without a half-written screenshot.
+    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let mut v = ViewOptions::new(loaded.scene, loaded.camera, settings);
     v.exposure = args.exposure;
     v.vsync = if args.no_vsync { Vsync::Off } else { Vsync::On };
