@@ -8,6 +8,8 @@
 //!   Cornell box, derived data (emitters, bounds, sizes). Needs no GPU.
 //! - [`render`]: integrators on the GPU, the progressive film, the display tonemap.
 //! - [`viewer`]: `bidir view`, the film live in a window with a fly camera.
+//! - [`text`]: untrusted text (file contents, flag values) made safe to print.
+//! - [`limits`]: scene, texture, film and image size limits, checked before allocating.
 
 #![deny(unsafe_code)]
 
@@ -17,8 +19,10 @@ pub mod bvh;
 pub mod film;
 pub mod gpu;
 pub mod gpu_data;
+pub mod limits;
 pub mod render;
 pub mod scene;
+pub mod text;
 pub mod trace;
 pub mod viewer;
 pub mod vk;

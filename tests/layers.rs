@@ -10,17 +10,19 @@ use std::path::{Path, PathBuf};
 /// Layer of each top-level module of `src/lib.rs`, from the bottom. A module may use only
 /// modules of a strictly lower layer.
 const LAYERS: &[(&str, u32)] = &[
-    ("vk", 0),
-    ("scene", 0),
-    ("film", 0),
-    ("gpu", 1),
-    ("compute", 2),
-    ("bvh", 2),
-    ("gpu_data", 3),
-    ("render", 4),
-    ("trace", 4),
-    ("viewer", 5),
-    ("bench", 5),
+    ("text", 0),
+    ("limits", 0),
+    ("vk", 1),
+    ("scene", 1),
+    ("film", 1),
+    ("gpu", 2),
+    ("compute", 3),
+    ("bvh", 3),
+    ("gpu_data", 4),
+    ("render", 5),
+    ("trace", 5),
+    ("viewer", 6),
+    ("bench", 6),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -345,6 +345,75 @@ fn glb_truncated() {
     assert_element(&e, "garbage.glb", "file", &[]);
 }
 
+// ---- issue 18 ---------------------------------------------------------------------------
+
+/// Found by the loader fuzzer: a `usemtl` name echoed raw (terminal escapes) in the error.
+#[test]
+fn unknown_material_name_is_escaped() {
+    let dir = std::env::temp_dir().join(format!("bidir-usemtl-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("esc.obj");
+    std::fs::write(&obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Stencil\x1b[2J\nf 1 2 3\n").unwrap();
+    let e = scene::load(&obj, &LoadOptions { strict: true }).expect_err("strict").to_string();
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(e.ends_with("unknown material 'Stencil\\u{1b}[2J'"), "{e:?}");
+    // And a face vertex of garbage (also a fuzzer finding).
+    let e = scene::load_obj_str("esc.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3/\x1b[2J\r\n", &|_| None, &LoadOptions::default())
+        .expect_err("bad face")
+        .to_string();
+    assert!(!e.chars().any(char::is_control) && e.contains("'3/\\u{1b}[2J'"), "{e:?}");
+}
+
+#[test]
+fn gltf_node_with_two_parents() {
+    let e = error("gltf_two_parents.gltf");
+    assert_element(&e, "gltf_two_parents.gltf", "node 1 \"Shared\"", &["has two parents, nodes 0 and 2", "forest"]);
+}
+
+#[test]
+fn glb_bad_magic_says_so() {
+    let e = error("glb_bad_magic.glb");
+    assert_element(&e, "glb_bad_magic.glb", "file", &["not a GLB file (magic \"GLB\\x00\", expected \"glTF\")"]);
+}
+
+#[test]
+fn gltf_camera_aspect_zero_warns() {
+    let l = load("gltf_camera_aspect_zero.gltf", false).unwrap();
+    let file = bad("gltf_camera_aspect_zero.gltf").display().to_string();
+    assert!(
+        l.warnings.iter().any(|w| w.starts_with(&file) && w.contains("camera 0 \"CamNode\": aspect ratio 0 is not positive")),
+        "{:?}",
+        l.warnings
+    );
+    assert_eq!((l.scene.cameras[0].width, l.scene.cameras[0].height), (1920, 1080));
+}
+
+#[test]
+fn mtl_huge_emission_is_refused() {
+    let e = error("obj_huge_ke.obj");
+    assert_element(&e, "obj_huge_ke.obj", "material 'lamp': emitted radiance 3e38 is too large", &["limit 1e12"]);
+}
+
+/// Radiance within the limit on a vast emitter: pi x area x radiance overflows float32.
+/// (Loaders drop such triangles as degenerate; added lights and other producers may not.)
+#[test]
+fn emitted_power_overflow_is_refused() {
+    let mut s = scene::Scene::builtin_cornell_box();
+    s.positions.iter_mut().for_each(|p| *p *= 1e16);
+    let e = s.check_emission().expect_err("refused").to_string();
+    assert!(e.starts_with(scene::BUILTIN_SOURCE) && e.contains("emitted power") && e.contains("overflows"), "{e}");
+    assert!(scene::Scene::builtin_cornell_box().check_emission().is_ok());
+}
+
+#[test]
+fn untrusted_text_is_escaped_and_truncated() {
+    let e = error("obj_control_chars.obj").to_string();
+    assert!(!e.chars().any(|c| c.is_control()), "{e:?}");
+    assert!(e.contains("'\\u{1b}[2J\\u{1b}]0;pwned\\u{7}\\u{0}' is not a number"), "{e}");
+    let e = error("obj_long_number.obj").to_string();
+    assert!(e.len() < 300 && e.contains("... (60000 characters)' is not a finite number"), "{e}");
+}
+
 /// Every file of the corpus, strict or not, through `catch_unwind`: an error or a scene,
 /// never a panic.
 #[test]

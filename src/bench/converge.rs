@@ -15,7 +15,7 @@ use std::time::{Duration, Instant};
 
 use super::chart::{self, ChartText, Panel, Series};
 use crate::film::{self, metrics, ImageIoError, RgbImage};
-use crate::render::{Integrator, RenderError, RenderSettings, Renderer};
+use crate::render::{stop_requested, Integrator, RenderError, RenderSettings, Renderer};
 use crate::scene::{Camera, Scene};
 use crate::vk::Context;
 
@@ -123,15 +123,20 @@ pub fn check(opts: &Options, camera: &Camera, reference: &RgbImage) -> Result<()
     Ok(())
 }
 
-/// Renders every integrator in turn; `on_point` hears of each snapshot as it is taken.
+/// Renders every integrator in turn; `on_point` hears of each snapshot as it is taken. After
+/// [`request_stop`](crate::render::request_stop) the integrator in flight ends with a last
+/// snapshot after its current pass and the rest are skipped.
 pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, reference: &RgbImage, opts: &Options, mut on_point: impl FnMut(Integrator, &Point)) -> Result<Vec<Curve>, ConvergeError> {
     check(opts, camera, reference)?;
-    opts.integrators
-        .iter()
-        .map(|&integrator| {
-            curve(ctx, scene, camera, reference, opts, integrator, &mut on_point).map_err(|source| ConvergeError::Render { integrator: integrator.name(), source })
-        })
-        .collect()
+    let mut curves = Vec::new();
+    for &integrator in &opts.integrators {
+        if stop_requested() && !curves.is_empty() {
+            break;
+        }
+        let c = curve(ctx, scene, camera, reference, opts, integrator, &mut on_point).map_err(|source| ConvergeError::Render { integrator: integrator.name(), source })?;
+        curves.push(c);
+    }
+    Ok(curves)
 }
 
 fn curve(ctx: &Context, scene: &Scene, camera: &Camera, reference: &RgbImage, opts: &Options, integrator: Integrator, on_point: &mut impl FnMut(Integrator, &Point)) -> Result<Curve, RenderError> {
@@ -163,6 +168,9 @@ fn curve(ctx: &Context, scene: &Scene, camera: &Camera, reference: &RgbImage, op
                     rendered += t.elapsed().as_secs_f64();
                 }
                 snapshot(&mut r, rendered)?;
+                if stop_requested() {
+                    break;
+                }
             }
         }
         Schedule::Spp(spps) => {
@@ -171,6 +179,9 @@ fn curve(ctx: &Context, scene: &Scene, camera: &Camera, reference: &RgbImage, op
                 r.render_spp(n, |_| {})?;
                 rendered += t.elapsed().as_secs_f64();
                 snapshot(&mut r, rendered)?;
+                if stop_requested() {
+                    break;
+                }
             }
         }
     }

@@ -35,9 +35,9 @@ pub struct TraversalArgs {
     /// 2017; leaves of at most 3 triangles).
     #[arg(long, default_value = "bvh2")]
     pub bvh: bidir::bvh::BvhLayout,
-    /// Most triangles per leaf (1..=16; 1..=3 with --bvh cwbvh).
-    #[arg(long, default_value_t = 4)]
-    pub leaf_size: u32,
+    /// Most triangles per leaf (1..=16; 1..=3 with --bvh cwbvh) [default: 4; 3 with cwbvh].
+    #[arg(long)]
+    pub leaf_size: Option<u32>,
     /// Disable spatial pre-splits.
     #[arg(long)]
     pub no_pre_split: bool,
@@ -80,12 +80,22 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         "diffuse" => vec![RayKind::Diffuse],
         other => anyhow::bail!("--rays {other}: expected primary | shadow | diffuse | all"),
     };
+    let (most, default) = if a.bvh == bidir::bvh::BvhLayout::Cwbvh { (3, 3) } else { (16, 4) };
+    let leaf_size = a.leaf_size.unwrap_or(default);
+    if !(1..=most).contains(&leaf_size) {
+        let layout = if most == 3 { "cwbvh" } else { "bvh2" };
+        anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {layout})");
+    }
+    if let Some(path) = &a.json {
+        bidir::film::check_writable(path)?;
+    }
+    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
     let mut o = traversal::Options { kinds, warmup: a.warmup, repetitions: a.reps.max(5), ..Default::default() };
     o.build.tri_test = a.tri_test;
     o.build.quality = a.quality;
-    o.build.max_leaf_tris = a.leaf_size;
+    o.build.max_leaf_tris = leaf_size;
     o.build.pre_split = !a.no_pre_split;
     o.build.layout = a.bvh;
     o.alpha = a.alpha;
@@ -101,9 +111,8 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();
     if let Some(path) = &a.json {
-        let tmp = path.with_extension("json.tmp");
-        std::fs::write(&tmp, report.to_json().to_pretty()).with_context(|| format!("cannot write {}", tmp.display()))?;
-        std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
+        let json = report.to_json().to_pretty();
+        bidir::film::write_atomically(path, |tmp| std::fs::write(tmp, json).map_err(|e| e.to_string()))?;
         println!("wrote {}", path.display());
     }
     Ok(())

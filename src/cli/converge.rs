@@ -58,11 +58,13 @@ pub fn run(args: &ConvergeArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if args.out.exists() && !args.out.is_dir() {
         anyhow::bail!("--out {}: exists and is not a directory", args.out.display());
     }
-    let reference = film::read_exr(&args.reference).context("--reference")?;
-    let loaded = args.scene.load()?;
-    for w in &loaded.warnings {
-        eprintln!("warning: {w}");
+    if !args.exposure.is_finite() {
+        anyhow::bail!("--exposure {}: must be a finite number of stops", args.exposure);
     }
+    let reference = film::read_exr(&args.reference).context("--reference")?;
+    super::diff::warn_non_finite(&args.reference, &reference);
+    let loaded = args.scene.load()?;
+    super::print_warnings(&loaded.warnings);
     let schedule = match &args.spp_points {
         Some(spp) => Schedule::Spp(spp.clone()),
         None => Schedule::Time { budget_s: args.time.unwrap_or(0.0), points: args.points },
@@ -71,6 +73,7 @@ pub fn run(args: &ConvergeArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let options = Options { integrators: args.integrators.clone(), schedule, settings };
     converge::check(&options, &loaded.camera, &reference)?;
 
+    super::signals::on_interrupt(super::signals::FirstInterrupt::FinishPass)?;
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
     let created = !args.out.exists();
     std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;

@@ -19,11 +19,20 @@ pub struct DiffArgs {
 }
 
 pub fn run(args: &DiffArgs) -> anyhow::Result<()> {
+    if args.blocks == Some(0) {
+        bail!("--blocks must be at least 1");
+    }
+    if let Some(path) = &args.heatmap {
+        super::render::check_output(path)?;
+    }
+    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let a = film::read_exr(&args.a)?;
     let b = film::read_exr(&args.b)?;
     if a.width != b.width || a.height != b.height {
         bail!("{} is {}x{} but {} is {}x{}", args.a.display(), a.width, a.height, args.b.display(), b.width, b.height);
     }
+    warn_non_finite(&args.a, &a);
+    warn_non_finite(&args.b, &b);
     let ratio = metrics::mean_ratio(&a, &b);
     println!("RMSE      {:.6}", metrics::rmse(&a, &b));
     println!("relMSE    {:.6}", metrics::rel_mse(&a, &b));
@@ -43,6 +52,18 @@ pub fn run(args: &DiffArgs) -> anyhow::Result<()> {
         println!("wrote {}", path.display());
     }
     Ok(())
+}
+
+/// Warns that `img`'s NaN/Inf pixels are left out of the metrics.
+pub fn warn_non_finite(path: &std::path::Path, img: &RgbImage) {
+    let n = img.non_finite_pixels();
+    if n > 0 {
+        eprintln!(
+            "warning: {}: {n} of {} pixels are NaN or infinite; the metrics are over the finite pixels",
+            path.display(),
+            img.width as u64 * img.height as u64
+        );
+    }
 }
 
 /// Per-pixel |a - b| / (b + 0.01) (mean over channels) mapped blue (0) -> green -> red (>= 0.5).

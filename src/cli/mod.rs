@@ -12,6 +12,7 @@ mod render;
 mod render_devices;
 pub mod scene_args;
 mod settings_args;
+pub mod signals;
 mod view;
 
 use clap::{Parser, Subcommand};
@@ -51,9 +52,17 @@ pub enum Command {
     Converge(Box<converge::ConvergeArgs>),
 }
 
+/// Prints a loader's warnings to stderr.
+fn print_warnings(warnings: &[String]) {
+    for w in warnings {
+        eprintln!("warning: {w}");
+    }
+}
+
 pub fn run() -> anyhow::Result<()> {
     let cli = Cli::parse();
     let mut opts = bidir::vk::ContextOptions::from_env();
+    print_warnings(&opts.env_warnings);
     if cli.device.is_some() {
         opts.device = cli.device.clone();
     }

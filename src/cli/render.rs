@@ -6,7 +6,7 @@ use anyhow::{bail, Context as _};
 use bidir::film::{self, metrics};
 use bidir::render::Renderer;
 use bidir::vk::{Context, ContextOptions};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 #[derive(clap::Args, Debug)]
@@ -19,7 +19,7 @@ pub struct RenderArgs {
     #[arg(long, conflicts_with = "time")]
     pub spp: Option<u32>,
     /// Render passes until this many seconds have passed.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub time: Option<f64>,
     #[command(flatten)]
     pub settings: SettingsArgs,
@@ -36,29 +36,57 @@ pub struct RenderArgs {
     pub reference: Option<PathBuf>,
 }
 
+/// Checks an output path before any work: `.exr` or `.png`, and writable (see
+/// [`film::check_writable`]).
+pub(super) fn check_output(path: &Path) -> anyhow::Result<()> {
+    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+        Some("exr") | Some("png") => {}
+        _ => bail!("{}: output must end in .exr or .png", path.display()),
+    }
+    Ok(film::check_writable(path)?)
+}
+
 pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let outputs = if args.outputs.is_empty() { vec![PathBuf::from("render.png")] } else { args.outputs.clone() };
-    for o in &outputs {
-        match o.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-            Some("exr") | Some("png") => {}
-            _ => bail!("{}: output must end in .exr or .png", o.display()),
+    for (i, o) in outputs.iter().enumerate() {
+        check_output(o)?;
+        if outputs[..i].contains(o) {
+            bail!("{}: given twice with -o", o.display());
         }
     }
     if let Some(t) = args.time {
         if !(t > 0.0 && t.is_finite()) {
-            bail!("--time must be a positive number of seconds");
+            bail!("--time {t}: must be a positive number of seconds");
         }
+    }
+    if args.spp == Some(0) {
+        bail!("--spp must be at least 1");
+    }
+    if !args.exposure.is_finite() {
+        bail!("--exposure {}: must be a finite number of stops", args.exposure);
     }
     let reference = args.reference.as_ref().map(|p| film::read_exr(p)).transpose()?;
     let loaded = args.scene.load()?;
-    for w in &loaded.warnings {
-        eprintln!("warning: {w}");
-    }
+    super::print_warnings(&loaded.warnings);
     let camera = loaded.camera.clone();
+    if let (Some(path), Some(reference)) = (&args.reference, &reference) {
+        if (reference.width, reference.height) != (camera.width, camera.height) {
+            bail!(
+                "--reference {} is {}x{} but the camera renders {}x{} (match them with --width/--height)",
+                path.display(),
+                reference.width,
+                reference.height,
+                camera.width,
+                camera.height
+            );
+        }
+        super::diff::warn_non_finite(path, reference);
+    }
     let integrator = args.integrator.integrator()?;
     let mut settings = args.settings.settings(integrator)?;
     args.part.apply(&mut settings, &camera)?;
     let info_settings = settings.clone();
+    super::signals::on_interrupt(super::signals::FirstInterrupt::FinishPass)?;
     if let Some(devices) = super::render_devices::device_list(opts)? {
         return super::render_devices::run(args, &loaded, &settings, &devices, &outputs, reference);
     }
@@ -67,6 +95,12 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let mut r = Renderer::new(&ctx, &loaded.scene, &camera, settings)?;
     let setup = t_setup.elapsed();
     super::part_args::warn_unaligned(&args.part, &info_settings, r.sample_slices());
+    eprintln!(
+        "rendering {}x{} with {} (Ctrl-C: stop after this pass and write what was rendered)",
+        camera.width,
+        camera.height,
+        integrator.name()
+    );
 
     let pixels = settings_window_pixels(&info_settings, &camera);
     let bar = indicatif::ProgressBar::new(0);
@@ -102,6 +136,9 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     }
     bar.finish_and_clear();
     let elapsed = start.elapsed();
+    if bidir::render::stop_requested() {
+        eprintln!("interrupted: writing the {} spp rendered so far", r.samples());
+    }
     let img = r.image()?;
     let nan = r.nan_samples()?;
     let spp = r.samples();
@@ -126,9 +163,6 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         r.integrator_bytes() as f64 / (1u64 << 20) as f64
     );
     if let Some(reference) = reference {
-        if reference.width != img.width || reference.height != img.height {
-            bail!("reference is {}x{}, the render {}x{}", reference.width, reference.height, img.width, img.height);
-        }
         let ratio = metrics::mean_ratio(&img, &reference);
         println!("RMSE {:.5}, relMSE {:.5}, mean ratio {:.4} {:.4} {:.4}", metrics::rmse(&img, &reference), metrics::rel_mse(&img, &reference), ratio[0], ratio[1], ratio[2]);
     }

@@ -27,7 +27,7 @@ pub struct SceneArgs {
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
     pub up: Option<Vec3>,
     /// Vertical field of view in degrees
-    #[arg(long, value_name = "DEG")]
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub fov: Option<f32>,
     /// Image width in pixels
     #[arg(long, value_name = "PIXELS")]
@@ -105,12 +105,23 @@ impl SceneArgs {
         for (quad, name) in self.added_lights() {
             scene.add_quad_light(&quad, &name);
         }
+        scene.check_emission()?;
         Ok(LoadedScene { scene, warnings, camera, camera_index, load_time })
     }
 
     /// The camera: `--camera` (or the scene's first, or a framing of its bounds), then each
     /// flag given overrides its field. Fails if the result cannot form an image.
     pub fn resolve_camera(&self, scene: &Scene) -> anyhow::Result<(Camera, Option<usize>)> {
+        if let Some(v) = self.fov {
+            if !(v > 0.0 && v < 180.0) {
+                bail!("--fov {v}: must be in (0, 180)");
+            }
+        }
+        for (flag, v) in [("--width", self.width), ("--height", self.height)] {
+            if v == Some(0) {
+                bail!("{flag} 0: must be at least 1");
+            }
+        }
         let (mut cam, index) = match &self.camera {
             Some(sel) => {
                 let i = find_camera(scene, sel)?;
@@ -142,7 +153,11 @@ impl SceneArgs {
         if let Some(v) = self.height {
             cam.height = v;
         }
-        cam.validate()?;
+        // A scene's camera is named with its file (the flags were checked above).
+        cam.validate().map_err(|e| match index {
+            Some(_) => anyhow::anyhow!("{}: {e}", scene.source),
+            None => e.into(),
+        })?;
         Ok((cam, index))
     }
 }

@@ -48,11 +48,14 @@ pub fn run(args: &ViewArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if !(args.frame_ms > 0.0 && args.frame_ms.is_finite()) {
         bail!("--frame-ms must be a positive number of milliseconds");
     }
+    if !args.exposure.is_finite() {
+        bail!("--exposure {}: must be a finite number of stops", args.exposure);
+    }
     let settings = args.settings.settings(args.integrator.integrator()?)?;
     let loaded = args.scene.load()?;
-    for w in &loaded.warnings {
-        eprintln!("warning: {w}");
-    }
+    super::print_warnings(&loaded.warnings);
+    // Ctrl-C in the terminal: quit at once, without a half-written screenshot.
+    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let mut v = ViewOptions::new(loaded.scene, loaded.camera, settings);
     v.exposure = args.exposure;
     v.vsync = if args.no_vsync { Vsync::Off } else { Vsync::On };

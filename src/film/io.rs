@@ -1,5 +1,25 @@
 use super::RgbImage;
+use crate::limits::{thousands, MAX_IMAGE_PIXELS};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Mutex, MutexGuard};
+
+/// Temporary files being written by [`write_atomically`], for [`abort_writes`].
+static TEMPORARY: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+/// Set by [`abort_writes`]: no new write starts.
+static ABORTED: AtomicBool = AtomicBool::new(false);
+
+fn temporary() -> MutexGuard<'static, Vec<PathBuf>> {
+    TEMPORARY.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// For an abort (the second Ctrl-C): removes the temporary file of every write in progress
+/// and refuses new writes; returns how many files were removed. The caller then exits.
+pub fn abort_writes() -> usize {
+    let list = temporary();
+    ABORTED.store(true, Ordering::SeqCst);
+    list.iter().filter(|p| std::fs::remove_file(p).is_ok()).count()
+}
 
 /// Why an image could not be read or written.
 #[derive(Debug, thiserror::Error)]
@@ -10,6 +30,8 @@ pub enum ImageIoError {
     Write { path: PathBuf, msg: String },
     #[error("{path}: cannot read EXR: {msg}")]
     Read { path: PathBuf, msg: String },
+    #[error("{path}: EXR too large: its header says {width}x{height} pixels, over the limit of {} pixels", thousands(MAX_IMAGE_PIXELS))]
+    TooLarge { path: PathBuf, width: u64, height: u64 },
 }
 
 /// Writes `img` as EXR (linear float RGB) or PNG (8-bit sRGB of `exposure`-scaled values,
@@ -28,19 +50,54 @@ pub fn write_image(path: &Path, img: &RgbImage, exposure: f32) -> Result<(), Ima
 /// when anything fails.
 pub fn write_atomically(path: &Path, write: impl FnOnce(&Path) -> Result<(), String>) -> Result<(), ImageIoError> {
     let werr = |msg: String| ImageIoError::Write { path: path.to_path_buf(), msg };
-    let file_name = path.file_name().ok_or_else(|| werr("not a file path".into()))?;
+    let tmp = temporary_path(path)?;
+    {
+        let mut list = temporary();
+        if ABORTED.load(Ordering::SeqCst) {
+            return Err(werr("aborted".into()));
+        }
+        list.push(tmp.clone());
+    }
+    let result = match write(&tmp) {
+        Err(e) => Err(werr(e)),
+        Ok(()) => std::fs::rename(&tmp, path).map_err(|e| werr(e.to_string())),
+    };
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    temporary().retain(|p| p != &tmp);
+    result
+}
+
+/// Whether `path` can be written by [`write_image`] (or [`write_atomically`]): a supported
+/// extension, an existing directory, not a directory itself, and the directory writable
+/// (tried by creating and removing the temporary file). Lets a command check every output
+/// before it spends time rendering.
+pub fn check_writable(path: &Path) -> Result<(), ImageIoError> {
+    let werr = |msg: String| ImageIoError::Write { path: path.to_path_buf(), msg };
+    if path.is_dir() {
+        return Err(werr("is a directory".into()));
+    }
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(werr(format!("directory {} does not exist", dir.display())));
+    }
+    let tmp = temporary_path(path)?;
+    std::fs::File::create(&tmp).map_err(|e| werr(e.to_string()))?;
+    std::fs::remove_file(&tmp).map_err(|e| werr(e.to_string()))
+}
+
+/// The temporary file beside `path`: hidden, named for this process.
+fn temporary_path(path: &Path) -> Result<PathBuf, ImageIoError> {
+    let file_name =
+        path.file_name().ok_or_else(|| ImageIoError::Write { path: path.to_path_buf(), msg: "not a file path".into() })?;
     let mut tmp_name = std::ffi::OsString::from(".");
     tmp_name.push(file_name);
     tmp_name.push(format!(".{}.tmp", std::process::id()));
-    let tmp = path.with_file_name(tmp_name);
-    if let Err(e) = write(&tmp) {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(werr(e));
-    }
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        werr(e.to_string())
-    })
+    Ok(path.with_file_name(tmp_name))
 }
 
 fn write_exr(path: &Path, img: &RgbImage) -> exr::error::Result<()> {
@@ -81,6 +138,14 @@ pub fn write_png_rgb8(path: &Path, rgb: &[u8], width: u32, height: u32) -> Resul
 pub fn read_exr(path: &Path) -> Result<RgbImage, ImageIoError> {
     use exr::prelude::*;
     let rerr = |msg: String| ImageIoError::Read { path: path.to_path_buf(), msg };
+    // The header first: the pixel buffer is allocated from its claimed size.
+    let meta = exr::meta::MetaData::read_from_file(path, false).map_err(|e| rerr(e.to_string()))?;
+    for h in &meta.headers {
+        let (w, h) = (h.layer_size.width() as u64, h.layer_size.height() as u64);
+        if w.saturating_mul(h) > MAX_IMAGE_PIXELS {
+            return Err(ImageIoError::TooLarge { path: path.to_path_buf(), width: w, height: h });
+        }
+    }
     let image = read_first_rgba_layer_from_file(
         path,
         |res, _| (res.width(), res.height(), vec![0f32; res.width() * res.height() * 3]),

@@ -1,4 +1,6 @@
-//! Error metrics between images (both linear RGB, same size).
+//! Error metrics between images (both linear RGB, same size), over the pixels that are finite
+//! in both (a NaN or infinite pixel in either image is left out; callers warn with
+//! [`RgbImage::non_finite_pixels`]).
 
 use super::RgbImage;
 
@@ -6,24 +8,40 @@ fn check(a: &RgbImage, b: &RgbImage) {
     assert!(a.width == b.width && a.height == b.height, "image sizes differ: {}x{} vs {}x{}", a.width, a.height, b.width, b.height);
 }
 
-/// sqrt(mean((a - b)^2)) over every pixel and channel (the reference README's definition).
-pub fn rmse(a: &RgbImage, b: &RgbImage) -> f64 {
+/// Mean of `f(a, b)` over the channels of the pixels finite in both images.
+fn mean_over_finite(a: &RgbImage, b: &RgbImage, f: impl Fn(f64, f64) -> f64) -> f64 {
     check(a, b);
-    let s: f64 = a.data.iter().zip(&b.data).map(|(x, y)| ((x - y) as f64).powi(2)).sum();
-    (s / a.data.len().max(1) as f64).sqrt()
+    let finite = |p: &[f32]| p.iter().all(|v| v.is_finite());
+    let (mut sum, mut n) = (0.0, 0usize);
+    for (pa, pb) in a.data.chunks_exact(3).zip(b.data.chunks_exact(3)).filter(|(pa, pb)| finite(pa) && finite(pb)) {
+        sum += pa.iter().zip(pb).map(|(&x, &y)| f(x as f64, y as f64)).sum::<f64>();
+        n += 3;
+    }
+    sum / n.max(1) as f64
+}
+
+/// sqrt(mean((a - b)^2)) over every channel of the finite pixels (the reference README's
+/// definition).
+pub fn rmse(a: &RgbImage, b: &RgbImage) -> f64 {
+    mean_over_finite(a, b, |x, y| (x - y).powi(2)).sqrt()
 }
 
 /// Mean of (a - b)^2 / (b^2 + eps) with eps = 1e-2 (relative MSE, robust near black).
 pub fn rel_mse(a: &RgbImage, b: &RgbImage) -> f64 {
-    check(a, b);
-    let s: f64 = a.data.iter().zip(&b.data).map(|(x, y)| ((x - y) as f64).powi(2) / ((*y as f64).powi(2) + 1e-2)).sum();
-    s / a.data.len().max(1) as f64
+    mean_over_finite(a, b, |x, y| (x - y).powi(2) / (y.powi(2) + 1e-2))
 }
 
-/// Per-channel ratio of means, a / b.
+/// Per-channel ratio of means, a / b, over the pixels finite in both.
 pub fn mean_ratio(a: &RgbImage, b: &RgbImage) -> [f64; 3] {
     check(a, b);
-    let (ma, mb) = (a.mean(), b.mean());
+    let finite = |p: &[f32]| p.iter().all(|v| v.is_finite());
+    let (mut ma, mut mb) = ([0.0f64; 3], [0.0f64; 3]);
+    for (pa, pb) in a.data.chunks_exact(3).zip(b.data.chunks_exact(3)).filter(|(pa, pb)| finite(pa) && finite(pb)) {
+        for c in 0..3 {
+            ma[c] += pa[c] as f64;
+            mb[c] += pb[c] as f64;
+        }
+    }
     [ma[0] / mb[0], ma[1] / mb[1], ma[2] / mb[2]]
 }
 
@@ -58,5 +76,16 @@ mod tests {
         let b = RgbImage { width: 2, height: 1, data: vec![0.0; 6] };
         assert!((rmse(&a, &b) - (0.5f64).sqrt()).abs() < 1e-12);
         assert_eq!(block_means(&a, 1).len(), 2);
+    }
+
+    #[test]
+    fn non_finite_pixels_are_left_out() {
+        let a = RgbImage { width: 3, height: 1, data: vec![1.0, 1.0, 1.0, f32::NAN, 0.0, 0.0, 2.0, 2.0, 2.0] };
+        let b = RgbImage { width: 3, height: 1, data: vec![0.0, 0.0, 0.0, 5.0, 5.0, 5.0, f32::INFINITY, 0.0, 0.0] };
+        assert_eq!((a.non_finite_pixels(), b.non_finite_pixels()), (1, 1));
+        // Only pixel 0 is finite in both.
+        assert!((rmse(&a, &b) - 1.0).abs() < 1e-12);
+        assert_eq!(a.mean(), [1.5; 3]);
+        assert!(mean_ratio(&b, &a).iter().all(|r| *r == 0.0));
     }
 }

@@ -1,6 +1,11 @@
 use crate::film::RgbImage;
 use crate::gpu::abi;
-use crate::vk::{Buffer, Context, Memory, Result};
+use super::RenderError;
+use crate::vk::{Buffer, Context, Memory, Result, VkError};
+
+fn mib(bytes: u64) -> String {
+    format!("{:.1} MiB", bytes as f64 / (1u64 << 20) as f64)
+}
 use glam::Vec4;
 
 /// Progressive accumulation on the GPU: per pixel the sum of sample radiance (rgb) and the
@@ -23,20 +28,31 @@ pub struct Film {
 }
 
 impl Film {
-    /// A cleared film; `max_slices` > 1 adds room for that many sample slices.
-    pub fn new(ctx: &Context, width: u32, height: u32, with_splat: bool, max_slices: u32) -> Result<Film> {
-        let accum = ctx.create_buffer("film.accum", width as u64 * height as u64 * 16, Memory::Device)?;
+    /// A cleared film; `max_slices` > 1 adds room for that many sample slices. A film that does
+    /// not fit is an error naming the flags that size it, not the internal buffer.
+    pub fn new(ctx: &Context, width: u32, height: u32, with_splat: bool, max_slices: u32) -> Result<Film, RenderError> {
+        let pixels = width as u64 * height as u64;
+        fn too_big(what: String, flags: &'static str) -> impl FnOnce(VkError) -> RenderError {
+            move |e| RenderError::Memory(format!("{what} does not fit on the GPU ({e}): lower {flags}"))
+        }
+        let film = || too_big(format!("the film of {width}x{height} pixels ({})", mib(pixels * 16)), "--width/--height");
+        let accum = ctx.create_buffer("film.accum", pixels * 16, Memory::Device).map_err(film())?;
         let max_slices = max_slices.max(1);
         let slices = if max_slices > 1 {
+            let what = format!("{max_slices} sample slices of the {width}x{height} film ({})", mib(max_slices as u64 * pixels * 16));
             Some((
-                ctx.create_buffer("film.slices", max_slices as u64 * width as u64 * height as u64 * 16, Memory::Device)?,
+                ctx.create_buffer("film.slices", max_slices as u64 * pixels * 16, Memory::Device)
+                    .map_err(too_big(what, "--sample-slices or --width/--height"))?,
                 ctx.create_kernel(&crate::gpu::kernels::FILM_SLICES, &[])?,
             ))
         } else {
             None
         };
         let stats = ctx.create_buffer("film.stats", abi::STAT_COUNT as u64 * 4, Memory::Device)?;
-        let splat = if with_splat { Some(ctx.create_buffer("film.splat", width as u64 * height as u64 * 12, Memory::Device)?) } else { None };
+        let splat = match with_splat {
+            true => Some(ctx.create_buffer("film.splat", pixels * 12, Memory::Device).map_err(film())?),
+            false => None,
+        };
         let f = Film { accum, stats, splat, slices, max_slices, width, height };
         f.clear(ctx)?;
         Ok(f)

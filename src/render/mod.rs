@@ -19,6 +19,7 @@ pub mod gpu_scene;
 pub mod lights;
 mod pacing;
 mod pt;
+mod stop;
 mod tonemap;
 
 pub use bdpt::{Bdpt, Join};
@@ -26,6 +27,7 @@ pub use film::Film;
 pub use gpu_scene::GpuScene;
 pub use pacing::PassModel;
 pub use pt::PathTracer;
+pub use stop::{request_stop, stop_requested};
 pub use tonemap::{Tonemap, TonemapSettings};
 
 use crate::bvh::{BuildOptions, Bvh, BvhError, BvhLayout};
@@ -491,27 +493,28 @@ impl Renderer {
         }
     }
 
-    /// Renders until `spp` samples per pixel in total.
+    /// Renders until `spp` samples per pixel in total, or until [`request_stop`] (then after
+    /// the pass in flight).
     pub fn render_spp(&mut self, spp: u32, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
         let start = Instant::now();
-        while self.samples < spp {
+        while self.samples < spp && !(self.samples > 0 && stop_requested()) {
             self.adaptive_pass(spp - self.samples)?;
             progress(Progress { samples: self.samples, elapsed: start.elapsed() });
         }
         Ok(())
     }
 
-    /// Renders passes until `time` has passed (at least one sample). After one calibration
-    /// pass (none if this renderer has rendered before) every pass is sized by the pass model
-    /// to fill what is left of the budget, up to `pass_target`, so the render runs at the
-    /// GPU's steady rate from its first moments; a last pass that would overshoot the budget by
-    /// more than 10 % is not started.
+    /// Renders passes until `time` has passed or [`request_stop`] is called (at least one
+    /// sample either way). After one calibration pass (none if this renderer has rendered
+    /// before) every pass is sized by the pass model to fill what is left of the budget, up to
+    /// `pass_target`, so the render runs at the GPU's steady rate from its first moments; a
+    /// last pass that would overshoot the budget by more than 10 % is not started.
     pub fn render_time(&mut self, time: Duration, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
         let start = Instant::now();
         let budget = time.as_secs_f64();
         loop {
             let left = budget - start.elapsed().as_secs_f64();
-            if self.samples > 0 && left <= 0.0 {
+            if self.samples > 0 && (left <= 0.0 || stop_requested()) {
                 break;
             }
             let cap = if !self.pacing.known() {

@@ -8,6 +8,7 @@
 use glam::{Mat4, Vec2, Vec3};
 
 use super::{Aabb, Camera, SceneError};
+use crate::limits::{thousands, MAX_FILM_PIXELS};
 
 /// Name of the camera attached to the built-in Cornell box.
 pub const CORNELL_BOX_CAMERA_NAME: &str = "cornell-box";
@@ -109,7 +110,7 @@ impl Camera {
 
     /// Can this camera form an image?
     pub fn validate(&self) -> Result<(), SceneError> {
-        let bad = |msg: String| Err(SceneError::Camera { name: self.name.clone(), msg });
+        let bad = |msg: String| Err(SceneError::Camera { name: crate::text::quote(&self.name), msg });
         if !(self.eye.is_finite() && self.target.is_finite() && self.up.is_finite()) {
             return bad("eye, target and up must be finite".into());
         }
@@ -121,10 +122,18 @@ impl Camera {
             return bad(format!("up {} is parallel to the view direction {}", fmt_vec(self.up), fmt_vec(forward)));
         }
         if !(self.fov_y_deg > 0.0 && self.fov_y_deg < 180.0) {
-            return bad(format!("vertical field of view {}° is not in (0, 180)", self.fov_y_deg));
+            return bad(format!("vertical field of view {}° is not in (0, 180) (override it with --fov)", self.fov_y_deg));
         }
         if self.width == 0 || self.height == 0 {
             return bad(format!("image size {}x{} is empty", self.width, self.height));
+        }
+        if self.width as u64 * self.height as u64 > MAX_FILM_PIXELS {
+            return bad(format!(
+                "image size {}x{} is over the limit of {} pixels (choose the size with --width/--height)",
+                self.width,
+                self.height,
+                thousands(MAX_FILM_PIXELS)
+            ));
         }
         Ok(())
     }

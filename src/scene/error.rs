@@ -27,11 +27,11 @@ pub enum SceneError {
     #[error("{}: {element}: {what} is not supported", file.display())]
     Unsupported { file: PathBuf, element: String, what: String },
     /// With `strict`: a referenced file (material library, texture) does not exist.
-    #[error("{}:{line}: {what} '{}' not found (looked for {})", file.display(), name, missing.display())]
+    #[error("{}:{line}: {what} '{}' not found (looked for {})", file.display(), name, crate::text::sanitize(&missing.display().to_string()))]
     Missing { file: PathBuf, line: usize, what: &'static str, name: String, missing: PathBuf },
     /// With `strict`: a glTF image that does not exist, or an image that cannot be decoded.
     /// `at` says where it was referenced (`room.mtl:7`, `scene.gltf: image 3 "wall"`).
-    #[error("{at}: {msg}")]
+    #[error("{}: {msg}", crate::text::sanitize(at))]
     Texture { file: PathBuf, at: String, msg: String },
     /// With `strict`: `usemtl` names a material no material library defines.
     #[error("{}:{line}: unknown material '{name}'", file.display())]
@@ -74,8 +74,9 @@ impl SceneError {
         }
     }
 
+    /// A line error; its message quotes the line, so it is escaped and truncated here.
     pub(crate) fn syntax(file: &Path, line: usize, msg: impl Into<String>) -> Self {
-        SceneError::Syntax { file: file.to_path_buf(), line, msg: msg.into() }
+        SceneError::Syntax { file: file.to_path_buf(), line, msg: crate::text::sanitize(&msg.into()) }
     }
 
     pub(crate) fn io(file: &Path, source: std::io::Error) -> Self {

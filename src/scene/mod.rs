@@ -59,11 +59,13 @@ pub struct Loaded {
 /// `.gltf` or `.glb`.
 pub fn load(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-    match ext.as_deref() {
+    let loaded = match ext.as_deref() {
         Some("obj") => load_obj(path, opts),
         Some("gltf") | Some("glb") => load_gltf(path, opts),
         _ => Err(SceneError::UnknownFormat { file: path.to_path_buf() }),
-    }
+    }?;
+    loaded.scene.check_emission()?;
+    Ok(loaded)
 }
 
 /// Indexed triangles with a material per triangle.

@@ -114,7 +114,7 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             }
             "illum" => {
                 m.illum = Some(match args.as_slice() {
-                    [v] => v.parse().map_err(|_| err(format!("illum '{v}' is not a whole number")))?,
+                    [v] => v.parse().map_err(|_| err(format!("illum '{}' is not a whole number", crate::text::quote(v))))?,
                     _ => return Err(err("`illum` needs one whole number".into())),
                 })
             }
@@ -148,8 +148,8 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
 fn number(s: &str, err: &dyn Fn(String) -> SceneError) -> Result<f32, SceneError> {
     match s.parse::<f32>() {
         Ok(x) if x.is_finite() => Ok(x),
-        Ok(_) => Err(err(format!("'{s}' is not a finite number"))),
-        Err(_) => Err(err(format!("'{s}' is not a number"))),
+        Ok(_) => Err(err(format!("'{}' is not a finite number", crate::text::quote(s)))),
+        Err(_) => Err(err(format!("'{}' is not a number", crate::text::quote(s)))),
     }
 }
 

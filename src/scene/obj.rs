@@ -84,7 +84,7 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
                             file: file.to_path_buf(),
                             line: *line,
                             what: "material library",
-                            name: lib,
+                            name: crate::text::quote(&lib),
                             missing,
                         });
                     }
@@ -122,7 +122,7 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
     for (line, name) in &check.usemtls {
         if !by_name.contains_key(name) {
             if opts.strict {
-                return Err(SceneError::UnknownMaterial { file: file.to_path_buf(), line: *line, name: name.clone() });
+                return Err(SceneError::UnknownMaterial { file: file.to_path_buf(), line: *line, name: crate::text::quote(name) });
             }
             w.warn_once(&format!("usemtl-{name}"), || {
                 format!("{}:{line}: unknown material '{name}'; its faces use the default grey", file.display())

@@ -155,8 +155,8 @@ fn numbers(words: &[&str], err: &dyn Fn(String) -> SceneError) -> Result<Vec<f32
         .iter()
         .map(|w| match w.parse::<f32>() {
             Ok(x) if x.is_finite() => Ok(x),
-            Ok(_) => Err(err(format!("'{w}' is not a finite number"))),
-            Err(_) => Err(err(format!("'{w}' is not a number"))),
+            Ok(_) => Err(err(format!("'{}' is not a finite number", crate::text::quote(w)))),
+            Err(_) => Err(err(format!("'{}' is not a number", crate::text::quote(w)))),
         })
         .collect()
 }
@@ -166,7 +166,7 @@ fn numbers(words: &[&str], err: &dyn Fn(String) -> SceneError) -> Result<Vec<f32
 fn check_ref(r: &str, c: &ObjCheck, err: &dyn Fn(String) -> SceneError) -> Result<(), SceneError> {
     let parts: Vec<&str> = r.split('/').collect();
     if parts.len() > 3 || parts[0].is_empty() {
-        return Err(err(format!("'{r}' is not a face vertex (v, v/vt, v//vn or v/vt/vn)")));
+        return Err(err(format!("'{}' is not a face vertex (v, v/vt, v//vn or v/vt/vn)", crate::text::quote(r))));
     }
     let kinds = [
         ("vertex", "vertices", c.positions),

@@ -26,6 +26,8 @@ pub enum QuadLightError {
     Radiance(String),
     #[error("corner and edges must be finite")]
     NotFinite,
+    #[error("radiance {0:e} is too large (limit {max:e} per channel, and pi x area x radiance must be finite)", max = crate::limits::MAX_RADIANCE)]
+    RadianceTooLarge(f32),
 }
 
 /// An emissive parallelogram (see the module documentation for the conventions).
@@ -52,6 +54,10 @@ impl QuadLight {
         }
         if !(radiance.is_finite() && radiance.min_element() >= 0.0 && radiance.max_element() > 0.0) {
             return Err(QuadLightError::Radiance(fmt3(radiance)));
+        }
+        let power = std::f32::consts::PI * cross * radiance.max_element();
+        if radiance.max_element() > crate::limits::MAX_RADIANCE || !power.is_finite() {
+            return Err(QuadLightError::RadianceTooLarge(radiance.max_element()));
         }
         Ok(q)
     }

@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::{Material, Scene};
+use super::{Material, Scene, SceneError};
 
 /// Rec. 709 / sRGB-primaries luminance of a linear RGB value.
 pub fn luminance(rgb: Vec3) -> f32 {
@@ -144,6 +144,29 @@ impl Scene {
     pub fn total_emitted_power(&self) -> (Vec3, f32) {
         let power = self.emitters().iter().fold(Vec3::ZERO, |acc, e| acc + e.power);
         (power, luminance(power))
+    }
+
+    /// Emission a float32 renderer can handle: every emissive material's radiance at most
+    /// [`MAX_RADIANCE`](crate::limits::MAX_RADIANCE) per channel, and the total emitted power
+    /// finite (else light sampling's power sums overflow and the image is black or garbage).
+    pub fn check_emission(&self) -> Result<(), SceneError> {
+        let err = |msg: String| Err(SceneError::Parse { file: self.source.clone().into(), msg });
+        let max = crate::limits::MAX_RADIANCE;
+        if let Some(m) = self.materials.iter().find(|m| !m.emission.is_finite() || m.emission.max_element() > max) {
+            return err(format!(
+                "material '{}': emitted radiance {:e} is too large (limit {max:e} per channel)",
+                crate::text::quote(&m.name),
+                m.emission.max_element()
+            ));
+        }
+        let (power, _) = self.total_emitted_power();
+        if !power.is_finite() || !luminance(power).is_finite() {
+            return err(format!(
+                "the emitted power (pi x area x radiance, summed) overflows float32 ({:e}); make the emitters smaller or dimmer",
+                power.max_element()
+            ));
+        }
+        Ok(())
     }
 
     /// Bounds of the vertices the triangles use (empty for a scene without triangles).

@@ -9,6 +9,7 @@
 //! texture's alpha directly. Float images (HDR) are linear and stored clamped to [0, 1].
 //! Textures are not downsampled or capped: Sponza's 24 colour textures take 96 MiB.
 
+use crate::limits::{thousands, MAX_TEXTURE_PIXELS};
 use std::collections::HashMap;
 use std::io::Cursor;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -107,13 +108,13 @@ impl<'a> Requests<'a> {
                                     file: req.file.clone(),
                                     line,
                                     what: "texture",
-                                    name: req.name.clone(),
+                                    name: crate::text::quote(&req.name),
                                     missing: path.clone(),
                                 },
                                 None => SceneError::Texture {
                                     file: req.file.clone(),
                                     at: req.at.clone(),
-                                    msg: format!("image '{}' not found (looked for {})", req.name, path.display()),
+                                    msg: format!("image '{}' not found (looked for {})", crate::text::quote(&req.name), path.display()),
                                 },
                             },
                             format!(
@@ -127,7 +128,7 @@ impl<'a> Requests<'a> {
                             SceneError::Texture {
                                 file: req.file.clone(),
                                 at: req.at.clone(),
-                                msg: format!("cannot decode texture '{}': {why}", req.name),
+                                msg: format!("cannot decode texture '{}': {}", crate::text::quote(&req.name), crate::text::sanitize(&why)),
                             },
                             format!("{}: cannot decode texture '{}': {why}; using none", req.at, req.name),
                         ),
@@ -230,8 +231,13 @@ pub(crate) fn decode(bytes: &[u8], hint: Option<ImageFormat>, role: Role, name: 
         reader.set_format(f);
     }
     let reader = reader.with_guessed_format().map_err(|e| e.to_string())?;
-    if reader.format().is_none() {
+    let Some(format) = reader.format() else {
         return Err("unknown image format".into());
+    };
+    // The header's size first: decoding allocates what it claims.
+    let (w, h) = ImageReader::with_format(Cursor::new(bytes), format).into_dimensions().map_err(|e| e.to_string())?;
+    if w as u64 * h as u64 > MAX_TEXTURE_PIXELS {
+        return Err(format!("{w}x{h} pixels is over the limit of {} pixels per texture", thousands(MAX_TEXTURE_PIXELS)));
     }
     let img = reader.decode().map_err(|e| e.to_string())?;
     let (width, height) = (img.width(), img.height());
@@ -284,6 +290,17 @@ mod tests {
         let mut p = png(DynamicImage::ImageRgb8(image::RgbImage::new(64, 64)));
         p.truncate(60);
         assert!(decode(&p, None, Role::Colour, "x").is_err());
+    }
+
+    #[test]
+    fn huge_image_headers_are_refused_before_decoding() {
+        // An 18-byte TGA header claiming 65535 x 65535 24-bit pixels, and no pixels.
+        let mut tga = vec![0u8, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0];
+        tga.extend(65535u16.to_le_bytes());
+        tga.extend(65535u16.to_le_bytes());
+        tga.extend([24, 0]);
+        let e = decode(&tga, Some(ImageFormat::Tga), Role::Colour, "big").unwrap_err();
+        assert!(e.contains("65535x65535 pixels is over the limit of 268,435,456 pixels"), "{e}");
     }
 
     #[test]

@@ -11,7 +11,8 @@ pub(crate) struct Warnings {
 
 impl Warnings {
     pub fn warn(&mut self, msg: impl Into<String>) {
-        let msg = msg.into();
+        // Warnings quote file contents: escaped and truncated once, here.
+        let msg = crate::text::sanitize(&msg.into());
         log::warn!("{msg}");
         self.list.push(msg);
     }

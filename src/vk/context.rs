@@ -34,6 +34,9 @@ pub struct ContextOptions {
     /// Ask the driver to keep each kernel's compile statistics (registers, spills, ...:
     /// `Kernel::statistics`), where it offers VK_KHR_pipeline_executable_properties.
     pub kernel_statistics: bool,
+    /// Environment variables [`ContextOptions::from_env`] could not use, for the caller to
+    /// print.
+    pub env_warnings: Vec<String>,
 }
 
 impl Default for ContextOptions {
@@ -45,6 +48,7 @@ impl Default for ContextOptions {
             instance_extensions: vec![],
             device_extensions: vec![],
             kernel_statistics: false,
+            env_warnings: vec![],
         }
     }
 }
@@ -58,8 +62,15 @@ impl ContextOptions {
             device: std::env::var("BIDIR_DEVICE").ok().filter(|s| !s.is_empty()),
             ..ContextOptions::default()
         };
-        if let Some(s) = std::env::var("BIDIR_GPU_TIMEOUT_S").ok().and_then(|s| s.parse::<f64>().ok()) {
-            o.gpu_timeout = Duration::from_secs_f64(s.max(0.001));
+        if let Ok(v) = std::env::var("BIDIR_GPU_TIMEOUT_S") {
+            match v.trim().parse::<f64>() {
+                Ok(s) if s > 0.0 && s <= 1e6 => o.gpu_timeout = Duration::from_secs_f64(s.max(0.001)),
+                _ => o.env_warnings.push(format!(
+                    "BIDIR_GPU_TIMEOUT_S={} is not a number of seconds in (0, 1000000]; using {} s",
+                    crate::text::quote(&v),
+                    o.gpu_timeout.as_secs_f64()
+                )),
+            }
         }
         o
     }

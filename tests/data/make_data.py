@@ -324,3 +324,37 @@ bad("gltf_missing_image.gltf", missing_image)
 bad("gltf_camera_without_projection.gltf", camera_without_projection)
 with open(path("bad", "glb_truncated.glb"), "rb+") as f:
     f.truncate(60)
+
+
+# ---- issue 18: bad input that once crashed, hung or said too little ----------------------
+def two_parents(doc, buf, a):
+    # Node 1 is a child of both 0 and 2: not a forest. Chains of such nodes once expanded
+    # into ~10^12 instances.
+    doc["nodes"] = [{"name": "A", "children": [1]}, {"name": "Shared", "mesh": 0}, {"name": "B", "children": [1]}]
+    doc["scenes"][0]["nodes"] = [0, 2]
+
+
+def camera(**perspective):
+    def mutate(doc, buf, a):
+        doc["cameras"] = [{"name": "Cam", "type": "perspective", "perspective": dict(znear=0.1, **perspective)}]
+        doc["nodes"].append({"name": "CamNode", "camera": 0, "translation": [0, 0, 5]})
+        doc["scenes"][0]["nodes"].append(1)
+    return mutate
+
+
+bad("gltf_two_parents.gltf", two_parents)
+bad("gltf_camera_aspect_zero.gltf", camera(yfov=0.8, aspectRatio=0))
+bad("gltf_camera_aspect_huge.gltf", camera(yfov=0.8, aspectRatio=1e6))
+bad("gltf_camera_yfov_zero.gltf", camera(yfov=0))
+doc, buf = one_quad()
+finish(doc, buf, "bad/glb_bad_magic.glb", glb=True)
+with open(path("bad", "glb_bad_magic.glb"), "rb+") as f:
+    f.write(b"GLB\x00")
+# An MTL a careless or hostile user might write: an emission that overflows float32 power
+# sums, and (another library) a colour of terminal escapes and NULs, and a 60,000-digit one.
+write("bad/obj_huge_ke.mtl", b"newmtl lamp\nKd 0 0 0\nKe 3e38 3e38 3e38\n")
+write("bad/obj_huge_ke.obj", b"mtllib obj_huge_ke.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n")
+write("bad/obj_control_chars.mtl", b"newmtl m\nKd 1 \x1b[2J\x1b]0;pwned\x07\x00 1\n")
+write("bad/obj_control_chars.obj", b"mtllib obj_control_chars.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n")
+write("bad/obj_long_number.mtl", b"newmtl m\nKd 0.5 " + b"9" * 60000 + b" 0.5\n")
+write("bad/obj_long_number.obj", b"mtllib obj_long_number.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n")

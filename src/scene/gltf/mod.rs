@@ -31,6 +31,7 @@ use super::builder::{Builder, Part, Transform};
 use super::texture::Requests;
 use super::warnings::Warnings;
 use super::{Camera, LoadOptions, Loaded, Material, Scene, SceneError};
+use crate::limits::{thousands, MAX_INSTANCES, MAX_TRIANGLES};
 
 /// Material extensions the loader reads.
 const SUPPORTED_EXTENSIONS: &[&str] =
@@ -41,6 +42,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     let file = path;
     let gerr = |element: &str, msg: String| SceneError::Gltf { file: file.to_path_buf(), element: element.into(), msg };
     let bytes = std::fs::read(path).map_err(|e| SceneError::io(path, e))?;
+    check_glb_magic(file, &bytes)?;
     let mut w = Warnings::default();
     let ::gltf::Gltf { document, blob } =
         ::gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| gerr("file", e.to_string()))?;
@@ -98,6 +100,62 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         dropped_degenerate: b.dropped_degenerate,
     };
     Ok(Loaded { scene, warnings: w.into_vec() })
+}
+
+/// A `.glb` must start with the magic `glTF` (else the `gltf` crate reads it as JSON and says
+/// "expected value at line 1 column 1").
+fn check_glb_magic(file: &Path, bytes: &[u8]) -> Result<(), SceneError> {
+    let is_glb = file.extension().is_some_and(|e| e.eq_ignore_ascii_case("glb"));
+    if is_glb && !bytes.starts_with(b"glTF") {
+        let magic = bytes[..bytes.len().min(4)].escape_ascii().to_string();
+        return Err(SceneError::Gltf {
+            file: file.to_path_buf(),
+            element: "file".into(),
+            msg: format!("not a GLB file (magic \"{magic}\", expected \"glTF\")"),
+        });
+    }
+    Ok(())
+}
+
+/// Checks that the node graph is a forest (glTF 2.0 §3.5.3): no node has two parents, and no
+/// root of the scene has a parent (else a cycle). A 6 KB file whose nodes share children
+/// would otherwise expand into ~10^12 instances.
+fn check_forest(file: &Path, doc: &Document, roots: &[Node]) -> Result<(), SceneError> {
+    let gerr = |element: String, msg: String| SceneError::Gltf { file: file.to_path_buf(), element, msg };
+    let mut parent: Vec<Option<usize>> = vec![None; doc.nodes().len()];
+    for n in doc.nodes() {
+        for c in n.children() {
+            if let Some(p) = parent[c.index()] {
+                return Err(gerr(
+                    node_element(&c),
+                    format!("has two parents, nodes {p} and {} (the node graph must be a forest)", n.index()),
+                ));
+            }
+            parent[c.index()] = Some(n.index());
+        }
+    }
+    for r in roots {
+        if let Some(p) = parent[r.index()] {
+            // Follow the parents up: back at `r` is a cycle.
+            let (mut at, mut steps) = (Some(p), 0);
+            while let Some(a) = at.filter(|&a| a != r.index() && steps <= parent.len()) {
+                at = parent[a];
+                steps += 1;
+            }
+            let msg = if at == Some(r.index()) {
+                "the node hierarchy has a cycle".to_owned()
+            } else {
+                format!("is a root of the scene but also a child of node {p} (the node graph must be a forest)")
+            };
+            return Err(gerr(node_element(r), msg));
+        }
+    }
+    Ok(())
+}
+
+/// `node 3 "Name"`, for messages.
+fn node_element(node: &Node) -> String {
+    format!("node {}{}", node.index(), node.name().map_or(String::new(), |n| format!(" \"{}\"", crate::text::quote(n))))
 }
 
 /// Whether a file that *requires* extension `ext` can still be loaded, approximately: the
@@ -240,18 +298,20 @@ fn geometry(
             doc.nodes().filter(|n| !is_child[n.index()]).collect()
         }
     };
+    check_forest(file, doc, &roots)?;
 
     // Instances (mesh, world matrix) and cameras, in document order.
     let mut instances: Vec<(usize, Mat4)> = Vec::new();
     let mut cameras = Vec::new();
     let mut stack: Vec<(Node, Mat4, usize)> = roots.into_iter().rev().map(|n| (n, Mat4::IDENTITY, 0)).collect();
     while let Some((node, parent, depth)) = stack.pop() {
-        let element = || format!("node {}{}", node.index(), node.name().map_or(String::new(), |n| format!(" \"{n}\"")));
+        let element = || node_element(&node);
         if depth > nodes {
             return Err(gerr(element(), "the node hierarchy has a cycle".into()));
         }
         let world = parent * local_matrix(&node).ok_or_else(|| gerr(element(), "transform is not finite".into()))?;
         if let Some(mesh) = node.mesh() {
+            check_size(instances.len() as u64 + 1, 0, 0).map_err(|msg| gerr(element(), msg))?;
             instances.push((mesh.index(), world));
         }
         if node.skin().is_some() {
@@ -264,6 +324,14 @@ fn geometry(
                 ::gltf::camera::Projection::Perspective(p) => {
                     let name =
                         node.name().or(cam.name()).map_or_else(|| format!("camera {}", cam.index()), str::to_owned);
+                    if let Some(a) = p.aspect_ratio().filter(|a| !(a.is_finite() && *a > 0.0)) {
+                        w.warn(format!(
+                            "{}: {}, camera {} \"{name}\": aspect ratio {a} is not positive; ignored (the image is 1920x1080 unless --width/--height say otherwise)",
+                            file.display(),
+                            element(),
+                            cam.index()
+                        ));
+                    }
                     cameras.push(Camera::from_gltf(name, world, p.yfov(), p.aspect_ratio()));
                 }
                 ::gltf::camera::Projection::Orthographic(_) => w.warn_once("gltf-ortho", || {
@@ -289,13 +357,15 @@ fn geometry(
     let prims_of = |m: usize| meshes[m].as_deref().unwrap_or(&[]);
     let with_normals = instances.iter().any(|&(m, _)| prims_of(m).iter().any(|p| p.normals.is_some()));
     let with_uvs = instances.iter().any(|&(m, _)| prims_of(m).iter().any(|p| p.uvs.is_some()));
-    let (mut verts, mut tris) = (0, 0);
+    let (mut verts, mut tris) = (0u64, 0u64);
     for &(m, _) in &instances {
         for p in prims_of(m) {
-            verts += p.positions.len();
-            tris += p.triangles.len();
+            verts += p.positions.len() as u64;
+            tris += p.triangles.len() as u64;
         }
     }
+    check_size(instances.len() as u64, tris, verts).map_err(|msg| gerr("scene".into(), msg))?;
+    let (verts, tris) = (verts as usize, tris as usize);
     let mut b = Builder::new(with_normals, with_uvs);
     b.reserve(verts, tris);
     for &(m, world) in &instances {
@@ -312,6 +382,23 @@ fn geometry(
         }
     }
     Ok((b, cameras, used_default))
+}
+
+/// The flattened scene's size against the limits, before it is allocated.
+fn check_size(instances: u64, tris: u64, verts: u64) -> Result<(), String> {
+    if instances > MAX_INSTANCES {
+        return Err(format!("{} mesh instances, over the limit of {}", thousands(instances), thousands(MAX_INSTANCES)));
+    }
+    if tris > MAX_TRIANGLES || verts > 3 * MAX_TRIANGLES {
+        return Err(format!(
+            "{} instances of its meshes make {} triangles ({} vertices), over the limit of {} triangles",
+            thousands(instances),
+            thousands(tris),
+            thousands(verts),
+            thousands(MAX_TRIANGLES)
+        ));
+    }
+    Ok(())
 }
 
 /// The node's local matrix; `None` if not finite. Rotations are normalised (exporters write
@@ -335,7 +422,7 @@ fn read_mesh(
     default_material: u32,
     w: &mut Warnings,
 ) -> Result<Vec<Prim>, SceneError> {
-    let mesh_name = mesh.name().map_or(String::new(), |n| format!(" \"{n}\""));
+    let mesh_name = mesh.name().map_or(String::new(), |n| format!(" \"{}\"", crate::text::quote(n)));
     let mut out = Vec::new();
     for (pi, prim) in mesh.primitives().enumerate() {
         let element = format!("mesh {}{mesh_name}, primitive {pi}", mesh.index());
@@ -444,5 +531,14 @@ mod tests {
         assert_eq!(assemble(Mode::TriangleStrip, &[0, 1, 2, 3]), vec![[0, 1, 2], [2, 1, 3]]);
         assert_eq!(assemble(Mode::TriangleFan, &[0, 1, 2, 3]), vec![[1, 2, 0], [2, 3, 0]]);
         assert!(assemble(Mode::TriangleStrip, &[0, 1]).is_empty());
+    }
+
+    #[test]
+    fn size_limits() {
+        assert!(check_size(1000, 1 << 20, 1 << 20).is_ok());
+        let e = check_size(1 << 20, 1 << 40, 1 << 41).unwrap_err();
+        assert!(e.contains("1,099,511,627,776 triangles") && e.contains("limit of 268,435,456"), "{e}");
+        let e = check_size(1 << 30, 1 << 30, 1 << 30).unwrap_err();
+        assert!(e.contains("1,073,741,824 mesh instances, over the limit of 16,777,216"), "{e}");
     }
 }

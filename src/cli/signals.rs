@@ -1,0 +1,50 @@
+//! Signals. SIGPIPE: a closed pipe on stdout (`bidir info SCENE | head -1`) ends the process
+//! quietly, as it does every Unix tool, instead of a panic in `println!`. SIGINT (Ctrl-C):
+//! [`on_interrupt`] decides what the first one does; a second always aborts at once, removing
+//! the temporary files of writes in progress, with nothing written (exit status 130).
+
+use signal_hook::consts::SIGINT;
+use signal_hook::iterator::Signals;
+
+/// Restores the default action of SIGPIPE (Rust ignores it, so writes to a closed pipe fail
+/// and `println!` panics). The one `unsafe` outside `src/vk` (the binary denies it
+/// elsewhere): std offers no safe way to set a signal's disposition.
+#[allow(unsafe_code)]
+pub fn default_sigpipe() {
+    // SAFETY: sets a signal's disposition to the default action; called first thing in
+    // `main`, before any other thread exists, and installs no handler of ours.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
+/// What the first Ctrl-C does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FirstInterrupt {
+    /// Ends the render after the current pass; the command then writes what it has.
+    FinishPass,
+    /// Aborts at once, as the second one does.
+    Abort,
+}
+
+/// Installs the Ctrl-C handler for a command that writes files. Without it SIGINT would kill
+/// the process mid-write and leave a temporary file behind.
+pub fn on_interrupt(first: FirstInterrupt) -> anyhow::Result<()> {
+    let mut signals = Signals::new([SIGINT])?;
+    std::thread::Builder::new().name("sigint".into()).spawn(move || {
+        let mut count = 0;
+        for _ in signals.forever() {
+            count += 1;
+            if count == 1 && first == FirstInterrupt::FinishPass {
+                bidir::render::request_stop();
+                eprintln!("\ninterrupted: finishing the current pass, then writing what was rendered (Ctrl-C again aborts without writing)");
+            } else {
+                let removed = bidir::film::abort_writes();
+                let note = if removed > 0 { format!(" ({removed} partial file(s) removed)") } else { String::new() };
+                eprintln!("\naborted: nothing written{note}");
+                std::process::exit(130);
+            }
+        }
+    })?;
+    Ok(())
+}
