@@ -238,7 +238,9 @@ fn check_instanced(l: &Loaded) {
     // MirrorA: Root (90° about +Y) · translate (0, 0, -5): (-1,-1,0) → (-5,-1,1).
     assert!((s.positions[0] - Vec3::new(-5.0, -1.0, 1.0)).length() < 1e-5, "{}", s.positions[0]);
     let (mirror, m) = material(s, "Mirror");
-    assert_eq!((m.reflectivity, m.refractivity), (1.0, 0.0));
+    // glTF metallic-roughness: a smooth metal is a GGX lobe of its roughness, not a mirror.
+    assert_eq!(m.model, bidir::scene::MaterialModel::MetalRough);
+    assert_eq!((m.reflectivity, m.refractivity, m.metallic), (0.0, 0.0, 1.0));
     let mirrors = triangles_of(s, mirror);
     assert_eq!(mirrors.len(), 4, "MirrorQuad is instanced twice");
     // Both face +X after the root rotation, the mirrored one included.

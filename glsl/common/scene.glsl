@@ -10,9 +10,11 @@ layout(constant_id = SPEC_HAS_TEXTURES) const uint HAS_TEXTURES = 0u;
 layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
 layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 0u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint HAS_ALPHA = 0u;
+layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 0u;
 
 #define TRAVERSE_WITH_ALPHA
 #include "traverse.glsl"
+#include "bsdf.glsl"
 
 // (vertex 0, vertex 1, vertex 2, material) of each triangle, in leaf order.
 layout(std430, binding = BIND_PRIM_INFO) readonly buffer PrimInfo { uvec4 prim_info[]; };
@@ -143,6 +145,52 @@ vec3 material_albedo(GpuMaterial m, vec2 uv) {
         a *= sample_texture(m.tex.x - 1u, uv).rgb;
     }
     return a;
+}
+
+// The continuous (non-delta) part of material m at texture coordinate uv (bsdf.glsl):
+// - MATERIAL_THESIS: the Lambertian rest 1 - reflectivity - refractivity times the albedo,
+//   and, where the material is rough, its reflectivity as a GGX conductor with F = 1;
+// - MATERIAL_METAL_ROUGH (glTF): metallic and roughness (times the B channel of the metallic
+//   texture and the G channel of the roughness texture: glTF's metallicRoughness texture is
+//   both), baseColor = the albedo; the glass fraction (transmission)
+//   is a delta lobe and the rest is this model.
+Continuous continuous_at(GpuMaterial m, vec2 uv) {
+    vec3 albedo = material_albedo(m, uv);
+    float refl = mirror_fraction(m);
+    float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
+    Continuous c;
+    c.pick = max(0.0, 1.0 - refl - refr);
+    c.diffuse = c.pick * albedo;
+    c.spec_f0 = vec3(1.0);
+    c.spec = 0.0;
+    c.coat_f0 = 0.0;
+    c.coat = 0.0;
+    c.alpha = GGX_MIN_ALPHA;
+    if (HAS_GLOSSY == 0u) {
+        return c;
+    }
+    float roughness = m.roughness;
+    float metallic = m.metallic;
+    if (HAS_TEXTURES != 0u && (m.tex.z != 0u || m.tex.w != 0u)) {
+        vec4 tr = m.tex.z != 0u ? sample_texture(m.tex.z - 1u, uv) : vec4(1.0);
+        vec4 tm = m.tex.w == m.tex.z ? tr : (m.tex.w != 0u ? sample_texture(m.tex.w - 1u, uv) : vec4(1.0));
+        roughness *= tr.g;
+        metallic *= tm.b;
+    }
+    if (m.model == MATERIAL_METAL_ROUGH) {
+        c.diffuse = c.pick * (1.0 - metallic) * albedo;
+        c.coat = 1.0;
+        c.coat_f0 = m.dielectric_f0;
+        c.spec_f0 = mix(vec3(m.dielectric_f0), albedo, metallic);
+        c.spec = c.pick;
+    } else if (m.roughness > 0.0) {
+        // The thesis' reflectivity, made rough: a conductor with F = 1.
+        float r = HAS_MIRROR != 0u ? m.params.x : 0.0;
+        c.diffuse = max(0.0, 1.0 - r - refr) * albedo;
+        c.spec = r;
+    }
+    c.alpha = max(roughness * roughness, GGX_MIN_ALPHA);
+    return c;
 }
 
 #endif

@@ -5,7 +5,7 @@
 use super::lights::{luminance, LightTable};
 use crate::bvh::Bvh;
 use crate::gpu::abi::{self, GpuMaterial, GpuTexture};
-use crate::scene::{Scene, Texture};
+use crate::scene::{Material, MaterialModel, Scene, Texture};
 use crate::trace::GpuBvh;
 use crate::vk::{Bind, Buffer, Context, Memory, Result, Spec};
 use glam::{UVec4, Vec4};
@@ -19,6 +19,8 @@ pub struct SceneFeatures {
     pub mirror: bool,
     pub glass: bool,
     pub alpha: bool,
+    /// GGX lobes (glTF metallic-roughness, rough mirrors).
+    pub glossy: bool,
 }
 
 impl SceneFeatures {
@@ -27,10 +29,15 @@ impl SceneFeatures {
         SceneFeatures {
             normals: scene.normals.is_some(),
             uvs: scene.uvs.is_some(),
-            textures: scene.uvs.is_some() && !scene.textures.is_empty() && m.iter().any(|m| m.albedo_texture.is_some() || m.alpha.is_some()),
+            textures: scene.uvs.is_some()
+                && !scene.textures.is_empty()
+                && m.iter().any(|m| {
+                    m.albedo_texture.is_some() || m.alpha.is_some() || m.roughness_texture.is_some() || m.metallic_texture.is_some()
+                }),
             mirror: m.iter().any(|m| m.reflectivity > 0.0),
             glass: m.iter().any(|m| m.refractivity > 0.0),
             alpha: scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some()),
+            glossy: m.iter().any(Material::is_glossy),
         }
     }
 
@@ -38,7 +45,7 @@ impl SceneFeatures {
     /// where it has none (only to measure what specialisation buys; vertex attributes stay as
     /// they are, since their buffers are only uploaded when present).
     pub fn with_all_material_code(self) -> SceneFeatures {
-        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, ..self }
+        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, glossy: true, ..self }
     }
 
     pub fn specs(&self) -> Vec<Spec> {
@@ -49,6 +56,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_MIRROR, value: self.mirror as u32 },
             Spec { id: abi::SPEC_HAS_GLASS, value: self.glass as u32 },
             Spec { id: abi::SPEC_HAS_ALPHA, value: self.alpha as u32 },
+            Spec { id: abi::SPEC_HAS_GLOSSY, value: self.glossy as u32 },
         ]
     }
 }
@@ -89,12 +97,7 @@ impl GpuScene {
         let materials: Vec<GpuMaterial> = scene
             .materials
             .iter()
-            .map(|m| GpuMaterial {
-                albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff)),
-                emission: m.emission.extend(luminance(m.emission)),
-                params: Vec4::new(m.reflectivity, m.refractivity, m.ior, 0.0),
-                tex: UVec4::new(m.albedo_texture.map_or(0, |t| t + 1), m.alpha.map_or(0, |a| a.texture + 1), 0, 0),
-            })
+            .map(gpu_material)
             .collect();
         let lights = LightTable::build(scene);
         let placeholder = |name: &str| ctx.create_buffer(name, 4, Memory::Device);
@@ -156,6 +159,30 @@ impl GpuScene {
             Bind::buffer(abi::BIND_TEXELS, &self.texels),
             Bind::buffer(abi::BIND_POSITIONS, &self.positions),
         ]
+    }
+}
+
+/// A material as the kernels read it (`GpuMaterial` in src/gpu/abi.rs).
+pub fn gpu_material(m: &Material) -> GpuMaterial {
+    let index = |t: Option<u32>| t.map_or(0, |t| t + 1);
+    let f0 = ((m.ior - 1.0) / (m.ior + 1.0)).powi(2);
+    GpuMaterial {
+        albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff)),
+        emission: m.emission.extend(luminance(m.emission)),
+        params: Vec4::new(m.reflectivity, m.refractivity, m.ior, 0.0),
+        tex: UVec4::new(
+            index(m.albedo_texture),
+            m.alpha.map_or(0, |a| a.texture + 1),
+            index(m.roughness_texture),
+            index(m.metallic_texture),
+        ),
+        metallic: m.metallic,
+        roughness: m.roughness,
+        dielectric_f0: f0,
+        model: match m.model {
+            MaterialModel::Thesis => abi::MATERIAL_THESIS,
+            MaterialModel::MetalRough => abi::MATERIAL_METAL_ROUGH,
+        },
     }
 }
 

@@ -91,8 +91,21 @@ pub struct Scene {
     pub dropped_degenerate: usize,
 }
 
+/// Which reflection model a material's non-delta part follows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MaterialModel {
+    /// The thesis' lobes: Lambertian, mirror, smooth glass; with `roughness > 0` the mirror
+    /// fraction is a rough (GGX) conductor with F = 1.
+    #[default]
+    Thesis,
+    /// glTF 2.0 metallic-roughness (appendix B): GGX lobes, the metal with F0 = albedo, the
+    /// dielectric coat (F0 from `ior`) over a Lambertian base, mixed by `metallic`.
+    MetalRough,
+}
+
 /// The thesis' material model: diffuse albedo (colour or texture), emission, a fraction of
-/// perfect mirror and a fraction of smooth dielectric.
+/// perfect mirror and a fraction of smooth dielectric; or the glTF metallic-roughness model
+/// ([`MaterialModel`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     pub name: String,
@@ -109,6 +122,15 @@ pub struct Material {
     pub ior: f32,
     /// Alpha-tested cut-out: texels with alpha below the cutoff are holes.
     pub alpha: Option<AlphaMask>,
+    pub model: MaterialModel,
+    /// Metallic factor (MetalRough), times the metallic texture's blue channel.
+    pub metallic: f32,
+    /// GGX roughness (alpha = roughness²), times the roughness texture's green channel.
+    pub roughness: f32,
+    /// Linear texture whose green channel scales the roughness (glTF metallicRoughness, `map_Pr`).
+    pub roughness_texture: Option<u32>,
+    /// Linear texture whose blue channel scales the metallic factor (glTF metallicRoughness, `map_Pm`).
+    pub metallic_texture: Option<u32>,
 }
 
 impl Default for Material {
@@ -122,6 +144,11 @@ impl Default for Material {
             refractivity: 0.0,
             ior: 1.5,
             alpha: None,
+            model: MaterialModel::Thesis,
+            metallic: 0.0,
+            roughness: 0.0,
+            roughness_texture: None,
+            metallic_texture: None,
         }
     }
 }
@@ -129,6 +156,19 @@ impl Default for Material {
 impl Material {
     pub fn is_emissive(&self) -> bool {
         self.emission.max_element() > 0.0
+    }
+
+    /// Whether the material has a GGX lobe (glTF metallic-roughness, or a rough mirror).
+    pub fn is_glossy(&self) -> bool {
+        match self.model {
+            MaterialModel::MetalRough => true,
+            MaterialModel::Thesis => self.reflectivity > 0.0 && self.roughness > 0.0,
+        }
+    }
+
+    /// Whether the thesis' perfect mirror (a delta lobe) is used.
+    pub fn has_mirror(&self) -> bool {
+        self.reflectivity > 0.0 && !self.is_glossy()
     }
 }
 

@@ -24,6 +24,11 @@
 //!   surface approximated by the dielectric; warned once). Values are clamped to [0, 1], and
 //!   scaled down together if they sum above 1 (warned).
 //! - `IOR` (thesis) → index of refraction, else `Ni`, else 1.5.
+//! - PBR keys (Blender's exporter): `Pr` roughness and `Pm` metallic (in [0, 1]), `map_Pr` /
+//!   `map_Pm` (linear; grey level). With `Pr > 0` and a thesis `reflectivity` (or `illum 3/5`)
+//!   the mirror fraction becomes a rough GGX conductor with F = 1 (alpha = Pr²); otherwise any
+//!   of these keys makes the material glTF's metallic-roughness model with base colour `Kd`
+//!   (roughness `Pr`, default 1 as in glTF; metallic `Pm`, default 0).
 //! - `map_d` → alpha mask (cut-out at 0.5): the texture's alpha, or its grey level when it
 //!   has no alpha channel. Texture options (`-s 1 1 1` ...) are skipped with a warning.
 
@@ -33,7 +38,7 @@ use glam::Vec3;
 
 use super::texture::Role;
 use super::warnings::Warnings;
-use super::{AlphaMask, Material, SceneError};
+use super::{AlphaMask, Material, MaterialModel, SceneError};
 
 /// One `newmtl` block as written.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -52,13 +57,17 @@ pub(crate) struct MtlEntry {
     pub reflectivity: Option<f32>,
     pub refractivity: Option<f32>,
     pub ior: Option<f32>,
+    pub pr: Option<f32>,
+    pub pm: Option<f32>,
+    pub map_pr: Option<(usize, String)>,
+    pub map_pm: Option<(usize, String)>,
 }
 
 /// Keys read but not part of the material model: ignored without a word.
 const IGNORED: &[&str] = &["ka", "ks", "ns", "tf", "sharpness", "map_ka"];
 /// Texture maps the model cannot use: one warning per key.
 const UNSUPPORTED_MAPS: &[&str] = &[
-    "map_ks", "map_ns", "map_ke", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl", "map_pr", "map_pm",
+    "map_ks", "map_ns", "map_ke", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl",
 ];
 
 pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<MtlEntry>, SceneError> {
@@ -120,6 +129,19 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             }
             "map_kd" => m.map_kd = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_d" => m.map_d = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "map_pr" => m.map_pr = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "map_pm" => m.map_pm = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "pr" | "pm" => {
+                let v = scalar(&args, &err)?;
+                if !(0.0..=1.0).contains(&v) {
+                    return Err(err(format!("`{key} {v}` must be in [0, 1]")));
+                }
+                if key_lc == "pr" {
+                    m.pr = Some(v);
+                } else {
+                    m.pm = Some(v);
+                }
+            }
             "emissivity" => m.emissivity = Some(scalar(&args, &err)?),
             "reflectivity" => m.reflectivity = Some(scalar(&args, &err)?),
             "refractivity" => m.refractivity = Some(scalar(&args, &err)?),
@@ -273,6 +295,16 @@ pub(crate) fn to_material(
         .as_ref()
         .and_then(|(line, name)| texture(name, *line, Role::Opacity, w))
         .map(|t| AlphaMask { texture: t, cutoff: 0.5 });
+    let roughness_texture = e.map_pr.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
+    let metallic_texture = e.map_pm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
+    let rough_mirror = refl > 0.0 && (e.pr.unwrap_or(0.0) > 0.0 || roughness_texture.is_some());
+    let pbr = !rough_mirror && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some());
+    let (model, roughness, metallic) = if pbr {
+        refl = 0.0;
+        (MaterialModel::MetalRough, e.pr.unwrap_or(1.0), e.pm.unwrap_or(0.0))
+    } else {
+        (MaterialModel::Thesis, if rough_mirror { e.pr.unwrap_or(1.0) } else { 0.0 }, 0.0)
+    };
     Material {
         name: e.name.clone(),
         albedo,
@@ -282,6 +314,11 @@ pub(crate) fn to_material(
         refractivity: refr,
         ior: e.ior.or(e.ni).unwrap_or(Material::default().ior),
         alpha,
+        model,
+        metallic,
+        roughness,
+        roughness_texture,
+        metallic_texture: if pbr { metallic_texture } else { None },
     }
 }
 

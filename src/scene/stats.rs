@@ -61,6 +61,8 @@ pub struct MaterialCounts {
     pub diffuse: usize,
     pub mirror: usize,
     pub glass: usize,
+    /// With a GGX lobe: glTF metallic-roughness, or a rough thesis mirror.
+    pub glossy: usize,
     pub emissive: usize,
     pub alpha_masked: usize,
     pub textured: usize,
@@ -98,12 +100,16 @@ pub struct Features {
     pub alpha_mask: bool,
     pub mirror: bool,
     pub glass: bool,
+    pub glossy: bool,
 }
 
-pub(crate) const GPU_MATERIAL_BYTES: u64 = 64;
+pub(crate) const GPU_MATERIAL_BYTES: u64 = 80;
 
 fn has_diffuse(m: &Material) -> bool {
-    m.reflectivity + m.refractivity < 1.0
+    match m.model {
+        crate::scene::MaterialModel::Thesis => m.reflectivity + m.refractivity < 1.0,
+        crate::scene::MaterialModel::MetalRough => m.metallic < 1.0 && m.refractivity < 1.0,
+    }
 }
 
 impl Scene {
@@ -165,11 +171,13 @@ impl Scene {
         let mut c = MaterialCounts { total: self.materials.len(), ..Default::default() };
         for m in &self.materials {
             c.diffuse += has_diffuse(m) as usize;
-            c.mirror += (m.reflectivity > 0.0) as usize;
+            c.mirror += m.has_mirror() as usize;
             c.glass += (m.refractivity > 0.0) as usize;
+            c.glossy += m.is_glossy() as usize;
             c.emissive += m.is_emissive() as usize;
             c.alpha_masked += m.alpha.is_some() as usize;
-            c.textured += m.albedo_texture.is_some() as usize;
+            c.textured +=
+                (m.albedo_texture.is_some() || m.roughness_texture.is_some() || m.metallic_texture.is_some()) as usize;
         }
         c
     }
@@ -200,8 +208,9 @@ impl Scene {
             uvs: self.uvs.is_some(),
             textures: !self.textures.is_empty(),
             alpha_mask: self.materials.iter().any(|m| m.alpha.is_some()),
-            mirror: self.materials.iter().any(|m| m.reflectivity > 0.0),
+            mirror: self.materials.iter().any(Material::has_mirror),
             glass: self.materials.iter().any(|m| m.refractivity > 0.0),
+            glossy: self.materials.iter().any(Material::is_glossy),
         }
     }
 }
@@ -260,10 +269,10 @@ mod tests {
         let c = s.material_counts();
         assert_eq!(
             c,
-            MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, emissive: 1, alpha_masked: 0, textured: 0 }
+            MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, glossy: 0, emissive: 1, alpha_masked: 0, textured: 0 }
         );
         let g = s.gpu_bytes_estimate();
-        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 128));
-        assert_eq!(g.total(), 240);
+        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 160));
+        assert_eq!(g.total(), 272);
     }
 }
