@@ -153,6 +153,43 @@ fn assert_agree(what: &str, a: &[f32], b: &[f32], width: usize) {
     assert!(p_blocks >= ALPHA, "{what}: block means differ beyond their noise (X^2 = {chi2:.1}, dof {blocks}, p = {p_blocks:.2e})");
 }
 
+/// The glossy Cornell box with its light's emission scaled by a 2x2 linear checker texture
+/// (0.25 and 1, bilinear, two periods across the light): pt sees it only where paths hit the
+/// light (`material_emission`), pt-nee and BDPT also where they sample it
+/// (`light_sample_radiance`), so their agreement checks both.
+fn textured_light(mut s: Scene) -> Scene {
+    let uvs = s.positions.iter().map(|p| glam::Vec2::new((p.x - 213.0) / 65.0, (p.z - 227.0) / 52.5)).collect();
+    s.uvs = Some(uvs);
+    let (lo, hi) = (64u8, 255u8);
+    s.textures.push(bidir::scene::Texture {
+        name: "checker".into(),
+        width: 2,
+        height: 2,
+        rgba8: vec![lo, lo, lo, 255, hi, hi, hi, 255, hi, hi, hi, 255, lo, lo, lo, 255],
+        srgb: false,
+    });
+    let light = s.materials.iter_mut().find(|m| m.name == "light").expect("the Cornell box has a light");
+    light.emission_texture = Some(0);
+    s
+}
+
+#[test]
+fn emission_texture_is_seen_alike_by_every_integrator() {
+    let (plain, camera) = glossy_cornell();
+    let scene = textured_light(plain.clone());
+    let w = camera.width as usize;
+    let reference = render(&scene, &camera, Integrator::PtNee, 256);
+    let untextured = render(&plain, &camera, Integrator::PtNee, 64);
+    let (a, b) = (reference.iter().sum::<f32>(), untextured.iter().sum::<f32>());
+    eprintln!("textured light: image mean {:.4} of the untextured one (checker mean 0.63)", a / b);
+    assert!(a < 0.8 * b && a > 0.4 * b, "the emission texture is not applied ({a} vs {b})");
+    assert_agree("textured light: pt vs pt-nee", &render(&scene, &camera, Integrator::Pt, 1024), &reference, w);
+    for join in [Join::Lvc(0), Join::Full] {
+        let img = render(&scene, &camera, Integrator::Bdpt(join), 128);
+        assert_agree(&format!("textured light: {} vs pt-nee", Integrator::Bdpt(join).name()), &img, &reference, w);
+    }
+}
+
 #[test]
 fn pt_pt_nee_and_every_bdpt_join_agree_on_glossy_cornell_box() {
     let (scene, camera) = glossy_cornell();

@@ -11,6 +11,7 @@ layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
 layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 0u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint HAS_ALPHA = 0u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 0u;
+layout(constant_id = SPEC_HAS_EMISSION_TEXTURES) const uint HAS_EMISSION_TEXTURES = 0u;
 
 #define TRAVERSE_WITH_ALPHA
 #include "traverse.glsl"
@@ -145,6 +146,16 @@ vec3 material_albedo(GpuMaterial m, vec2 uv) {
         a *= sample_texture(m.tex.x - 1u, uv).rgb;
     }
     return a;
+}
+
+// Emitted radiance of material m at uv (front faces): the emission factor times the
+// emission texture. Its luminance weight for light sampling (m.emission.w) is the factor's.
+vec3 material_emission(GpuMaterial m, vec2 uv) {
+    vec3 e = m.emission.rgb;
+    if (HAS_EMISSION_TEXTURES != 0u && m.emission_texture != 0u) {
+        e *= sample_texture(m.emission_texture - 1u, uv).rgb;
+    }
+    return e;
 }
 
 // The continuous (non-delta) part of material m at texture coordinate uv (bsdf.glsl):

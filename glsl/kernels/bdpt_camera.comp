@@ -15,6 +15,7 @@
 #include "scene.glsl"
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "emission.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -99,7 +100,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         // s = 0: the camera subpath found an emitter (front faces emit).
         if (m.emission.w > 0.0 && s.front) {
             if (depth == 1u) {
-                radiance += beta * m.emission.rgb;
+                radiance += beta * material_emission(m, s.uv);
             } else {
                 float direct_pdf_a = m.emission.w / pc.emitter_power;
                 float cos_l = max(0.0, -dot(s.ng, d));
@@ -109,7 +110,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 // cosine) with it, or s = 0 and s = 1 would weigh the path inconsistently.
                 float to_geometric = HAS_NORMALS != 0u ? mis(cos_in / cos_l) : 1.0;
                 float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * d_vc) * to_geometric;
-                radiance += beta * m.emission.rgb / (1.0 + w_camera);
+                radiance += beta * material_emission(m, s.uv) / (1.0 + w_camera);
             }
         }
         if (pc.max_depth != 0u && depth >= pc.max_depth) {
@@ -140,7 +141,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     vec3 f = continuous_eval(bsdf, ns_f, wo, wi, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
                     float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
-                    vec3 c = beta * f * ls.le * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
+                    vec3 c = beta * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
                         radiance += c;
                     }

@@ -15,6 +15,7 @@
 #include "scene.glsl"
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "emission.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -95,7 +96,7 @@ void main() {
         lvc_offsets[path] = 0u;
         return;
     }
-    vec3 beta = ls.le * cos0 / emission_pdf_w;
+    vec3 beta = light_sample_radiance(ls) * cos0 / emission_pdf_w;
     float beta0 = max3(beta);
     float d_vcm = mis(direct_pdf_a / emission_pdf_w);
     float d_vc = mis(cos0 / emission_pdf_w);

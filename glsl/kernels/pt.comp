@@ -12,6 +12,7 @@
 #include "scene.glsl"
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "emission.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
@@ -55,7 +56,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 float pdf_light_w = light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
                 w = power_heuristic(prev_pdf_w, pdf_light_w);
             }
-            radiance += throughput * m.emission.rgb * w;
+            radiance += throughput * material_emission(m, s.uv) * w;
         }
         if (pc.max_depth != 0u && depth >= pc.max_depth) {
             break;
@@ -101,7 +102,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                     float pdf_fwd_w, pdf_rev_w;
                     vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
                     float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
-                    radiance += throughput * (f / c.pick) * ls.le * (cos_s * w / pdf_light_w);
+                    radiance += throughput * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
                 }
             }
             // Continuation by the continuous part's sampling: f cos / pdf_fwd_w.

@@ -98,6 +98,9 @@ gpu_consts! {
     pub const BIND_LVC_OFFSETS: u32 = 22;
     pub const BIND_LVC_INDEX: u32 = 23;
     pub const BIND_LVC_TOTAL: u32 = 24;
+    /// Per emitter: its vertices' texture coordinates and emission texture (GpuEmitterUv),
+    /// read where SPEC_HAS_EMISSION_TEXTURES.
+    pub const BIND_EMITTER_UVS: u32 = 27;
     /// Sample slices (vec4 per slice and pixel: rgb sum, count) that film_slices.comp adds
     /// into the film in a fixed order, when a pass runs several samples of a pixel at once.
     pub const BIND_SLICES: u32 = 25;
@@ -170,6 +173,8 @@ gpu_consts! {
     /// 1: some material has a GGX lobe (glTF metallic-roughness, or a rough thesis mirror);
     /// 0 compiles the microfacet code out.
     pub const SPEC_HAS_GLOSSY: u32 = 15;
+    /// 1: some emitter's radiance is scaled by an emission texture.
+    pub const SPEC_HAS_EMISSION_TEXTURES: u32 = 16;
 
     /// `GpuMaterial::model`: the thesis' lobes (a rough reflectivity is a GGX conductor with
     /// F = 1), or the glTF metallic-roughness model.
@@ -281,7 +286,7 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (80 bytes) {
+    pub struct GpuMaterial (96 bytes) {
         /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested).
         pub albedo: Vec4,
         /// Emitted radiance (rgb), front face only; w: its luminance.
@@ -299,6 +304,11 @@ gpu_structs! {
         pub dielectric_f0: f32,
         /// MATERIAL_THESIS or MATERIAL_METAL_ROUGH.
         pub model: u32,
+        /// Emission texture + 1 (sRGB; scales `emission`), 0 = none.
+        pub emission_texture: u32,
+        pub pad0: u32,
+        pub pad1: u32,
+        pub pad2: u32,
     }
 
     /// An emissive triangle for light sampling.
@@ -311,6 +321,16 @@ gpu_structs! {
         pub e2: Vec4,
         /// Emitted radiance (rgb); w: probability of choosing this emitter.
         pub radiance: Vec4,
+    }
+
+    /// Where an emitter's emission texture is read (one per GpuEmitter, same order).
+    pub struct GpuEmitterUv (32 bytes) {
+        pub uv0: Vec2,
+        pub uv1: Vec2,
+        pub uv2: Vec2,
+        /// Emission texture + 1, 0 = none.
+        pub texture: u32,
+        pub pad0: u32,
     }
 
     /// One cell of Walker's alias table over emitters (Vose's construction).

@@ -21,6 +21,8 @@ pub struct SceneFeatures {
     pub alpha: bool,
     /// GGX lobes (glTF metallic-roughness, rough mirrors).
     pub glossy: bool,
+    /// Emission textures on emitters.
+    pub emission_textures: bool,
 }
 
 impl SceneFeatures {
@@ -32,12 +34,19 @@ impl SceneFeatures {
             textures: scene.uvs.is_some()
                 && !scene.textures.is_empty()
                 && m.iter().any(|m| {
-                    m.albedo_texture.is_some() || m.alpha.is_some() || m.roughness_texture.is_some() || m.metallic_texture.is_some()
+                    m.albedo_texture.is_some()
+                        || m.alpha.is_some()
+                        || m.roughness_texture.is_some()
+                        || m.metallic_texture.is_some()
+                        || m.emission_texture.is_some()
                 }),
             mirror: m.iter().any(|m| m.reflectivity > 0.0),
             glass: m.iter().any(|m| m.refractivity > 0.0),
             alpha: scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some()),
             glossy: m.iter().any(Material::is_glossy),
+            emission_textures: scene.uvs.is_some()
+                && !scene.textures.is_empty()
+                && m.iter().any(|m| m.is_emissive() && m.emission_texture.is_some()),
         }
     }
 
@@ -45,7 +54,7 @@ impl SceneFeatures {
     /// where it has none (only to measure what specialisation buys; vertex attributes stay as
     /// they are, since their buffers are only uploaded when present).
     pub fn with_all_material_code(self) -> SceneFeatures {
-        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, glossy: true, ..self }
+        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, glossy: true, emission_textures: true, ..self }
     }
 
     pub fn specs(&self) -> Vec<Spec> {
@@ -57,6 +66,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_GLASS, value: self.glass as u32 },
             Spec { id: abi::SPEC_HAS_ALPHA, value: self.alpha as u32 },
             Spec { id: abi::SPEC_HAS_GLOSSY, value: self.glossy as u32 },
+            Spec { id: abi::SPEC_HAS_EMISSION_TEXTURES, value: self.emission_textures as u32 },
         ]
     }
 }
@@ -68,6 +78,7 @@ pub struct GpuScene {
     pub materials: Buffer,
     pub emitters: Buffer,
     pub alias: Buffer,
+    pub emitter_uvs: Buffer,
     pub normals: Buffer,
     pub uvs: Buffer,
     pub textures: Buffer,
@@ -121,16 +132,21 @@ impl GpuScene {
         let texels = if texels.is_empty() { placeholder("scene.texels (none)")? } else { ctx.upload_buffer("scene.texels", &texels)? };
         let emitters = if lights.emitters.is_empty() { placeholder("scene.emitters (none)")? } else { ctx.upload_buffer("scene.emitters", &lights.emitters)? };
         let alias = if lights.alias.is_empty() { placeholder("scene.alias (none)")? } else { ctx.upload_buffer("scene.alias", &lights.alias)? };
+        let emitter_uvs = match features.emission_textures && !lights.emitters.is_empty() {
+            true => ctx.upload_buffer("scene.emitter_uvs", &lights.emitter_uvs(scene))?,
+            false => placeholder("scene.emitter_uvs (none)")?,
+        };
         let positions = ctx.upload_buffer("scene.positions", &scene.positions.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?;
         let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
         let materials = ctx.upload_buffer("scene.materials", &materials)?;
-        let bytes = [&prim_info, &materials, &emitters, &alias, &normals, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
+        let bytes = [&prim_info, &materials, &emitters, &alias, &emitter_uvs, &normals, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
         Ok(GpuScene {
             bvh: gbvh,
             prim_info,
             materials,
             emitters,
             alias,
+            emitter_uvs,
             normals,
             uvs,
             textures,
@@ -153,6 +169,7 @@ impl GpuScene {
             Bind::buffer(abi::BIND_MATERIALS, &self.materials),
             Bind::buffer(abi::BIND_EMITTERS, &self.emitters),
             Bind::buffer(abi::BIND_ALIAS, &self.alias),
+            Bind::buffer(abi::BIND_EMITTER_UVS, &self.emitter_uvs),
             Bind::buffer(abi::BIND_NORMALS, &self.normals),
             Bind::buffer(abi::BIND_UVS, &self.uvs),
             Bind::buffer(abi::BIND_TEXTURES, &self.textures),
@@ -176,6 +193,10 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
             index(m.roughness_texture),
             index(m.metallic_texture),
         ),
+        emission_texture: index(m.emission_texture),
+        pad0: 0,
+        pad1: 0,
+        pad2: 0,
         metallic: m.metallic,
         roughness: m.roughness,
         dielectric_f0: f0,

@@ -112,8 +112,10 @@ pub struct Material {
     /// Linear RGB diffuse albedo (multiplied with the texture where there is one).
     pub albedo: Vec3,
     pub albedo_texture: Option<u32>,
-    /// Emitted radiance, linear RGB, from the front face only.
+    /// Emitted radiance, linear RGB, from the front face only (times the emission texture).
     pub emission: Vec3,
+    /// sRGB texture scaling the emission (glTF emissiveTexture, `map_Ke`).
+    pub emission_texture: Option<u32>,
     /// Fraction of perfect mirror reflection (0..1).
     pub reflectivity: f32,
     /// Fraction of smooth dielectric transmission/reflection (0..1).
@@ -140,6 +142,7 @@ impl Default for Material {
             albedo: Vec3::splat(0.8),
             albedo_texture: None,
             emission: Vec3::ZERO,
+            emission_texture: None,
             reflectivity: 0.0,
             refractivity: 0.0,
             ior: 1.5,

@@ -29,6 +29,7 @@
 //!   the mirror fraction becomes a rough GGX conductor with F = 1 (alpha = Pr²); otherwise any
 //!   of these keys makes the material glTF's metallic-roughness model with base colour `Kd`
 //!   (roughness `Pr`, default 1 as in glTF; metallic `Pm`, default 0).
+//! - `map_Ke` (sRGB) scales the emission (`Ke`, or 1 when `Ke` is absent).
 //! - `map_d` → alpha mask (cut-out at 0.5): the texture's alpha, or its grey level when it
 //!   has no alpha channel. Texture options (`-s 1 1 1` ...) are skipped with a warning.
 
@@ -60,6 +61,7 @@ pub(crate) struct MtlEntry {
     pub pr: Option<f32>,
     pub pm: Option<f32>,
     pub map_pr: Option<(usize, String)>,
+    pub map_ke: Option<(usize, String)>,
     pub map_pm: Option<(usize, String)>,
 }
 
@@ -67,7 +69,7 @@ pub(crate) struct MtlEntry {
 const IGNORED: &[&str] = &["ka", "ks", "ns", "tf", "sharpness", "map_ka"];
 /// Texture maps the model cannot use: one warning per key.
 const UNSUPPORTED_MAPS: &[&str] = &[
-    "map_ks", "map_ns", "map_ke", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl",
+    "map_ks", "map_ns", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl",
 ];
 
 pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<MtlEntry>, SceneError> {
@@ -129,6 +131,7 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             }
             "map_kd" => m.map_kd = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_d" => m.map_d = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "map_ke" => m.map_ke = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_pr" => m.map_pr = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_pm" => m.map_pm = Some((line, texture_name(file, line, &args, w, &err)?)),
             "pr" | "pm" => {
@@ -295,6 +298,12 @@ pub(crate) fn to_material(
         .as_ref()
         .and_then(|(line, name)| texture(name, *line, Role::Opacity, w))
         .map(|t| AlphaMask { texture: t, cutoff: 0.5 });
+    // `map_Ke` scales Ke (1 where Ke is absent, as Blender writes both).
+    let emission_texture = e.map_ke.as_ref().and_then(|(line, name)| texture(name, *line, Role::Colour, w));
+    let emission = match (emission_texture, e.ke) {
+        (Some(_), None) if emission == Vec3::ZERO => Vec3::ONE,
+        _ => emission,
+    };
     let roughness_texture = e.map_pr.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
     let metallic_texture = e.map_pm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
     let rough_mirror = refl > 0.0 && (e.pr.unwrap_or(0.0) > 0.0 || roughness_texture.is_some());
@@ -310,6 +319,7 @@ pub(crate) fn to_material(
         albedo,
         albedo_texture,
         emission,
+        emission_texture: if emission.max_element() > 0.0 { emission_texture } else { None },
         reflectivity: refl,
         refractivity: refr,
         ior: e.ior.or(e.ni).unwrap_or(Material::default().ior),
@@ -339,6 +349,25 @@ mod tests {
             next += 1;
             Some(next - 1)
         })
+    }
+
+    #[test]
+    fn pbr_keys_make_rough_mirrors_or_the_metal_rough_model() {
+        // Pr on a thesis mirror: a rough conductor with F = 1, the rest unchanged.
+        let m = material("newmtl R\nKd 0.5 0.5 0.5\nreflectivity 0.6\nPr 0.3\n");
+        assert_eq!((m.model, m.reflectivity, m.roughness, m.metallic), (MaterialModel::Thesis, 0.6, 0.3, 0.0));
+        assert!(m.is_glossy() && !m.has_mirror());
+        // Pr 0 keeps the perfect mirror.
+        let m = material("newmtl M\nillum 3\nPr 0\n");
+        assert!(m.has_mirror() && !m.is_glossy());
+        // Blender's keys without the thesis mirror: glTF's model, base colour Kd.
+        let m = material("newmtl P\nKd 0.8 0.2 0.1\nPr 0.4\nPm 1\nmap_Pr r.png\nmap_Pm m.png\n");
+        assert_eq!((m.model, m.roughness, m.metallic, m.reflectivity), (MaterialModel::MetalRough, 0.4, 1.0, 0.0));
+        assert_eq!((m.roughness_texture, m.metallic_texture), (Some(0), Some(1)));
+        // Roughness defaults to glTF's 1 when only Pm is given; values outside [0, 1] are errors.
+        assert_eq!(material("newmtl Q\nPm 0.5\n").roughness, 1.0);
+        let mut w = Warnings::default();
+        assert!(parse(Path::new("m.mtl"), "newmtl X\nPr 1.5\n", &mut w).unwrap_err().to_string().contains("m.mtl:2"));
     }
 
     #[test]

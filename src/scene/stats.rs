@@ -70,8 +70,8 @@ pub struct MaterialCounts {
 
 /// Estimated GPU memory, by buffer. The layout assumed is the std430 one the kernels will use:
 /// positions and normals as `vec4` (std430 pads a `vec3` array to 16 bytes), UVs as `vec2`,
-/// triangles as three `uint`, one `uint` material id per triangle, 64 bytes per material
-/// (albedo, emission, parameters and texture indices: four `vec4`s), textures as RGBA8
+/// triangles as three `uint`, one `uint` material id per triangle, 96 bytes per material
+/// (`GpuMaterial`), textures as RGBA8
 /// without mipmaps. The BVH is not included: the bvh module adds its own nodes and
 /// reordered triangle indices.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -103,12 +103,14 @@ pub struct Features {
     pub glossy: bool,
 }
 
-pub(crate) const GPU_MATERIAL_BYTES: u64 = 80;
+pub(crate) const GPU_MATERIAL_BYTES: u64 = 96;
 
 fn has_diffuse(m: &Material) -> bool {
     match m.model {
         crate::scene::MaterialModel::Thesis => m.reflectivity + m.refractivity < 1.0,
-        crate::scene::MaterialModel::MetalRough => m.metallic < 1.0 && m.refractivity < 1.0,
+        crate::scene::MaterialModel::MetalRough => {
+            (m.metallic < 1.0 || m.metallic_texture.is_some()) && m.refractivity < 1.0
+        }
     }
 }
 
@@ -272,7 +274,7 @@ mod tests {
             MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, glossy: 0, emissive: 1, alpha_masked: 0, textured: 0 }
         );
         let g = s.gpu_bytes_estimate();
-        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 160));
-        assert_eq!(g.total(), 272);
+        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 192));
+        assert_eq!(g.total(), 304);
     }
 }

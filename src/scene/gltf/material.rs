@@ -5,11 +5,12 @@
 //!   G roughness) → metallic, roughness; `KHR_materials_ior` → ior (1.5: F0 = 0.04).
 //! - `KHR_materials_transmission.transmissionFactor` → refractivity (smooth glass) of the
 //!   dielectric part only: `transmission × (1 - metallic)`.
-//! - `emissiveFactor × KHR_materials_emissive_strength` → emission.
+//! - `emissiveFactor × KHR_materials_emissive_strength` → emission, times `emissiveTexture`
+//!   (sRGB) where there is one.
 //! - `alphaMode: MASK` → alpha mask on the base colour texture's alpha, cutoff
 //!   `alphaCutoff` (0.5) divided by the base colour factor's alpha (glTF multiplies the two).
 //!   `BLEND` is treated as opaque.
-//! - Textures the model cannot use (normal, emissive, transmission) are ignored with one
+//! - Textures the model cannot use (normal, transmission) are ignored with one
 //!   warning each; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
@@ -77,9 +78,15 @@ pub(super) fn convert<'a>(
         }
         let refractivity = transmission.map_or(0.0, |t| t.transmission_factor()).clamp(0.0, 1.0) * (1.0 - metallic);
         let emission = Vec3::from(m.emissive_factor()) * m.emissive_strength().unwrap_or(1.0);
-        if m.emissive_texture().is_some() {
-            unsupported(w, "emissiveTexture (emissiveFactor alone is used)");
-        }
+        let emission_texture = match m.emissive_texture() {
+            Some(info) if emission.max_element() > 0.0 => {
+                if info.tex_coord() != 0 {
+                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
+                }
+                image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
+            }
+            _ => None,
+        };
         if m.normal_texture().is_some() {
             unsupported(w, "normalTexture");
         }
@@ -108,6 +115,7 @@ pub(super) fn convert<'a>(
             albedo,
             albedo_texture,
             emission,
+            emission_texture,
             reflectivity: 0.0,
             refractivity,
             ior: m.ior().unwrap_or(1.5),
