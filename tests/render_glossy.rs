@@ -5,7 +5,9 @@
 //! - pt, pt-nee and every BDPT join agree on a small Cornell box with a rough metal floor, a
 //!   near-mirror metal back wall, a rough glTF dielectric box and a rough thesis mirror box:
 //!   16x16-pixel block means of the difference of two images are judged against their own
-//!   standard errors (chi-square over the blocks, and the overall mean).
+//!   standard errors (chi-square over the blocks, and the overall mean);
+//! - the same with an emission texture on the light, and in a furnace whose inner surface has
+//!   a tangent-space normal map and a glTF metallic-roughness material.
 
 mod common;
 
@@ -200,5 +202,72 @@ fn pt_pt_nee_and_every_bdpt_join_agree_on_glossy_cornell_box() {
     for join in [Join::Lvc(0), Join::Full, Join::K(4), Join::K(1)] {
         let img = render(&scene, &camera, Integrator::Bdpt(join), 256);
         assert_agree(&format!("{} vs pt-nee", Integrator::Bdpt(join).name()), &img, &reference, w);
+    }
+}
+
+// ---- Normal maps ----------------------------------------------------------------------------
+
+/// A 16x16 tangent-space normal map of sinusoidal bumps (X and Y up to ±0.5), linear RGBA8.
+fn bumpy_normal_map() -> bidir::scene::Texture {
+    let mut rgba8 = Vec::new();
+    for y in 0..16 {
+        for x in 0..16 {
+            let (a, b) = (x as f32 * std::f32::consts::PI / 4.0, y as f32 * std::f32::consts::PI / 4.0);
+            let n = Vec3::new(0.5 * a.sin(), 0.5 * b.cos(), 1.0).normalize();
+            let enc = (n * 0.5 + Vec3::splat(0.5)) * 255.0;
+            rgba8.extend([enc.x.round() as u8, enc.y.round() as u8, enc.z.round() as u8, 255]);
+        }
+    }
+    bidir::scene::Texture { name: "bumps".into(), width: 16, height: 16, rgba8, srgb: false }
+}
+
+#[test]
+fn integrators_agree_in_a_normal_mapped_glossy_furnace() {
+    let (positions, tris) = geometry::icosphere(3, Vec3::ZERO, 1.0);
+    let triangles: Vec<[u32; 3]> = tris.into_iter().map(|[a, b, c]| [a, c, b]).collect();
+    let n = triangles.len();
+    let normals = positions.iter().map(|p| -p.normalize()).collect();
+    let uvs = positions.iter().map(|p| glam::Vec2::new(2.0 * p.x.atan2(p.z), 3.0 * p.y)).collect();
+    let material = Material {
+        name: "bumpy".into(),
+        albedo: Vec3::new(0.7, 0.6, 0.5),
+        emission: Vec3::splat(0.5),
+        model: MaterialModel::MetalRough,
+        metallic: 0.5,
+        roughness: 0.4,
+        normal_texture: Some(0),
+        ..Default::default()
+    };
+    let scene = Scene {
+        source: "test:normal-mapped-furnace".into(),
+        positions,
+        normals: Some(normals),
+        uvs: Some(uvs),
+        triangles,
+        material_ids: vec![0; n],
+        materials: vec![material],
+        textures: vec![bumpy_normal_map()],
+        ..Default::default()
+    };
+    let camera = Camera {
+        name: "inside".into(),
+        eye: Vec3::new(0.1, -0.05, 0.02),
+        target: Vec3::new(1.0, 0.3, 0.2),
+        up: Vec3::Y,
+        fov_y_deg: 90.0,
+        width: 64,
+        height: 64,
+    };
+    let mut flat = scene.clone();
+    flat.materials[0].normal_texture = None;
+    let reference = render(&scene, &camera, Integrator::PtNee, 128);
+    let unmapped = render(&flat, &camera, Integrator::PtNee, 32);
+    let (a, b) = (reference.iter().sum::<f32>(), unmapped.iter().sum::<f32>());
+    eprintln!("normal-mapped furnace: image mean {:.4} of the unmapped one", a / b);
+    assert!((a / b - 1.0).abs() > 0.01, "the normal map changes nothing ({a} vs {b})");
+    assert_agree("normal map: pt vs pt-nee", &render(&scene, &camera, Integrator::Pt, 128), &reference, 64);
+    for join in [Join::Lvc(0), Join::Full] {
+        let img = render(&scene, &camera, Integrator::Bdpt(join), 48);
+        assert_agree(&format!("normal map: {} vs pt-nee", Integrator::Bdpt(join).name()), &img, &reference, 64);
     }
 }

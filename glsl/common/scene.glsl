@@ -12,6 +12,7 @@ layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 0u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint HAS_ALPHA = 0u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 0u;
 layout(constant_id = SPEC_HAS_EMISSION_TEXTURES) const uint HAS_EMISSION_TEXTURES = 0u;
+layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint HAS_NORMAL_MAPS = 0u;
 
 #define TRAVERSE_WITH_ALPHA
 #include "traverse.glsl"
@@ -25,6 +26,7 @@ layout(std430, binding = BIND_UVS) readonly buffer Uvs { vec2 vertex_uvs[]; };
 layout(std430, binding = BIND_TEXTURES) readonly buffer Textures { GpuTexture textures[]; };
 layout(std430, binding = BIND_TEXELS) readonly buffer Texels { uint texels[]; };
 layout(std430, binding = BIND_POSITIONS) readonly buffer Positions { float vertex_positions[]; };
+layout(std430, binding = BIND_TANGENTS) readonly buffer Tangents { vec4 vertex_tangents[]; };
 
 vec3 vertex_position(uint i) {
     return vec3(vertex_positions[3u * i], vertex_positions[3u * i + 1u], vertex_positions[3u * i + 2u]);
@@ -89,6 +91,27 @@ bool traverse_alpha_hit(uint prim, vec2 bary) {
     return sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a >= m.albedo.w;
 }
 
+// The shading normal n perturbed by the material's tangent-space normal map (glTF 2.0:
+// bitangent = cross(n, t) * t.w; X and Y scaled by normalTexture.scale), n where there is
+// none or the tangent frame degenerates.
+vec3 normal_mapped(uvec4 info, vec2 bary, vec2 uv, vec3 n) {
+    GpuMaterial m = materials[info.w];
+    if (m.normal_texture == 0u) {
+        return n;
+    }
+    vec4 t = (1.0 - bary.x - bary.y) * vertex_tangents[info.x] + bary.x * vertex_tangents[info.y] + bary.y * vertex_tangents[info.z];
+    vec3 tt = t.xyz - n * dot(n, t.xyz);
+    if (dot(tt, tt) <= 1.0e-12) {
+        return n;
+    }
+    tt = normalize(tt);
+    vec3 bt = cross(n, tt) * (t.w < 0.0 ? -1.0 : 1.0);
+    vec3 c = sample_texture(m.normal_texture - 1u, uv).xyz * 2.0 - 1.0;
+    c.xy *= m.normal_scale;
+    vec3 p = c.x * tt + c.y * bt + c.z * n;
+    return dot(p, p) > 0.0 ? normalize(p) : n;
+}
+
 // What shading needs at a hit.
 struct Surface {
     vec3 p;
@@ -110,8 +133,12 @@ Surface surface_at(vec3 o, vec3 d, TraceHit h) {
         vec3 n1 = vec3(vertex_normals[3u * info.y], vertex_normals[3u * info.y + 1u], vertex_normals[3u * info.y + 2u]);
         vec3 n2 = vec3(vertex_normals[3u * info.z], vertex_normals[3u * info.z + 1u], vertex_normals[3u * info.z + 2u]);
         vec3 n = (1.0 - h.bary.x - h.bary.y) * n0 + h.bary.x * n1 + h.bary.y * n2;
+        s.uv = HAS_UVS != 0u ? interpolate_uv(info, h.bary) : vec2(0.0);
         if (dot(n, n) > 0.0) {
             n = normalize(n);
+            if (HAS_NORMAL_MAPS != 0u) {
+                n = normal_mapped(info, h.bary, s.uv, n);
+            }
             s.ns = dot(n, s.ng) < 0.0 ? -n : n;
         }
     }

@@ -101,6 +101,8 @@ gpu_consts! {
     /// Per emitter: its vertices' texture coordinates and emission texture (GpuEmitterUv),
     /// read where SPEC_HAS_EMISSION_TEXTURES.
     pub const BIND_EMITTER_UVS: u32 = 27;
+    /// Per-vertex tangents (vec4: xyz, handedness w), read where SPEC_HAS_NORMAL_MAPS.
+    pub const BIND_TANGENTS: u32 = 28;
     /// Sample slices (vec4 per slice and pixel: rgb sum, count) that film_slices.comp adds
     /// into the film in a fixed order, when a pass runs several samples of a pixel at once.
     pub const BIND_SLICES: u32 = 25;
@@ -175,6 +177,8 @@ gpu_consts! {
     pub const SPEC_HAS_GLOSSY: u32 = 15;
     /// 1: some emitter's radiance is scaled by an emission texture.
     pub const SPEC_HAS_EMISSION_TEXTURES: u32 = 16;
+    /// 1: some material has a tangent-space normal map.
+    pub const SPEC_HAS_NORMAL_MAPS: u32 = 17;
 
     /// `GpuMaterial::model`: the thesis' lobes (a rough reflectivity is a GGX conductor with
     /// F = 1), or the glTF metallic-roughness model.
@@ -306,9 +310,11 @@ gpu_structs! {
         pub model: u32,
         /// Emission texture + 1 (sRGB; scales `emission`), 0 = none.
         pub emission_texture: u32,
+        /// Normal map + 1 (linear, tangent space), 0 = none.
+        pub normal_texture: u32,
+        /// Scale of the normal map's X and Y.
+        pub normal_scale: f32,
         pub pad0: u32,
-        pub pad1: u32,
-        pub pad2: u32,
     }
 
     /// An emissive triangle for light sampling.

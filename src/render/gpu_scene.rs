@@ -23,6 +23,8 @@ pub struct SceneFeatures {
     pub glossy: bool,
     /// Emission textures on emitters.
     pub emission_textures: bool,
+    /// Tangent-space normal maps (needs normals and UVs).
+    pub normal_maps: bool,
 }
 
 impl SceneFeatures {
@@ -39,6 +41,7 @@ impl SceneFeatures {
                         || m.roughness_texture.is_some()
                         || m.metallic_texture.is_some()
                         || m.emission_texture.is_some()
+                        || m.normal_texture.is_some()
                 }),
             mirror: m.iter().any(|m| m.reflectivity > 0.0),
             glass: m.iter().any(|m| m.refractivity > 0.0),
@@ -47,6 +50,10 @@ impl SceneFeatures {
             emission_textures: scene.uvs.is_some()
                 && !scene.textures.is_empty()
                 && m.iter().any(|m| m.is_emissive() && m.emission_texture.is_some()),
+            normal_maps: scene.normals.is_some()
+                && scene.uvs.is_some()
+                && !scene.textures.is_empty()
+                && m.iter().any(|m| m.normal_texture.is_some()),
         }
     }
 
@@ -54,7 +61,7 @@ impl SceneFeatures {
     /// where it has none (only to measure what specialisation buys; vertex attributes stay as
     /// they are, since their buffers are only uploaded when present).
     pub fn with_all_material_code(self) -> SceneFeatures {
-        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, glossy: true, emission_textures: true, ..self }
+        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, glossy: true, emission_textures: true, normal_maps: true, ..self }
     }
 
     pub fn specs(&self) -> Vec<Spec> {
@@ -67,6 +74,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_ALPHA, value: self.alpha as u32 },
             Spec { id: abi::SPEC_HAS_GLOSSY, value: self.glossy as u32 },
             Spec { id: abi::SPEC_HAS_EMISSION_TEXTURES, value: self.emission_textures as u32 },
+            Spec { id: abi::SPEC_HAS_NORMAL_MAPS, value: self.normal_maps as u32 },
         ]
     }
 }
@@ -80,6 +88,7 @@ pub struct GpuScene {
     pub alias: Buffer,
     pub emitter_uvs: Buffer,
     pub normals: Buffer,
+    pub tangents: Buffer,
     pub uvs: Buffer,
     pub textures: Buffer,
     pub texels: Buffer,
@@ -116,6 +125,10 @@ impl GpuScene {
             (Some(n), true) => ctx.upload_buffer("scene.normals", &n.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?,
             _ => placeholder("scene.normals (none)")?,
         };
+        let tangents = match features.normal_maps.then(|| crate::scene::tangents::generate(scene)).flatten() {
+            Some(t) => ctx.upload_buffer("scene.tangents", &t)?,
+            None => placeholder("scene.tangents (none)")?,
+        };
         let uvs = match (&scene.uvs, features.uvs) {
             (Some(uv), true) => ctx.upload_buffer("scene.uvs", uv)?,
             _ => placeholder("scene.uvs (none)")?,
@@ -139,7 +152,7 @@ impl GpuScene {
         let positions = ctx.upload_buffer("scene.positions", &scene.positions.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?;
         let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
         let materials = ctx.upload_buffer("scene.materials", &materials)?;
-        let bytes = [&prim_info, &materials, &emitters, &alias, &emitter_uvs, &normals, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
+        let bytes = [&prim_info, &materials, &emitters, &alias, &emitter_uvs, &normals, &tangents, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
         Ok(GpuScene {
             bvh: gbvh,
             prim_info,
@@ -148,6 +161,7 @@ impl GpuScene {
             alias,
             emitter_uvs,
             normals,
+            tangents,
             uvs,
             textures,
             texels,
@@ -171,6 +185,7 @@ impl GpuScene {
             Bind::buffer(abi::BIND_ALIAS, &self.alias),
             Bind::buffer(abi::BIND_EMITTER_UVS, &self.emitter_uvs),
             Bind::buffer(abi::BIND_NORMALS, &self.normals),
+            Bind::buffer(abi::BIND_TANGENTS, &self.tangents),
             Bind::buffer(abi::BIND_UVS, &self.uvs),
             Bind::buffer(abi::BIND_TEXTURES, &self.textures),
             Bind::buffer(abi::BIND_TEXELS, &self.texels),
@@ -194,9 +209,9 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
             index(m.metallic_texture),
         ),
         emission_texture: index(m.emission_texture),
+        normal_texture: index(m.normal_texture),
+        normal_scale: m.normal_scale,
         pad0: 0,
-        pad1: 0,
-        pad2: 0,
         metallic: m.metallic,
         roughness: m.roughness,
         dielectric_f0: f0,

@@ -23,6 +23,7 @@ mod obj;
 mod obj_check;
 mod quad_light;
 mod stats;
+pub mod tangents;
 mod texture;
 mod warnings;
 
@@ -124,6 +125,9 @@ pub struct Material {
     pub ior: f32,
     /// Alpha-tested cut-out: texels with alpha below the cutoff are holes.
     pub alpha: Option<AlphaMask>,
+    /// Tangent-space normal map (linear; glTF normalTexture) and its scale of X and Y.
+    pub normal_texture: Option<u32>,
+    pub normal_scale: f32,
     pub model: MaterialModel,
     /// Metallic factor (MetalRough), times the metallic texture's blue channel.
     pub metallic: f32,
@@ -147,6 +151,8 @@ impl Default for Material {
             refractivity: 0.0,
             ior: 1.5,
             alpha: None,
+            normal_texture: None,
+            normal_scale: 1.0,
             model: MaterialModel::Thesis,
             metallic: 0.0,
             roughness: 0.0,

@@ -25,10 +25,11 @@
 //!   scaled down together if they sum above 1 (warned).
 //! - `IOR` (thesis) → index of refraction, else `Ni`, else 1.5.
 //! - PBR keys (Blender's exporter): `Pr` roughness and `Pm` metallic (in [0, 1]), `map_Pr` /
-//!   `map_Pm` (linear; grey level). With `Pr > 0` and a thesis `reflectivity` (or `illum 3/5`)
-//!   the mirror fraction becomes a rough GGX conductor with F = 1 (alpha = Pr²); otherwise any
-//!   of these keys makes the material glTF's metallic-roughness model with base colour `Kd`
-//!   (roughness `Pr`, default 1 as in glTF; metallic `Pm`, default 0).
+//!   `map_Pm` (linear; grey level). A thesis mirror (`reflectivity`, `illum 3/5`) stays one, made
+//!   a rough GGX conductor with F = 1 (alpha = Pr²) by `Pr > 0` (or `map_Pr`); without a mirror
+//!   any of these keys makes the material glTF's metallic-roughness model with base colour
+//!   `Kd` (roughness `Pr`, default 1 as in glTF; metallic `Pm`, default 0).
+//! - `norm` → tangent-space normal map (linear; `map_Bump` is a height map: not supported).
 //! - `map_Ke` (sRGB) scales the emission (`Ke`, or 1 when `Ke` is absent).
 //! - `map_d` → alpha mask (cut-out at 0.5): the texture's alpha, or its grey level when it
 //!   has no alpha channel. Texture options (`-s 1 1 1` ...) are skipped with a warning.
@@ -62,6 +63,7 @@ pub(crate) struct MtlEntry {
     pub pm: Option<f32>,
     pub map_pr: Option<(usize, String)>,
     pub map_ke: Option<(usize, String)>,
+    pub norm: Option<(usize, String)>,
     pub map_pm: Option<(usize, String)>,
 }
 
@@ -69,7 +71,7 @@ pub(crate) struct MtlEntry {
 const IGNORED: &[&str] = &["ka", "ks", "ns", "tf", "sharpness", "map_ka"];
 /// Texture maps the model cannot use: one warning per key.
 const UNSUPPORTED_MAPS: &[&str] = &[
-    "map_ks", "map_ns", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl",
+    "map_ks", "map_ns", "map_bump", "bump", "disp", "decal", "refl", "map_refl",
 ];
 
 pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<MtlEntry>, SceneError> {
@@ -131,6 +133,7 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             }
             "map_kd" => m.map_kd = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_d" => m.map_d = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "norm" => m.norm = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_ke" => m.map_ke = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_pr" => m.map_pr = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_pm" => m.map_pm = Some((line, texture_name(file, line, &args, w, &err)?)),
@@ -158,7 +161,7 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             k if IGNORED.contains(&k) => {}
             k if UNSUPPORTED_MAPS.contains(&k) => w.warn_once(&format!("mtl-map-{k}"), || {
                 format!(
-                    "{}:{line}: `{key}` is not supported (bidir has no bump, specular or normal maps); ignored",
+                    "{}:{line}: `{key}` is not supported (bidir has no bump, specular or displacement maps); ignored",
                     file.display()
                 )
             }),
@@ -306,13 +309,15 @@ pub(crate) fn to_material(
     };
     let roughness_texture = e.map_pr.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
     let metallic_texture = e.map_pm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
-    let rough_mirror = refl > 0.0 && (e.pr.unwrap_or(0.0) > 0.0 || roughness_texture.is_some());
-    let pbr = !rough_mirror && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some());
+    // A thesis mirror stays one (rough where Pr or map_Pr says so); otherwise the PBR keys
+    // make the metallic-roughness model.
+    let pbr = refl == 0.0 && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some());
     let (model, roughness, metallic) = if pbr {
-        refl = 0.0;
         (MaterialModel::MetalRough, e.pr.unwrap_or(1.0), e.pm.unwrap_or(0.0))
+    } else if refl > 0.0 && roughness_texture.is_some() {
+        (MaterialModel::Thesis, e.pr.unwrap_or(1.0), 0.0)
     } else {
-        (MaterialModel::Thesis, if rough_mirror { e.pr.unwrap_or(1.0) } else { 0.0 }, 0.0)
+        (MaterialModel::Thesis, if refl > 0.0 { e.pr.unwrap_or(0.0) } else { 0.0 }, 0.0)
     };
     Material {
         name: e.name.clone(),
@@ -324,6 +329,8 @@ pub(crate) fn to_material(
         refractivity: refr,
         ior: e.ior.or(e.ni).unwrap_or(Material::default().ior),
         alpha,
+        normal_texture: e.norm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w)),
+        normal_scale: 1.0,
         model,
         metallic,
         roughness,

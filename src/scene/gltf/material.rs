@@ -10,7 +10,9 @@
 //! - `alphaMode: MASK` → alpha mask on the base colour texture's alpha, cutoff
 //!   `alphaCutoff` (0.5) divided by the base colour factor's alpha (glTF multiplies the two).
 //!   `BLEND` is treated as opaque.
-//! - Textures the model cannot use (normal, transmission) are ignored with one
+//! - `normalTexture` (linear, tangent space, `scale`) → normal map; tangents are generated
+//!   from the UVs (`scene/tangents.rs`).
+//! - Textures the model cannot use (transmission) are ignored with one
 //!   warning each; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
@@ -87,9 +89,15 @@ pub(super) fn convert<'a>(
             }
             _ => None,
         };
-        if m.normal_texture().is_some() {
-            unsupported(w, "normalTexture");
-        }
+        let (normal_texture, normal_scale) = match m.normal_texture() {
+            Some(info) => {
+                if info.tex_coord() != 0 {
+                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
+                }
+                (image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?, info.scale())
+            }
+            None => (None, 1.0),
+        };
         let alpha = match m.alpha_mode() {
             AlphaMode::Opaque => None,
             AlphaMode::Blend => {
@@ -120,6 +128,8 @@ pub(super) fn convert<'a>(
             refractivity,
             ior: m.ior().unwrap_or(1.5),
             alpha,
+            normal_texture,
+            normal_scale,
             model: MaterialModel::MetalRough,
             metallic,
             roughness,
