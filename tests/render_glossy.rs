@@ -271,3 +271,30 @@ fn integrators_agree_in_a_normal_mapped_glossy_furnace() {
         assert_agree(&format!("normal map: {} vs pt-nee", Integrator::Bdpt(join).name()), &img, &reference, 64);
     }
 }
+
+// ---- Alpha BLEND ------------------------------------------------------------------------------
+
+/// A black quad of opacity 0.3 covering the view inside a furnace of radiance 1 with black
+/// walls: every pixel sees 1 - 0.3 = 0.7 exactly, if paths pass with probability 1 - alpha.
+#[test]
+fn blend_passes_paths_with_probability_one_minus_alpha() {
+    let (mut positions, tris) = geometry::icosphere(2, Vec3::ZERO, 1.0);
+    let mut triangles: Vec<[u32; 3]> = tris.into_iter().map(|[a, b, c]| [a, c, b]).collect();
+    let mut material_ids = vec![0; triangles.len()];
+    let q = positions.len() as u32;
+    positions.extend([Vec3::new(-0.6, -0.6, 0.5), Vec3::new(0.6, -0.6, 0.5), Vec3::new(0.6, 0.6, 0.5), Vec3::new(-0.6, 0.6, 0.5)]);
+    triangles.extend([[q, q + 2, q + 1], [q, q + 3, q + 2]]);
+    material_ids.extend([1, 1]);
+    let walls = Material { name: "walls".into(), albedo: Vec3::ZERO, emission: Vec3::ONE, ..Default::default() };
+    let veil = Material { name: "veil".into(), albedo: Vec3::ZERO, blend: Some(0.3), ..Default::default() };
+    let scene = Scene { source: "test:blend".into(), positions, triangles, material_ids, materials: vec![walls, veil], ..Default::default() };
+    let camera = Camera { name: "c".into(), eye: Vec3::ZERO, target: Vec3::Z, up: Vec3::Y, fov_y_deg: 60.0, width: 32, height: 32 };
+    for (integrator, spp) in [(Integrator::Pt, 64), (Integrator::PtNee, 64), (Integrator::Bdpt(Join::Lvc(0)), 64), (Integrator::Bdpt(Join::Full), 64)] {
+        let img = render(&scene, &camera, integrator, spp);
+        let px: Vec<f64> = img.chunks_exact(3).map(|c| c[0] as f64).collect();
+        let (mean, se) = mean_and_se(&px);
+        eprintln!("blend 0.3: {}: {mean:.4} ± {se:.4} (expected 0.7)", integrator.name());
+        assert!(se < 0.0025, "too noisy to resolve 1.5 %");
+        assert!((mean - 0.7).abs() < 4.0 * se, "{}: {mean} ± {se}, expected 0.7", integrator.name());
+    }
+}

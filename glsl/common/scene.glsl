@@ -82,13 +82,40 @@ vec2 interpolate_uv(uvec4 info, vec2 bary) {
     return (1.0 - bary.x - bary.y) * vertex_uvs[info.x] + bary.x * vertex_uvs[info.y] + bary.y * vertex_uvs[info.z];
 }
 
+// Per-path seed of BLEND's stochastic opacity: the kernels set it from their random numbers
+// at the start of every path (while HAS_ALPHA).
+uint blend_seed = 0u;
+
+// A uniform number in [0, 1) for a hit of triangle prim at bary on this path: a hash, so the
+// closest-hit search may ask again and get the same answer, while distinct hits (another
+// point, another triangle, another path) get independent-looking ones.
+float blend_random(uint prim, vec2 bary) {
+    uint h = blend_seed ^ (prim * 0x9e3779b9u) ^ (floatBitsToUint(bary.x) * 0x85ebca6bu) ^ (floatBitsToUint(bary.y) * 0xc2b2ae35u);
+    h ^= h >> 16u;
+    h *= 0x7feb352du;
+    h ^= h >> 15u;
+    h *= 0x846ca68bu;
+    h ^= h >> 16u;
+    return float(h >> 8u) * (1.0 / 16777216.0);
+}
+
+// MASK: kept where the alpha texture reaches the cutoff (m.albedo.w > 0). BLEND: kept with
+// probability opacity x texture alpha, so a path passes with probability 1 - alpha and the
+// surface's contribution is weighted by alpha in expectation (stochastic opacity, unbiased).
 bool traverse_alpha_hit(uint prim, vec2 bary) {
     uvec4 info = prim_info[prim];
     GpuMaterial m = materials[info.w];
-    if (m.tex.y == 0u) {
+    if (m.albedo.w > 0.0) {
+        return m.tex.y == 0u || sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a >= m.albedo.w;
+    }
+    if (m.opacity >= 1.0 && m.tex.y == 0u) {
         return true;
     }
-    return sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a >= m.albedo.w;
+    float alpha = m.opacity;
+    if (HAS_UVS != 0u && m.tex.y != 0u) {
+        alpha *= sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a;
+    }
+    return blend_random(prim, bary) < alpha;
 }
 
 // The shading normal n perturbed by the material's tangent-space normal map (glTF 2.0:

@@ -70,6 +70,9 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, f
 
 // `path`: the light path of this camera sample (megakernel joins).
 vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
+    if (HAS_ALPHA != 0u) {
+        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+    }
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;
     vec3 d = camera_direction(pc.camera, xy);

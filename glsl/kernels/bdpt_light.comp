@@ -84,6 +84,9 @@ void main() {
         return;
     }
     Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
+    if (HAS_ALPHA != 0u) {
+        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+    }
 
     // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
     LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));

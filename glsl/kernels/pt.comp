@@ -33,6 +33,9 @@ float power_heuristic(float pdf_a, float pdf_b) {
 
 // One path's radiance estimate for image position `pixel` (pixels, row 0 on top).
 vec3 trace_path(vec2 pixel, inout Rng rng) {
+    if (HAS_ALPHA != 0u) {
+        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+    }
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;
     vec3 d = camera_direction(pc.camera, pixel);

@@ -62,8 +62,8 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
     );
     let m = s.material_counts();
     println!(
-        "materials:    {} ({} with a diffuse part, {} mirror, {} glass, {} glossy (GGX), {} emissive, {} alpha-masked, {} textured)",
-        m.total, m.diffuse, m.mirror, m.glass, m.glossy, m.emissive, m.alpha_masked, m.textured
+        "materials:    {} ({} with a diffuse part, {} mirror, {} glass, {} glossy (GGX), {} emissive, {} alpha-masked, {} blended, {} textured)",
+        m.total, m.diffuse, m.mirror, m.glass, m.glossy, m.emissive, m.alpha_masked, m.blended, m.textured
     );
     let emitters = s.emitters();
     if emitters.is_empty() {

@@ -291,7 +291,7 @@ gpu_structs! {
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
     pub struct GpuMaterial (96 bytes) {
-        /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested).
+        /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested; BLEND: 0, see `opacity`).
         pub albedo: Vec4,
         /// Emitted radiance (rgb), front face only; w: its luminance.
         pub emission: Vec4,
@@ -314,7 +314,9 @@ gpu_structs! {
         pub normal_texture: u32,
         /// Scale of the normal map's X and Y.
         pub normal_scale: f32,
-        pub pad0: u32,
+        /// glTF BLEND: the base opacity (times the alpha texture's alpha, `tex.y`); a hit is
+        /// kept with that probability. 1 for other materials.
+        pub opacity: f32,
     }
 
     /// An emissive triangle for light sampling.

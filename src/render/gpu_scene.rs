@@ -45,7 +45,7 @@ impl SceneFeatures {
                 }),
             mirror: m.iter().any(|m| m.reflectivity > 0.0),
             glass: m.iter().any(|m| m.refractivity > 0.0),
-            alpha: scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some()),
+            alpha: (scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some())) || m.iter().any(|m| m.blend.is_some()),
             glossy: m.iter().any(Material::is_glossy),
             emission_textures: scene.uvs.is_some()
                 && !scene.textures.is_empty()
@@ -199,19 +199,24 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
     let index = |t: Option<u32>| t.map_or(0, |t| t + 1);
     let f0 = ((m.ior - 1.0) / (m.ior + 1.0)).powi(2);
     GpuMaterial {
-        albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff)),
+        // A MASK cutoff stays positive: 0 in `albedo.w` means "not MASK" to the kernels.
+        albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff.max(f32::MIN_POSITIVE))),
         emission: m.emission.extend(luminance(m.emission)),
         params: Vec4::new(m.reflectivity, m.refractivity, m.ior, 0.0),
         tex: UVec4::new(
             index(m.albedo_texture),
-            m.alpha.map_or(0, |a| a.texture + 1),
+            match (m.alpha, m.blend) {
+                (Some(a), _) => a.texture + 1,
+                (None, Some(_)) => index(m.albedo_texture),
+                (None, None) => 0,
+            },
             index(m.roughness_texture),
             index(m.metallic_texture),
         ),
         emission_texture: index(m.emission_texture),
         normal_texture: index(m.normal_texture),
         normal_scale: m.normal_scale,
-        pad0: 0,
+        opacity: m.blend.unwrap_or(1.0),
         metallic: m.metallic,
         roughness: m.roughness,
         dielectric_f0: f0,

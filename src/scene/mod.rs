@@ -125,6 +125,8 @@ pub struct Material {
     pub ior: f32,
     /// Alpha-tested cut-out: texels with alpha below the cutoff are holes.
     pub alpha: Option<AlphaMask>,
+    /// glTF `BLEND`: stochastic opacity, alpha = `blend` × the base colour texture's alpha.
+    pub blend: Option<f32>,
     /// Tangent-space normal map (linear; glTF normalTexture) and its scale of X and Y.
     pub normal_texture: Option<u32>,
     pub normal_scale: f32,
@@ -151,6 +153,7 @@ impl Default for Material {
             refractivity: 0.0,
             ior: 1.5,
             alpha: None,
+            blend: None,
             normal_texture: None,
             normal_scale: 1.0,
             model: MaterialModel::Thesis,

@@ -329,6 +329,7 @@ pub(crate) fn to_material(
         refractivity: refr,
         ior: e.ior.or(e.ni).unwrap_or(Material::default().ior),
         alpha,
+        blend: None,
         normal_texture: e.norm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w)),
         normal_scale: 1.0,
         model,

@@ -65,6 +65,8 @@ pub struct MaterialCounts {
     pub glossy: usize,
     pub emissive: usize,
     pub alpha_masked: usize,
+    /// glTF BLEND: stochastic opacity.
+    pub blended: usize,
     pub textured: usize,
 }
 
@@ -178,8 +180,12 @@ impl Scene {
             c.glossy += m.is_glossy() as usize;
             c.emissive += m.is_emissive() as usize;
             c.alpha_masked += m.alpha.is_some() as usize;
-            c.textured +=
-                (m.albedo_texture.is_some() || m.roughness_texture.is_some() || m.metallic_texture.is_some()) as usize;
+            c.blended += m.blend.is_some() as usize;
+            c.textured += (m.albedo_texture.is_some()
+                || m.roughness_texture.is_some()
+                || m.metallic_texture.is_some()
+                || m.emission_texture.is_some()
+                || m.normal_texture.is_some()) as usize;
         }
         c
     }
@@ -271,7 +277,7 @@ mod tests {
         let c = s.material_counts();
         assert_eq!(
             c,
-            MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, glossy: 0, emissive: 1, alpha_masked: 0, textured: 0 }
+            MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, glossy: 0, emissive: 1, alpha_masked: 0, blended: 0, textured: 0 }
         );
         let g = s.gpu_bytes_estimate();
         assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 192));

@@ -9,7 +9,8 @@
 //!   (sRGB) where there is one.
 //! - `alphaMode: MASK` → alpha mask on the base colour texture's alpha, cutoff
 //!   `alphaCutoff` (0.5) divided by the base colour factor's alpha (glTF multiplies the two).
-//!   `BLEND` is treated as opaque.
+//!   `BLEND` → stochastic opacity: a ray passes through with probability 1 − alpha (alpha =
+//!   base colour factor alpha × texture alpha), unbiased for every integrator.
 //! - `normalTexture` (linear, tangent space, `scale`) → normal map; tangents are generated
 //!   from the UVs (`scene/tangents.rs`).
 //! - Textures the model cannot use (transmission) are ignored with one
@@ -100,10 +101,7 @@ pub(super) fn convert<'a>(
         };
         let alpha = match m.alpha_mode() {
             AlphaMode::Opaque => None,
-            AlphaMode::Blend => {
-                unsupported(w, "alphaMode BLEND (treated as opaque)");
-                None
-            }
+            AlphaMode::Blend => None,
             AlphaMode::Mask => {
                 let cutoff = m.alpha_cutoff().unwrap_or(0.5);
                 match albedo_texture {
@@ -128,6 +126,7 @@ pub(super) fn convert<'a>(
             refractivity,
             ior: m.ior().unwrap_or(1.5),
             alpha,
+            blend: (m.alpha_mode() == AlphaMode::Blend && (a < 1.0 || albedo_texture.is_some())).then_some(a),
             normal_texture,
             normal_scale,
             model: MaterialModel::MetalRough,
