@@ -178,6 +178,46 @@ impl Material {
         }
     }
 
+    /// What the material is and uses, for `bidir info`: its model, then each lobe and map,
+    /// e.g. `metal-rough: GGX, diffuse, base colour map, normal map, emission map`.
+    pub fn describe(&self) -> String {
+        let mut f: Vec<&str> = Vec::new();
+        let kind = match self.model {
+            MaterialModel::Thesis => "thesis",
+            MaterialModel::MetalRough => "metal-rough",
+        };
+        let diffuse = match self.model {
+            MaterialModel::Thesis => self.reflectivity + self.refractivity < 1.0,
+            MaterialModel::MetalRough => self.metallic < 1.0 || self.metallic_texture.is_some(),
+        };
+        if self.is_glossy() {
+            f.push(if self.model == MaterialModel::Thesis { "rough mirror (GGX, F = 1)" } else { "GGX" });
+        }
+        if diffuse && self.refractivity < 1.0 {
+            f.push("diffuse");
+        }
+        if self.has_mirror() {
+            f.push("mirror");
+        }
+        if self.refractivity > 0.0 {
+            f.push("glass");
+        }
+        if self.is_emissive() {
+            f.push("emissive");
+        }
+        let maps = [
+            (self.albedo_texture.is_some(), "base colour map"),
+            (self.roughness_texture.is_some(), "roughness map"),
+            (self.metallic_texture.is_some(), "metallic map"),
+            (self.normal_texture.is_some(), "normal map"),
+            (self.emission_texture.is_some() && self.is_emissive(), "emission map"),
+            (self.alpha.is_some(), "alpha mask"),
+            (self.blend.is_some(), "blend"),
+        ];
+        f.extend(maps.iter().filter(|(on, _)| *on).map(|(_, name)| *name));
+        format!("{kind}: {}", f.join(", "))
+    }
+
     /// Whether the thesis' perfect mirror (a delta lobe) is used.
     pub fn has_mirror(&self) -> bool {
         self.reflectivity > 0.0 && !self.is_glossy()

@@ -379,6 +379,16 @@ mod tests {
     }
 
     #[test]
+    fn describe_names_model_lobes_and_maps() {
+        let m = material("newmtl H\nKd 0.5 0.5 0.5\nreflectivity 0.3\nrefractivity 0.2\nmap_Kd a.png\n");
+        assert_eq!(m.describe(), "thesis: diffuse, mirror, glass, base colour map");
+        let m = material("newmtl R\nreflectivity 1\nPr 0.2\n");
+        assert_eq!(m.describe(), "thesis: rough mirror (GGX, F = 1)");
+        let m = material("newmtl P\nPm 1\nPr 0.5\nmap_Pr r.png\nKe 1 1 1\nmap_Ke e.png\nnorm n.png\n");
+        assert_eq!(m.describe(), "metal-rough: GGX, emissive, roughness map, normal map, emission map");
+    }
+
+    #[test]
     fn thesis_keys() {
         let m = material(
             "newmtl Floor\n  Kd 0.6 0.5 0.4\n  Ke 0 0 0\n  map_Kd floor_d.tga\n  emissivity 2.0\n  reflectivity 0.25\n  refractivity 0.5\n  IOR 1.33\n",
