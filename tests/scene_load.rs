@@ -359,7 +359,7 @@ fn gltf_sample_models_load_their_materials_without_warnings() {
     let c = spheres.material_counts();
     assert_eq!((c.glossy, c.mirror), (c.total - 1, 0), "every material but the default one is GGX: {c:?}");
     let metallic: Vec<f32> = spheres.materials.iter().filter(|m| m.is_glossy()).map(|m| m.metallic).collect();
-    assert!(metallic.iter().any(|&m| m == 0.0) && metallic.iter().any(|&m| m == 1.0), "{metallic:?}");
+    assert!(metallic.contains(&0.0) && metallic.contains(&1.0), "{metallic:?}");
 
     let helmet = load("DamagedHelmet");
     let m = &helmet.materials[0];

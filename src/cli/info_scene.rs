@@ -74,7 +74,7 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
             None => kinds.push((d, 1, &m.name)),
         }
     }
-    kinds.sort_by(|a, b| b.1.cmp(&a.1));
+    kinds.sort_by_key(|k| std::cmp::Reverse(k.1));
     for (d, n, first) in &kinds {
         println!("  {n} x {d} (e.g. \"{first}\")");
     }
