@@ -225,7 +225,8 @@ fn degenerate_triangles_are_dropped_and_counted() {
 fn check_instanced(l: &Loaded) {
     let s = &l.scene;
     let w = l.warnings.join("\n");
-    for needle in ["KHR_texture_transform", "BLEND", "Points", "orthographic"] {
+    assert!(!w.contains("BLEND"), "BLEND is supported: {w}");
+    for needle in ["KHR_texture_transform", "Points", "orthographic"] {
         assert!(w.contains(needle), "no warning about {needle}: {w}");
     }
     // 6 quads + 1 triangle; the POINTS primitive is skipped.
@@ -238,7 +239,9 @@ fn check_instanced(l: &Loaded) {
     // MirrorA: Root (90° about +Y) · translate (0, 0, -5): (-1,-1,0) → (-5,-1,1).
     assert!((s.positions[0] - Vec3::new(-5.0, -1.0, 1.0)).length() < 1e-5, "{}", s.positions[0]);
     let (mirror, m) = material(s, "Mirror");
-    assert_eq!((m.reflectivity, m.refractivity), (1.0, 0.0));
+    // glTF metallic-roughness: a smooth metal is a GGX lobe of its roughness, not a mirror.
+    assert_eq!(m.model, bidir::scene::MaterialModel::MetalRough);
+    assert_eq!((m.reflectivity, m.refractivity, m.metallic), (0.0, 0.0, 1.0));
     let mirrors = triangles_of(s, mirror);
     assert_eq!(mirrors.len(), 4, "MirrorQuad is instanced twice");
     // Both face +X after the root rotation, the mirrored one included.
@@ -252,6 +255,8 @@ fn check_instanced(l: &Loaded) {
     for t in triangles_of(s, lamp) {
         assert!((geometric_normal(s, t) - Vec3::NEG_Y).length() < 1e-5, "the lamp faces down");
     }
+    let (_, glassy) = material(s, "Glassy");
+    assert_eq!(glassy.blend, Some(0.5), "BLEND: stochastic opacity of the base colour alpha");
     let (_, leaves) = material(s, "Leaves");
     let tex = leaves.albedo_texture.expect("base colour texture");
     assert_eq!(leaves.alpha, Some(AlphaMask { texture: tex, cutoff: 0.5 }));
@@ -312,8 +317,10 @@ fn sponza() {
     let masked: Vec<&str> = s.materials.iter().filter(|m| m.alpha.is_some()).map(|m| m.name.as_str()).collect();
     assert_eq!(masked, ["PotPlant1", "Chain", "Plants"]);
     assert!(s.normals.is_some() && s.uvs.is_some());
-    assert_eq!(s.textures.len(), 24);
-    assert!(s.textures.iter().all(|t| t.srgb && t.rgba8.len() == (t.width * t.height * 4) as usize));
+    // 24 base colour (sRGB) and 11 data textures (linear: normal and metallic-roughness maps).
+    assert_eq!(s.textures.len(), 35);
+    assert_eq!(s.textures.iter().filter(|t| t.srgb).count(), 24);
+    assert!(s.textures.iter().all(|t| t.rgba8.len() == (t.width * t.height * 4) as usize));
     assert_eq!(s.dropped_degenerate, 0);
     assert!(s.emitters().is_empty());
     assert_winding_matches_normals_loosely(s);
@@ -331,4 +338,38 @@ fn assert_winding_matches_normals_loosely(s: &Scene) {
         })
         .count();
     assert!(agree as f64 > 0.99 * s.triangle_count() as f64, "{agree} of {}", s.triangle_count());
+}
+
+/// Khronos sample models (`../shared/scenes/gltf-samples`, skipped when absent) load with no
+/// warning about what the materials issue implemented: metallic-roughness (and its texture),
+/// emissive and normal textures, BLEND; occlusion is ignored silently.
+#[test]
+fn gltf_sample_models_load_their_materials_without_warnings() {
+    let dir = Path::new("../shared/scenes/gltf-samples");
+    if !dir.exists() {
+        eprintln!("skipping: {} is absent", dir.display());
+        return;
+    }
+    let load = |name: &str| {
+        let l = scene::load(&dir.join(name).join(format!("{name}.glb")), &LoadOptions::default()).unwrap();
+        assert!(l.warnings.is_empty(), "{name}: {:?}", l.warnings);
+        l.scene
+    };
+    let spheres = load("MetalRoughSpheresNoTextures");
+    let c = spheres.material_counts();
+    assert_eq!((c.glossy, c.mirror), (c.total - 1, 0), "every material but the default one is GGX: {c:?}");
+    let metallic: Vec<f32> = spheres.materials.iter().filter(|m| m.is_glossy()).map(|m| m.metallic).collect();
+    assert!(metallic.contains(&0.0) && metallic.contains(&1.0), "{metallic:?}");
+
+    let helmet = load("DamagedHelmet");
+    let m = &helmet.materials[0];
+    assert_eq!(m.model, scene::MaterialModel::MetalRough);
+    assert!(m.emission_texture.is_some() && m.normal_texture.is_some() && m.albedo_texture.is_some());
+    assert!(m.roughness_texture.is_some() && m.roughness_texture == m.metallic_texture);
+    let mr = &helmet.textures[m.roughness_texture.unwrap() as usize];
+    assert!(!mr.srgb && !helmet.textures[m.normal_texture.unwrap() as usize].srgb, "data textures are linear");
+    assert!(helmet.textures[m.emission_texture.unwrap() as usize].srgb);
+
+    let blend = load("AlphaBlendModeTest");
+    assert!(blend.material_counts().blended > 0, "BLEND materials: {:?}", blend.material_counts());
 }

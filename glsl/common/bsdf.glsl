@@ -1,16 +1,30 @@
 // The thesis' material model as BSDF lobes, chosen stochastically by their fractions:
 // perfect mirror (reflectivity), smooth dielectric (refractivity, IOR) and Lambertian
 // diffuse (the rest, times the albedo). Measures are named: pdf_w is per unit solid angle.
+// Where the scene has rough materials (HAS_GLOSSY), the non-delta part of a material is a
+// `Continuous` BSDF: the Lambertian lobe plus a GGX lobe (glsl/common/microfacet.glsl) — the
+// glTF metallic-roughness model, or the thesis' mirror made rough.
 #ifndef BIDIR_BSDF_GLSL
 #define BIDIR_BSDF_GLSL
+
+#include "microfacet.glsl"
 
 const uint LOBE_DIFFUSE = 0u;
 const uint LOBE_MIRROR = 1u;
 const uint LOBE_GLASS = 2u;
 
+// Fraction of the perfect mirror: the thesis' reflectivity, unless the material is rough
+// (its reflectivity is then a rough conductor, part of the continuous BSDF).
+float mirror_fraction(GpuMaterial m) {
+    if (HAS_MIRROR == 0u || (HAS_GLOSSY != 0u && m.roughness > 0.0)) {
+        return 0.0;
+    }
+    return m.params.x;
+}
+
 // Picks a lobe with probability equal to its fraction, so the fraction cancels.
 uint choose_lobe(GpuMaterial m, float u) {
-    float r = HAS_MIRROR != 0u ? m.params.x : 0.0;
+    float r = mirror_fraction(m);
     float g = HAS_GLASS != 0u ? m.params.y : 0.0;
     if (u < r) {
         return LOBE_MIRROR;
@@ -50,6 +64,110 @@ vec3 sample_dielectric(vec3 d, vec3 n_f, float eta, float u, out float radiance_
     refracted = true;
     radiance_scale = eta * eta;
     return normalize(eta * d + (eta * cos_i - cos_t) * n_f);
+}
+
+// The non-delta part of a material at a surface point (its lobes weighted by their
+// fractions): f(wo, wi) = diffuse / pi (1 - coat F(coat_f0, wo.h))
+//                      + spec F(spec_f0, wo.h) D G2 / (4 |wo.n| |wi.n|),
+// glTF 2.0 appendix B (dielectric_brdf = fresnel_mix of the coat over the base, metal_brdf
+// = the conductor Fresnel with F0 = baseColor, mixed by metallic; Schlick Fresnel is linear
+// in F0, so the two specular terms are one lobe with F0 = mix(coat_f0, baseColor, metallic)).
+// Reciprocal: F depends on |wo.h| = |wi.h| only. It is zero unless both directions lie above
+// the shading normal (as the diffuse lobe always was: docs/integrators.md).
+struct Continuous {
+    vec3 diffuse;   // Lambertian reflectance, weighted (0 for a metal)
+    float pick;     // probability that choose_lobe takes the continuous part
+    vec3 spec_f0;   // Schlick F0 of the GGX lobe (1: the thesis' rough conductor, F = 1)
+    float spec;     // weight of the GGX lobe (0: none)
+    float coat_f0;  // F0 of the dielectric coat over the diffuse lobe
+    float coat;     // 1: the diffuse lobe is weighted by 1 - F(coat_f0); 0: not
+    float alpha;    // GGX alpha = roughness^2
+};
+
+// Probability of sampling the GGX lobe rather than the diffuse one when leaving toward wo
+// (local frame): their albedo estimates at cos = wo.z (Schlick Fresnel at the normal).
+float continuous_spec_probability(Continuous c, float cos_o) {
+    if (HAS_GLOSSY == 0u || c.spec <= 0.0) {
+        return 0.0;
+    }
+    float fs = c.spec * dot(schlick(c.spec_f0, cos_o), vec3(0.2126, 0.7152, 0.0722));
+    float fd = dot(c.diffuse, vec3(0.2126, 0.7152, 0.0722)) * (1.0 - c.coat * schlick(c.coat_f0, cos_o));
+    return fs + fd > 0.0 ? fs / (fs + fd) : 1.0;
+}
+
+// Solid-angle pdf of continuous_sample leaving toward wo and producing wi (local frame),
+// without the choice of the continuous part (times c.pick for the material's pdf).
+float continuous_pdf_w(Continuous c, vec3 wo, vec3 wi) {
+    if (wo.z <= 0.0 || wi.z <= 0.0) {
+        return 0.0;
+    }
+    float ps = continuous_spec_probability(c, wo.z);
+    float pdf = (1.0 - ps) * wi.z / PI;
+    if (ps > 0.0) {
+        pdf += ps * ggx_reflect_pdf_w(wo, wi, c.alpha);
+    }
+    return pdf;
+}
+
+// World to the local frame of unit n.
+vec3 to_local(vec3 n, vec3 v) {
+    vec3 t, b;
+    onb(n, t, b);
+    return vec3(dot(v, t), dot(v, b), dot(v, n));
+}
+
+// f(wo, wi) of the continuous part about the shading normal ns (wo toward where the path
+// came from, wi the other direction; both unit, world space), and the material's pdfs of
+// sampling wi from wo (pdf_fwd_w) and wo from wi (pdf_rev_w), each including c.pick.
+vec3 continuous_eval(Continuous c, vec3 ns, vec3 wo_w, vec3 wi_w, out float pdf_fwd_w, out float pdf_rev_w) {
+    pdf_fwd_w = 0.0;
+    pdf_rev_w = 0.0;
+    if (HAS_GLOSSY == 0u || c.spec <= 0.0) {
+        float co = dot(ns, wo_w), ci = dot(ns, wi_w);
+        if (co <= 0.0 || ci <= 0.0) {
+            return vec3(0.0);
+        }
+        pdf_fwd_w = c.pick * ci / PI;
+        pdf_rev_w = c.pick * co / PI;
+        return c.diffuse / PI;
+    }
+    vec3 wo = to_local(ns, wo_w), wi = to_local(ns, wi_w);
+    if (wo.z <= 0.0 || wi.z <= 0.0) {
+        return vec3(0.0);
+    }
+    float cos_h = dot(wo, normalize(wo + wi));
+    vec3 f = c.diffuse / PI * (1.0 - c.coat * schlick(c.coat_f0, cos_h));
+    f += c.spec * schlick(c.spec_f0, cos_h) * ggx_brdf(wo, wi, c.alpha);
+    pdf_fwd_w = c.pick * continuous_pdf_w(c, wo, wi);
+    pdf_rev_w = c.pick * continuous_pdf_w(c, wi, wo);
+    return f;
+}
+
+// Samples wi for the continuous part leaving toward wo_w: the GGX lobe (a visible normal)
+// with probability continuous_spec_probability, else the cosine-weighted hemisphere.
+// `u_lobe` is only read where the scene has GGX lobes. False if nothing can be sampled
+// (wo below the shading normal, or a reflection below it).
+bool continuous_sample(Continuous c, vec3 ns, vec3 wo_w, float u_lobe, float u1, float u2, out vec3 wi_w) {
+    wi_w = vec3(0.0);
+    float cos_o = dot(ns, wo_w);
+    if (cos_o <= 0.0) {
+        return false;
+    }
+    float ps = continuous_spec_probability(c, cos_o);
+    if (ps > 0.0 && u_lobe < ps) {
+        vec3 t, b;
+        onb(ns, t, b);
+        vec3 wo = vec3(dot(wo_w, t), dot(wo_w, b), cos_o);
+        vec3 h = ggx_sample_visible_normal(wo, c.alpha, u1, u2);
+        vec3 wi = reflect(-wo, h);
+        if (wi.z <= 0.0) {
+            return false;
+        }
+        wi_w = normalize(wi.x * t + wi.y * b + wi.z * ns);
+        return true;
+    }
+    wi_w = sample_cosine_hemisphere(ns, u1, u2);
+    return true;
 }
 
 #endif

@@ -12,6 +12,8 @@ struct LightSample {
     vec3 le;        // emitted radiance
     float pick;     // probability of having chosen this emitter
     float area;     // its area
+    uint emitter;   // index of the emitter chosen
+    vec2 bary;      // barycentric weights of its vertices 1 and 2 at p
 };
 
 // O(1) alias-table choice from one uniform number (its fraction picks within the cell).
@@ -26,7 +28,8 @@ uint choose_emitter(float u, uint count) {
 // Points in Triangles", Graphics Gems, 1990): (1 - su, u2 su, su (1 - u2)) is uniform over
 // the barycentric simplex for su = sqrt(u1); any permutation of it is too.
 LightSample sample_emitter(uint count, float u0, float u1, float u2) {
-    GpuEmitter e = emitters[choose_emitter(u0, count)];
+    uint index = choose_emitter(u0, count);
+    GpuEmitter e = emitters[index];
     float su = sqrt(u1);
     float b1 = u2 * su;        // weight of v1
     float b2 = 1.0 - su;       // weight of v2 (v0 gets su (1 - u2))
@@ -36,6 +39,8 @@ LightSample sample_emitter(uint count, float u0, float u1, float u2) {
     s.le = e.radiance.rgb;
     s.pick = e.radiance.w;
     s.area = e.p0.w;
+    s.emitter = index;
+    s.bary = vec2(b1, b2);
     return s;
 }
 

@@ -10,9 +10,13 @@ layout(constant_id = SPEC_HAS_TEXTURES) const uint HAS_TEXTURES = 0u;
 layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
 layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 0u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint HAS_ALPHA = 0u;
+layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 0u;
+layout(constant_id = SPEC_HAS_EMISSION_TEXTURES) const uint HAS_EMISSION_TEXTURES = 0u;
+layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint HAS_NORMAL_MAPS = 0u;
 
 #define TRAVERSE_WITH_ALPHA
 #include "traverse.glsl"
+#include "bsdf.glsl"
 
 // (vertex 0, vertex 1, vertex 2, material) of each triangle, in leaf order.
 layout(std430, binding = BIND_PRIM_INFO) readonly buffer PrimInfo { uvec4 prim_info[]; };
@@ -22,6 +26,7 @@ layout(std430, binding = BIND_UVS) readonly buffer Uvs { vec2 vertex_uvs[]; };
 layout(std430, binding = BIND_TEXTURES) readonly buffer Textures { GpuTexture textures[]; };
 layout(std430, binding = BIND_TEXELS) readonly buffer Texels { uint texels[]; };
 layout(std430, binding = BIND_POSITIONS) readonly buffer Positions { float vertex_positions[]; };
+layout(std430, binding = BIND_TANGENTS) readonly buffer Tangents { vec4 vertex_tangents[]; };
 
 vec3 vertex_position(uint i) {
     return vec3(vertex_positions[3u * i], vertex_positions[3u * i + 1u], vertex_positions[3u * i + 2u]);
@@ -77,13 +82,61 @@ vec2 interpolate_uv(uvec4 info, vec2 bary) {
     return (1.0 - bary.x - bary.y) * vertex_uvs[info.x] + bary.x * vertex_uvs[info.y] + bary.y * vertex_uvs[info.z];
 }
 
+// Per-path seed of BLEND's stochastic opacity: the kernels set it from their random numbers
+// at the start of every path (while HAS_ALPHA).
+uint blend_seed = 0u;
+
+// A uniform number in [0, 1) for a hit of triangle prim at bary on this path: a hash, so the
+// closest-hit search may ask again and get the same answer, while distinct hits (another
+// point, another triangle, another path) get independent-looking ones.
+float blend_random(uint prim, vec2 bary) {
+    uint h = blend_seed ^ (prim * 0x9e3779b9u) ^ (floatBitsToUint(bary.x) * 0x85ebca6bu) ^ (floatBitsToUint(bary.y) * 0xc2b2ae35u);
+    h ^= h >> 16u;
+    h *= 0x7feb352du;
+    h ^= h >> 15u;
+    h *= 0x846ca68bu;
+    h ^= h >> 16u;
+    return float(h >> 8u) * (1.0 / 16777216.0);
+}
+
+// MASK: kept where the alpha texture reaches the cutoff (m.albedo.w > 0). BLEND: kept with
+// probability opacity x texture alpha, so a path passes with probability 1 - alpha and the
+// surface's contribution is weighted by alpha in expectation (stochastic opacity, unbiased).
 bool traverse_alpha_hit(uint prim, vec2 bary) {
     uvec4 info = prim_info[prim];
     GpuMaterial m = materials[info.w];
-    if (m.tex.y == 0u) {
+    if (m.albedo.w > 0.0) {
+        return m.tex.y == 0u || sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a >= m.albedo.w;
+    }
+    if (m.opacity >= 1.0 && m.tex.y == 0u) {
         return true;
     }
-    return sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a >= m.albedo.w;
+    float alpha = m.opacity;
+    if (HAS_UVS != 0u && m.tex.y != 0u) {
+        alpha *= sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a;
+    }
+    return blend_random(prim, bary) < alpha;
+}
+
+// The shading normal n perturbed by the material's tangent-space normal map (glTF 2.0:
+// bitangent = cross(n, t) * t.w; X and Y scaled by normalTexture.scale), n where there is
+// none or the tangent frame degenerates.
+vec3 normal_mapped(uvec4 info, vec2 bary, vec2 uv, vec3 n) {
+    GpuMaterial m = materials[info.w];
+    if (m.normal_texture == 0u) {
+        return n;
+    }
+    vec4 t = (1.0 - bary.x - bary.y) * vertex_tangents[info.x] + bary.x * vertex_tangents[info.y] + bary.y * vertex_tangents[info.z];
+    vec3 tt = t.xyz - n * dot(n, t.xyz);
+    if (dot(tt, tt) <= 1.0e-12) {
+        return n;
+    }
+    tt = normalize(tt);
+    vec3 bt = cross(n, tt) * (t.w < 0.0 ? -1.0 : 1.0);
+    vec3 c = sample_texture(m.normal_texture - 1u, uv).xyz * 2.0 - 1.0;
+    c.xy *= m.normal_scale;
+    vec3 p = c.x * tt + c.y * bt + c.z * n;
+    return dot(p, p) > 0.0 ? normalize(p) : n;
 }
 
 // What shading needs at a hit.
@@ -107,8 +160,12 @@ Surface surface_at(vec3 o, vec3 d, TraceHit h) {
         vec3 n1 = vec3(vertex_normals[3u * info.y], vertex_normals[3u * info.y + 1u], vertex_normals[3u * info.y + 2u]);
         vec3 n2 = vec3(vertex_normals[3u * info.z], vertex_normals[3u * info.z + 1u], vertex_normals[3u * info.z + 2u]);
         vec3 n = (1.0 - h.bary.x - h.bary.y) * n0 + h.bary.x * n1 + h.bary.y * n2;
+        s.uv = HAS_UVS != 0u ? interpolate_uv(info, h.bary) : vec2(0.0);
         if (dot(n, n) > 0.0) {
             n = normalize(n);
+            if (HAS_NORMAL_MAPS != 0u) {
+                n = normal_mapped(info, h.bary, s.uv, n);
+            }
             s.ns = dot(n, s.ng) < 0.0 ? -n : n;
         }
     }
@@ -143,6 +200,62 @@ vec3 material_albedo(GpuMaterial m, vec2 uv) {
         a *= sample_texture(m.tex.x - 1u, uv).rgb;
     }
     return a;
+}
+
+// Emitted radiance of material m at uv (front faces): the emission factor times the
+// emission texture. Its luminance weight for light sampling (m.emission.w) is the factor's.
+vec3 material_emission(GpuMaterial m, vec2 uv) {
+    vec3 e = m.emission.rgb;
+    if (HAS_EMISSION_TEXTURES != 0u && m.emission_texture != 0u) {
+        e *= sample_texture(m.emission_texture - 1u, uv).rgb;
+    }
+    return e;
+}
+
+// The continuous (non-delta) part of material m at texture coordinate uv (bsdf.glsl):
+// - MATERIAL_THESIS: the Lambertian rest 1 - reflectivity - refractivity times the albedo,
+//   and, where the material is rough, its reflectivity as a GGX conductor with F = 1;
+// - MATERIAL_METAL_ROUGH (glTF): metallic and roughness (times the B channel of the metallic
+//   texture and the G channel of the roughness texture: glTF's metallicRoughness texture is
+//   both), baseColor = the albedo; the glass fraction (transmission)
+//   is a delta lobe and the rest is this model.
+Continuous continuous_at(GpuMaterial m, vec2 uv) {
+    vec3 albedo = material_albedo(m, uv);
+    float refl = mirror_fraction(m);
+    float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
+    Continuous c;
+    c.pick = max(0.0, 1.0 - refl - refr);
+    c.diffuse = c.pick * albedo;
+    c.spec_f0 = vec3(1.0);
+    c.spec = 0.0;
+    c.coat_f0 = 0.0;
+    c.coat = 0.0;
+    c.alpha = GGX_MIN_ALPHA;
+    if (HAS_GLOSSY == 0u) {
+        return c;
+    }
+    float roughness = m.roughness;
+    float metallic = m.metallic;
+    if (HAS_TEXTURES != 0u && (m.tex.z != 0u || m.tex.w != 0u)) {
+        vec4 tr = m.tex.z != 0u ? sample_texture(m.tex.z - 1u, uv) : vec4(1.0);
+        vec4 tm = m.tex.w == m.tex.z ? tr : (m.tex.w != 0u ? sample_texture(m.tex.w - 1u, uv) : vec4(1.0));
+        roughness *= tr.g;
+        metallic *= tm.b;
+    }
+    if (m.model == MATERIAL_METAL_ROUGH) {
+        c.diffuse = c.pick * (1.0 - metallic) * albedo;
+        c.coat = 1.0;
+        c.coat_f0 = m.dielectric_f0;
+        c.spec_f0 = mix(vec3(m.dielectric_f0), albedo, metallic);
+        c.spec = c.pick;
+    } else if (m.roughness > 0.0) {
+        // The thesis' reflectivity, made rough: a conductor with F = 1.
+        float r = HAS_MIRROR != 0u ? m.params.x : 0.0;
+        c.diffuse = max(0.0, 1.0 - r - refr) * albedo;
+        c.spec = r;
+    }
+    c.alpha = max(roughness * roughness, GGX_MIN_ALPHA);
+    return c;
 }
 
 #endif

@@ -15,6 +15,7 @@
 #include "scene.glsl"
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "emission.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -26,9 +27,21 @@ layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[
 layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 
-// Connection of camera vertex (p, ns_f, ng_f, cos_back, pd, f, d_vcm, d_vc) to light vertex y;
-// cos_back is the shading cosine toward the previous camera vertex (0 below the hemisphere).
-vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_back, float pd, vec3 f, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
+// The BSDF of light vertex y toward direction w and its pdfs (forward: sampling w from y.wi;
+// reverse: y.wi from w). Without GGX lobes y stores beta f and its lobe probability.
+vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_rev_w) {
+    if (HAS_GLOSSY != 0u) {
+        Continuous c = continuous_at(materials[y.material], y.uv);
+        return y.beta_f.rgb * continuous_eval(c, y.ns.xyz, y.wi.xyz, w, pdf_fwd_w, pdf_rev_w);
+    }
+    pdf_fwd_w = y.ng.w * max(0.0, dot(y.ns.xyz, w)) / PI;
+    pdf_rev_w = y.ng.w * max(0.0, dot(y.ns.xyz, y.wi.xyz)) / PI;
+    return y.beta_f.rgb;
+}
+
+// Connection of camera vertex (p, ns_f, ng_f, continuous BSDF c, wo toward the previous
+// camera vertex, d_vcm, d_vc) to light vertex y.
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
     vec3 v = y.pos.xyz - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
@@ -37,10 +50,9 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_back, float pd, vec3 f, flo
     if (cos_c <= 0.0 || cos_y <= 0.0 || dot(ng_f, dir) <= 0.0 || dot(y.ng.xyz, dir) >= 0.0) {
         return vec3(0.0);
     }
-    float cam_dir_pdf_w = pd * cos_c / PI;
-    float cam_rev_pdf_w = pd * cos_back / PI;
-    float light_dir_pdf_w = y.ng.w * cos_y / PI;
-    float light_rev_pdf_w = y.ng.w * max(0.0, dot(y.ns.xyz, y.wi.xyz)) / PI;
+    float cam_dir_pdf_w, cam_rev_pdf_w, light_dir_pdf_w, light_rev_pdf_w;
+    vec3 f = continuous_eval(c, ns_f, wo, dir, cam_dir_pdf_w, cam_rev_pdf_w);
+    vec3 beta_f_y = light_vertex_f(y, -dir, light_dir_pdf_w, light_rev_pdf_w);
     float cam_dir_pdf_a = cam_dir_pdf_w * cos_y / dist2;
     float light_dir_pdf_a = light_dir_pdf_w * cos_c / dist2;
     float w_light = mis(cam_dir_pdf_a) * (y.pos.w + y.ns.w * mis(light_rev_pdf_w));
@@ -49,7 +61,7 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_back, float pd, vec3 f, flo
     if (HAS_NORMALS != 0u) {
         g *= shading_normal_adjoint(y.wi.xyz, -dir, y.ns.xyz, y.ng.xyz);
     }
-    vec3 contrib = f * y.beta_f.rgb * (g / (w_light + 1.0 + w_camera));
+    vec3 contrib = f * beta_f_y * (g / (w_light + 1.0 + w_camera));
     if (max3(contrib) <= 0.0 || !visible_between(p, ng_f, y.pos.xyz, y.ng.xyz, stats)) {
         return vec3(0.0);
     }
@@ -58,6 +70,9 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, float cos_back, float pd, vec3 f, flo
 
 // `path`: the light path of this camera sample (megakernel joins).
 vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
+    if (HAS_ALPHA != 0u) {
+        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+    }
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;
     vec3 d = camera_direction(pc.camera, xy);
@@ -88,7 +103,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         // s = 0: the camera subpath found an emitter (front faces emit).
         if (m.emission.w > 0.0 && s.front) {
             if (depth == 1u) {
-                radiance += beta * m.emission.rgb;
+                radiance += beta * material_emission(m, s.uv);
             } else {
                 float direct_pdf_a = m.emission.w / pc.emitter_power;
                 float cos_l = max(0.0, -dot(s.ng, d));
@@ -98,26 +113,22 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 // cosine) with it, or s = 0 and s = 1 would weigh the path inconsistently.
                 float to_geometric = HAS_NORMALS != 0u ? mis(cos_in / cos_l) : 1.0;
                 float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * d_vc) * to_geometric;
-                radiance += beta * m.emission.rgb / (1.0 + w_camera);
+                radiance += beta * material_emission(m, s.uv) / (1.0 + w_camera);
             }
         }
         if (pc.max_depth != 0u && depth >= pc.max_depth) {
             break;
         }
 
-        float refl = HAS_MIRROR != 0u ? m.params.x : 0.0;
-        float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
-        float pd = max(0.0, 1.0 - refl - refr);
-        // The diffuse lobe is zero unless both directions lie above the shading normal too
-        // (reciprocal, as the light paths need); cos_back is 0 exactly then.
-        bool diffuse_ok = HAS_NORMALS == 0u || cos_back > 0.0;
-        if (!diffuse_ok) {
-            pd = 0.0;
+        // The continuous part (diffuse, GGX) is zero unless both directions lie above the
+        // shading normal too (reciprocal, as the light paths need); cos_back is 0 exactly then.
+        Continuous bsdf = continuous_at(m, s.uv);
+        bool continuous_ok = HAS_NORMALS == 0u || cos_back > 0.0;
+        if (!continuous_ok) {
+            bsdf.pick = 0.0;
         }
-        vec3 albedo = vec3(0.0);
-        if (pd > 0.0) {
-            albedo = material_albedo(m, s.uv);
-            vec3 f = pd * albedo / PI;
+        vec3 wo = -d;
+        if (bsdf.pick > 0.0) {
             // s = 1: a fresh point on an emitter.
             if (pc.emitter_count > 0u) {
                 LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
@@ -129,11 +140,11 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 if (cos_s > 0.0 && cos_l > 0.0 && dot(ng_f, wi) > 0.0) {
                     float direct_pdf_w = dist2 / (ls.area * cos_l);
                     float emission_pdf_w = cos_l / (ls.area * PI);
-                    float bsdf_dir_pdf_w = pd * cos_s / PI;
-                    float bsdf_rev_pdf_w = pd * cos_back / PI;
+                    float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
+                    vec3 f = continuous_eval(bsdf, ns_f, wo, wi, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
                     float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
-                    vec3 c = beta * f * ls.le * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
+                    vec3 c = beta * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
                         radiance += c;
                     }
@@ -159,7 +170,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                             continue;
                         }
                         float inv_q = scale * float(c.y) / float(c.x);
-                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_back, pd, f, d_vcm, d_vc, y, stats);
+                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, y, stats);
                     }
                 }
             } else if (lc.x > 0u) {
@@ -174,7 +185,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     if (pc.max_depth != 0u && uint(y.wi.w) + 1u + depth > pc.max_depth) {
                         continue;
                     }
-                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, cos_back, pd, f, d_vcm, d_vc, y, stats);
+                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, y, stats);
                 }
             }
         }
@@ -182,17 +193,23 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         // Continue by sampling the BSDF (radiance transport).
         uint lobe = choose_lobe(m, rng_next(rng));
         if (lobe == LOBE_DIFFUSE) {
-            if (!diffuse_ok) {
+            if (!continuous_ok) {
                 break;
             }
-            vec3 dn = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
-            if (dot(dn, ng_f) <= 0.0) {
+            float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            vec3 dn;
+            if (!continuous_sample(bsdf, ns_f, wo, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
+                break;
+            }
+            float pdf_fwd_w, pdf_rev_w;
+            vec3 f = continuous_eval(bsdf, ns_f, wo, dn, pdf_fwd_w, pdf_rev_w);
+            if (pdf_fwd_w <= 0.0) {
                 break;
             }
             float cos_out = dot(dn, ns_f);
-            float pdf_fwd_w = pd * cos_out / PI;
-            float pdf_rev_w = pd * cos_back / PI;
-            beta *= albedo;
+            beta *= f * (cos_out / pdf_fwd_w);
             d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
             d_vcm = mis(1.0 / pdf_fwd_w);
             d = dn;

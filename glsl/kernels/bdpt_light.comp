@@ -15,6 +15,7 @@
 #include "scene.glsl"
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "emission.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -25,7 +26,8 @@ layout(push_constant) uniform Push { BdptPush pc; };
 layout(std430, binding = BIND_LVC_OFFSETS) writeonly buffer LvcOffsets { uint lvc_offsets[]; };
 
 // Strategy t = 1: joins the light vertex at `p` to the eye and splats its contribution.
-void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, float pd, vec3 beta_f, float d_vcm, float d_vc, inout uvec2 stats) {
+// `c` is the vertex's continuous BSDF, `beta` the throughput arriving along wi.
+void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3 beta, float d_vcm, float d_vc, inout uvec2 stats) {
     vec3 to_eye = pc.camera.eye.xyz - p;
     float dist2 = dot(to_eye, to_eye);
     float dist = sqrt(dist2);
@@ -42,10 +44,12 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, float pd, vec3 bet
     float r = image_plane_distance(pc.camera) / cos_cam;
     float image_to_solid_angle = r * r / cos_cam;
     float image_to_surface = image_to_solid_angle * cos_to_cam / dist2; // camera pdf_a
-    float bsdf_rev_pdf_w = pd * max(0.0, dot(ns_f, wi)) / PI;
+    // The BSDF toward the camera; its reverse pdf samples wi from w.
+    float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
+    vec3 f = continuous_eval(c, ns_f, wi, w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
     float w_light = mis(image_to_surface / float(pc.light_paths)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
     float adjoint = HAS_NORMALS != 0u ? shading_normal_adjoint(wi, w, ns_f, ng_f) : 1.0;
-    vec3 contrib = beta_f * (adjoint * image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
+    vec3 contrib = beta * f * (adjoint * image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
     if (max3(contrib) <= 0.0) {
         return;
     }
@@ -86,6 +90,9 @@ void main() {
         return;
     }
     Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
+    if (HAS_ALPHA != 0u) {
+        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+    }
 
     // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
     LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
@@ -98,7 +105,7 @@ void main() {
         lvc_offsets[path] = 0u;
         return;
     }
-    vec3 beta = ls.le * cos0 / emission_pdf_w;
+    vec3 beta = light_sample_radiance(ls) * cos0 / emission_pdf_w;
     float beta0 = max3(beta);
     float d_vcm = mis(direct_pdf_a / emission_pdf_w);
     float d_vc = mis(cos0 / emission_pdf_w);
@@ -119,26 +126,25 @@ void main() {
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
 
-        float refl = HAS_MIRROR != 0u ? m.params.x : 0.0;
-        float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
-        float pd = max(0.0, 1.0 - refl - refr);
-        // The diffuse lobe is zero unless light arrives from above the shading normal too
-        // (the camera paths' BSDF, made reciprocal).
-        bool diffuse_ok = HAS_NORMALS == 0u || dot(ns_f, wi) > 0.0;
-        if (!diffuse_ok) {
-            pd = 0.0;
+        // The continuous part (diffuse, GGX) is zero unless light arrives from above the
+        // shading normal too (the camera paths' BSDF, made reciprocal).
+        Continuous c = continuous_at(m, s.uv);
+        bool continuous_ok = HAS_NORMALS == 0u || dot(ns_f, wi) > 0.0;
+        if (!continuous_ok) {
+            c.pick = 0.0;
         }
-        if (pd > 0.0) {
-            vec3 beta_f = beta * pd * material_albedo(m, s.uv) / PI;
+        if (c.pick > 0.0) {
+            // Without GGX lobes f does not depend on the outgoing direction: store beta f.
+            vec3 beta_f = HAS_GLOSSY != 0u ? beta : beta * c.diffuse / PI;
             // Reservoir: keep the seen-th vertex with probability L / seen.
             seen++;
             uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
             if (slot < pc.light_path_len) {
-                light_vertices[base + slot] = LightVertex(vec4(s.p, d_vcm), vec4(ns_f, d_vc), vec4(ng_f, pd), vec4(wi, float(depth)), vec4(beta_f, 0.0));
+                light_vertices[base + slot] = LightVertex(vec4(s.p, d_vcm), vec4(ns_f, d_vc), vec4(ng_f, c.pick), vec4(wi, float(depth)), vec4(beta_f, 0.0), s.uv, s.material, 0u);
                 stored = min(seen, pc.light_path_len);
             }
             if (pc.max_depth == 0u || depth + 1u <= pc.max_depth) {
-                connect_to_camera(s.p, ns_f, ng_f, wi, pd, beta_f, d_vcm, d_vc, stats);
+                connect_to_camera(s.p, ns_f, ng_f, wi, c, beta, d_vcm, d_vc, stats);
             }
         }
         if (pc.max_depth != 0u && depth + 1u >= pc.max_depth) {
@@ -148,17 +154,25 @@ void main() {
         // Continue by sampling the BSDF (importance transport: no eta^2 radiance scaling).
         uint lobe = choose_lobe(m, rng_next(rng));
         if (lobe == LOBE_DIFFUSE) {
-            if (!diffuse_ok) {
+            if (!continuous_ok) {
                 break;
             }
-            vec3 dn = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
-            if (dot(dn, ng_f) <= 0.0) {
+            float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            vec3 dn;
+            if (!continuous_sample(c, ns_f, wi, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
+                break;
+            }
+            // f is symmetric, so the adjoint BSDF is f itself (up to the shading-normal factor
+            // below); the reverse pdf samples wi from dn, 0 below the shading hemisphere.
+            float pdf_fwd_w, pdf_rev_w;
+            vec3 f = continuous_eval(c, ns_f, wi, dn, pdf_fwd_w, pdf_rev_w);
+            if (pdf_fwd_w <= 0.0) {
                 break;
             }
             float cos_out = dot(dn, ns_f);
-            float pdf_fwd_w = pd * cos_out / PI;
-            float pdf_rev_w = pd * max(0.0, dot(ns_f, wi)) / PI; // 0 below the shading hemisphere
-            beta *= material_albedo(m, s.uv);
+            beta *= f * (cos_out / pdf_fwd_w);
             d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
             d_vcm = mis(1.0 / pdf_fwd_w);
             d = dn;

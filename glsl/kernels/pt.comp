@@ -1,6 +1,6 @@
 #version 460
 // The thesis' megakernel path tracer: one invocation per pixel, `spp` paths each, summed
-// into the film. With NEE (pt-nee, the thesis' "explicit sampling") every diffuse vertex
+// into the film. With NEE (pt-nee, the thesis' "explicit sampling") every non-delta vertex
 // also samples an emitter by power and traces a shadow ray; emission found by BSDF sampling
 // is then weighted with the power heuristic (Veach 1997, eq. 9.13) so nothing counts twice.
 #extension GL_KHR_shader_subgroup_basic : require
@@ -12,6 +12,7 @@
 #include "scene.glsl"
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "emission.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
@@ -32,13 +33,16 @@ float power_heuristic(float pdf_a, float pdf_b) {
 
 // One path's radiance estimate for image position `pixel` (pixels, row 0 on top).
 vec3 trace_path(vec2 pixel, inout Rng rng) {
+    if (HAS_ALPHA != 0u) {
+        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+    }
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;
     vec3 d = camera_direction(pc.camera, pixel);
     vec3 throughput = vec3(1.0);
     vec3 radiance = vec3(0.0);
     bool specular = true;      // the last bounce was a delta lobe (or the camera)
-    float prev_pdf_w = 0.0;    // solid-angle pdf of the last diffuse bounce
+    float prev_pdf_w = 0.0;    // solid-angle pdf of the last non-delta bounce
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
         if (h.prim == NO_HIT) {
@@ -55,7 +59,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 float pdf_light_w = light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
                 w = power_heuristic(prev_pdf_w, pdf_light_w);
             }
-            radiance += throughput * m.emission.rgb * w;
+            radiance += throughput * material_emission(m, s.uv) * w;
         }
         if (pc.max_depth != 0u && depth >= pc.max_depth) {
             break;
@@ -78,12 +82,14 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
             specular = true;
         } else {
-            // The diffuse lobe is zero unless both directions lie above the shading normal
-            // too (a reciprocal BSDF, so light paths can follow it: docs/integrators.md).
+            // The continuous part (diffuse, GGX), chosen with probability c.pick: it is zero
+            // unless both directions lie above the shading normal too (a reciprocal BSDF, so
+            // light paths can follow it: docs/integrators.md). Its pdfs include c.pick; NEE
+            // and BSDF sampling are weighed with the pdfs given this choice.
             if (HAS_NORMALS != 0u && dot(ns_f, -d) <= 0.0) {
                 break;
             }
-            vec3 albedo = material_albedo(m, s.uv);
+            Continuous c = continuous_at(m, s.uv);
             vec3 p_off = offset_ray_origin(s.p, ng_f);
             // Next-event estimation: an emitter point by power, one shadow ray.
             if (NEE != 0u && pc.emitter_count > 0u && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
@@ -96,18 +102,29 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 float cos_l = -dot(wi, ls.n);
                 if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
                     float pdf_light_w = light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
-                    float pdf_bsdf_w = cos_s / PI;
-                    float w = power_heuristic(pdf_light_w, pdf_bsdf_w);
-                    radiance += throughput * (albedo / PI) * ls.le * (cos_s * w / pdf_light_w);
+                    float pdf_fwd_w, pdf_rev_w;
+                    vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
+                    float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
+                    radiance += throughput * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
                 }
             }
-            // Cosine-weighted continuation: f cos / pdf_w = albedo.
-            d = sample_cosine_hemisphere(ns_f, rng_next(rng), rng_next(rng));
-            if (dot(d, ng_f) <= 0.0) {
-                break; // below the geometric surface (shading-normal artefact)
+            // Continuation by the continuous part's sampling: f cos / pdf_fwd_w.
+            float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            vec3 dn;
+            if (!continuous_sample(c, ns_f, -d, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
+                break; // below the surface (shading-normal artefact) or a masked reflection
             }
-            prev_pdf_w = dot(d, ns_f) / PI;
-            throughput *= albedo;
+            float pdf_fwd_w, pdf_rev_w;
+            vec3 f = continuous_eval(c, ns_f, -d, dn, pdf_fwd_w, pdf_rev_w);
+            if (pdf_fwd_w <= 0.0) {
+                break;
+            }
+            float cos_out = dot(dn, ns_f);
+            prev_pdf_w = pdf_fwd_w / c.pick;
+            throughput *= f * (cos_out / pdf_fwd_w);
+            d = dn;
             o = p_off;
             specular = false;
         }

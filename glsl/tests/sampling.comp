@@ -8,7 +8,9 @@
 //   out[2i] = (point, chosen index by choose_emitter with the same number),
 //   out[2i + 1] = (normal, reported pick probability);
 // - SAMPLING_DIELECTRIC: sample_dielectric for incident direction pc.a.xyz, normal pc.b.xyz
-//   and eta pc.a.w, out[i] = (new direction, radiance scale if refracted else 0).
+//   and eta pc.a.w, out[i] = (new direction, radiance scale if refracted else 0);
+// - SAMPLING_GLOSSY / SAMPLING_GLOSSY_EVAL: continuous_sample / continuous_eval of the
+//   BSDF given in the push (src/gpu/abi.rs says where each value is).
 // Uniform numbers come from rng.glsl (the independent sampler), as in the integrators.
 #include "bidir_abi.glsl"
 #include "ray.glsl"
@@ -17,6 +19,7 @@
 // bsdf.glsl reads these scene constants (scene.glsl declares them for the integrators).
 layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
 layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 1u;
+layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 1u;
 #include "bsdf.glsl"
 #include "lights.glsl"
 
@@ -24,6 +27,18 @@ layout(local_size_x = 64) in;
 layout(std430, binding = SAMPLING_BIND_OUT) writeonly buffer Out { vec4 result[]; };
 layout(std430, binding = SAMPLING_BIND_IN) readonly buffer In { vec4 input_dirs[]; };
 layout(push_constant) uniform Push { SamplingTestPush pc; };
+
+Continuous push_bsdf() {
+    Continuous c;
+    c.diffuse = pc.c.rgb;
+    c.coat = pc.c.w;
+    c.spec_f0 = pc.d.rgb;
+    c.spec = pc.d.w;
+    c.coat_f0 = pc.e.x;
+    c.alpha = pc.e.y;
+    c.pick = 1.0;
+    return c;
+}
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
@@ -49,5 +64,26 @@ void main() {
         bool refracted;
         vec3 d = sample_dielectric(pc.a.xyz, pc.b.xyz, pc.a.w, rng_next(rng), scale, refracted);
         result[i] = vec4(d, refracted ? scale : 0.0);
+    } else if (pc.mode == SAMPLING_GLOSSY) {
+        Continuous c = push_bsdf();
+        float u_lobe = rng_next(rng);
+        float u1 = rng_next(rng);
+        float u2 = rng_next(rng);
+        vec3 wi;
+        bool ok = continuous_sample(c, pc.b.xyz, pc.a.xyz, u_lobe, u1, u2, wi);
+        float pdf_fwd_w = 0.0, pdf_rev_w = 0.0;
+        vec3 f = ok ? continuous_eval(c, pc.b.xyz, pc.a.xyz, wi, pdf_fwd_w, pdf_rev_w) : vec3(0.0);
+        vec3 weight = pdf_fwd_w > 0.0 ? f * dot(wi, pc.b.xyz) / pdf_fwd_w : vec3(0.0);
+        result[2u * i] = vec4(wi, ok ? 1.0 : 0.0);
+        result[2u * i + 1u] = vec4(weight, pdf_fwd_w);
+    } else if (pc.mode == SAMPLING_GLOSSY_EVAL) {
+        Continuous c = push_bsdf();
+        vec3 wo = input_dirs[2u * i].xyz;
+        vec3 wi = input_dirs[2u * i + 1u].xyz;
+        float fwd, rev, fwd_swapped, rev_swapped;
+        vec3 f = continuous_eval(c, pc.b.xyz, wo, wi, fwd, rev);
+        vec3 f_swapped = continuous_eval(c, pc.b.xyz, wi, wo, fwd_swapped, rev_swapped);
+        result[2u * i] = vec4(f, fwd);
+        result[2u * i + 1u] = vec4(f_swapped, rev);
     }
 }

@@ -62,9 +62,22 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
     );
     let m = s.material_counts();
     println!(
-        "materials:    {} ({} with a diffuse part, {} mirror, {} glass, {} emissive, {} alpha-masked, {} textured)",
-        m.total, m.diffuse, m.mirror, m.glass, m.emissive, m.alpha_masked, m.textured
+        "materials:    {} ({} with a diffuse part, {} mirror, {} glass, {} glossy (GGX), {} emissive, {} alpha-masked, {} blended, {} textured)",
+        m.total, m.diffuse, m.mirror, m.glass, m.glossy, m.emissive, m.alpha_masked, m.blended, m.textured
     );
+    // Materials by kind and the features each uses, most common first.
+    let mut kinds: Vec<(String, usize, &str)> = Vec::new();
+    for m in &s.materials {
+        let d = m.describe();
+        match kinds.iter_mut().find(|k| k.0 == d) {
+            Some(k) => k.1 += 1,
+            None => kinds.push((d, 1, &m.name)),
+        }
+    }
+    kinds.sort_by_key(|k| std::cmp::Reverse(k.1));
+    for (d, n, first) in &kinds {
+        println!("  {n} x {d} (e.g. \"{first}\")");
+    }
     let emitters = s.emitters();
     if emitters.is_empty() {
         println!("emitters:     none");

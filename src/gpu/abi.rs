@@ -10,7 +10,7 @@
 
 include!("abi_macros.rs");
 
-use glam::{IVec4, UVec2, UVec4, Vec3, Vec4};
+use glam::{IVec4, UVec2, UVec4, Vec2, Vec3, Vec4};
 
 gpu_consts! {
     // ---- Workgroup sizes -------------------------------------------------------------
@@ -102,6 +102,11 @@ gpu_consts! {
     pub const BIND_LVC_OFFSETS: u32 = 22;
     pub const BIND_LVC_INDEX: u32 = 23;
     pub const BIND_LVC_TOTAL: u32 = 24;
+    /// Per emitter: its vertices' texture coordinates and emission texture (GpuEmitterUv),
+    /// read where SPEC_HAS_EMISSION_TEXTURES.
+    pub const BIND_EMITTER_UVS: u32 = 27;
+    /// Per-vertex tangents (vec4: xyz, handedness w), read where SPEC_HAS_NORMAL_MAPS.
+    pub const BIND_TANGENTS: u32 = 28;
     /// Sample slices (vec4 per slice and pixel: rgb sum, count) that film_slices.comp adds
     /// into the film in a fixed order, when a pass runs several samples of a pixel at once.
     pub const BIND_SLICES: u32 = 25;
@@ -152,6 +157,13 @@ gpu_consts! {
     pub const SAMPLING_COSINE_PDF: u32 = 1;
     pub const SAMPLING_EMITTER: u32 = 2;
     pub const SAMPLING_DIELECTRIC: u32 = 3;
+    /// continuous_sample for the BSDF in the push (`a`: wo, `b`: shading normal, `c`..`e`:
+    /// its parameters): out[2i] = (wi, 1 if sampled else 0), out[2i + 1] = (f cos / pdf_fwd_w
+    /// (rgb), pdf_fwd_w).
+    pub const SAMPLING_GLOSSY: u32 = 4;
+    /// continuous_eval of direction pairs in[2i] = wo, in[2i + 1] = wi: out[2i] =
+    /// (f(wo, wi), pdf_fwd_w), out[2i + 1] = (f(wi, wo), pdf_rev_w).
+    pub const SAMPLING_GLOSSY_EVAL: u32 = 5;
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
@@ -164,6 +176,18 @@ gpu_consts! {
     /// the subgroup's lanes have any (Ylitie et al. 2017, section 4); 0 (default) tests them
     /// at once.
     pub const SPEC_CWBVH_POSTPONE: u32 = 14;
+    /// 1: some material has a GGX lobe (glTF metallic-roughness, or a rough thesis mirror);
+    /// 0 compiles the microfacet code out.
+    pub const SPEC_HAS_GLOSSY: u32 = 15;
+    /// 1: some emitter's radiance is scaled by an emission texture.
+    pub const SPEC_HAS_EMISSION_TEXTURES: u32 = 16;
+    /// 1: some material has a tangent-space normal map.
+    pub const SPEC_HAS_NORMAL_MAPS: u32 = 17;
+
+    /// `GpuMaterial::model`: the thesis' lobes (a rough reflectivity is a GGX conductor with
+    /// F = 1), or the glTF metallic-roughness model.
+    pub const MATERIAL_THESIS: u32 = 0;
+    pub const MATERIAL_METAL_ROUGH: u32 = 1;
 }
 
 gpu_structs! {
@@ -277,16 +301,35 @@ gpu_structs! {
         pub pad1: u32,
     }
 
-    /// A material (thesis model): diffuse albedo, emission, mirror and glass fractions.
-    pub struct GpuMaterial (64 bytes) {
-        /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested).
+    /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
+    /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
+    pub struct GpuMaterial (96 bytes) {
+        /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested; BLEND: 0, see `opacity`).
         pub albedo: Vec4,
         /// Emitted radiance (rgb), front face only; w: its luminance.
         pub emission: Vec4,
         /// (reflectivity, refractivity, ior, 0).
         pub params: Vec4,
-        /// (albedo texture + 1, alpha texture + 1, 0, 0); 0 = none.
+        /// (albedo texture + 1, alpha texture + 1, metallic-roughness texture + 1, 0); 0 = none.
         pub tex: UVec4,
+        /// glTF metallic factor (MATERIAL_METAL_ROUGH).
+        pub metallic: f32,
+        /// GGX roughness (alpha = roughness^2); for MATERIAL_THESIS, > 0 makes the
+        /// reflectivity a rough conductor.
+        pub roughness: f32,
+        /// Schlick F0 of the dielectric coat, ((ior - 1) / (ior + 1))^2 (0.04 at ior 1.5).
+        pub dielectric_f0: f32,
+        /// MATERIAL_THESIS or MATERIAL_METAL_ROUGH.
+        pub model: u32,
+        /// Emission texture + 1 (sRGB; scales `emission`), 0 = none.
+        pub emission_texture: u32,
+        /// Normal map + 1 (linear, tangent space), 0 = none.
+        pub normal_texture: u32,
+        /// Scale of the normal map's X and Y.
+        pub normal_scale: f32,
+        /// glTF BLEND: the base opacity (times the alpha texture's alpha, `tex.y`); a hit is
+        /// kept with that probability. 1 for other materials.
+        pub opacity: f32,
     }
 
     /// An emissive triangle for light sampling.
@@ -299,6 +342,16 @@ gpu_structs! {
         pub e2: Vec4,
         /// Emitted radiance (rgb); w: probability of choosing this emitter.
         pub radiance: Vec4,
+    }
+
+    /// Where an emitter's emission texture is read (one per GpuEmitter, same order).
+    pub struct GpuEmitterUv (32 bytes) {
+        pub uv0: Vec2,
+        pub uv1: Vec2,
+        pub uv2: Vec2,
+        /// Emission texture + 1, 0 = none.
+        pub texture: u32,
+        pub pad0: u32,
     }
 
     /// One cell of Walker's alias table over emitters (Vose's construction).
@@ -339,7 +392,7 @@ gpu_structs! {
     /// A stored light-subpath vertex (a diffuse-capable hit), for BDPT connections. MIS
     /// quantities follow Georgiev 2012 ("Implementing Vertex Connection and Merging"),
     /// power heuristic.
-    pub struct LightVertex (80 bytes) {
+    pub struct LightVertex (96 bytes) {
         /// Position (xyz), dVCM (w).
         pub pos: Vec4,
         /// Shading normal facing the side light arrived from (xyz), dVC (w).
@@ -348,8 +401,15 @@ gpu_structs! {
         pub ng: Vec4,
         /// Unit direction toward the previous vertex (xyz), light subpath segments (w).
         pub wi: Vec4,
-        /// Throughput times the diffuse BSDF value, beta * P_d * albedo / pi (rgb).
+        /// Throughput times the diffuse BSDF value, beta * P_d * albedo / pi (rgb); in
+        /// scenes with GGX lobes (SPEC_HAS_GLOSSY) the throughput alone, the BSDF being
+        /// evaluated per connection from `material` at `uv`.
         pub beta_f: Vec4,
+        /// Texture coordinates of the vertex (SPEC_HAS_GLOSSY).
+        pub uv: Vec2,
+        /// Material index of the vertex (SPEC_HAS_GLOSSY).
+        pub material: u32,
+        pub pad0: u32,
     }
 
     /// Push constants of the BDPT kernels.
@@ -404,7 +464,7 @@ gpu_structs! {
     }
 
     /// Push constants of the sampling test kernel `glsl/tests/sampling.comp`.
-    pub struct SamplingTestPush (48 bytes) {
+    pub struct SamplingTestPush (96 bytes) {
         /// SAMPLING_COSINE, SAMPLING_COSINE_PDF, SAMPLING_EMITTER or SAMPLING_DIELECTRIC.
         pub mode: u32,
         pub count: u32,
@@ -413,8 +473,14 @@ gpu_structs! {
         /// Cosine modes: the unit normal (xyz). Dielectric: the incident direction (xyz)
         /// and eta = n_incident / n_transmitted (w).
         pub a: Vec4,
-        /// Dielectric: the unit normal on the incident side (xyz).
+        /// Dielectric: the unit normal on the incident side (xyz). Glossy: the shading normal.
         pub b: Vec4,
+        /// Glossy: (diffuse reflectance (rgb), coat).
+        pub c: Vec4,
+        /// Glossy: (specular F0 (rgb), specular weight).
+        pub d: Vec4,
+        /// Glossy: (coat F0, alpha, 0, 0).
+        pub e: Vec4,
     }
 
     /// What one invocation of `subgroup_probe.comp` saw.

@@ -1,7 +1,7 @@
 //! What a scene uses, as specialisation constants: kernels run no code for what is absent.
 
 use crate::gpu::abi;
-use crate::scene::Scene;
+use crate::scene::{Material, Scene};
 use crate::vk::Spec;
 
 /// What a scene uses; each is a specialisation constant of the integrator kernels.
@@ -13,6 +13,12 @@ pub struct SceneFeatures {
     pub mirror: bool,
     pub glass: bool,
     pub alpha: bool,
+    /// GGX lobes (glTF metallic-roughness, rough mirrors).
+    pub glossy: bool,
+    /// Emission textures on emitters.
+    pub emission_textures: bool,
+    /// Tangent-space normal maps (needs normals and UVs).
+    pub normal_maps: bool,
 }
 
 impl SceneFeatures {
@@ -21,10 +27,27 @@ impl SceneFeatures {
         SceneFeatures {
             normals: scene.normals.is_some(),
             uvs: scene.uvs.is_some(),
-            textures: scene.uvs.is_some() && !scene.textures.is_empty() && m.iter().any(|m| m.albedo_texture.is_some() || m.alpha.is_some()),
+            textures: scene.uvs.is_some()
+                && !scene.textures.is_empty()
+                && m.iter().any(|m| {
+                    m.albedo_texture.is_some()
+                        || m.alpha.is_some()
+                        || m.roughness_texture.is_some()
+                        || m.metallic_texture.is_some()
+                        || m.emission_texture.is_some()
+                        || m.normal_texture.is_some()
+                }),
             mirror: m.iter().any(|m| m.reflectivity > 0.0),
             glass: m.iter().any(|m| m.refractivity > 0.0),
-            alpha: scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some()),
+            alpha: (scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some())) || m.iter().any(|m| m.blend.is_some()),
+            glossy: m.iter().any(Material::is_glossy),
+            emission_textures: scene.uvs.is_some()
+                && !scene.textures.is_empty()
+                && m.iter().any(|m| m.is_emissive() && m.emission_texture.is_some()),
+            normal_maps: scene.normals.is_some()
+                && scene.uvs.is_some()
+                && !scene.textures.is_empty()
+                && m.iter().any(|m| m.normal_texture.is_some()),
         }
     }
 
@@ -32,7 +55,7 @@ impl SceneFeatures {
     /// where it has none (only to measure what specialisation buys; vertex attributes stay as
     /// they are, since their buffers are only uploaded when present).
     pub fn with_all_material_code(self) -> SceneFeatures {
-        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, ..self }
+        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, glossy: true, emission_textures: true, normal_maps: true, ..self }
     }
 
     pub fn specs(&self) -> Vec<Spec> {
@@ -43,6 +66,9 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_MIRROR, value: self.mirror as u32 },
             Spec { id: abi::SPEC_HAS_GLASS, value: self.glass as u32 },
             Spec { id: abi::SPEC_HAS_ALPHA, value: self.alpha as u32 },
+            Spec { id: abi::SPEC_HAS_GLOSSY, value: self.glossy as u32 },
+            Spec { id: abi::SPEC_HAS_EMISSION_TEXTURES, value: self.emission_textures as u32 },
+            Spec { id: abi::SPEC_HAS_NORMAL_MAPS, value: self.normal_maps as u32 },
         ]
     }
 }

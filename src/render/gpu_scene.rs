@@ -5,8 +5,8 @@
 use super::lights::{luminance, LightTable};
 use crate::bvh::Bvh;
 use crate::gpu::abi::{self, GpuMaterial, GpuTexture};
-use crate::scene::{Scene, Texture};
 use crate::gpu_data::{GpuBvh, SceneFeatures};
+use crate::scene::{Material, MaterialModel, Scene, Texture};
 use crate::vk::{Bind, Buffer, Context, Memory, Result};
 use glam::{UVec4, Vec4};
 
@@ -17,7 +17,9 @@ pub struct GpuScene {
     pub materials: Buffer,
     pub emitters: Buffer,
     pub alias: Buffer,
+    pub emitter_uvs: Buffer,
     pub normals: Buffer,
+    pub tangents: Buffer,
     pub uvs: Buffer,
     pub textures: Buffer,
     pub texels: Buffer,
@@ -46,18 +48,17 @@ impl GpuScene {
         let materials: Vec<GpuMaterial> = scene
             .materials
             .iter()
-            .map(|m| GpuMaterial {
-                albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff)),
-                emission: m.emission.extend(luminance(m.emission)),
-                params: Vec4::new(m.reflectivity, m.refractivity, m.ior, 0.0),
-                tex: UVec4::new(m.albedo_texture.map_or(0, |t| t + 1), m.alpha.map_or(0, |a| a.texture + 1), 0, 0),
-            })
+            .map(gpu_material)
             .collect();
         let lights = LightTable::build(scene);
         let placeholder = |name: &str| ctx.create_buffer(name, 4, Memory::Device);
         let normals = match (&scene.normals, features.normals) {
             (Some(n), true) => ctx.upload_buffer("scene.normals", &n.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?,
             _ => placeholder("scene.normals (none)")?,
+        };
+        let tangents = match features.normal_maps.then(|| crate::scene::tangents::generate(scene)).flatten() {
+            Some(t) => ctx.upload_buffer("scene.tangents", &t)?,
+            None => placeholder("scene.tangents (none)")?,
         };
         let uvs = match (&scene.uvs, features.uvs) {
             (Some(uv), true) => ctx.upload_buffer("scene.uvs", uv)?,
@@ -75,17 +76,23 @@ impl GpuScene {
         let texels = if texels.is_empty() { placeholder("scene.texels (none)")? } else { ctx.upload_buffer("scene.texels", &texels)? };
         let emitters = if lights.emitters.is_empty() { placeholder("scene.emitters (none)")? } else { ctx.upload_buffer("scene.emitters", &lights.emitters)? };
         let alias = if lights.alias.is_empty() { placeholder("scene.alias (none)")? } else { ctx.upload_buffer("scene.alias", &lights.alias)? };
+        let emitter_uvs = match features.emission_textures && !lights.emitters.is_empty() {
+            true => ctx.upload_buffer("scene.emitter_uvs", &lights.emitter_uvs(scene))?,
+            false => placeholder("scene.emitter_uvs (none)")?,
+        };
         let positions = ctx.upload_buffer("scene.positions", &scene.positions.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?;
         let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
         let materials = ctx.upload_buffer("scene.materials", &materials)?;
-        let bytes = [&prim_info, &materials, &emitters, &alias, &normals, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
+        let bytes = [&prim_info, &materials, &emitters, &alias, &emitter_uvs, &normals, &tangents, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
         Ok(GpuScene {
             bvh: gbvh,
             prim_info,
             materials,
             emitters,
             alias,
+            emitter_uvs,
             normals,
+            tangents,
             uvs,
             textures,
             texels,
@@ -107,12 +114,47 @@ impl GpuScene {
             Bind::buffer(abi::BIND_MATERIALS, &self.materials),
             Bind::buffer(abi::BIND_EMITTERS, &self.emitters),
             Bind::buffer(abi::BIND_ALIAS, &self.alias),
+            Bind::buffer(abi::BIND_EMITTER_UVS, &self.emitter_uvs),
             Bind::buffer(abi::BIND_NORMALS, &self.normals),
+            Bind::buffer(abi::BIND_TANGENTS, &self.tangents),
             Bind::buffer(abi::BIND_UVS, &self.uvs),
             Bind::buffer(abi::BIND_TEXTURES, &self.textures),
             Bind::buffer(abi::BIND_TEXELS, &self.texels),
             Bind::buffer(abi::BIND_POSITIONS, &self.positions),
         ]
+    }
+}
+
+/// A material as the kernels read it (`GpuMaterial` in src/gpu/abi.rs).
+pub fn gpu_material(m: &Material) -> GpuMaterial {
+    let index = |t: Option<u32>| t.map_or(0, |t| t + 1);
+    let f0 = ((m.ior - 1.0) / (m.ior + 1.0)).powi(2);
+    GpuMaterial {
+        // A MASK cutoff stays positive: 0 in `albedo.w` means "not MASK" to the kernels.
+        albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff.max(f32::MIN_POSITIVE))),
+        emission: m.emission.extend(luminance(m.emission)),
+        params: Vec4::new(m.reflectivity, m.refractivity, m.ior, 0.0),
+        tex: UVec4::new(
+            index(m.albedo_texture),
+            match (m.alpha, m.blend) {
+                (Some(a), _) => a.texture + 1,
+                (None, Some(_)) => index(m.albedo_texture),
+                (None, None) => 0,
+            },
+            index(m.roughness_texture),
+            index(m.metallic_texture),
+        ),
+        emission_texture: index(m.emission_texture),
+        normal_texture: index(m.normal_texture),
+        normal_scale: m.normal_scale,
+        opacity: m.blend.unwrap_or(1.0),
+        metallic: m.metallic,
+        roughness: m.roughness,
+        dielectric_f0: f0,
+        model: match m.model {
+            MaterialModel::Thesis => abi::MATERIAL_THESIS,
+            MaterialModel::MetalRough => abi::MATERIAL_METAL_ROUGH,
+        },
     }
 }
 

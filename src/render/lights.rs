@@ -1,7 +1,7 @@
 //! Light sampling tables: emissive triangles chosen in proportion to their power with
 //! Walker's alias method (Vose's O(n) construction), sampled in O(1) on the GPU.
 
-use crate::gpu::abi::{GpuAlias, GpuEmitter};
+use crate::gpu::abi::{GpuAlias, GpuEmitter, GpuEmitterUv};
 use crate::scene::Scene;
 
 pub use crate::scene::luminance;
@@ -10,6 +10,8 @@ pub use crate::scene::luminance;
 #[derive(Clone, Debug, Default)]
 pub struct LightTable {
     pub emitters: Vec<GpuEmitter>,
+    /// The scene triangle of each emitter.
+    pub triangles: Vec<u32>,
     pub alias: Vec<GpuAlias>,
     /// Sum of luminance(Le) * area: light sampling's area pdf at an emitter point is
     /// luminance(Le) / total_power.
@@ -21,6 +23,7 @@ impl LightTable {
     pub fn build(scene: &Scene) -> LightTable {
         let mut emitters = Vec::new();
         let mut weights = Vec::new();
+        let mut triangles = Vec::new();
         for (t, tri) in scene.triangles.iter().enumerate() {
             let m = &scene.materials[scene.material_ids[t] as usize];
             let lum = luminance(m.emission);
@@ -34,13 +37,28 @@ impl LightTable {
                 continue;
             }
             emitters.push(GpuEmitter { p0: v0.extend(area), e1: e1.extend(0.0), e2: e2.extend(0.0), radiance: m.emission.extend(0.0) });
+            triangles.push(t as u32);
             weights.push(lum as f64 * area as f64);
         }
         let total: f64 = weights.iter().sum();
         for (e, w) in emitters.iter_mut().zip(&weights) {
             e.radiance.w = (w / total) as f32;
         }
-        LightTable { alias: alias_table(&weights), emitters, total_power: total as f32 }
+        LightTable { alias: alias_table(&weights), emitters, triangles, total_power: total as f32 }
+    }
+
+    /// Per emitter, its vertices' texture coordinates and its material's emission texture.
+    /// Emitters are chosen by the power of their emission factor (the texture's scale is not
+    /// known per triangle), which is unbiased: the texture only scales the radiance found.
+    pub fn emitter_uvs(&self, scene: &Scene) -> Vec<GpuEmitterUv> {
+        self.triangles
+            .iter()
+            .map(|&t| {
+                let m = &scene.materials[scene.material_ids[t as usize] as usize];
+                let uv = |k: usize| scene.uvs.as_ref().map_or(glam::Vec2::ZERO, |u| u[scene.triangles[t as usize][k] as usize]);
+                GpuEmitterUv { uv0: uv(0), uv1: uv(1), uv2: uv(2), texture: m.emission_texture.map_or(0, |t| t + 1), pad0: 0 }
+            })
+            .collect()
     }
 }
 

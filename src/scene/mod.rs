@@ -23,6 +23,7 @@ mod obj;
 mod obj_check;
 mod quad_light;
 mod stats;
+pub mod tangents;
 mod texture;
 mod warnings;
 
@@ -93,16 +94,31 @@ pub struct Scene {
     pub dropped_degenerate: usize,
 }
 
+/// Which reflection model a material's non-delta part follows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MaterialModel {
+    /// The thesis' lobes: Lambertian, mirror, smooth glass; with `roughness > 0` the mirror
+    /// fraction is a rough (GGX) conductor with F = 1.
+    #[default]
+    Thesis,
+    /// glTF 2.0 metallic-roughness (appendix B): GGX lobes, the metal with F0 = albedo, the
+    /// dielectric coat (F0 from `ior`) over a Lambertian base, mixed by `metallic`.
+    MetalRough,
+}
+
 /// The thesis' material model: diffuse albedo (colour or texture), emission, a fraction of
-/// perfect mirror and a fraction of smooth dielectric.
+/// perfect mirror and a fraction of smooth dielectric; or the glTF metallic-roughness model
+/// ([`MaterialModel`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     pub name: String,
     /// Linear RGB diffuse albedo (multiplied with the texture where there is one).
     pub albedo: Vec3,
     pub albedo_texture: Option<u32>,
-    /// Emitted radiance, linear RGB, from the front face only.
+    /// Emitted radiance, linear RGB, from the front face only (times the emission texture).
     pub emission: Vec3,
+    /// sRGB texture scaling the emission (glTF emissiveTexture, `map_Ke`).
+    pub emission_texture: Option<u32>,
     /// Fraction of perfect mirror reflection (0..1).
     pub reflectivity: f32,
     /// Fraction of smooth dielectric transmission/reflection (0..1).
@@ -111,6 +127,20 @@ pub struct Material {
     pub ior: f32,
     /// Alpha-tested cut-out: texels with alpha below the cutoff are holes.
     pub alpha: Option<AlphaMask>,
+    /// glTF `BLEND`: stochastic opacity, alpha = `blend` × the base colour texture's alpha.
+    pub blend: Option<f32>,
+    /// Tangent-space normal map (linear; glTF normalTexture) and its scale of X and Y.
+    pub normal_texture: Option<u32>,
+    pub normal_scale: f32,
+    pub model: MaterialModel,
+    /// Metallic factor (MetalRough), times the metallic texture's blue channel.
+    pub metallic: f32,
+    /// GGX roughness (alpha = roughness²), times the roughness texture's green channel.
+    pub roughness: f32,
+    /// Linear texture whose green channel scales the roughness (glTF metallicRoughness, `map_Pr`).
+    pub roughness_texture: Option<u32>,
+    /// Linear texture whose blue channel scales the metallic factor (glTF metallicRoughness, `map_Pm`).
+    pub metallic_texture: Option<u32>,
 }
 
 impl Default for Material {
@@ -120,10 +150,19 @@ impl Default for Material {
             albedo: Vec3::splat(0.8),
             albedo_texture: None,
             emission: Vec3::ZERO,
+            emission_texture: None,
             reflectivity: 0.0,
             refractivity: 0.0,
             ior: 1.5,
             alpha: None,
+            blend: None,
+            normal_texture: None,
+            normal_scale: 1.0,
+            model: MaterialModel::Thesis,
+            metallic: 0.0,
+            roughness: 0.0,
+            roughness_texture: None,
+            metallic_texture: None,
         }
     }
 }
@@ -131,6 +170,59 @@ impl Default for Material {
 impl Material {
     pub fn is_emissive(&self) -> bool {
         self.emission.max_element() > 0.0
+    }
+
+    /// Whether the material has a GGX lobe (glTF metallic-roughness, or a rough mirror).
+    pub fn is_glossy(&self) -> bool {
+        match self.model {
+            MaterialModel::MetalRough => true,
+            MaterialModel::Thesis => self.reflectivity > 0.0 && self.roughness > 0.0,
+        }
+    }
+
+    /// What the material is and uses, for `bidir info`: its model, then each lobe and map,
+    /// e.g. `metal-rough: GGX, diffuse, base colour map, normal map, emission map`.
+    pub fn describe(&self) -> String {
+        let mut f: Vec<&str> = Vec::new();
+        let kind = match self.model {
+            MaterialModel::Thesis => "thesis",
+            MaterialModel::MetalRough => "metal-rough",
+        };
+        let diffuse = match self.model {
+            MaterialModel::Thesis => self.reflectivity + self.refractivity < 1.0,
+            MaterialModel::MetalRough => self.metallic < 1.0 || self.metallic_texture.is_some(),
+        };
+        if self.is_glossy() {
+            f.push(if self.model == MaterialModel::Thesis { "rough mirror (GGX, F = 1)" } else { "GGX" });
+        }
+        if diffuse && self.refractivity < 1.0 {
+            f.push("diffuse");
+        }
+        if self.has_mirror() {
+            f.push("mirror");
+        }
+        if self.refractivity > 0.0 {
+            f.push("glass");
+        }
+        if self.is_emissive() {
+            f.push("emissive");
+        }
+        let maps = [
+            (self.albedo_texture.is_some(), "base colour map"),
+            (self.roughness_texture.is_some(), "roughness map"),
+            (self.metallic_texture.is_some(), "metallic map"),
+            (self.normal_texture.is_some(), "normal map"),
+            (self.emission_texture.is_some() && self.is_emissive(), "emission map"),
+            (self.alpha.is_some(), "alpha mask"),
+            (self.blend.is_some(), "blend"),
+        ];
+        f.extend(maps.iter().filter(|(on, _)| *on).map(|(_, name)| *name));
+        format!("{kind}: {}", f.join(", "))
+    }
+
+    /// Whether the thesis' perfect mirror (a delta lobe) is used.
+    pub fn has_mirror(&self) -> bool {
+        self.reflectivity > 0.0 && !self.is_glossy()
     }
 }
 

@@ -24,6 +24,13 @@
 //!   surface approximated by the dielectric; warned once). Values are clamped to [0, 1], and
 //!   scaled down together if they sum above 1 (warned).
 //! - `IOR` (thesis) → index of refraction, else `Ni`, else 1.5.
+//! - PBR keys (Blender's exporter): `Pr` roughness and `Pm` metallic (in [0, 1]), `map_Pr` /
+//!   `map_Pm` (linear; grey level). A thesis mirror (`reflectivity`, `illum 3/5`) stays one, made
+//!   a rough GGX conductor with F = 1 (alpha = Pr²) by `Pr > 0` (or `map_Pr`); without a mirror
+//!   any of these keys makes the material glTF's metallic-roughness model with base colour
+//!   `Kd` (roughness `Pr`, default 1 as in glTF; metallic `Pm`, default 0).
+//! - `norm` → tangent-space normal map (linear; `map_Bump` is a height map: not supported).
+//! - `map_Ke` (sRGB) scales the emission (`Ke`, or 1 when `Ke` is absent).
 //! - `map_d` → alpha mask (cut-out at 0.5): the texture's alpha, or its grey level when it
 //!   has no alpha channel. Texture options (`-s 1 1 1` ...) are skipped with a warning.
 
@@ -33,7 +40,7 @@ use glam::Vec3;
 
 use super::texture::Role;
 use super::warnings::Warnings;
-use super::{AlphaMask, Material, SceneError};
+use super::{AlphaMask, Material, MaterialModel, SceneError};
 
 /// One `newmtl` block as written.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -52,13 +59,19 @@ pub(crate) struct MtlEntry {
     pub reflectivity: Option<f32>,
     pub refractivity: Option<f32>,
     pub ior: Option<f32>,
+    pub pr: Option<f32>,
+    pub pm: Option<f32>,
+    pub map_pr: Option<(usize, String)>,
+    pub map_ke: Option<(usize, String)>,
+    pub norm: Option<(usize, String)>,
+    pub map_pm: Option<(usize, String)>,
 }
 
 /// Keys read but not part of the material model: ignored without a word.
 const IGNORED: &[&str] = &["ka", "ks", "ns", "tf", "sharpness", "map_ka"];
 /// Texture maps the model cannot use: one warning per key.
 const UNSUPPORTED_MAPS: &[&str] = &[
-    "map_ks", "map_ns", "map_ke", "map_bump", "bump", "norm", "disp", "decal", "refl", "map_refl", "map_pr", "map_pm",
+    "map_ks", "map_ns", "map_bump", "bump", "disp", "decal", "refl", "map_refl",
 ];
 
 pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<MtlEntry>, SceneError> {
@@ -120,6 +133,21 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             }
             "map_kd" => m.map_kd = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_d" => m.map_d = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "norm" => m.norm = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "map_ke" => m.map_ke = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "map_pr" => m.map_pr = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "map_pm" => m.map_pm = Some((line, texture_name(file, line, &args, w, &err)?)),
+            "pr" | "pm" => {
+                let v = scalar(&args, &err)?;
+                if !(0.0..=1.0).contains(&v) {
+                    return Err(err(format!("`{key} {v}` must be in [0, 1]")));
+                }
+                if key_lc == "pr" {
+                    m.pr = Some(v);
+                } else {
+                    m.pm = Some(v);
+                }
+            }
             "emissivity" => m.emissivity = Some(scalar(&args, &err)?),
             "reflectivity" => m.reflectivity = Some(scalar(&args, &err)?),
             "refractivity" => m.refractivity = Some(scalar(&args, &err)?),
@@ -133,7 +161,7 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             k if IGNORED.contains(&k) => {}
             k if UNSUPPORTED_MAPS.contains(&k) => w.warn_once(&format!("mtl-map-{k}"), || {
                 format!(
-                    "{}:{line}: `{key}` is not supported (bidir has no bump, specular or normal maps); ignored",
+                    "{}:{line}: `{key}` is not supported (bidir has no bump, specular or displacement maps); ignored",
                     file.display()
                 )
             }),
@@ -273,15 +301,42 @@ pub(crate) fn to_material(
         .as_ref()
         .and_then(|(line, name)| texture(name, *line, Role::Opacity, w))
         .map(|t| AlphaMask { texture: t, cutoff: 0.5 });
+    // `map_Ke` scales Ke (1 where Ke is absent, as Blender writes both).
+    let emission_texture = e.map_ke.as_ref().and_then(|(line, name)| texture(name, *line, Role::Colour, w));
+    let emission = match (emission_texture, e.ke) {
+        (Some(_), None) if emission == Vec3::ZERO => Vec3::ONE,
+        _ => emission,
+    };
+    let roughness_texture = e.map_pr.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
+    let metallic_texture = e.map_pm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
+    // A thesis mirror stays one (rough where Pr or map_Pr says so); otherwise the PBR keys
+    // make the metallic-roughness model.
+    let pbr = refl == 0.0 && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some());
+    let (model, roughness, metallic) = if pbr {
+        (MaterialModel::MetalRough, e.pr.unwrap_or(1.0), e.pm.unwrap_or(0.0))
+    } else if refl > 0.0 && roughness_texture.is_some() {
+        (MaterialModel::Thesis, e.pr.unwrap_or(1.0), 0.0)
+    } else {
+        (MaterialModel::Thesis, if refl > 0.0 { e.pr.unwrap_or(0.0) } else { 0.0 }, 0.0)
+    };
     Material {
         name: e.name.clone(),
         albedo,
         albedo_texture,
         emission,
+        emission_texture: if emission.max_element() > 0.0 { emission_texture } else { None },
         reflectivity: refl,
         refractivity: refr,
         ior: e.ior.or(e.ni).unwrap_or(Material::default().ior),
         alpha,
+        blend: None,
+        normal_texture: e.norm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w)),
+        normal_scale: 1.0,
+        model,
+        metallic,
+        roughness,
+        roughness_texture,
+        metallic_texture: if pbr { metallic_texture } else { None },
     }
 }
 
@@ -302,6 +357,35 @@ mod tests {
             next += 1;
             Some(next - 1)
         })
+    }
+
+    #[test]
+    fn pbr_keys_make_rough_mirrors_or_the_metal_rough_model() {
+        // Pr on a thesis mirror: a rough conductor with F = 1, the rest unchanged.
+        let m = material("newmtl R\nKd 0.5 0.5 0.5\nreflectivity 0.6\nPr 0.3\n");
+        assert_eq!((m.model, m.reflectivity, m.roughness, m.metallic), (MaterialModel::Thesis, 0.6, 0.3, 0.0));
+        assert!(m.is_glossy() && !m.has_mirror());
+        // Pr 0 keeps the perfect mirror.
+        let m = material("newmtl M\nillum 3\nPr 0\n");
+        assert!(m.has_mirror() && !m.is_glossy());
+        // Blender's keys without the thesis mirror: glTF's model, base colour Kd.
+        let m = material("newmtl P\nKd 0.8 0.2 0.1\nPr 0.4\nPm 1\nmap_Pr r.png\nmap_Pm m.png\n");
+        assert_eq!((m.model, m.roughness, m.metallic, m.reflectivity), (MaterialModel::MetalRough, 0.4, 1.0, 0.0));
+        assert_eq!((m.roughness_texture, m.metallic_texture), (Some(0), Some(1)));
+        // Roughness defaults to glTF's 1 when only Pm is given; values outside [0, 1] are errors.
+        assert_eq!(material("newmtl Q\nPm 0.5\n").roughness, 1.0);
+        let mut w = Warnings::default();
+        assert!(parse(Path::new("m.mtl"), "newmtl X\nPr 1.5\n", &mut w).unwrap_err().to_string().contains("m.mtl:2"));
+    }
+
+    #[test]
+    fn describe_names_model_lobes_and_maps() {
+        let m = material("newmtl H\nKd 0.5 0.5 0.5\nreflectivity 0.3\nrefractivity 0.2\nmap_Kd a.png\n");
+        assert_eq!(m.describe(), "thesis: diffuse, mirror, glass, base colour map");
+        let m = material("newmtl R\nreflectivity 1\nPr 0.2\n");
+        assert_eq!(m.describe(), "thesis: rough mirror (GGX, F = 1)");
+        let m = material("newmtl P\nPm 1\nPr 0.5\nmap_Pr r.png\nKe 1 1 1\nmap_Ke e.png\nnorm n.png\n");
+        assert_eq!(m.describe(), "metal-rough: GGX, emissive, roughness map, normal map, emission map");
     }
 
     #[test]

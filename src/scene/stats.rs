@@ -61,15 +61,19 @@ pub struct MaterialCounts {
     pub diffuse: usize,
     pub mirror: usize,
     pub glass: usize,
+    /// With a GGX lobe: glTF metallic-roughness, or a rough thesis mirror.
+    pub glossy: usize,
     pub emissive: usize,
     pub alpha_masked: usize,
+    /// glTF BLEND: stochastic opacity.
+    pub blended: usize,
     pub textured: usize,
 }
 
 /// Estimated GPU memory, by buffer. The layout assumed is the std430 one the kernels will use:
 /// positions and normals as `vec4` (std430 pads a `vec3` array to 16 bytes), UVs as `vec2`,
-/// triangles as three `uint`, one `uint` material id per triangle, 64 bytes per material
-/// (albedo, emission, parameters and texture indices: four `vec4`s), textures as RGBA8
+/// triangles as three `uint`, one `uint` material id per triangle, 96 bytes per material
+/// (`GpuMaterial`), textures as RGBA8
 /// without mipmaps. The BVH is not included: the bvh module adds its own nodes and
 /// reordered triangle indices.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -98,12 +102,18 @@ pub struct Features {
     pub alpha_mask: bool,
     pub mirror: bool,
     pub glass: bool,
+    pub glossy: bool,
 }
 
-pub(crate) const GPU_MATERIAL_BYTES: u64 = 64;
+pub(crate) const GPU_MATERIAL_BYTES: u64 = 96;
 
 fn has_diffuse(m: &Material) -> bool {
-    m.reflectivity + m.refractivity < 1.0
+    match m.model {
+        crate::scene::MaterialModel::Thesis => m.reflectivity + m.refractivity < 1.0,
+        crate::scene::MaterialModel::MetalRough => {
+            (m.metallic < 1.0 || m.metallic_texture.is_some()) && m.refractivity < 1.0
+        }
+    }
 }
 
 impl Scene {
@@ -188,11 +198,17 @@ impl Scene {
         let mut c = MaterialCounts { total: self.materials.len(), ..Default::default() };
         for m in &self.materials {
             c.diffuse += has_diffuse(m) as usize;
-            c.mirror += (m.reflectivity > 0.0) as usize;
+            c.mirror += m.has_mirror() as usize;
             c.glass += (m.refractivity > 0.0) as usize;
+            c.glossy += m.is_glossy() as usize;
             c.emissive += m.is_emissive() as usize;
             c.alpha_masked += m.alpha.is_some() as usize;
-            c.textured += m.albedo_texture.is_some() as usize;
+            c.blended += m.blend.is_some() as usize;
+            c.textured += (m.albedo_texture.is_some()
+                || m.roughness_texture.is_some()
+                || m.metallic_texture.is_some()
+                || m.emission_texture.is_some()
+                || m.normal_texture.is_some()) as usize;
         }
         c
     }
@@ -223,8 +239,9 @@ impl Scene {
             uvs: self.uvs.is_some(),
             textures: !self.textures.is_empty(),
             alpha_mask: self.materials.iter().any(|m| m.alpha.is_some()),
-            mirror: self.materials.iter().any(|m| m.reflectivity > 0.0),
+            mirror: self.materials.iter().any(Material::has_mirror),
             glass: self.materials.iter().any(|m| m.refractivity > 0.0),
+            glossy: self.materials.iter().any(Material::is_glossy),
         }
     }
 }
@@ -283,10 +300,10 @@ mod tests {
         let c = s.material_counts();
         assert_eq!(
             c,
-            MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, emissive: 1, alpha_masked: 0, textured: 0 }
+            MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, glossy: 0, emissive: 1, alpha_masked: 0, blended: 0, textured: 0 }
         );
         let g = s.gpu_bytes_estimate();
-        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 128));
-        assert_eq!(g.total(), 240);
+        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 192));
+        assert_eq!(g.total(), 304);
     }
 }

@@ -37,6 +37,9 @@ pub(crate) enum Role {
     Colour,
     /// Linear opacity in alpha (alpha mask).
     Opacity,
+    /// Linear data in every channel (metallic-roughness, `map_Pr`, `map_Pm`); a grey image
+    /// gives its value in R, G and B.
+    Linear,
 }
 
 pub(crate) enum Source<'a> {
@@ -157,6 +160,10 @@ impl Decoded {
     pub fn apply(&self, materials: &mut [Material]) {
         for m in materials {
             m.albedo_texture = m.albedo_texture.and_then(|t| self.remap[t as usize]);
+            m.roughness_texture = m.roughness_texture.and_then(|t| self.remap[t as usize]);
+            m.emission_texture = m.emission_texture.and_then(|t| self.remap[t as usize]);
+            m.normal_texture = m.normal_texture.and_then(|t| self.remap[t as usize]);
+            m.metallic_texture = m.metallic_texture.and_then(|t| self.remap[t as usize]);
             m.alpha =
                 m.alpha.and_then(|a| self.remap[a.texture as usize].map(|t| super::AlphaMask { texture: t, ..a }));
         }
@@ -245,6 +252,7 @@ pub(crate) fn decode(bytes: &[u8], hint: Option<ImageFormat>, role: Role, name: 
     let (rgba8, srgb) = match role {
         Role::Colour => (img.into_rgba8().into_raw(), !is_float),
         Role::Opacity if img.color().has_alpha() => (img.into_rgba8().into_raw(), false),
+        Role::Linear => (img.into_rgba8().into_raw(), false),
         Role::Opacity => {
             let luma = img.into_luma8().into_raw();
             (luma.iter().flat_map(|&l| [l, l, l, l]).collect(), false)

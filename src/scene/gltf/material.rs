@@ -1,16 +1,20 @@
-//! glTF PBR metallic-roughness → the thesis' material model.
+//! glTF PBR metallic-roughness → [`MaterialModel::MetalRough`] (GGX lobes, glTF 2.0 appendix B).
 //!
-//! - `baseColorFactor` (linear) × `baseColorTexture` (sRGB) → albedo.
-//! - `metallicFactor == 1` and `roughnessFactor <= 0.05` → perfect mirror (reflectivity 1);
-//!   anything rougher is diffuse (the model has no glossy lobe).
-//! - `KHR_materials_transmission.transmissionFactor` → refractivity (0 on a mirror, as glTF's
-//!   transmission only applies to the dielectric part), `KHR_materials_ior` → ior (1.5).
-//! - `emissiveFactor × KHR_materials_emissive_strength` → emission.
+//! - `baseColorFactor` (linear) × `baseColorTexture` (sRGB) → albedo (the base colour).
+//! - `metallicFactor`, `roughnessFactor` × `metallicRoughnessTexture` (linear; B metallic,
+//!   G roughness) → metallic, roughness; `KHR_materials_ior` → ior (1.5: F0 = 0.04).
+//! - `KHR_materials_transmission.transmissionFactor` → refractivity (smooth glass) of the
+//!   dielectric part only: `transmission × (1 - metallic)`.
+//! - `emissiveFactor × KHR_materials_emissive_strength` → emission, times `emissiveTexture`
+//!   (sRGB) where there is one.
 //! - `alphaMode: MASK` → alpha mask on the base colour texture's alpha, cutoff
 //!   `alphaCutoff` (0.5) divided by the base colour factor's alpha (glTF multiplies the two).
-//!   `BLEND` is treated as opaque.
-//! - Textures the model cannot use (normal, occlusion, emissive, metallic-roughness,
-//!   transmission) are ignored with one warning each.
+//!   `BLEND` → stochastic opacity: a ray passes through with probability 1 − alpha (alpha =
+//!   base colour factor alpha × texture alpha), unbiased for every integrator.
+//! - `normalTexture` (linear, tangent space, `scale`) → normal map; tangents are generated
+//!   from the UVs (`scene/tangents.rs`).
+//! - Textures the model cannot use (transmission) are ignored with one
+//!   warning each; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
 
@@ -21,10 +25,7 @@ use glam::Vec3;
 use super::files::{resolve, Uri};
 use crate::scene::texture::{Request, Requests, Role, Source};
 use crate::scene::warnings::Warnings;
-use crate::scene::{AlphaMask, Material, SceneError};
-
-/// Roughness at or below which a fully metallic material is a perfect mirror.
-const MIRROR_ROUGHNESS: f32 = 0.05;
+use crate::scene::{AlphaMask, Material, MaterialModel, SceneError};
 
 pub(super) fn convert<'a>(
     file: &Path,
@@ -52,40 +53,55 @@ pub(super) fn convert<'a>(
                 if info.tex_coord() != 0 {
                     unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
                 }
-                image_request(file, buffers, base, info.texture().source(), requests, w)?
+                image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
             }
             None => None,
         };
-        let reflectivity =
-            if pbr.metallic_factor() >= 1.0 && pbr.roughness_factor() <= MIRROR_ROUGHNESS { 1.0 } else { 0.0 };
-        if pbr.metallic_roughness_texture().is_some() {
-            unsupported(w, "metallicRoughnessTexture");
+        let metallic = pbr.metallic_factor();
+        let roughness = pbr.roughness_factor();
+        if !(0.0..=1.0).contains(&metallic) || !(0.0..=1.0).contains(&roughness) {
+            return Err(SceneError::Gltf {
+                file: file.to_path_buf(),
+                element,
+                msg: format!("metallicFactor {metallic} or roughnessFactor {roughness} outside [0, 1]"),
+            });
         }
+        let metal_rough_texture = match pbr.metallic_roughness_texture() {
+            Some(info) => {
+                if info.tex_coord() != 0 {
+                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
+                }
+                image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?
+            }
+            None => None,
+        };
         let transmission = m.transmission();
         if transmission.as_ref().is_some_and(|t| t.transmission_texture().is_some()) {
             unsupported(w, "transmissionTexture");
         }
-        let refractivity = if reflectivity > 0.0 {
-            0.0
-        } else {
-            transmission.map_or(0.0, |t| t.transmission_factor()).clamp(0.0, 1.0)
-        };
+        let refractivity = transmission.map_or(0.0, |t| t.transmission_factor()).clamp(0.0, 1.0) * (1.0 - metallic);
         let emission = Vec3::from(m.emissive_factor()) * m.emissive_strength().unwrap_or(1.0);
-        if m.emissive_texture().is_some() {
-            unsupported(w, "emissiveTexture (emissiveFactor alone is used)");
-        }
-        if m.normal_texture().is_some() {
-            unsupported(w, "normalTexture");
-        }
-        if m.occlusion_texture().is_some() {
-            unsupported(w, "occlusionTexture");
-        }
+        let emission_texture = match m.emissive_texture() {
+            Some(info) if emission.max_element() > 0.0 => {
+                if info.tex_coord() != 0 {
+                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
+                }
+                image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
+            }
+            _ => None,
+        };
+        let (normal_texture, normal_scale) = match m.normal_texture() {
+            Some(info) => {
+                if info.tex_coord() != 0 {
+                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
+                }
+                (image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?, info.scale())
+            }
+            None => (None, 1.0),
+        };
         let alpha = match m.alpha_mode() {
             AlphaMode::Opaque => None,
-            AlphaMode::Blend => {
-                unsupported(w, "alphaMode BLEND (treated as opaque)");
-                None
-            }
+            AlphaMode::Blend => None,
             AlphaMode::Mask => {
                 let cutoff = m.alpha_cutoff().unwrap_or(0.5);
                 match albedo_texture {
@@ -105,10 +121,19 @@ pub(super) fn convert<'a>(
             albedo,
             albedo_texture,
             emission,
-            reflectivity,
+            emission_texture,
+            reflectivity: 0.0,
             refractivity,
             ior: m.ior().unwrap_or(1.5),
             alpha,
+            blend: (m.alpha_mode() == AlphaMode::Blend && (a < 1.0 || albedo_texture.is_some())).then_some(a),
+            normal_texture,
+            normal_scale,
+            model: MaterialModel::MetalRough,
+            metallic,
+            roughness,
+            roughness_texture: metal_rough_texture,
+            metallic_texture: metal_rough_texture,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
         if !finite
@@ -127,12 +152,13 @@ pub(super) fn convert<'a>(
     Ok(out)
 }
 
-/// The provisional texture index of `image` as an sRGB colour texture.
+/// The provisional texture index of `image` decoded for `role` (sRGB colour or linear data).
 fn image_request<'a>(
     file: &Path,
     buffers: &'a [Vec<u8>],
     base: &Path,
     image: ::gltf::Image<'a>,
+    role: Role,
     requests: &mut Requests<'a>,
     w: &mut Warnings,
 ) -> Result<Option<u32>, SceneError> {
@@ -172,10 +198,10 @@ fn image_request<'a>(
         }
         _ => format!("image {index}"),
     };
-    Ok(Some(requests.request(format!("image {index}"), Role::Colour, || Request {
+    Ok(Some(requests.request(format!("image {index}"), role, || Request {
         name,
         source,
-        role: Role::Colour,
+        role,
         at,
         file: file.to_path_buf(),
         line: None,
