@@ -15,6 +15,7 @@
 #include "scene.glsl"
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "env.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -74,29 +75,50 @@ void main() {
     uvec2 stats = uvec2(0u);
     uint stored = 0u, seen = 0u;
     uint base = path * pc.light_path_len;
-    if (pc.emitter_count == 0u) {
+    if (pc.emitter_count == 0u && HAS_ENV == 0u) {
         light_counts[path] = uvec2(0u);
         lvc_offsets[path] = 0u;
         return;
     }
     Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
 
-    // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
-    LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
-    vec3 d = sample_cosine_hemisphere(ls.n, rng_next(rng), rng_next(rng));
-    float cos0 = dot(d, ls.n);
-    float direct_pdf_a = luminance(ls.le) / pc.emitter_power;
-    float emission_pdf_w = direct_pdf_a * cos0 / PI;
-    if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
-        light_counts[path] = uvec2(0u);
-        lvc_offsets[path] = 0u;
-        return;
+    vec3 beta, o, d;
+    float d_vcm, d_vc;
+    bool from_env = HAS_ENV != 0u && rng_next(rng) < env.pick;
+    if (from_env) {
+        // From the environment: a direction from the map, an origin on the disk facing it
+        // (emission pdf = pick * pdf_w / disk area, cosine 1; Georgiev 2012, section 5.1).
+        EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+        float direct_pdf_w = env.pick * es.pdf_w;
+        float emission_pdf_w = direct_pdf_w / env.disk_area;
+        if (!(emission_pdf_w > 0.0)) {
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
+        }
+        d = -es.w;
+        o = env_disk_origin(es.w, rng_next(rng), rng_next(rng));
+        beta = es.le / emission_pdf_w;
+        d_vcm = mis(direct_pdf_w / emission_pdf_w);
+        d_vc = mis(1.0 / emission_pdf_w);
+    } else {
+        // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
+        LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+        d = sample_cosine_hemisphere(ls.n, rng_next(rng), rng_next(rng));
+        float cos0 = dot(d, ls.n);
+        float direct_pdf_a = triangle_light_pick() * luminance(ls.le) / pc.emitter_power;
+        float emission_pdf_w = direct_pdf_a * cos0 / PI;
+        if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
+        }
+        beta = ls.le * cos0 / emission_pdf_w;
+        d_vcm = mis(direct_pdf_a / emission_pdf_w);
+        d_vc = mis(cos0 / emission_pdf_w);
+        o = offset_ray_origin(ls.p, ls.n);
     }
-    vec3 beta = ls.le * cos0 / emission_pdf_w;
     float beta0 = max3(beta);
-    float d_vcm = mis(direct_pdf_a / emission_pdf_w);
-    float d_vc = mis(cos0 / emission_pdf_w);
-    vec3 o = offset_ray_origin(ls.p, ls.n);
 
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
@@ -109,7 +131,10 @@ void main() {
         vec3 ns_f = s.front ? s.ns : -s.ns;
         vec3 wi = -d;
         float cos_in = abs(dot(ns_f, wi));
-        d_vcm *= mis(h.t * h.t);
+        // An environment's first segment has no length in the measure (solid angle).
+        if (!(from_env && depth == 1u)) {
+            d_vcm *= mis(h.t * h.t);
+        }
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
 

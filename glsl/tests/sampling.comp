@@ -8,7 +8,9 @@
 //   out[2i] = (point, chosen index by choose_emitter with the same number),
 //   out[2i + 1] = (normal, reported pick probability);
 // - SAMPLING_DIELECTRIC: sample_dielectric for incident direction pc.a.xyz, normal pc.b.xyz
-//   and eta pc.a.w, out[i] = (new direction, radiance scale if refracted else 0).
+//   and eta pc.a.w, out[i] = (new direction, radiance scale if refracted else 0);
+// - SAMPLING_ENV: env_sample over the bound environment, out[2i] = (direction, its pdf_w),
+//   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
 // Uniform numbers come from rng.glsl (the independent sampler), as in the integrators.
 #include "bidir_abi.glsl"
 #include "ray.glsl"
@@ -19,6 +21,7 @@ layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
 layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 1u;
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "env.glsl"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = SAMPLING_BIND_OUT) writeonly buffer Out { vec4 result[]; };
@@ -49,5 +52,10 @@ void main() {
         bool refracted;
         vec3 d = sample_dielectric(pc.a.xyz, pc.b.xyz, pc.a.w, rng_next(rng), scale, refracted);
         result[i] = vec4(d, refracted ? scale : 0.0);
+    } else if (pc.mode == SAMPLING_ENV) {
+        EnvSample e = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+        EnvSample l = env_lookup(e.w);
+        result[2u * i] = vec4(e.w, e.pdf_w);
+        result[2u * i + 1u] = vec4(l.le, l.pdf_w);
     }
 }

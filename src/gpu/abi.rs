@@ -101,6 +101,11 @@ gpu_consts! {
     /// Sample slices (vec4 per slice and pixel: rgb sum, count) that film_slices.comp adds
     /// into the film in a fixed order, when a pass runs several samples of a pixel at once.
     pub const BIND_SLICES: u32 = 25;
+    /// The environment light (glsl/common/env.glsl): one `GpuEnv`, its texels (`GpuEnvTexel`,
+    /// rows top to bottom) and Walker's alias table over them (`GpuAlias`).
+    pub const BIND_ENV: u32 = 27;
+    pub const BIND_ENV_TEXELS: u32 = 28;
+    pub const BIND_ENV_ALIAS: u32 = 29;
     /// BDPT joins (BdptPush::join).
     pub const JOIN_FULL: u32 = 0;
     pub const JOIN_K: u32 = 1;
@@ -148,6 +153,8 @@ gpu_consts! {
     pub const SAMPLING_COSINE_PDF: u32 = 1;
     pub const SAMPLING_EMITTER: u32 = 2;
     pub const SAMPLING_DIELECTRIC: u32 = 3;
+    /// Environment sampling: (direction, pdf_w) per sample, then the pdf looked up again.
+    pub const SAMPLING_ENV: u32 = 4;
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
@@ -160,6 +167,9 @@ gpu_consts! {
     /// the subgroup's lanes have any (Ylitie et al. 2017, section 4); 0 (default) tests them
     /// at once.
     pub const SPEC_CWBVH_POSTPONE: u32 = 14;
+    /// 1: the scene has an environment light (escaped rays see it, light sampling and BDPT's
+    /// light paths include it); 0 compiles none of it in.
+    pub const SPEC_HAS_ENV: u32 = 15;
 }
 
 gpu_structs! {
@@ -286,6 +296,34 @@ gpu_structs! {
         pub e2: Vec4,
         /// Emitted radiance (rgb); w: probability of choosing this emitter.
         pub radiance: Vec4,
+    }
+
+    /// The environment light: an equirectangular map, conventions in `src/scene/env.rs`.
+    pub struct GpuEnv (48 bytes) {
+        /// Scene bounding sphere, centre (xyz) and radius (w): a light path from the
+        /// environment starts on a disk of this radius, outside the sphere, facing its way.
+        pub bounds: Vec4,
+        pub width: u32,
+        pub height: u32,
+        /// Turn of the map about +Y (radians).
+        pub rotate: f32,
+        /// Probability that light sampling (and a BDPT light path) picks the environment
+        /// rather than an emissive triangle.
+        pub pick: f32,
+        /// Area of the light-path disk, pi r^2.
+        pub disk_area: f32,
+        pub pad0: u32,
+        pub pad1: u32,
+        pub pad2: u32,
+    }
+
+    /// One environment texel: its radiance (scale included) and the solid-angle pdf of
+    /// sampling a direction inside it (p_alias / texel solid angle).
+    pub struct GpuEnvTexel (16 bytes) {
+        pub r: f32,
+        pub g: f32,
+        pub b: f32,
+        pub pdf_w: f32,
     }
 
     /// One cell of Walker's alias table over emitters (Vose's construction).

@@ -2,6 +2,7 @@
 //! textures are uploaded only when present (a 4-byte placeholder is bound otherwise) and the
 //! kernels are specialised on [`SceneFeatures`] so they run no code for what is absent.
 
+use super::env::EnvTable;
 use super::lights::{luminance, LightTable};
 use crate::bvh::Bvh;
 use crate::gpu::abi::{self, GpuMaterial, GpuTexture};
@@ -19,6 +20,8 @@ pub struct SceneFeatures {
     pub mirror: bool,
     pub glass: bool,
     pub alpha: bool,
+    /// An environment light (that is not black).
+    pub env: bool,
 }
 
 impl SceneFeatures {
@@ -31,6 +34,7 @@ impl SceneFeatures {
             mirror: m.iter().any(|m| m.reflectivity > 0.0),
             glass: m.iter().any(|m| m.refractivity > 0.0),
             alpha: scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some()),
+            env: scene.environment.as_ref().is_some_and(|e| !e.is_black()),
         }
     }
 
@@ -49,6 +53,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_MIRROR, value: self.mirror as u32 },
             Spec { id: abi::SPEC_HAS_GLASS, value: self.glass as u32 },
             Spec { id: abi::SPEC_HAS_ALPHA, value: self.alpha as u32 },
+            Spec { id: abi::SPEC_HAS_ENV, value: self.env as u32 },
         ]
     }
 }
@@ -65,6 +70,10 @@ pub struct GpuScene {
     pub textures: Buffer,
     pub texels: Buffer,
     pub positions: Buffer,
+    /// The environment (`GpuEnv`), its texels and alias table; placeholders without one.
+    pub env: Buffer,
+    pub env_texels: Buffer,
+    pub env_alias: Buffer,
     pub features: SceneFeatures,
     pub emitter_count: u32,
     pub emitter_power: f32,
@@ -76,7 +85,7 @@ pub struct GpuScene {
 
 impl GpuScene {
     pub fn upload(ctx: &Context, scene: &Scene, bvh: &Bvh) -> Result<GpuScene> {
-        let features = SceneFeatures::of(scene);
+        let mut features = SceneFeatures::of(scene);
         let gbvh = GpuBvh::upload(ctx, bvh)?;
         let prim_info: Vec<UVec4> = bvh
             .tri_ids
@@ -118,10 +127,19 @@ impl GpuScene {
         let texels = if texels.is_empty() { placeholder("scene.texels (none)")? } else { ctx.upload_buffer("scene.texels", &texels)? };
         let emitters = if lights.emitters.is_empty() { placeholder("scene.emitters (none)")? } else { ctx.upload_buffer("scene.emitters", &lights.emitters)? };
         let alias = if lights.alias.is_empty() { placeholder("scene.alias (none)")? } else { ctx.upload_buffer("scene.alias", &lights.alias)? };
+        let env_table = scene.environment.as_ref().and_then(|e| EnvTable::build(e, &scene.bounds(), !lights.emitters.is_empty()));
+        features.env = env_table.is_some();
+        let (env, env_texels, env_alias) = match &env_table {
+            Some(t) => (ctx.upload_buffer("scene.env", std::slice::from_ref(&t.env))?, ctx.upload_buffer("scene.env_texels", &t.texels)?, ctx.upload_buffer("scene.env_alias", &t.alias)?),
+            None => {
+                let none = abi::GpuEnv { pick: 0.0, ..bytemuck::Zeroable::zeroed() };
+                (ctx.upload_buffer("scene.env (none)", std::slice::from_ref(&none))?, placeholder("scene.env_texels (none)")?, placeholder("scene.env_alias (none)")?)
+            }
+        };
         let positions = ctx.upload_buffer("scene.positions", &scene.positions.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?;
         let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
         let materials = ctx.upload_buffer("scene.materials", &materials)?;
-        let bytes = [&prim_info, &materials, &emitters, &alias, &normals, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
+        let bytes = [&prim_info, &materials, &emitters, &alias, &normals, &uvs, &textures, &texels, &positions, &env, &env_texels, &env_alias].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
         Ok(GpuScene {
             bvh: gbvh,
             prim_info,
@@ -133,6 +151,9 @@ impl GpuScene {
             textures,
             texels,
             positions,
+            env,
+            env_texels,
+            env_alias,
             features,
             emitter_count: lights.emitters.len() as u32,
             emitter_power: lights.total_power,
@@ -155,6 +176,9 @@ impl GpuScene {
             Bind::buffer(abi::BIND_TEXTURES, &self.textures),
             Bind::buffer(abi::BIND_TEXELS, &self.texels),
             Bind::buffer(abi::BIND_POSITIONS, &self.positions),
+            Bind::buffer(abi::BIND_ENV, &self.env),
+            Bind::buffer(abi::BIND_ENV_TEXELS, &self.env_texels),
+            Bind::buffer(abi::BIND_ENV_ALIAS, &self.env_alias),
         ]
     }
 }

@@ -13,6 +13,7 @@
 //! ```
 
 mod bdpt;
+pub mod env;
 mod film;
 pub mod gpu_scene;
 pub mod lights;

@@ -16,6 +16,7 @@
 mod builder;
 mod builtin;
 mod camera;
+mod env;
 mod error;
 mod gltf;
 mod mtl;
@@ -28,6 +29,7 @@ mod warnings;
 
 pub use builtin::BUILTIN_SOURCE;
 pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
+pub use env::{EnvError, EnvSpec, Environment};
 pub use error::SceneError;
 pub use gltf::load_gltf;
 pub use obj::{load_obj, load_obj_str};
@@ -89,6 +91,9 @@ pub struct Scene {
     pub cameras: Vec<Camera>,
     /// Degenerate (zero-area or non-finite) triangles dropped while loading.
     pub dropped_degenerate: usize,
+    /// Light from infinitely far away (`--env`, or the default for a scene without lights);
+    /// loaders leave it `None`.
+    pub environment: Option<Environment>,
 }
 
 /// The thesis' material model: diffuse albedo (colour or texture), emission, a fraction of

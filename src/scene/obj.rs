@@ -226,6 +226,7 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
         textures: decoded.textures,
         cameras: Vec::new(),
         dropped_degenerate: b.dropped_degenerate,
+        environment: None,
     };
     Ok(Loaded { scene, warnings: w.into_vec() })
 }

@@ -96,6 +96,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         textures: decoded.textures,
         cameras,
         dropped_degenerate: b.dropped_degenerate,
+        environment: None,
     };
     Ok(Loaded { scene, warnings: w.into_vec() })
 }
