@@ -166,14 +166,29 @@ fn assert_agree(what: &str, a: &RgbImage, b: &RgbImage) {
     assert!(p >= 1e-3, "{what}: block means disagree beyond noise (X^2 = {chi2:.1}, {blocks} blocks)");
 }
 
+fn check_agreement(what: &str, scene: &Scene) {
+    let reference = render(scene, Integrator::PtNee, 256);
+    for (integrator, spp) in [(Integrator::Pt, 512), (Integrator::Bdpt(Join::Full), 128), (Integrator::Bdpt(Join::K(2)), 128), (Integrator::Bdpt(Join::K(1)), 128), (Integrator::Bdpt(Join::Lvc(0)), 128)] {
+        let img = render(scene, integrator, spp);
+        assert_agree(&format!("{what}: {} vs pt-nee", integrator.name()), &img, &reference);
+    }
+}
+
 #[test]
 fn integrators_agree_under_a_hot_spot_map() {
-    let scene = box_scene(0.7, 0.5, hot_spot_map(), 48);
-    let reference = render(&scene, Integrator::PtNee, 256);
-    for (integrator, spp) in [(Integrator::Pt, 512), (Integrator::Bdpt(Join::Full), 128), (Integrator::Bdpt(Join::K(2)), 128), (Integrator::Bdpt(Join::K(1)), 128), (Integrator::Bdpt(Join::Lvc(0)), 128)] {
-        let img = render(&scene, integrator, spp);
-        assert_agree(&format!("hot-spot map: {} vs pt-nee", integrator.name()), &img, &reference);
-    }
+    check_agreement("hot-spot map", &box_scene(0.7, 0.5, hot_spot_map(), 48));
+}
+
+/// With emissive triangles too, light sampling picks the environment or a triangle with
+/// probability 1/2 each; every strategy's pdf must carry that choice.
+#[test]
+fn integrators_agree_with_an_environment_and_an_emitter() {
+    let mut scene = box_scene(0.7, 0.5, hot_spot_map(), 48);
+    // A small warm quad inside the box, under the rim, facing down and in.
+    let quad = bidir::scene::QuadLight::new(Vec3::new(-0.9, 0.6, -0.9), Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.5, -0.2, 0.0), Vec3::new(8.0, 6.0, 3.0)).unwrap();
+    scene.add_quad_light(&quad, "quad");
+    assert_eq!(scene.emitters().len(), 2);
+    check_agreement("hot-spot map + quad light", &scene);
 }
 
 /// Without an environment the kernels compile none of it in, and the scene stays dark
