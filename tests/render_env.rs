@@ -24,7 +24,7 @@ fn all_integrators() -> [Integrator; 6] {
 fn add(scene: &mut Scene, (positions, tris): (Vec<Vec3>, Vec<[u32; 3]>), m: u32) {
     let base = scene.positions.len() as u32;
     scene.positions.extend(positions);
-    scene.material_ids.extend(std::iter::repeat_n(m, tris.len()));
+    scene.material_ids.extend(std::iter::repeat(m).take(tris.len()));
     scene.triangles.extend(tris.into_iter().map(|t| t.map(|i| i + base)));
 }
 

@@ -30,7 +30,7 @@ impl EnvTable {
             .map(|(i, t)| luminance(*t * env.scale) as f64 * env.texel_solid_angle(i as u32 / env.width) as f64)
             .collect();
         let total: f64 = weights.iter().sum();
-        if !(total > 0.0) || !total.is_finite() {
+        if total <= 0.0 || !total.is_finite() {
             return None;
         }
         let texels = env
