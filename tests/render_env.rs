@@ -206,3 +206,39 @@ fn no_environment_compiles_out_and_stays_dark() {
     }
     finish(ctx);
 }
+
+/// `--env FILE`: an EXR written here reads back texel for texel (rows top to bottom), and a
+/// bad file is an error naming it.
+#[test]
+fn environment_maps_load_from_exr_and_refuse_bad_files() {
+    let dir = std::env::temp_dir();
+    let exr = dir.join(format!("bidir-env-{}.exr", std::process::id()));
+    let mut img = RgbImage::new(4, 2);
+    for (i, v) in img.data.iter_mut().enumerate() {
+        *v = i as f32 * 0.25;
+    }
+    bidir::film::write_image(&exr, &img, 0.0).unwrap();
+    let env = Environment::load(&exr).unwrap();
+    std::fs::remove_file(&exr).unwrap();
+    assert_eq!((env.width, env.height), (4, 2));
+    for (i, t) in env.texels.iter().enumerate() {
+        assert_eq!(*t, Vec3::new(0.75 * i as f32, 0.75 * i as f32 + 0.25, 0.75 * i as f32 + 0.5), "texel {i}");
+    }
+    // Radiance RGBE keeps 8 bits of mantissa: powers of two survive exactly.
+    let hdr = dir.join(format!("bidir-env-{}.hdr", std::process::id()));
+    let px: Vec<image::Rgb<f32>> = (0..6).map(|i| image::Rgb([2f32.powi(i), 0.5, 4.0])).collect();
+    image::codecs::hdr::HdrEncoder::new(std::fs::File::create(&hdr).unwrap()).encode(&px, 3, 2).unwrap();
+    let env = Environment::load(&hdr).unwrap();
+    std::fs::remove_file(&hdr).unwrap();
+    assert_eq!((env.width, env.height), (3, 2));
+    assert_eq!(env.texels[4], Vec3::new(16.0, 0.5, 4.0));
+
+    let missing = dir.join("bidir-no-such-env.hdr");
+    let e = Environment::load(&missing).unwrap_err().to_string();
+    assert!(e.contains("bidir-no-such-env.hdr"), "{e}");
+    let garbage = dir.join(format!("bidir-env-garbage-{}.hdr", std::process::id()));
+    std::fs::write(&garbage, b"not an image").unwrap();
+    let e = Environment::load(&garbage).unwrap_err().to_string();
+    std::fs::remove_file(&garbage).unwrap();
+    assert!(e.contains("bidir-env-garbage") && e.contains("cannot read"), "{e}");
+}
