@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 const SAMPLES: &str = "../shared/scenes/gltf-samples";
-const WARNING: &str = "no emitter and no --env: lit by a uniform white environment of radiance 1";
+const WARNING: &str = "no emitter, no punctual light and no --env: lit by a uniform white environment of radiance 1";
 
 fn models() -> Option<Vec<PathBuf>> {
     let dir = Path::new(SAMPLES);

@@ -484,7 +484,7 @@ fn environment_sampling_matches_its_pdf() {
     let mut env = Environment::from_texels("test:gradient+hot", w, h, texels);
     env.rotate_deg = 30.0;
     let bounds = Aabb { min: Vec3::splat(-1.0), max: Vec3::ONE };
-    let table = EnvTable::build(&env, &bounds, false).unwrap();
+    let table = EnvTable::build(&env, &bounds, 1.0).unwrap();
 
     let ctx = gpu();
     let s = Sampler::new(&ctx);

@@ -81,9 +81,10 @@ bool env_visible(vec3 p, vec3 n_f, vec3 w, inout uvec2 stats) {
 }
 #endif
 
-// Probability that light sampling picks an emissive triangle rather than the environment.
-float triangle_light_pick() {
-    return HAS_ENV != 0u ? 1.0 - env.pick : 1.0;
+// Probability that light sampling picks an emissive triangle rather than the environment
+// or a punctual light (has_punctual: the kernel's HAS_PUNCTUAL).
+float triangle_light_pick(bool has_punctual) {
+    return 1.0 - (HAS_ENV != 0u ? env.pick : 0.0) - (has_punctual ? env.punctual_pick : 0.0);
 }
 
 #endif

@@ -16,6 +16,7 @@
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "env.glsl"
+#include "punctual.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -106,7 +107,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             if (depth == 1u) {
                 radiance += beta * m.emission.rgb;
             } else {
-                float direct_pdf_a = triangle_light_pick() * m.emission.w / pc.emitter_power;
+                float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * m.emission.w / pc.emitter_power;
                 float cos_l = max(0.0, -dot(s.ng, d));
                 float emission_pdf_w = direct_pdf_a * cos_l / PI;
                 // Light sampling and emission see an emitter through its geometric normal:
@@ -136,8 +137,23 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             vec3 f = pd * albedo / PI;
             // s = 1: the environment (probability env.pick; its "point" is a direction, the
             // cosine there is 1) or a fresh point on an emitter.
-            bool env_light = HAS_ENV != 0u && rng_next(rng) < env.pick;
-            if (env_light) {
+            float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
+            bool env_light = HAS_ENV != 0u && u_kind < env.pick;
+            bool punctual_light = HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
+            if (punctual_light) {
+                // A delta light: BSDF sampling cannot find it (w_light = 0); the camera side
+                // weighs emission against direct sampling at cosine 1 (eqs. 45, 49).
+                PunctualSample ps = punctual_sample(rng_next(rng), s.p);
+                float cos_s = dot(ns_f, ps.w);
+                if (cos_s > 0.0 && dot(ng_f, ps.w) > 0.0 && max3(ps.li) > 0.0) {
+                    float bsdf_rev_pdf_w = pd * cos_back / PI;
+                    float w_camera = mis(ps.emission_over_direct * cos_s) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    vec3 c = beta * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
+                    if (max3(c) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                        radiance += c;
+                    }
+                }
+            } else if (env_light) {
                 EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
                 float cos_s = dot(ns_f, es.w);
                 if (cos_s > 0.0 && dot(ng_f, es.w) > 0.0 && es.pdf_w > 0.0) {
@@ -154,7 +170,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 }
             } else if (pc.emitter_count > 0u) {
                 LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
-                ls.pick *= triangle_light_pick();
+                ls.pick *= triangle_light_pick(HAS_PUNCTUAL != 0u);
                 vec3 to_l = ls.p - s.p;
                 float dist2 = dot(to_l, to_l);
                 vec3 wi = to_l * inversesqrt(dist2);

@@ -13,6 +13,7 @@
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "env.glsl"
+#include "punctual.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
@@ -59,7 +60,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             float w = 1.0;
             if (NEE != 0u && !specular && pc.emitter_count > 0u) {
                 float cos_l = -dot(s.ng, d);
-                float pdf_light_w = triangle_light_pick() * light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
+                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
                 w = power_heuristic(prev_pdf_w, pdf_light_w);
             }
             radiance += throughput * m.emission.rgb * w;
@@ -94,9 +95,18 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             vec3 p_off = offset_ray_origin(s.p, ng_f);
             // Next-event estimation: the environment (probability env.pick) or an emitter
             // point by power, one shadow ray.
-            bool nee = NEE != 0u && (pc.emitter_count > 0u || HAS_ENV != 0u) && (pc.max_depth == 0u || depth + 1u <= pc.max_depth);
-            bool env_light = nee && HAS_ENV != 0u && rng_next(rng) < env.pick;
-            if (env_light) {
+            bool nee = NEE != 0u && (pc.emitter_count > 0u || HAS_ENV != 0u || HAS_PUNCTUAL != 0u) && (pc.max_depth == 0u || depth + 1u <= pc.max_depth);
+            float u_kind = nee && (HAS_ENV != 0u || HAS_PUNCTUAL != 0u) ? rng_next(rng) : 1.0;
+            bool env_light = nee && HAS_ENV != 0u && u_kind < env.pick;
+            bool punctual_light = nee && HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
+            if (punctual_light) {
+                // A delta light: BSDF sampling never finds it, so no MIS.
+                PunctualSample ps = punctual_sample(rng_next(rng), s.p);
+                float cos_s = dot(ps.w, ns_f);
+                if (cos_s > 0.0 && dot(ps.w, ng_f) > 0.0 && max3(ps.li) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                    radiance += throughput * (albedo / PI) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
+                }
+            } else if (env_light) {
                 EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
                 float cos_s = dot(es.w, ns_f);
                 if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
@@ -113,7 +123,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 float cos_s = dot(wi, ns_f);
                 float cos_l = -dot(wi, ls.n);
                 if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
-                    float pdf_light_w = triangle_light_pick() * light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
+                    float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
                     float pdf_bsdf_w = cos_s / PI;
                     float w = power_heuristic(pdf_light_w, pdf_bsdf_w);
                     radiance += throughput * (albedo / PI) * ls.le * (cos_s * w / pdf_light_w);

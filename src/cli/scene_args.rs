@@ -132,8 +132,8 @@ impl SceneArgs {
         }
         let env = match &self.env {
             Some(spec) => Environment::from_spec(spec)?,
-            None if scene.emitters().is_empty() => {
-                let w = format!("{}: no emitter and no --env: lit by a uniform white environment of radiance 1 (--env none keeps it dark)", scene.source);
+            None if scene.emitters().is_empty() && scene.punctual_lights.is_empty() => {
+                let w = format!("{}: no emitter, no punctual light and no --env: lit by a uniform white environment of radiance 1 (--env none keeps it dark)", scene.source);
                 log::warn!("{w}");
                 warnings.push(w);
                 Some(Environment::uniform(Vec3::ONE))

@@ -106,6 +106,12 @@ gpu_consts! {
     pub const BIND_ENV: u32 = 27;
     pub const BIND_ENV_TEXELS: u32 = 28;
     pub const BIND_ENV_ALIAS: u32 = 29;
+    /// Punctual (delta) lights, `GpuPunctual` each (glsl/common/punctual.glsl).
+    pub const BIND_PUNCTUAL: u32 = 30;
+    /// `GpuPunctual::kind`.
+    pub const PUNCTUAL_POINT: u32 = 0;
+    pub const PUNCTUAL_SPOT: u32 = 1;
+    pub const PUNCTUAL_DIRECTIONAL: u32 = 2;
     /// BDPT joins (BdptPush::join).
     pub const JOIN_FULL: u32 = 0;
     pub const JOIN_K: u32 = 1;
@@ -170,6 +176,8 @@ gpu_consts! {
     /// 1: the scene has an environment light (escaped rays see it, light sampling and BDPT's
     /// light paths include it); 0 compiles none of it in.
     pub const SPEC_HAS_ENV: u32 = 15;
+    /// 1: the scene has punctual lights (point, spot, directional).
+    pub const SPEC_HAS_PUNCTUAL: u32 = 16;
 }
 
 gpu_structs! {
@@ -310,11 +318,31 @@ gpu_structs! {
         /// Probability that light sampling (and a BDPT light path) picks the environment
         /// rather than an emissive triangle.
         pub pick: f32,
-        /// Area of the light-path disk, pi r^2.
+        /// Area of the light-path disk, pi r^2 (also where directional lights' paths start).
         pub disk_area: f32,
+        /// Punctual lights in BIND_PUNCTUAL (bound with this buffer even without an
+        /// environment: it holds how light sampling splits between kinds of light).
+        pub punctual_count: u32,
+        /// Probability that light sampling picks a punctual light (then one uniformly).
+        pub punctual_pick: f32,
         pub pad0: u32,
-        pub pad1: u32,
-        pub pad2: u32,
+    }
+
+    /// A punctual light (KHR_lights_punctual): a delta light, never hit by a ray.
+    pub struct GpuPunctual (64 bytes) {
+        /// Point and spot lights: position (xyz), w unused.
+        pub position: Vec4,
+        /// Spot and directional lights: unit direction of the emitted light (xyz), w unused.
+        pub direction: Vec4,
+        /// Point and spot: radiant intensity (W/sr, rgb); directional: irradiance on a surface
+        /// facing it (rgb); w unused.
+        pub intensity: Vec4,
+        /// PUNCTUAL_POINT, PUNCTUAL_SPOT or PUNCTUAL_DIRECTIONAL.
+        pub kind: u32,
+        /// Spot: cosines of the outer and inner cone half-angles.
+        pub cos_outer: f32,
+        pub cos_inner: f32,
+        pub pad0: u32,
     }
 
     /// One environment texel: its radiance (scale included) and the solid-angle pdf of

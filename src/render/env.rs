@@ -7,9 +7,14 @@ use crate::gpu::abi::{GpuAlias, GpuEnv, GpuEnvTexel};
 use crate::scene::{Aabb, Environment};
 use glam::Vec4;
 
-/// Probability that light sampling picks the environment when the scene also has emissive
-/// triangles (1 when it has none).
-pub const ENV_PICK_WITH_TRIANGLES: f32 = 0.5;
+/// The disk from which light paths of lights at infinity (environment, directional) start:
+/// the scene's bounding sphere, 1 % larger so disk origins lie outside every surface, as
+/// (centre, radius) and its area.
+pub fn light_disk(bounds: &Aabb) -> (Vec4, f32) {
+    let (centre, radius) = if bounds.is_empty() { (glam::Vec3::ZERO, 1.0) } else { (bounds.center(), (0.5 * bounds.diagonal().length()).max(1e-3)) };
+    let radius = radius * 1.01;
+    (centre.extend(radius), std::f32::consts::PI * radius * radius)
+}
 
 /// What the kernels read of an environment.
 #[derive(Clone, Debug)]
@@ -20,9 +25,9 @@ pub struct EnvTable {
 }
 
 impl EnvTable {
-    /// Tables for `env` in a scene with `bounds`; `None` if the environment is black
-    /// (nothing to sample).
-    pub fn build(env: &Environment, bounds: &Aabb, has_triangle_lights: bool) -> Option<EnvTable> {
+    /// Tables for `env` in a scene with `bounds`, picked by light sampling with probability
+    /// `pick`; `None` if the environment is black (nothing to sample).
+    pub fn build(env: &Environment, bounds: &Aabb, pick: f32) -> Option<EnvTable> {
         let weights: Vec<f64> = env
             .texels
             .iter()
@@ -44,20 +49,8 @@ impl EnvTable {
                 GpuEnvTexel { r: le.x, g: le.y, b: le.z, pdf_w: (w / total / omega) as f32 }
             })
             .collect();
-        let (centre, radius) = if bounds.is_empty() { (glam::Vec3::ZERO, 1.0) } else { (bounds.center(), (0.5 * bounds.diagonal().length()).max(1e-3)) };
-        // A little larger than the bounding sphere, so disk origins lie outside every surface.
-        let radius = radius * 1.01;
-        let gpu = GpuEnv {
-            bounds: Vec4::new(centre.x, centre.y, centre.z, radius),
-            width: env.width,
-            height: env.height,
-            rotate: env.rotate_deg.to_radians(),
-            pick: if has_triangle_lights { ENV_PICK_WITH_TRIANGLES } else { 1.0 },
-            disk_area: std::f32::consts::PI * radius * radius,
-            pad0: 0,
-            pad1: 0,
-            pad2: 0,
-        };
+        let (bounds, disk_area) = light_disk(bounds);
+        let gpu = GpuEnv { bounds, width: env.width, height: env.height, rotate: env.rotate_deg.to_radians(), pick, disk_area, punctual_count: 0, punctual_pick: 0.0, pad0: 0 };
         Some(EnvTable { env: gpu, texels, alias: alias_table(&weights) })
     }
 }
@@ -74,12 +67,12 @@ mod tests {
         let texels = (0..32).map(|i| if i % 5 == 0 { Vec3::ZERO } else { Vec3::new(i as f32, 1.0, 0.5) }).collect();
         let env = Environment::from_texels("t", 8, 4, texels);
         let b = Aabb { min: Vec3::splat(-1.0), max: Vec3::ONE };
-        let t = EnvTable::build(&env, &b, false).unwrap();
+        let t = EnvTable::build(&env, &b, 1.0).unwrap();
         let sum: f64 = t.texels.iter().enumerate().map(|(i, x)| x.pdf_w as f64 * env.texel_solid_angle(i as u32 / 8) as f64).sum();
         assert!((sum - 1.0).abs() < 1e-5, "{sum}");
         let ratio = |i: usize| t.texels[i].pdf_w / luminance(env.texels[i]);
         assert!((ratio(3) / ratio(31) - 1.0).abs() < 1e-5);
         assert_eq!(t.texels[5].pdf_w, 0.0);
-        assert!(EnvTable::build(&Environment::uniform(Vec3::ZERO), &b, false).is_none());
+        assert!(EnvTable::build(&Environment::uniform(Vec3::ZERO), &b, 1.0).is_none());
     }
 }

@@ -22,6 +22,7 @@ mod gltf;
 mod mtl;
 mod obj;
 mod obj_check;
+mod punctual;
 mod quad_light;
 mod stats;
 mod texture;
@@ -33,6 +34,7 @@ pub use env::{EnvError, EnvSpec, Environment};
 pub use error::SceneError;
 pub use gltf::load_gltf;
 pub use obj::{load_obj, load_obj_str};
+pub use punctual::{PunctualKind, PunctualLight};
 pub use quad_light::{parse_vec3, QuadLight, QuadLightError};
 pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts};
 pub use texture::srgb_to_linear;
@@ -94,6 +96,8 @@ pub struct Scene {
     /// Light from infinitely far away (`--env`, or the default for a scene without lights);
     /// loaders leave it `None`.
     pub environment: Option<Environment>,
+    /// Point, spot and directional lights (glTF KHR_lights_punctual).
+    pub punctual_lights: Vec<PunctualLight>,
 }
 
 /// The thesis' material model: diffuse albedo (colour or texture), emission, a fraction of

@@ -97,6 +97,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         cameras,
         dropped_degenerate: b.dropped_degenerate,
         environment: None,
+        punctual_lights: Vec::new(),
     };
     Ok(Loaded { scene, warnings: w.into_vec() })
 }
