@@ -96,3 +96,17 @@ fn cameraless_models_are_framed_from_the_front() {
     eprintln!("{framed} camera-less models framed from +Z");
     assert!(framed > 0, "no camera-less model among the samples");
 }
+
+/// KHR_lights_punctual: the lamp's five point lights are read, placed by their nodes.
+#[test]
+fn punctual_lights_are_read_from_gltf() {
+    let Some(models) = models() else { return };
+    let lamp = models.iter().find(|m| m.to_string_lossy().contains("LightsPunctualLamp")).expect("LightsPunctualLamp");
+    let loaded = bidir::scene::load(lamp, &Default::default()).unwrap();
+    let lights = &loaded.scene.punctual_lights;
+    assert_eq!(lights.len(), 5, "{lights:?}");
+    assert!(lights.iter().all(|l| l.kind == bidir::scene::PunctualKind::Point && l.intensity.min_element() > 0.0));
+    let bright = lights.iter().find(|l| l.name == "Point.004").expect("Point.004");
+    assert!((bright.position - glam::Vec3::new(0.292, 1.0324, 1.5589)).length() < 1e-3, "{:?}", bright.position);
+    assert!(!loaded.warnings.iter().any(|w| w.contains("KHR_lights_punctual")), "{:?}", loaded.warnings);
+}
