@@ -25,7 +25,8 @@ fn add(scene: &mut Scene, (positions, tris): (Vec<Vec3>, Vec<[u32; 3]>), m: u32)
 fn render(scene: &Scene, integrator: Integrator, spp: u32) -> RgbImage {
     let ctx = gpu();
     let mut r = Renderer::new(&ctx, scene, &scene.cameras[0], RenderSettings::new(integrator)).unwrap();
-    assert!(r.gpu_scene().features.punctual && !r.gpu_scene().features.env);
+    assert!(r.gpu_scene().features.punctual);
+    assert_eq!(r.gpu_scene().features.env, scene.environment.is_some());
     r.render_spp(spp, |_| {}).unwrap();
     let img = r.image().unwrap();
     assert_eq!(r.nan_samples().unwrap(), 0, "{}: NaN/Inf samples", integrator.name());
@@ -120,11 +121,26 @@ fn lit_box_scene() -> Scene {
 
 #[test]
 fn pt_nee_and_every_bdpt_join_agree_under_spot_point_and_directional_lights() {
-    let scene = lit_box_scene();
-    let reference = render(&scene, Integrator::PtNee, 256);
+    let joins = [Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::K(2)), Integrator::Bdpt(Join::K(1)), Integrator::Bdpt(Join::Lvc(0))];
+    check_agreement("spot + point + directional", &lit_box_scene(), &joins);
+}
+
+/// All three kinds of light at once (light sampling picks each with probability 1/3): the
+/// punctual lights, an emissive quad and a dim uniform environment.
+#[test]
+fn pt_nee_and_bdpt_agree_with_every_kind_of_light() {
+    let mut scene = lit_box_scene();
+    let quad = bidir::scene::QuadLight::new(Vec3::new(-0.9, 0.6, -0.9), Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.5, -0.2, 0.0), Vec3::new(4.0, 3.0, 1.5)).unwrap();
+    scene.add_quad_light(&quad, "quad");
+    scene.environment = Some(bidir::scene::Environment::uniform(Vec3::new(0.2, 0.25, 0.35)));
+    check_agreement("punctual + quad + environment", &scene, &[Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(0))]);
+}
+
+fn check_agreement(what: &str, scene: &Scene, integrators: &[Integrator]) {
+    let reference = render(scene, Integrator::PtNee, 256);
     let w = reference.width as usize;
-    for integrator in [Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::K(2)), Integrator::Bdpt(Join::K(1)), Integrator::Bdpt(Join::Lvc(0))] {
-        let img = render(&scene, integrator, 128);
+    for &integrator in integrators {
+        let img = render(scene, integrator, 128);
         let diff: Vec<f64> = img.data.chunks_exact(3).zip(reference.data.chunks_exact(3)).map(|(x, y)| (0..3).map(|c| x[c] as f64 - y[c] as f64).sum::<f64>() / 3.0).collect();
         let (mean_ref, _) = mean_and_se(&reference.data.iter().map(|&v| v as f64).collect::<Vec<_>>());
         let (d, se) = mean_and_se(&diff);
@@ -141,7 +157,7 @@ fn pt_nee_and_every_bdpt_join_agree_under_spot_point_and_directional_lights() {
             }
         }
         let p = common::stats::chi2_sf(chi2, blocks.max(1));
-        eprintln!("spot + point + directional: {} - pt-nee {:+.3} % (4 sigma {:.3} %), blocks X^2 = {chi2:.1} dof {blocks} p = {p:.4}", integrator.name(), 100.0 * d / mean_ref, 400.0 * se / mean_ref);
+        eprintln!("{what}: {} - pt-nee {:+.3} % (4 sigma {:.3} %), blocks X^2 = {chi2:.1} dof {blocks} p = {p:.4}", integrator.name(), 100.0 * d / mean_ref, 400.0 * se / mean_ref);
         assert!(4.0 * se / mean_ref < 0.02, "{}: too noisy to resolve 2 %", integrator.name());
         assert!(d.abs() < 4.0 * se, "{}: mean differs from pt-nee by {:+.3} %", integrator.name(), 100.0 * d / mean_ref);
         assert!(p >= 1e-3, "{}: block means disagree with pt-nee beyond noise", integrator.name());
