@@ -11,7 +11,10 @@ pub enum PunctualKind {
     Point,
     /// Intensity falls off smoothly from the inner to the outer cone half-angle (radians), as
     /// the extension defines: t = clamp((cos - cos_outer) / (cos_inner - cos_outer)), t^2.
-    Spot { inner: f32, outer: f32 },
+    Spot {
+        inner: f32,
+        outer: f32,
+    },
     Directional,
 }
 
