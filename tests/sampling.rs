@@ -538,3 +538,69 @@ fn environment_sampling_matches_its_pdf() {
     drop((s, genv, texel_buf, alias));
     finish(ctx);
 }
+
+/// A sun (a 2 degree disk of uniform radiance, the alias table's extra cell) inside one
+/// sub-texel cell of a gradient map: the directions fall into the sub-texel cells, with the
+/// sun's cell split into inside and outside the disk, as often as the reported pdf says.
+#[test]
+fn environment_sampling_with_a_sun_matches_its_pdf() {
+    use bidir::render::env::EnvTable;
+    use bidir::scene::{Aabb, Environment, Sun};
+    let (w, h) = (16u32, 8u32);
+    let texels = (0..w * h).map(|i| Vec3::new(0.1 + 0.05 * (i % w) as f32, 0.2, 0.1 + 0.1 * (i / w) as f32)).collect();
+    let mut env = Environment::from_texels("test:gradient+sun", w, h, texels);
+    // The centre of sub-cell (0, 0) of texel (5, 3): phi in the left half, cos theta in the
+    // upper half of the texel's range.
+    let (c0, c1) = ((PI * 3.0 / 8.0).cos(), (PI * 4.0 / 8.0).cos());
+    let cos_c = c0 - 0.25 * (c0 - c1);
+    let phi = 5.25 * 2.0 * PI / 16.0 - PI;
+    let sin_c = (1.0 - cos_c * cos_c).sqrt();
+    let dir = Vec3::new((sin_c * phi.sin()) as f32, cos_c as f32, (-sin_c * phi.cos()) as f32);
+    let sun = Sun { direction: dir, irradiance: Vec3::new(3.0, 2.5, 2.0), angle_deg: 2.0 };
+    env.sun = Some(sun);
+    let table = EnvTable::build(&env, &Aabb { min: Vec3::splat(-1.0), max: Vec3::ONE }, 1.0).unwrap();
+    assert_eq!(table.alias.len() as u32, w * h + 1);
+
+    let ctx = gpu();
+    let s = Sampler::new(&ctx);
+    let genv = ctx.upload_buffer("sampling.env", std::slice::from_ref(&table.env)).unwrap();
+    let texel_buf = ctx.upload_buffer("sampling.env_texels", &table.texels).unwrap();
+    let alias = ctx.upload_buffer("sampling.env_alias", &table.alias).unwrap();
+    let push = abi::SamplingTestPush { mode: abi::SAMPLING_ENV, count: N, seed: 13, ..Default::default() };
+    let out = s.run_env(push, 2, None, None, Some([&genv, &texel_buf, &alias]));
+
+    let cos_max = sun.cos_max() as f64;
+    let sun_cell = ((3 * w + 5) * 4) as usize;
+    let inside = (w * h * 4) as usize; // the extra cell: inside the sun's disk
+    let mut counts = vec![0u64; inside + 1];
+    let mut mismatched = 0u64;
+    for pair in out.chunks_exact(2) {
+        let d = dv(pair[0]);
+        if (pair[0].w as f64 / pair[1].w as f64 - 1.0).abs() > 1e-5 {
+            mismatched += 1;
+        }
+        if d.dot(dir.as_dvec3()) >= cos_max {
+            counts[inside] += 1;
+            continue;
+        }
+        let phi = (PI + d.x.atan2(-d.z)).rem_euclid(2.0 * PI);
+        let fx = phi / (2.0 * PI) * w as f64;
+        let fy = d.y.clamp(-1.0, 1.0).acos() / PI * h as f64;
+        let (x, y) = ((fx as u32).min(w - 1), (fy as u32).min(h - 1));
+        let (a, b) = ((PI * y as f64 / h as f64).cos(), (PI * (y + 1) as f64 / h as f64).cos());
+        let sub = ((fx - x as f64) >= 0.5) as u32 + 2 * (((a - d.y) / (a - b)) >= 0.5) as u32;
+        counts[((y * w + x) * 4 + sub) as usize] += 1;
+    }
+    eprintln!("env_lookup found another texel's pdf for {mismatched} of {N} directions");
+    assert!(mismatched <= N as u64 / 1000);
+    let omega_sun = 2.0 * PI * (1.0 - cos_max);
+    let mut expected: Vec<f64> = (0..inside).map(|k| table.texels[k / 4].pdf_w as f64 * env.texel_solid_angle((k / 4) as u32 / w) as f64 / 4.0 * N as f64).collect();
+    let texel_pdf = table.texels[sun_cell / 4].pdf_w as f64;
+    expected[sun_cell] -= texel_pdf * omega_sun * N as f64;
+    expected.push((texel_pdf + table.env.sun_pdf_w as f64) * omega_sun * N as f64);
+    let fit = stats::pearson(&counts, &expected);
+    eprintln!("environment + sun sampling: {fit}; in the disk {} of {N} (expected {:.0})", counts[inside], expected[inside]);
+    assert!(fit.p >= ALPHA, "environment + sun directions do not follow their pdf ({fit})");
+    drop((s, genv, texel_buf, alias));
+    finish(ctx);
+}

@@ -38,19 +38,42 @@ uint env_texel_index(vec3 w) {
     return y * env.width + x;
 }
 
+// A direction uniform in the cone of half-angle acos(cos_max) about unit axis a.
+vec3 sample_uniform_cone(vec3 a, float cos_max, float u1, float u2) {
+    float cos_t = 1.0 - u1 * (1.0 - cos_max);
+    float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
+    float phi = TWO_PI * u2;
+    vec3 t, b;
+    onb(a, t, b);
+    return cos_t * a + sin_t * (cos(phi) * t + sin(phi) * b);
+}
+
+// Adds the sun (a disk of uniform radiance, the alias table's last cell) where w sees it:
+// the pdf is that of the mixture, texel plus sun.
+EnvSample env_add_sun(EnvSample e) {
+    if (dot(e.w, env.sun_direction.xyz) >= env.sun_cos_max) {
+        e.le += env.sun_radiance.rgb;
+        e.pdf_w += env.sun_pdf_w;
+    }
+    return e;
+}
+
 // Radiance from direction w and the solid-angle pdf with which env_sample picks it.
 EnvSample env_lookup(vec3 w) {
     GpuEnvTexel t = env_texels[env_texel_index(w)];
-    return EnvSample(w, vec3(t.r, t.g, t.b), t.pdf_w);
+    return env_add_sun(EnvSample(w, vec3(t.r, t.g, t.b), t.pdf_w));
 }
 
-// A direction from the map: texel by the alias table (u_cell chooses the cell, u_coin its
-// alias), then (u1, u2) uniform in solid angle inside the texel.
+// A direction from the map: a cell by the alias table (u_cell chooses the cell, u_coin its
+// alias), then (u1, u2) uniform in solid angle inside the texel, or inside the sun's disk.
 EnvSample env_sample(float u_cell, float u_coin, float u1, float u2) {
-    uint cells = env.width * env.height;
+    uint cells = env.cells;
     uint i = min(uint(u_cell * float(cells)), cells - 1u);
     GpuAlias a = env_alias[i];
     uint c = u_coin < a.prob ? i : a.alias;
+    if (c >= env.width * env.height) {
+        return env_lookup(sample_uniform_cone(env.sun_direction.xyz, env.sun_cos_max, u1, u2));
+    }
     uint col = c % env.width;
     uint row = c / env.width;
     float phi = TWO_PI * (float(col) + u1) / float(env.width) - env.rotate - PI;
@@ -59,7 +82,7 @@ EnvSample env_sample(float u_cell, float u_coin, float u1, float u2) {
     float cos_t = mix(cos0, cos1, u2);
     float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
     GpuEnvTexel t = env_texels[c];
-    return EnvSample(vec3(sin_t * sin(phi), cos_t, -sin_t * cos(phi)), vec3(t.r, t.g, t.b), t.pdf_w);
+    return env_add_sun(EnvSample(vec3(sin_t * sin(phi), cos_t, -sin_t * cos(phi)), vec3(t.r, t.g, t.b), t.pdf_w));
 }
 
 // Origin of a light path arriving from direction w: uniform on the disk of radius R facing

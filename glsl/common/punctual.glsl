@@ -29,16 +29,6 @@ float punctual_emission_dir_pdf(GpuPunctual l, vec3 w) {
     return 1.0 / (4.0 * PI);
 }
 
-// A direction uniform in the cone of half-angle acos(cos_max) about unit axis a.
-vec3 sample_uniform_cone(vec3 a, float cos_max, float u1, float u2) {
-    float cos_t = 1.0 - u1 * (1.0 - cos_max);
-    float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
-    float phi = 2.0 * PI * u2;
-    vec3 t, b;
-    onb(a, t, b);
-    return cos_t * a + sin_t * (cos(phi) * t + sin(phi) * b);
-}
-
 struct PunctualSample {
     vec3 w;            // unit direction from the shaded point toward the light
     float dist;        // distance to it (3e38 for directional lights)

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use anyhow::bail;
-use bidir::scene::{self, Camera, EnvSpec, Environment, LoadOptions, QuadLight, Scene, DEFAULT_IMAGE_SIZE};
+use bidir::scene::{self, Camera, EnvSpec, Environment, LoadOptions, QuadLight, Scene, Sun, DEFAULT_IMAGE_SIZE};
 use glam::Vec3;
 
 #[derive(clap::Args, Debug, Clone, Default)]
@@ -63,6 +63,11 @@ pub struct SceneArgs {
     /// Turn the environment about the up axis (+Y), in degrees
     #[arg(long, value_name = "DEG", default_value_t = 0.0, allow_hyphen_values = true)]
     pub env_rotate: f32,
+    /// A sun, added to the environment (quote it): the direction toward it, the irradiance
+    /// it gives a surface facing it, and its apparent diameter in degrees [default: 0.53],
+    /// e.g. --sun "0.3,1,0.2;800,760,700"
+    #[arg(long, value_name = "DIR;R,G,B;ANGLE", allow_hyphen_values = true)]
+    pub sun: Option<Sun>,
 }
 
 /// A loaded scene with the camera the flags chose.
@@ -132,13 +137,18 @@ impl SceneArgs {
         }
         let env = match &self.env {
             Some(spec) => Environment::from_spec(spec)?,
-            None if scene.emitters().is_empty() && scene.punctual_lights.is_empty() => {
+            None if scene.emitters().is_empty() && scene.punctual_lights.is_empty() && self.sun.is_none() => {
                 let w = format!("{}: no emitter, no punctual light and no --env: lit by a uniform white environment of radiance 1 (--env none keeps it dark)", scene.source);
                 log::warn!("{w}");
                 warnings.push(w);
                 Some(Environment::uniform(Vec3::ONE))
             }
             None => None,
+        };
+        // A sun alone shines from an otherwise black sky.
+        let env = match self.sun {
+            Some(sun) => Some(Environment { sun: Some(sun), ..env.unwrap_or_else(|| Environment::uniform(Vec3::ZERO)) }),
+            None => env,
         };
         Ok(env.map(|e| Environment { scale: self.env_scale, rotate_deg: self.env_rotate, ..e }))
     }

@@ -307,7 +307,7 @@ gpu_structs! {
     }
 
     /// The environment light: an equirectangular map, conventions in `src/scene/env.rs`.
-    pub struct GpuEnv (48 bytes) {
+    pub struct GpuEnv (96 bytes) {
         /// Scene bounding sphere, centre (xyz) and radius (w): a light path from the
         /// environment starts on a disk of this radius, outside the sphere, facing its way.
         pub bounds: Vec4,
@@ -325,7 +325,19 @@ gpu_structs! {
         pub punctual_count: u32,
         /// Probability that light sampling picks a punctual light (then one uniformly).
         pub punctual_pick: f32,
+        /// Cosine of the sun's angular radius (2: no sun).
+        pub sun_cos_max: f32,
+        /// Unit direction toward the sun (xyz), w unused.
+        pub sun_direction: Vec4,
+        /// The sun disk's radiance (rgb), w unused.
+        pub sun_radiance: Vec4,
+        /// Solid-angle pdf of env_sample inside the sun disk from its own alias cell (the
+        /// last one, after the texels'): p_sun / sun solid angle.
+        pub sun_pdf_w: f32,
+        /// Alias-table cells: texels, plus one for the sun.
+        pub cells: u32,
         pub pad0: u32,
+        pub pad1: u32,
     }
 
     /// A punctual light (KHR_lights_punctual): a delta light, never hit by a ray.

@@ -38,7 +38,7 @@ impl EnvTable {
     /// Tables for `env` in a scene with `bounds`, picked by light sampling with probability
     /// `pick`; `None` if the environment is black (nothing to sample).
     pub fn build(env: &Environment, bounds: &Aabb, pick: f32) -> Option<EnvTable> {
-        let weights: Vec<f64> = env
+        let mut weights: Vec<f64> = env
             .texels
             .iter()
             .enumerate()
@@ -47,6 +47,11 @@ impl EnvTable {
                     * env.texel_solid_angle(i as u32 / env.width) as f64
             })
             .collect();
+        // The sun is one more cell: a direction uniform in its disk.
+        let sun = env.sun.filter(|s| s.irradiance.max_element() > 0.0);
+        if let Some(s) = sun {
+            weights.push(luminance(s.radiance()) as f64 * s.solid_angle() as f64);
+        }
         let total: f64 = weights.iter().sum();
         if total <= 0.0 || !total.is_finite() {
             return None;
@@ -77,7 +82,13 @@ impl EnvTable {
             disk_area,
             punctual_count: 0,
             punctual_pick: 0.0,
+            sun_cos_max: sun.map_or(2.0, |s| s.cos_max()),
+            sun_direction: sun.map_or(Vec4::ZERO, |s| s.direction.extend(0.0)),
+            sun_radiance: sun.map_or(Vec4::ZERO, |s| s.radiance().extend(0.0)),
+            sun_pdf_w: sun.map_or(0.0, |s| (weights[weights.len() - 1] / total / s.solid_angle() as f64) as f32),
+            cells: weights.len() as u32,
             pad0: 0,
+            pad1: 0,
         };
         Some(EnvTable {
             env: gpu,

@@ -144,7 +144,7 @@ impl GpuScene {
         let mut header = env_table.as_ref().map_or_else(
             || {
                 let (bounds, disk_area) = light_disk(&bounds);
-                abi::GpuEnv { bounds, disk_area, ..bytemuck::Zeroable::zeroed() }
+                abi::GpuEnv { bounds, disk_area, sun_cos_max: 2.0, ..bytemuck::Zeroable::zeroed() }
             },
             |t| t.env,
         );

@@ -22,8 +22,61 @@ pub struct Environment {
     pub texels: Vec<Vec3>,
     /// Multiplies every texel (`--env-scale`).
     pub scale: f32,
-    /// Turn about +Y in degrees (`--env-rotate`).
+    /// Turn about +Y in degrees (`--env-rotate`; the sun is not turned).
     pub rotate_deg: f32,
+    /// A sun added to the map (`--sun`).
+    pub sun: Option<Sun>,
+}
+
+/// A sun: a small disk of directions of uniform radiance, `--sun "DIR;R,G,B;ANGLE"`: the
+/// direction toward it, the irradiance it gives a surface facing it, and its apparent
+/// diameter in degrees (0.53 by default).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sun {
+    /// Unit direction toward the sun.
+    pub direction: Vec3,
+    pub irradiance: Vec3,
+    pub angle_deg: f32,
+}
+
+impl Sun {
+    /// Cosine of the disk's angular radius.
+    pub fn cos_max(&self) -> f32 {
+        (0.5 * self.angle_deg).to_radians().cos()
+    }
+
+    /// Solid angle of the disk, 2 pi (1 - cos_max).
+    pub fn solid_angle(&self) -> f32 {
+        2.0 * std::f32::consts::PI * (1.0 - self.cos_max())
+    }
+
+    /// Radiance of the disk: E = L pi sin^2(radius) on a surface facing it.
+    pub fn radiance(&self) -> Vec3 {
+        let sin_r = (0.5 * self.angle_deg).to_radians().sin();
+        self.irradiance / (std::f32::consts::PI * sin_r * sin_r)
+    }
+}
+
+impl std::str::FromStr for Sun {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let usage = || format!("--sun '{s}': expected \"DIR;R,G,B\" or \"DIR;R,G,B;ANGLE\" (direction toward the sun, irradiance >= 0, diameter in degrees in (0, 90])");
+        let parts: Vec<&str> = s.split(';').collect();
+        if !(2..=3).contains(&parts.len()) {
+            return Err(usage());
+        }
+        let vec3 = |t: &str| -> Option<Vec3> {
+            let v: Vec<f32> = t.split(',').map(|x| x.trim().parse::<f32>()).collect::<Result<_, _>>().ok()?;
+            (v.len() == 3 && v.iter().all(|c| c.is_finite())).then(|| Vec3::new(v[0], v[1], v[2]))
+        };
+        let direction = vec3(parts[0]).and_then(|d| d.try_normalize()).ok_or_else(usage)?;
+        let irradiance = vec3(parts[1]).filter(|e| e.min_element() >= 0.0).ok_or_else(usage)?;
+        let angle_deg = match parts.get(2) {
+            Some(a) => a.trim().parse::<f32>().ok().filter(|a| *a > 0.0 && *a <= 90.0).ok_or_else(usage)?,
+            None => 0.53,
+        };
+        Ok(Sun { direction, irradiance, angle_deg })
+    }
 }
 
 /// Why an environment could not be read.
@@ -87,6 +140,7 @@ impl Environment {
             texels: vec![radiance],
             scale: 1.0,
             rotate_deg: 0.0,
+            sun: None,
         }
     }
 
@@ -105,6 +159,7 @@ impl Environment {
             texels,
             scale: 1.0,
             rotate_deg: 0.0,
+            sun: None,
         }
     }
 
@@ -165,9 +220,9 @@ impl Environment {
         }
     }
 
-    /// Whether any texel emits.
+    /// Whether nothing emits (no texel, no sun).
     pub fn is_black(&self) -> bool {
-        self.scale <= 0.0 || self.texels.iter().all(|t| t.max_element() <= 0.0)
+        (self.scale <= 0.0 || self.texels.iter().all(|t| t.max_element() <= 0.0)) && !self.sun.is_some_and(|s| s.irradiance.max_element() > 0.0)
     }
 
     /// Solid angle of texel row `row`: (2 pi / width) (cos theta0 - cos theta1).

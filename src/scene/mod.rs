@@ -30,7 +30,7 @@ mod warnings;
 
 pub use builtin::BUILTIN_SOURCE;
 pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
-pub use env::{EnvError, EnvSpec, Environment};
+pub use env::{EnvError, EnvSpec, Environment, Sun};
 pub use error::SceneError;
 pub use gltf::load_gltf;
 pub use obj::{load_obj, load_obj_str};
