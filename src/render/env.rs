@@ -85,7 +85,9 @@ impl EnvTable {
             sun_cos_max: sun.map_or(2.0, |s| s.cos_max()),
             sun_direction: sun.map_or(Vec4::ZERO, |s| s.direction.extend(0.0)),
             sun_radiance: sun.map_or(Vec4::ZERO, |s| s.radiance().extend(0.0)),
-            sun_pdf_w: sun.map_or(0.0, |s| (weights[weights.len() - 1] / total / s.solid_angle() as f64) as f32),
+            sun_pdf_w: sun.map_or(0.0, |s| {
+                (weights[weights.len() - 1] / total / s.solid_angle() as f64) as f32
+            }),
             cells: weights.len() as u32,
             pad0: 0,
             pad1: 0,

@@ -60,22 +60,41 @@ impl Sun {
 impl std::str::FromStr for Sun {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {
-        let usage = || format!("--sun '{s}': expected \"DIR;R,G,B\" or \"DIR;R,G,B;ANGLE\" (direction toward the sun, irradiance >= 0, diameter in degrees in (0, 90])");
+        let usage = || {
+            format!("--sun '{s}': expected \"DIR;R,G,B\" or \"DIR;R,G,B;ANGLE\" (direction toward the sun, irradiance >= 0, diameter in degrees in (0, 90])")
+        };
         let parts: Vec<&str> = s.split(';').collect();
         if !(2..=3).contains(&parts.len()) {
             return Err(usage());
         }
         let vec3 = |t: &str| -> Option<Vec3> {
-            let v: Vec<f32> = t.split(',').map(|x| x.trim().parse::<f32>()).collect::<Result<_, _>>().ok()?;
+            let v: Vec<f32> = t
+                .split(',')
+                .map(|x| x.trim().parse::<f32>())
+                .collect::<Result<_, _>>()
+                .ok()?;
             (v.len() == 3 && v.iter().all(|c| c.is_finite())).then(|| Vec3::new(v[0], v[1], v[2]))
         };
-        let direction = vec3(parts[0]).and_then(|d| d.try_normalize()).ok_or_else(usage)?;
-        let irradiance = vec3(parts[1]).filter(|e| e.min_element() >= 0.0).ok_or_else(usage)?;
+        let direction = vec3(parts[0])
+            .and_then(|d| d.try_normalize())
+            .ok_or_else(usage)?;
+        let irradiance = vec3(parts[1])
+            .filter(|e| e.min_element() >= 0.0)
+            .ok_or_else(usage)?;
         let angle_deg = match parts.get(2) {
-            Some(a) => a.trim().parse::<f32>().ok().filter(|a| *a > 0.0 && *a <= 90.0).ok_or_else(usage)?,
+            Some(a) => a
+                .trim()
+                .parse::<f32>()
+                .ok()
+                .filter(|a| *a > 0.0 && *a <= 90.0)
+                .ok_or_else(usage)?,
             None => 0.53,
         };
-        Ok(Sun { direction, irradiance, angle_deg })
+        Ok(Sun {
+            direction,
+            irradiance,
+            angle_deg,
+        })
     }
 }
 
@@ -222,7 +241,8 @@ impl Environment {
 
     /// Whether nothing emits (no texel, no sun).
     pub fn is_black(&self) -> bool {
-        (self.scale <= 0.0 || self.texels.iter().all(|t| t.max_element() <= 0.0)) && !self.sun.is_some_and(|s| s.irradiance.max_element() > 0.0)
+        (self.scale <= 0.0 || self.texels.iter().all(|t| t.max_element() <= 0.0))
+            && !self.sun.is_some_and(|s| s.irradiance.max_element() > 0.0)
     }
 
     /// Solid angle of texel row `row`: (2 pi / width) (cos theta0 - cos theta1).
