@@ -307,6 +307,28 @@ mod tests {
         }
     }
 
+    #[test]
+    fn sun_parses_and_gives_its_irradiance() {
+        let s: Sun = "0,2,0;800,760,700".parse().unwrap();
+        assert_eq!((s.direction, s.angle_deg), (Vec3::Y, 0.53));
+        // E = L pi sin^2(radius) for a surface facing it.
+        let r = (0.5f32 * 0.53).to_radians();
+        let e = s.radiance() * std::f32::consts::PI * r.sin() * r.sin();
+        assert!((e - s.irradiance).abs().max_element() < 1e-2, "{e}");
+        assert_eq!("1,0,0;1,1,1;5".parse::<Sun>().unwrap().angle_deg, 5.0);
+        for bad in [
+            "0,0,0;1,1,1",
+            "0,1,0;1,1",
+            "0,1,0;1,-1,1",
+            "0,1,0;1,1,1;0",
+            "0,1,0;1,1,1;91",
+            "0,1,0",
+        ] {
+            let e = bad.parse::<Sun>().unwrap_err();
+            assert!(e.contains("--sun") && e.contains(bad), "{bad}: {e}");
+        }
+    }
+
     /// The texel solid angles of a map cover the sphere.
     #[test]
     fn texel_solid_angles_sum_to_the_sphere() {
