@@ -6,6 +6,9 @@
 //!   (`cosine_hemisphere_pdf`), which must itself integrate to one;
 //! - `sample_emitter` (alias-table choice by power, uniform point on the triangle) with
 //!   chi-square over emitters and over equal-area sub-triangles of each emitter;
+//! - `env_sample` (texel by luminance x solid angle through an alias table, direction uniform
+//!   in solid angle inside it) with chi-square over sub-texel cells against the pdf the
+//!   code reports, and `env_lookup` agreeing with that pdf;
 //! - `sample_dielectric` with binomial tests of the reflection frequency against the exact
 //!   Fresnel reflectance, and total internal reflection beyond the critical angle.
 //!
@@ -43,13 +46,22 @@ impl<'a> Sampler<'a> {
 
     /// Runs `push.count` invocations and returns `per_sample` vec4s for each.
     fn run(&self, push: abi::SamplingTestPush, per_sample: u64, input: Option<&Buffer>, lights: Option<(&Buffer, &Buffer)>) -> Vec<Vec4> {
+        self.run_env(push, per_sample, input, lights, None)
+    }
+
+    /// As `run`, with the environment's (GpuEnv, texels, alias) buffers where given.
+    fn run_env(&self, push: abi::SamplingTestPush, per_sample: u64, input: Option<&Buffer>, lights: Option<(&Buffer, &Buffer)>, env: Option<[&Buffer; 3]>) -> Vec<Vec4> {
         let out = self.ctx.create_buffer("sampling.out", push.count as u64 * per_sample * 16, Memory::Device).unwrap();
         let (emitters, alias) = lights.unwrap_or((&self.placeholder, &self.placeholder));
+        let [env, env_texels, env_alias] = env.unwrap_or([&self.placeholder; 3]);
         let binds = [
             Bind::buffer(abi::SAMPLING_BIND_OUT, &out),
             Bind::buffer(abi::SAMPLING_BIND_IN, input.unwrap_or(&self.placeholder)),
             Bind::buffer(abi::BIND_EMITTERS, emitters),
             Bind::buffer(abi::BIND_ALIAS, alias),
+            Bind::buffer(abi::BIND_ENV, env),
+            Bind::buffer(abi::BIND_ENV_TEXELS, env_texels),
+            Bind::buffer(abi::BIND_ENV_ALIAS, env_alias),
         ];
         let groups = self.kernel.groups_for(push.count);
         self.ctx.submit("sampling", |rec| rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])).unwrap();
@@ -448,5 +460,147 @@ fn dielectric_reflects_with_fresnel_probability() {
     }
     assert!(all.p >= ALPHA, "reflection frequencies differ from the exact Fresnel reflectance ({all})");
     drop(s);
+    finish(ctx);
+}
+
+// ---- Environment sampling --------------------------------------------------------------------
+
+/// A 16 x 8 map with a smooth gradient and one hot texel, turned 30 degrees: `env_sample`'s
+/// directions fall into 2 x 2 sub-cells of each texel (halves in phi and in cos theta, equal
+/// solid angle) as often as the pdf it reports says (pdf_w times the cell's solid angle), and
+/// `env_lookup` reports the same pdf for the direction drawn.
+#[test]
+fn environment_sampling_matches_its_pdf() {
+    use bidir::render::env::EnvTable;
+    use bidir::scene::{Aabb, Environment};
+    let (w, h) = (16u32, 8u32);
+    let texels = (0..w * h)
+        .map(|i| {
+            let (x, y) = ((i % w) as f32, (i / w) as f32);
+            let g = 0.05 + 0.1 * x + 0.3 * y;
+            if (x, y) == (11.0, 2.0) { Vec3::new(40.0, 30.0, 20.0) } else { Vec3::new(g, 0.5 * g, 0.2) }
+        })
+        .collect();
+    let mut env = Environment::from_texels("test:gradient+hot", w, h, texels);
+    env.rotate_deg = 30.0;
+    let bounds = Aabb { min: Vec3::splat(-1.0), max: Vec3::ONE };
+    let table = EnvTable::build(&env, &bounds, 1.0).unwrap();
+
+    let ctx = gpu();
+    let s = Sampler::new(&ctx);
+    let genv = ctx.upload_buffer("sampling.env", std::slice::from_ref(&table.env)).unwrap();
+    let texel_buf = ctx.upload_buffer("sampling.env_texels", &table.texels).unwrap();
+    let alias = ctx.upload_buffer("sampling.env_alias", &table.alias).unwrap();
+    let push = abi::SamplingTestPush { mode: abi::SAMPLING_ENV, count: N, seed: 11, ..Default::default() };
+    let out = s.run_env(push, 2, None, None, Some([&genv, &texel_buf, &alias]));
+
+    let rot = (env.rotate_deg as f64).to_radians();
+    let mut counts = vec![0u64; (w * h * 4) as usize];
+    let mut mismatched = 0u64;
+    for pair in out.chunks_exact(2) {
+        let d = dv(pair[0]);
+        assert!((d.length() - 1.0).abs() < 1e-5, "direction {d} is not unit");
+        let (pdf, looked_up) = (pair[0].w as f64, pair[1].w as f64);
+        if (pdf / looked_up - 1.0).abs() > 1e-5 {
+            mismatched += 1; // a direction rounded onto a neighbouring texel's edge
+        }
+        // Texel and sub-cell, computed here from the conventions (src/scene/env.rs).
+        let phi = (PI + d.x.atan2(-d.z) + rot).rem_euclid(2.0 * PI);
+        let theta = d.y.clamp(-1.0, 1.0).acos();
+        let fx = phi / (2.0 * PI) * w as f64;
+        let fy = theta / PI * h as f64;
+        let (x, y) = ((fx as u32).min(w - 1), (fy as u32).min(h - 1));
+        let sub_x = ((fx - x as f64) >= 0.5) as u32;
+        let (c0, c1) = ((PI * y as f64 / h as f64).cos(), (PI * (y + 1) as f64 / h as f64).cos());
+        let sub_y = ((c0 - d.y) / (c0 - c1) >= 0.5) as u32;
+        counts[(((y * w + x) * 4) + sub_y * 2 + sub_x) as usize] += 1;
+    }
+    // Vulkan lets sin and cos err by up to 2^-11 (absolute) and acos/atan inherit it, so a
+    // direction drawn within ~1e-3 radians of a texel edge may be looked up in the
+    // neighbouring texel: about 1e-4 of them here on lavapipe. More would be a mapping bug.
+    eprintln!("env_lookup found another texel's pdf for {mismatched} of {N} directions");
+    assert!(mismatched <= N as u64 / 1000, "env_lookup disagrees with env_sample's pdf for {mismatched} of {N} directions");
+    let expected: Vec<f64> = (0..counts.len())
+        .map(|k| {
+            let t = k / 4;
+            table.texels[t].pdf_w as f64 * env.texel_solid_angle(t as u32 / w) as f64 / 4.0 * N as f64
+        })
+        .collect();
+    let fit = stats::pearson(&counts, &expected);
+    eprintln!("environment sampling, {} sub-texel cells: {fit}, {} cells after pooling", counts.len(), fit.cells);
+    assert!(fit.p >= ALPHA, "environment directions do not follow their pdf ({fit})");
+    // pdf_w is proportional to luminance (the solid angle cancels): the hot texel against
+    // its neighbour, from the map's values.
+    let hot = (2 * w + 11) as usize;
+    let lum_ratio = luminance(env.texels[hot]) / luminance(env.texels[hot + 1]);
+    let pdf_ratio = table.texels[hot].pdf_w as f64 / table.texels[hot + 1].pdf_w as f64;
+    assert!((pdf_ratio / lum_ratio - 1.0).abs() < 1e-4, "hot texel pdf ratio {pdf_ratio} vs luminance ratio {lum_ratio}");
+    drop((s, genv, texel_buf, alias));
+    finish(ctx);
+}
+
+/// A sun (a 2 degree disk of uniform radiance, the alias table's extra cell) inside one
+/// sub-texel cell of a gradient map: the directions fall into the sub-texel cells, with the
+/// sun's cell split into inside and outside the disk, as often as the reported pdf says.
+#[test]
+fn environment_sampling_with_a_sun_matches_its_pdf() {
+    use bidir::render::env::EnvTable;
+    use bidir::scene::{Aabb, Environment, Sun};
+    let (w, h) = (16u32, 8u32);
+    let texels = (0..w * h).map(|i| Vec3::new(0.1 + 0.05 * (i % w) as f32, 0.2, 0.1 + 0.1 * (i / w) as f32)).collect();
+    let mut env = Environment::from_texels("test:gradient+sun", w, h, texels);
+    // The centre of sub-cell (0, 0) of texel (5, 3): phi in the left half, cos theta in the
+    // upper half of the texel's range.
+    let (c0, c1) = ((PI * 3.0 / 8.0).cos(), (PI * 4.0 / 8.0).cos());
+    let cos_c = c0 - 0.25 * (c0 - c1);
+    let phi = 5.25 * 2.0 * PI / 16.0 - PI;
+    let sin_c = (1.0 - cos_c * cos_c).sqrt();
+    let dir = Vec3::new((sin_c * phi.sin()) as f32, cos_c as f32, (-sin_c * phi.cos()) as f32);
+    let sun = Sun { direction: dir, irradiance: Vec3::new(3.0, 2.5, 2.0), angle_deg: 2.0 };
+    env.sun = Some(sun);
+    let table = EnvTable::build(&env, &Aabb { min: Vec3::splat(-1.0), max: Vec3::ONE }, 1.0).unwrap();
+    assert_eq!(table.alias.len() as u32, w * h + 1);
+
+    let ctx = gpu();
+    let s = Sampler::new(&ctx);
+    let genv = ctx.upload_buffer("sampling.env", std::slice::from_ref(&table.env)).unwrap();
+    let texel_buf = ctx.upload_buffer("sampling.env_texels", &table.texels).unwrap();
+    let alias = ctx.upload_buffer("sampling.env_alias", &table.alias).unwrap();
+    let push = abi::SamplingTestPush { mode: abi::SAMPLING_ENV, count: N, seed: 13, ..Default::default() };
+    let out = s.run_env(push, 2, None, None, Some([&genv, &texel_buf, &alias]));
+
+    let cos_max = sun.cos_max() as f64;
+    let sun_cell = ((3 * w + 5) * 4) as usize;
+    let inside = (w * h * 4) as usize; // the extra cell: inside the sun's disk
+    let mut counts = vec![0u64; inside + 1];
+    let mut mismatched = 0u64;
+    for pair in out.chunks_exact(2) {
+        let d = dv(pair[0]);
+        if (pair[0].w as f64 / pair[1].w as f64 - 1.0).abs() > 1e-5 {
+            mismatched += 1;
+        }
+        if d.dot(dir.as_dvec3()) >= cos_max {
+            counts[inside] += 1;
+            continue;
+        }
+        let phi = (PI + d.x.atan2(-d.z)).rem_euclid(2.0 * PI);
+        let fx = phi / (2.0 * PI) * w as f64;
+        let fy = d.y.clamp(-1.0, 1.0).acos() / PI * h as f64;
+        let (x, y) = ((fx as u32).min(w - 1), (fy as u32).min(h - 1));
+        let (a, b) = ((PI * y as f64 / h as f64).cos(), (PI * (y + 1) as f64 / h as f64).cos());
+        let sub = ((fx - x as f64) >= 0.5) as u32 + 2 * (((a - d.y) / (a - b)) >= 0.5) as u32;
+        counts[((y * w + x) * 4 + sub) as usize] += 1;
+    }
+    eprintln!("env_lookup found another texel's pdf for {mismatched} of {N} directions");
+    assert!(mismatched <= N as u64 / 1000);
+    let omega_sun = 2.0 * PI * (1.0 - cos_max);
+    let mut expected: Vec<f64> = (0..inside).map(|k| table.texels[k / 4].pdf_w as f64 * env.texel_solid_angle((k / 4) as u32 / w) as f64 / 4.0 * N as f64).collect();
+    let texel_pdf = table.texels[sun_cell / 4].pdf_w as f64;
+    expected[sun_cell] -= texel_pdf * omega_sun * N as f64;
+    expected.push((texel_pdf + table.env.sun_pdf_w as f64) * omega_sun * N as f64);
+    let fit = stats::pearson(&counts, &expected);
+    eprintln!("environment + sun sampling: {fit}; in the disk {} of {N} (expected {:.0})", counts[inside], expected[inside]);
+    assert!(fit.p >= ALPHA, "environment + sun directions do not follow their pdf ({fit})");
+    drop((s, genv, texel_buf, alias));
     finish(ctx);
 }

@@ -16,6 +16,8 @@
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "emission.glsl"
+#include "env.glsl"
+#include "punctual.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -86,6 +88,21 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
         if (h.prim == NO_HIT) {
+            // s = 0 at the environment: its vertex is a direction, so dVCM and dVC stay as
+            // the last scattering left them (no distance or cosine to convert; Georgiev
+            // 2012, section 5.1). Light sampling picks it with pdf_w env.pick * pdf; a light
+            // path emits it with that over the disk area.
+            if (HAS_ENV != 0u) {
+                EnvSample e = env_lookup(d);
+                if (depth == 1u) {
+                    radiance += beta * e.le;
+                } else {
+                    float direct_pdf_w = env.pick * e.pdf_w;
+                    float emission_pdf_w = direct_pdf_w / env.disk_area;
+                    float w_camera = mis(direct_pdf_w) * d_vcm + mis(emission_pdf_w) * d_vc;
+                    radiance += beta * e.le / (1.0 + w_camera);
+                }
+            }
             break;
         }
         Surface s = surface_at(o, d, h);
@@ -105,7 +122,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             if (depth == 1u) {
                 radiance += beta * material_emission(m, s.uv);
             } else {
-                float direct_pdf_a = m.emission.w / pc.emitter_power;
+                float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * m.emission.w / pc.emitter_power;
                 float cos_l = max(0.0, -dot(s.ng, d));
                 float emission_pdf_w = direct_pdf_a * cos_l / PI;
                 // Light sampling and emission see an emitter through its geometric normal:
@@ -129,9 +146,43 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         }
         vec3 wo = -d;
         if (bsdf.pick > 0.0) {
-            // s = 1: a fresh point on an emitter.
-            if (pc.emitter_count > 0u) {
+            // s = 1: the environment (probability env.pick; its "point" is a direction, the
+            // cosine there is 1), a punctual light, or a fresh point on an emitter.
+            float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
+            bool env_light = HAS_ENV != 0u && u_kind < env.pick;
+            bool punctual_light = HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
+            if (punctual_light) {
+                // A delta light: BSDF sampling cannot find it (w_light = 0); the camera side
+                // weighs emission against direct sampling at cosine 1 (eqs. 45, 49).
+                PunctualSample ps = punctual_sample(rng_next(rng), s.p);
+                float cos_s = dot(ns_f, ps.w);
+                if (cos_s > 0.0 && dot(ng_f, ps.w) > 0.0 && max3(ps.li) > 0.0) {
+                    float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
+                    vec3 f = continuous_eval(bsdf, ns_f, wo, ps.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
+                    float w_camera = mis(ps.emission_over_direct * cos_s) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    vec3 c = beta * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
+                    if (max3(c) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                        radiance += c;
+                    }
+                }
+            } else if (env_light) {
+                EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+                float cos_s = dot(ns_f, es.w);
+                if (cos_s > 0.0 && dot(ng_f, es.w) > 0.0 && es.pdf_w > 0.0) {
+                    float direct_pdf_w = env.pick * es.pdf_w;
+                    float emission_pdf_w = direct_pdf_w / env.disk_area;
+                    float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
+                    vec3 f = continuous_eval(bsdf, ns_f, wo, es.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
+                    float w_light = mis(bsdf_dir_pdf_w / direct_pdf_w);
+                    float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    vec3 c = beta * f * es.le * (cos_s / (direct_pdf_w * (w_light + 1.0 + w_camera)));
+                    if (max3(c) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
+                        radiance += c;
+                    }
+                }
+            } else if (pc.emitter_count > 0u) {
                 LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+                ls.pick *= triangle_light_pick(HAS_PUNCTUAL != 0u);
                 vec3 to_l = ls.p - s.p;
                 float dist2 = dot(to_l, to_l);
                 vec3 wi = to_l * inversesqrt(dist2);

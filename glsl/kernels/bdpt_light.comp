@@ -16,6 +16,8 @@
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "emission.glsl"
+#include "env.glsl"
+#include "punctual.glsl"
 #include "bdpt.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
@@ -84,7 +86,7 @@ void main() {
     uvec2 stats = uvec2(0u);
     uint stored = 0u, seen = 0u;
     uint base = path * pc.light_path_len;
-    if (pc.emitter_count == 0u) {
+    if (pc.emitter_count == 0u && HAS_ENV == 0u && HAS_PUNCTUAL == 0u) {
         light_counts[path] = uvec2(0u);
         lvc_offsets[path] = 0u;
         return;
@@ -94,22 +96,74 @@ void main() {
         blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
     }
 
-    // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
-    LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
-    vec3 d = sample_cosine_hemisphere(ls.n, rng_next(rng), rng_next(rng));
-    float cos0 = dot(d, ls.n);
-    float direct_pdf_a = luminance(ls.le) / pc.emitter_power;
-    float emission_pdf_w = direct_pdf_a * cos0 / PI;
-    if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
-        light_counts[path] = uvec2(0u);
-        lvc_offsets[path] = 0u;
-        return;
+    vec3 beta, o, d;
+    float d_vcm, d_vc;
+    float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
+    bool from_env = HAS_ENV != 0u && u_kind < env.pick;
+    bool from_punctual = HAS_PUNCTUAL != 0u && !from_env && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
+    // The light is at infinity (environment, directional): its first segment's length does
+    // not enter dVCM.
+    bool at_infinity = from_env;
+    if (from_punctual) {
+        // A delta light (eqs. 48-50): dVCM = mis(direct pdf / emission pdf), dVC = 0.
+        uint count = env.punctual_count;
+        GpuPunctual l = punctual[min(uint(rng_next(rng) * float(count)), count - 1u)];
+        float pick = env.punctual_pick / float(count);
+        float u1 = rng_next(rng), u2 = rng_next(rng);
+        float emission_pdf_w;
+        if (l.kind == PUNCTUAL_DIRECTIONAL) {
+            d = l.direction.xyz;
+            o = env_disk_origin(-d, u1, u2);
+            emission_pdf_w = pick / env.disk_area;
+            beta = l.intensity.rgb / emission_pdf_w;
+            at_infinity = true;
+        } else {
+            d = l.kind == PUNCTUAL_SPOT ? sample_uniform_cone(l.direction.xyz, l.cos_outer, u1, u2) : sample_uniform_cone(vec3(0.0, 0.0, 1.0), -1.0, u1, u2);
+            o = l.position.xyz;
+            emission_pdf_w = pick * punctual_emission_dir_pdf(l, d);
+            beta = l.intensity.rgb * punctual_falloff(l, d) / emission_pdf_w;
+        }
+        if (!(emission_pdf_w > 0.0) || max3(beta) <= 0.0) {
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
+        }
+        d_vcm = mis(pick / emission_pdf_w);
+        d_vc = 0.0;
+    } else if (from_env) {
+        // From the environment: a direction from the map, an origin on the disk facing it
+        // (emission pdf = pick * pdf_w / disk area, cosine 1; Georgiev 2012, section 5.1).
+        EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+        float direct_pdf_w = env.pick * es.pdf_w;
+        float emission_pdf_w = direct_pdf_w / env.disk_area;
+        if (!(emission_pdf_w > 0.0)) {
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
+        }
+        d = -es.w;
+        o = env_disk_origin(es.w, rng_next(rng), rng_next(rng));
+        beta = es.le / emission_pdf_w;
+        d_vcm = mis(direct_pdf_w / emission_pdf_w);
+        d_vc = mis(1.0 / emission_pdf_w);
+    } else {
+        // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
+        LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+        d = sample_cosine_hemisphere(ls.n, rng_next(rng), rng_next(rng));
+        float cos0 = dot(d, ls.n);
+        float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * luminance(ls.le) / pc.emitter_power;
+        float emission_pdf_w = direct_pdf_a * cos0 / PI;
+        if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
+        }
+        beta = light_sample_radiance(ls) * cos0 / emission_pdf_w;
+        d_vcm = mis(direct_pdf_a / emission_pdf_w);
+        d_vc = mis(cos0 / emission_pdf_w);
+        o = offset_ray_origin(ls.p, ls.n);
     }
-    vec3 beta = light_sample_radiance(ls) * cos0 / emission_pdf_w;
     float beta0 = max3(beta);
-    float d_vcm = mis(direct_pdf_a / emission_pdf_w);
-    float d_vc = mis(cos0 / emission_pdf_w);
-    vec3 o = offset_ray_origin(ls.p, ls.n);
 
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
@@ -122,7 +176,10 @@ void main() {
         vec3 ns_f = s.front ? s.ns : -s.ns;
         vec3 wi = -d;
         float cos_in = abs(dot(ns_f, wi));
-        d_vcm *= mis(h.t * h.t);
+        // An environment's first segment has no length in the measure (solid angle).
+        if (!(at_infinity && depth == 1u)) {
+            d_vcm *= mis(h.t * h.t);
+        }
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
 

@@ -13,6 +13,8 @@
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "emission.glsl"
+#include "env.glsl"
+#include "punctual.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
@@ -46,6 +48,12 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
         if (h.prim == NO_HIT) {
+            // The environment, weighted against sampling it as a light (pt-nee).
+            if (HAS_ENV != 0u) {
+                EnvSample e = env_lookup(d);
+                float w = NEE != 0u && !specular ? power_heuristic(prev_pdf_w, env.pick * e.pdf_w) : 1.0;
+                radiance += throughput * e.le * w;
+            }
             break;
         }
         Surface s = surface_at(o, d, h);
@@ -56,7 +64,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             float w = 1.0;
             if (NEE != 0u && !specular && pc.emitter_count > 0u) {
                 float cos_l = -dot(s.ng, d);
-                float pdf_light_w = light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
+                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
                 w = power_heuristic(prev_pdf_w, pdf_light_w);
             }
             radiance += throughput * material_emission(m, s.uv) * w;
@@ -91,8 +99,32 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             }
             Continuous c = continuous_at(m, s.uv);
             vec3 p_off = offset_ray_origin(s.p, ng_f);
-            // Next-event estimation: an emitter point by power, one shadow ray.
-            if (NEE != 0u && pc.emitter_count > 0u && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
+            // Next-event estimation: the environment (probability env.pick) or an emitter
+            // point by power, one shadow ray.
+            bool nee = NEE != 0u && (pc.emitter_count > 0u || HAS_ENV != 0u || HAS_PUNCTUAL != 0u) && (pc.max_depth == 0u || depth + 1u <= pc.max_depth);
+            float u_kind = nee && (HAS_ENV != 0u || HAS_PUNCTUAL != 0u) ? rng_next(rng) : 1.0;
+            bool env_light = nee && HAS_ENV != 0u && u_kind < env.pick;
+            bool punctual_light = nee && HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
+            if (punctual_light) {
+                // A delta light: BSDF sampling never finds it, so no MIS.
+                PunctualSample ps = punctual_sample(rng_next(rng), s.p);
+                float cos_s = dot(ps.w, ns_f);
+                if (cos_s > 0.0 && dot(ps.w, ng_f) > 0.0 && max3(ps.li) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                    float pdf_fwd_w, pdf_rev_w;
+                    vec3 f = continuous_eval(c, ns_f, -d, ps.w, pdf_fwd_w, pdf_rev_w);
+                    radiance += throughput * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
+                }
+            } else if (env_light) {
+                EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+                float cos_s = dot(es.w, ns_f);
+                if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
+                    float pdf_light_w = env.pick * es.pdf_w;
+                    float pdf_fwd_w, pdf_rev_w;
+                    vec3 f = continuous_eval(c, ns_f, -d, es.w, pdf_fwd_w, pdf_rev_w);
+                    float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
+                    radiance += throughput * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
+                }
+            } else if (nee) {
                 LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
                 vec3 to_l = ls.p - s.p;
                 float dist2 = dot(to_l, to_l);
@@ -101,7 +133,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 float cos_s = dot(wi, ns_f);
                 float cos_l = -dot(wi, ls.n);
                 if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
-                    float pdf_light_w = light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
+                    float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
                     float pdf_fwd_w, pdf_rev_w;
                     vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
                     float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);

@@ -11,6 +11,8 @@
 //   and eta pc.a.w, out[i] = (new direction, radiance scale if refracted else 0);
 // - SAMPLING_GLOSSY / SAMPLING_GLOSSY_EVAL: continuous_sample / continuous_eval of the
 //   BSDF given in the push (src/gpu/abi.rs says where each value is).
+// - SAMPLING_ENV: env_sample over the bound environment, out[2i] = (direction, its pdf_w),
+//   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
 // Uniform numbers come from rng.glsl (the independent sampler), as in the integrators.
 #include "bidir_abi.glsl"
 #include "ray.glsl"
@@ -22,6 +24,7 @@ layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 1u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 1u;
 #include "bsdf.glsl"
 #include "lights.glsl"
+#include "env.glsl"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = SAMPLING_BIND_OUT) writeonly buffer Out { vec4 result[]; };
@@ -85,5 +88,10 @@ void main() {
         vec3 f_swapped = continuous_eval(c, pc.b.xyz, wi, wo, fwd_swapped, rev_swapped);
         result[2u * i] = vec4(f, fwd);
         result[2u * i + 1u] = vec4(f_swapped, rev);
+    } else if (pc.mode == SAMPLING_ENV) {
+        EnvSample e = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+        EnvSample l = env_lookup(e.w);
+        result[2u * i] = vec4(e.w, e.pdf_w);
+        result[2u * i + 1u] = vec4(l.le, l.pdf_w);
     }
 }

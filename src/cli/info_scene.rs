@@ -92,6 +92,12 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
             lum
         );
     }
+    for l in &s.punctual_lights {
+        println!("  punctual {:?} \"{}\": position {} direction {} intensity {}", l.kind, l.name, fmt_vec(l.position), fmt_vec(l.direction), fmt_vec(l.intensity));
+    }
+    if let Some(e) = &s.environment {
+        println!("environment:  {} ({}x{}, scale {}, rotated {} deg)", e.source, e.width, e.height, e.scale, e.rotate_deg);
+    }
     for (quad, name) in args.added_lights() {
         println!("  added {name}: --quad-light \"{quad}\" (area {:.4}, front {})", quad.area(), fmt_vec(quad.front()));
     }

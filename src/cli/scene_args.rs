@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use anyhow::bail;
-use bidir::scene::{self, Camera, LoadOptions, QuadLight, Scene, DEFAULT_IMAGE_SIZE};
+use bidir::scene::{self, Camera, EnvSpec, Environment, LoadOptions, QuadLight, Scene, Sun, DEFAULT_IMAGE_SIZE};
 use glam::Vec3;
 
 #[derive(clap::Args, Debug, Clone, Default)]
@@ -14,7 +14,7 @@ pub struct SceneArgs {
     #[arg(value_name = "SCENE")]
     pub scene: Option<PathBuf>,
     /// Scene camera to use, by name or index [default: the first; a scene without cameras is
-    /// framed from -Z]
+    /// framed from -Z (OBJ) or from +Z, the front of a glTF asset]
     #[arg(long, value_name = "NAME|INDEX")]
     pub camera: Option<String>,
     /// Camera position, e.g. 278,273,-800 (overrides the chosen camera's)
@@ -52,6 +52,22 @@ pub struct SceneArgs {
     /// --sponza-sun-sky` prints them as --quad-light values
     #[arg(long)]
     pub sponza_sun_sky: bool,
+    /// Environment light: R,G,B (uniform radiance), an equirectangular FILE.hdr or FILE.exr
+    /// (linear; +Y up, the map's middle seen looking along -Z), or none [default: none, or a
+    /// uniform white environment of radiance 1, with a warning, for a scene with no light]
+    #[arg(long, value_name = "R,G,B|FILE|none")]
+    pub env: Option<EnvSpec>,
+    /// Multiply the environment's radiance
+    #[arg(long, value_name = "S", default_value_t = 1.0)]
+    pub env_scale: f32,
+    /// Turn the environment about the up axis (+Y), in degrees
+    #[arg(long, value_name = "DEG", default_value_t = 0.0, allow_hyphen_values = true)]
+    pub env_rotate: f32,
+    /// A sun, added to the environment (quote it): the direction toward it, the irradiance
+    /// it gives a surface facing it, and its apparent diameter in degrees [default: 0.53],
+    /// e.g. --sun "0.3,1,0.2;800,760,700"
+    #[arg(long, value_name = "DIR;R,G,B;ANGLE", allow_hyphen_values = true)]
+    pub sun: Option<Sun>,
 }
 
 /// A loaded scene with the camera the flags chose.
@@ -106,7 +122,36 @@ impl SceneArgs {
             scene.add_quad_light(&quad, &name);
         }
         scene.check_emission()?;
+        let mut warnings = warnings;
+        scene.environment = self.environment(&scene, &mut warnings)?;
         Ok(LoadedScene { scene, warnings, camera, camera_index, load_time })
+    }
+
+    /// The environment `--env` asks for; without `--env`, a scene that has no emitter gets a
+    /// uniform white one of radiance 1 and a warning, so it never renders silently black.
+    fn environment(&self, scene: &Scene, warnings: &mut Vec<String>) -> anyhow::Result<Option<Environment>> {
+        if !(self.env_scale.is_finite() && self.env_scale >= 0.0) {
+            bail!("--env-scale {}: must be a finite number >= 0", self.env_scale);
+        }
+        if !self.env_rotate.is_finite() {
+            bail!("--env-rotate {}: must be a finite number of degrees", self.env_rotate);
+        }
+        let env = match &self.env {
+            Some(spec) => Environment::from_spec(spec)?,
+            None if scene.emitters().is_empty() && scene.punctual_lights.is_empty() && self.sun.is_none() => {
+                let w = format!("{}: no emitter, no punctual light and no --env: lit by a uniform white environment of radiance 1 (--env none keeps it dark)", scene.source);
+                log::warn!("{w}");
+                warnings.push(w);
+                Some(Environment::uniform(Vec3::ONE))
+            }
+            None => None,
+        };
+        // A sun alone shines from an otherwise black sky.
+        let env = match self.sun {
+            Some(sun) => Some(Environment { sun: Some(sun), ..env.unwrap_or_else(|| Environment::uniform(Vec3::ZERO)) }),
+            None => env,
+        };
+        Ok(env.map(|e| Environment { scale: self.env_scale, rotate_deg: self.env_rotate, ..e }))
     }
 
     /// The camera: `--camera` (or the scene's first, or a framing of its bounds), then each
@@ -131,7 +176,11 @@ impl SceneArgs {
                 Some(c) => (c.clone(), Some(0)),
                 None => {
                     let (w, h) = DEFAULT_IMAGE_SIZE;
-                    (Camera::framing(&scene.bounds(), self.width.unwrap_or(w), self.height.unwrap_or(h)), None)
+                    let (w, h) = (self.width.unwrap_or(w), self.height.unwrap_or(h));
+                    // glTF assets face +Z: look at their front, toward -Z.
+                    let gltf = self.scene.as_ref().and_then(|p| p.extension()).and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"));
+                    let look = if gltf { -Vec3::Z } else { Vec3::Z };
+                    (Camera::framing_along(&scene.bounds(), w, h, look), None)
                 }
             },
         };

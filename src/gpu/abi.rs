@@ -110,6 +110,17 @@ gpu_consts! {
     /// Sample slices (vec4 per slice and pixel: rgb sum, count) that film_slices.comp adds
     /// into the film in a fixed order, when a pass runs several samples of a pixel at once.
     pub const BIND_SLICES: u32 = 25;
+    /// The environment light (glsl/common/env.glsl): one `GpuEnv`, its texels (`GpuEnvTexel`,
+    /// rows top to bottom) and Walker's alias table over them (`GpuAlias`).
+    pub const BIND_ENV: u32 = 29;
+    pub const BIND_ENV_TEXELS: u32 = 30;
+    pub const BIND_ENV_ALIAS: u32 = 31;
+    /// Punctual (delta) lights, `GpuPunctual` each (glsl/common/punctual.glsl).
+    pub const BIND_PUNCTUAL: u32 = 32;
+    /// `GpuPunctual::kind`.
+    pub const PUNCTUAL_POINT: u32 = 0;
+    pub const PUNCTUAL_SPOT: u32 = 1;
+    pub const PUNCTUAL_DIRECTIONAL: u32 = 2;
     /// BDPT joins (BdptPush::join).
     pub const JOIN_FULL: u32 = 0;
     pub const JOIN_K: u32 = 1;
@@ -164,6 +175,8 @@ gpu_consts! {
     /// continuous_eval of direction pairs in[2i] = wo, in[2i + 1] = wi: out[2i] =
     /// (f(wo, wi), pdf_fwd_w), out[2i + 1] = (f(wi, wo), pdf_rev_w).
     pub const SAMPLING_GLOSSY_EVAL: u32 = 5;
+    /// Environment sampling: (direction, pdf_w) per sample, then the pdf looked up again.
+    pub const SAMPLING_ENV: u32 = 6;
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
@@ -188,6 +201,12 @@ gpu_consts! {
     /// F = 1), or the glTF metallic-roughness model.
     pub const MATERIAL_THESIS: u32 = 0;
     pub const MATERIAL_METAL_ROUGH: u32 = 1;
+
+    /// 1: the scene has an environment light (escaped rays see it, light sampling and BDPT's
+    /// light paths include it); 0 compiles none of it in.
+    pub const SPEC_HAS_ENV: u32 = 18;
+    /// 1: the scene has punctual lights (point, spot, directional).
+    pub const SPEC_HAS_PUNCTUAL: u32 = 19;
 }
 
 gpu_structs! {
@@ -352,6 +371,66 @@ gpu_structs! {
         /// Emission texture + 1, 0 = none.
         pub texture: u32,
         pub pad0: u32,
+    }
+
+    /// The environment light: an equirectangular map, conventions in `src/scene/env.rs`.
+    pub struct GpuEnv (96 bytes) {
+        /// Scene bounding sphere, centre (xyz) and radius (w): a light path from the
+        /// environment starts on a disk of this radius, outside the sphere, facing its way.
+        pub bounds: Vec4,
+        pub width: u32,
+        pub height: u32,
+        /// Turn of the map about +Y (radians).
+        pub rotate: f32,
+        /// Probability that light sampling (and a BDPT light path) picks the environment
+        /// rather than an emissive triangle.
+        pub pick: f32,
+        /// Area of the light-path disk, pi r^2 (also where directional lights' paths start).
+        pub disk_area: f32,
+        /// Punctual lights in BIND_PUNCTUAL (bound with this buffer even without an
+        /// environment: it holds how light sampling splits between kinds of light).
+        pub punctual_count: u32,
+        /// Probability that light sampling picks a punctual light (then one uniformly).
+        pub punctual_pick: f32,
+        /// Cosine of the sun's angular radius (2: no sun).
+        pub sun_cos_max: f32,
+        /// Unit direction toward the sun (xyz), w unused.
+        pub sun_direction: Vec4,
+        /// The sun disk's radiance (rgb), w unused.
+        pub sun_radiance: Vec4,
+        /// Solid-angle pdf of env_sample inside the sun disk from its own alias cell (the
+        /// last one, after the texels'): p_sun / sun solid angle.
+        pub sun_pdf_w: f32,
+        /// Alias-table cells: texels, plus one for the sun.
+        pub cells: u32,
+        pub pad0: u32,
+        pub pad1: u32,
+    }
+
+    /// A punctual light (KHR_lights_punctual): a delta light, never hit by a ray.
+    pub struct GpuPunctual (64 bytes) {
+        /// Point and spot lights: position (xyz), w unused.
+        pub position: Vec4,
+        /// Spot and directional lights: unit direction of the emitted light (xyz), w unused.
+        pub direction: Vec4,
+        /// Point and spot: radiant intensity (W/sr, rgb); directional: irradiance on a surface
+        /// facing it (rgb); w unused.
+        pub intensity: Vec4,
+        /// PUNCTUAL_POINT, PUNCTUAL_SPOT or PUNCTUAL_DIRECTIONAL.
+        pub kind: u32,
+        /// Spot: cosines of the outer and inner cone half-angles.
+        pub cos_outer: f32,
+        pub cos_inner: f32,
+        pub pad0: u32,
+    }
+
+    /// One environment texel: its radiance (scale included) and the solid-angle pdf of
+    /// sampling a direction inside it (p_alias / texel solid angle).
+    pub struct GpuEnvTexel (16 bytes) {
+        pub r: f32,
+        pub g: f32,
+        pub b: f32,
+        pub pdf_w: f32,
     }
 
     /// One cell of Walker's alias table over emitters (Vose's construction).

@@ -19,6 +19,10 @@ pub struct SceneFeatures {
     pub emission_textures: bool,
     /// Tangent-space normal maps (needs normals and UVs).
     pub normal_maps: bool,
+    /// An environment light (that is not black).
+    pub env: bool,
+    /// Punctual lights.
+    pub punctual: bool,
 }
 
 impl SceneFeatures {
@@ -48,6 +52,8 @@ impl SceneFeatures {
                 && scene.uvs.is_some()
                 && !scene.textures.is_empty()
                 && m.iter().any(|m| m.normal_texture.is_some()),
+            env: scene.environment.as_ref().is_some_and(|e| !e.is_black()),
+            punctual: !scene.punctual_lights.is_empty(),
         }
     }
 
@@ -69,6 +75,8 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_GLOSSY, value: self.glossy as u32 },
             Spec { id: abi::SPEC_HAS_EMISSION_TEXTURES, value: self.emission_textures as u32 },
             Spec { id: abi::SPEC_HAS_NORMAL_MAPS, value: self.normal_maps as u32 },
+            Spec { id: abi::SPEC_HAS_ENV, value: self.env as u32 },
+            Spec { id: abi::SPEC_HAS_PUNCTUAL, value: self.punctual as u32 },
         ]
     }
 }

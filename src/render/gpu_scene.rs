@@ -2,9 +2,10 @@
 //! textures are uploaded only when present (a 4-byte placeholder is bound otherwise) and the
 //! kernels are specialised on [`SceneFeatures`] so they run no code for what is absent.
 
+use super::env::{light_disk, EnvTable};
 use super::lights::{luminance, LightTable};
 use crate::bvh::Bvh;
-use crate::gpu::abi::{self, GpuMaterial, GpuTexture};
+use crate::gpu::abi::{self, GpuMaterial, GpuPunctual, GpuTexture};
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::scene::{Material, MaterialModel, Scene, Texture};
 use crate::vk::{Bind, Buffer, Context, Memory, Result};
@@ -24,6 +25,11 @@ pub struct GpuScene {
     pub textures: Buffer,
     pub texels: Buffer,
     pub positions: Buffer,
+    /// The environment (`GpuEnv`), its texels and alias table; placeholders without one.
+    pub env: Buffer,
+    pub env_texels: Buffer,
+    pub env_alias: Buffer,
+    pub punctual: Buffer,
     pub features: SceneFeatures,
     pub emitter_count: u32,
     pub emitter_power: f32,
@@ -35,7 +41,7 @@ pub struct GpuScene {
 
 impl GpuScene {
     pub fn upload(ctx: &Context, scene: &Scene, bvh: &Bvh) -> Result<GpuScene> {
-        let features = SceneFeatures::of(scene);
+        let mut features = SceneFeatures::of(scene);
         let gbvh = GpuBvh::upload(ctx, bvh)?;
         let prim_info: Vec<UVec4> = bvh
             .tri_ids
@@ -80,10 +86,41 @@ impl GpuScene {
             true => ctx.upload_buffer("scene.emitter_uvs", &lights.emitter_uvs(scene))?,
             false => placeholder("scene.emitter_uvs (none)")?,
         };
+        // Light sampling splits evenly between the kinds of light the scene has.
+        let bounds = scene.bounds();
+        let has_env = scene.environment.as_ref().is_some_and(|e| !e.is_black());
+        let punctual: Vec<GpuPunctual> = scene.punctual_lights.iter().map(gpu_punctual).collect();
+        let kinds = [!lights.emitters.is_empty(), has_env, !punctual.is_empty()].iter().filter(|k| **k).count();
+        let share = 1.0 / kinds.max(1) as f32;
+        let env_table = scene.environment.as_ref().and_then(|e| EnvTable::build(e, &bounds, share));
+        features.env = env_table.is_some();
+        features.punctual = !punctual.is_empty();
+        let mut header = env_table.as_ref().map_or_else(
+            || {
+                let (bounds, disk_area) = light_disk(&bounds);
+                abi::GpuEnv { bounds, disk_area, sun_cos_max: 2.0, ..bytemuck::Zeroable::zeroed() }
+            },
+            |t| t.env,
+        );
+        header.punctual_count = punctual.len() as u32;
+        header.punctual_pick = if punctual.is_empty() { 0.0 } else { share };
+        let env = ctx.upload_buffer("scene.env", std::slice::from_ref(&header))?;
+        let (env_texels, env_alias) = match &env_table {
+            Some(t) => (ctx.upload_buffer("scene.env_texels", &t.texels)?, ctx.upload_buffer("scene.env_alias", &t.alias)?),
+            None => (placeholder("scene.env_texels (none)")?, placeholder("scene.env_alias (none)")?),
+        };
+        let punctual = if punctual.is_empty() { placeholder("scene.punctual (none)")? } else { ctx.upload_buffer("scene.punctual", &punctual)? };
         let positions = ctx.upload_buffer("scene.positions", &scene.positions.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?;
         let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
         let materials = ctx.upload_buffer("scene.materials", &materials)?;
-        let bytes = [&prim_info, &materials, &emitters, &alias, &emitter_uvs, &normals, &tangents, &uvs, &textures, &texels, &positions].iter().map(|b| b.size()).sum::<u64>() + gbvh.bytes;
+        let bytes = [
+            &prim_info, &materials, &emitters, &alias, &emitter_uvs, &normals, &tangents, &uvs, &textures, &texels, &positions, &env, &env_texels,
+            &env_alias, &punctual,
+        ]
+        .iter()
+        .map(|b| b.size())
+        .sum::<u64>()
+            + gbvh.bytes;
         Ok(GpuScene {
             bvh: gbvh,
             prim_info,
@@ -97,6 +134,10 @@ impl GpuScene {
             textures,
             texels,
             positions,
+            env,
+            env_texels,
+            env_alias,
+            punctual,
             features,
             emitter_count: lights.emitters.len() as u32,
             emitter_power: lights.total_power,
@@ -121,6 +162,10 @@ impl GpuScene {
             Bind::buffer(abi::BIND_TEXTURES, &self.textures),
             Bind::buffer(abi::BIND_TEXELS, &self.texels),
             Bind::buffer(abi::BIND_POSITIONS, &self.positions),
+            Bind::buffer(abi::BIND_ENV, &self.env),
+            Bind::buffer(abi::BIND_ENV_TEXELS, &self.env_texels),
+            Bind::buffer(abi::BIND_ENV_ALIAS, &self.env_alias),
+            Bind::buffer(abi::BIND_PUNCTUAL, &self.punctual),
         ]
     }
 }
@@ -156,6 +201,17 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
             MaterialModel::MetalRough => abi::MATERIAL_METAL_ROUGH,
         },
     }
+}
+
+/// A punctual light as the kernels read it.
+fn gpu_punctual(l: &crate::scene::PunctualLight) -> GpuPunctual {
+    use crate::scene::PunctualKind;
+    let (kind, cos_outer, cos_inner) = match l.kind {
+        PunctualKind::Point => (abi::PUNCTUAL_POINT, -1.0, -1.0),
+        PunctualKind::Spot { inner, outer } => (abi::PUNCTUAL_SPOT, outer.cos(), inner.cos()),
+        PunctualKind::Directional => (abi::PUNCTUAL_DIRECTIONAL, 1.0, 1.0),
+    };
+    GpuPunctual { position: l.position.extend(0.0), direction: l.direction.normalize_or_zero().extend(0.0), intensity: l.intensity.extend(0.0), kind, cos_outer, cos_inner, pad0: 0 }
 }
 
 /// Concatenates textures as packed RGBA8 words, halving all of them until they fit `limit`

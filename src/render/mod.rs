@@ -13,6 +13,7 @@
 //! ```
 
 mod bdpt;
+pub mod env;
 mod film;
 pub mod multi;
 pub mod gpu_scene;

@@ -55,6 +55,12 @@ impl Camera {
     /// at the centre of `bounds`, with +Y up and a 40° vertical field of view, from just far
     /// enough that the bounding sphere fits in both the vertical and horizontal field of view.
     pub fn framing(bounds: &Aabb, width: u32, height: u32) -> Camera {
+        Camera::framing_along(bounds, width, height, Vec3::Z)
+    }
+
+    /// As [`Camera::framing`], looking along the unit direction `look` (not parallel to +Y):
+    /// glTF assets face +Z, so their front view looks along -Z.
+    pub fn framing_along(bounds: &Aabb, width: u32, height: u32, look: Vec3) -> Camera {
         let center = bounds.center();
         let radius = (0.5 * bounds.diagonal().length()).max(f32::MIN_POSITIVE);
         let half_y = (0.5 * FRAMING_FOV_Y_DEG).to_radians();
@@ -63,7 +69,7 @@ impl Camera {
         let distance = radius / half_y.min(half_x).sin();
         Camera {
             name: "framing".to_owned(),
-            eye: center - Vec3::Z * distance,
+            eye: center - look * distance,
             target: center,
             up: Vec3::Y,
             fov_y_deg: FRAMING_FOV_Y_DEG,

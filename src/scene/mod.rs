@@ -16,11 +16,13 @@
 mod builder;
 mod builtin;
 mod camera;
+mod env;
 mod error;
 mod gltf;
 mod mtl;
 mod obj;
 mod obj_check;
+mod punctual;
 mod quad_light;
 mod stats;
 pub mod tangents;
@@ -29,9 +31,11 @@ mod warnings;
 
 pub use builtin::BUILTIN_SOURCE;
 pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
+pub use env::{EnvError, EnvSpec, Environment, Sun};
 pub use error::SceneError;
 pub use gltf::load_gltf;
 pub use obj::{load_obj, load_obj_str};
+pub use punctual::{PunctualKind, PunctualLight};
 pub use quad_light::{parse_vec3, QuadLight, QuadLightError};
 pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts};
 pub use texture::srgb_to_linear;
@@ -92,6 +96,11 @@ pub struct Scene {
     pub cameras: Vec<Camera>,
     /// Degenerate (zero-area or non-finite) triangles dropped while loading.
     pub dropped_degenerate: usize,
+    /// Light from infinitely far away (`--env`, or the default for a scene without lights);
+    /// loaders leave it `None`.
+    pub environment: Option<Environment>,
+    /// Point, spot and directional lights (glTF KHR_lights_punctual).
+    pub punctual_lights: Vec<PunctualLight>,
 }
 
 /// Which reflection model a material's non-delta part follows.

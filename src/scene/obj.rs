@@ -226,6 +226,8 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
         textures: decoded.textures,
         cameras: Vec::new(),
         dropped_degenerate: b.dropped_degenerate,
+        environment: None,
+        punctual_lights: Vec::new(),
     };
     Ok(Loaded { scene, warnings: w.into_vec() })
 }

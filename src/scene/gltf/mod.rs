@@ -18,6 +18,7 @@
 
 mod accessor;
 mod files;
+mod lights;
 mod material;
 
 use std::path::Path;
@@ -35,7 +36,7 @@ use crate::limits::{thousands, MAX_INSTANCES, MAX_TRIANGLES};
 
 /// Material extensions the loader reads.
 const SUPPORTED_EXTENSIONS: &[&str] =
-    &["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength"];
+    &["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength", "KHR_lights_punctual"];
 
 /// Loads a `.gltf` or `.glb` file with its buffers and base colour textures.
 pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {
@@ -98,6 +99,8 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         textures: decoded.textures,
         cameras,
         dropped_degenerate: b.dropped_degenerate,
+        environment: None,
+        punctual_lights: lights::punctual_lights(&doc, scene_roots(&doc)),
     };
     Ok(Loaded { scene, warnings: w.into_vec() })
 }
@@ -164,7 +167,7 @@ fn node_element(node: &Node) -> String {
 /// otherwise reject them). Geometry encodings (Draco, meshopt, quantization, GPU instancing)
 /// and texture formats stay errors.
 fn degradable(ext: &str) -> bool {
-    ext.starts_with("KHR_materials_") || matches!(ext, "KHR_texture_transform" | "KHR_lights_punctual")
+    ext.starts_with("KHR_materials_") || ext == "KHR_texture_transform"
 }
 
 /// Required extensions the loader cannot honour are errors; the others, and those merely
@@ -198,7 +201,6 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
             let effect = match ext.as_str() {
                 "KHR_texture_transform" => "texture transforms ignored, textures may be misplaced",
                 "KHR_draco_mesh_compression" => "uncompressed fallback data is read",
-                "KHR_lights_punctual" => "punctual lights ignored, only emissive surfaces emit",
                 _ => "ignored",
             };
             w.warn_once(&format!("gltf-ext-{ext}"), || {
@@ -276,28 +278,12 @@ fn geometry(
 ) -> Result<Geometry, SceneError> {
     let gerr = |element: String, msg: String| SceneError::Gltf { file: file.to_path_buf(), element, msg };
     let nodes = doc.nodes().len();
-    let roots: Vec<Node> = match doc.default_scene().or_else(|| doc.scenes().next()) {
-        Some(scene) => {
-            if doc.scenes().len() > 1 {
-                w.warn(format!(
-                    "{}: {} scenes; loading scene {} only",
-                    file.display(),
-                    doc.scenes().len(),
-                    scene.index()
-                ));
-            }
-            scene.nodes().collect()
+    if let Some(scene) = doc.default_scene().or_else(|| doc.scenes().next()) {
+        if doc.scenes().len() > 1 {
+            w.warn(format!("{}: {} scenes; loading scene {} only", file.display(), doc.scenes().len(), scene.index()));
         }
-        None => {
-            let mut is_child = vec![false; nodes];
-            for n in doc.nodes() {
-                for c in n.children() {
-                    is_child[c.index()] = true;
-                }
-            }
-            doc.nodes().filter(|n| !is_child[n.index()]).collect()
-        }
-    };
+    }
+    let roots = scene_roots(doc);
     check_forest(file, doc, &roots)?;
 
     // Instances (mesh, world matrix) and cameras, in document order.
@@ -403,6 +389,23 @@ fn check_size(instances: u64, tris: u64, verts: u64) -> Result<(), String> {
 
 /// The node's local matrix; `None` if not finite. Rotations are normalised (exporters write
 /// quaternions that are only nearly unit length).
+/// The root nodes of the scene loaded: the default scene's, else the first scene's, else
+/// every node that is no node's child.
+fn scene_roots(doc: &Document) -> Vec<Node<'_>> {
+    match doc.default_scene().or_else(|| doc.scenes().next()) {
+        Some(scene) => scene.nodes().collect(),
+        None => {
+            let mut is_child = vec![false; doc.nodes().len()];
+            for n in doc.nodes() {
+                for c in n.children() {
+                    is_child[c.index()] = true;
+                }
+            }
+            doc.nodes().filter(|n| !is_child[n.index()]).collect()
+        }
+    }
+}
+
 fn local_matrix(node: &Node) -> Option<Mat4> {
     let m = match node.transform() {
         ::gltf::scene::Transform::Matrix { matrix } => Mat4::from_cols_array_2d(&matrix),
