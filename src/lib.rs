@@ -13,9 +13,9 @@
 
 #![deny(unsafe_code)]
 
-pub mod compute;
 pub mod bench;
 pub mod bvh;
+pub mod compute;
 pub mod film;
 pub mod gpu;
 pub mod gpu_data;

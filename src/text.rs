@@ -50,8 +50,7 @@ pub fn sanitize(msg: &str) -> String {
     flush(&mut word, &mut out);
     if out.chars().count() > MAX_MESSAGE {
         let total = out.chars().count();
-        out = out.chars().take(MAX_MESSAGE).collect::<String>()
-            + &format!("... ({total} characters)");
+        out = out.chars().take(MAX_MESSAGE).collect::<String>() + &format!("... ({total} characters)");
     }
     out
 }
@@ -79,15 +78,9 @@ mod tests {
     fn long_words_are_truncated() {
         let digits = "9".repeat(60_000);
         let q = quote(&digits);
-        assert!(
-            q.starts_with(&"9".repeat(KEEP)) && q.ends_with("... (60000 characters)"),
-            "{q}"
-        );
+        assert!(q.starts_with(&"9".repeat(KEEP)) && q.ends_with("... (60000 characters)"), "{q}");
         let s = sanitize(&format!("x.mtl:3: '{digits}' is not a finite number"));
-        assert!(
-            s.len() < 200 && s.ends_with("is not a finite number"),
-            "{s}"
-        );
+        assert!(s.len() < 200 && s.ends_with("is not a finite number"), "{s}");
         assert!(sanitize(&"word ".repeat(5000)).chars().count() < MAX_MESSAGE + 40);
     }
 }

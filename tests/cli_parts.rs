@@ -5,17 +5,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 fn bidir(args: &[&str]) -> Output {
-    let out = Command::new(env!("CARGO_BIN_EXE_bidir"))
-        .args(args)
-        .env("BIDIR_VALIDATION", "1")
-        .output()
-        .unwrap();
-    eprintln!(
-        "bidir {}:\n{}{}",
-        args.join(" "),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let out = Command::new(env!("CARGO_BIN_EXE_bidir")).args(args).env("BIDIR_VALIDATION", "1").output().unwrap();
+    eprintln!("bidir {}:\n{}{}", args.join(" "), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
     out
 }
 
@@ -23,10 +14,7 @@ fn ok(args: &[&str]) -> String {
     let out = bidir(args);
     assert!(out.status.success(), "bidir {} failed", args.join(" "));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        !err.to_lowercase().contains("validation"),
-        "validation messages: {err}"
-    );
+    assert!(!err.to_lowercase().contains("validation"), "validation messages: {err}");
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
@@ -43,31 +31,19 @@ fn s(p: &Path) -> &str {
 #[test]
 fn render_ranges_merge_info_and_refusal() {
     let d = dir();
-    let (a, b, whole, merged, png) = (
-        d.join("a.exr"),
-        d.join("b.exr"),
-        d.join("whole.exr"),
-        d.join("merged.exr"),
-        d.join("merged.png"),
-    );
+    let (a, b, whole, merged, png) = (d.join("a.exr"), d.join("b.exr"), d.join("whole.exr"), d.join("merged.exr"), d.join("merged.png"));
     let common = ["render", "--width", "16", "--height", "12", "--seed", "3"];
     fn with<'a>(common: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
         common.iter().chain(extra).copied().collect()
     }
     ok(&with(&common, &["--sample-range", "0..3", "-o", s(&a)]));
-    ok(&with(
-        &common,
-        &["--sample-range", "3..8", "--crop", "0,0,16,12", "-o", s(&b)],
-    ));
+    ok(&with(&common, &["--sample-range", "3..8", "--crop", "0,0,16,12", "-o", s(&b)]));
     ok(&with(&common, &["--spp", "8", "-o", s(&whole)]));
     let out = ok(&["merge", s(&a), s(&b), "-o", s(&merged), "-o", s(&png)]);
     assert!(out.contains("samples 0..8 (8 spp)"), "{out}");
     assert!(png.exists());
     // The merge equals the whole render (every pixel within 1e-5 relative).
-    let (m, w) = (
-        bidir::film::read_exr(&merged).unwrap(),
-        bidir::film::read_exr(&whole).unwrap(),
-    );
+    let (m, w) = (bidir::film::read_exr(&merged).unwrap(), bidir::film::read_exr(&whole).unwrap());
     for (x, y) in m.data.iter().zip(&w.data) {
         assert!((x - y).abs() <= 1e-5 * x.abs().max(y.abs()), "{x} vs {y}");
     }
@@ -95,38 +71,12 @@ fn render_ranges_merge_info_and_refusal() {
     // Another seed: refused, naming the key and both files; nothing written.
     let c = d.join("c.exr");
     let refused = d.join("refused.exr");
-    ok(&[
-        "render",
-        "--width",
-        "16",
-        "--height",
-        "12",
-        "--seed",
-        "4",
-        "--sample-range",
-        "8..10",
-        "-o",
-        s(&c),
-    ]);
-    let out = bidir(&[
-        "merge",
-        s(&a),
-        s(&c),
-        "-o",
-        s(&refused),
-        "-o",
-        s(&d.join("refused.png")),
-    ]);
+    ok(&["render", "--width", "16", "--height", "12", "--seed", "4", "--sample-range", "8..10", "-o", s(&c)]);
+    let out = bidir(&["merge", s(&a), s(&c), "-o", s(&refused), "-o", s(&d.join("refused.png"))]);
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains("seed differs") && err.contains("a.exr") && err.contains("c.exr"),
-        "{err}"
-    );
-    assert!(
-        !refused.exists() && !d.join("refused.png").exists(),
-        "a refused merge wrote output"
-    );
+    assert!(err.contains("seed differs") && err.contains("a.exr") && err.contains("c.exr"), "{err}");
+    assert!(!refused.exists() && !d.join("refused.png").exists(), "a refused merge wrote output");
     // An EXR without bidir's sums is refused by name.
     let plain = d.join("plain.exr");
     bidir::film::write_image(&plain, &w, 0.0).unwrap();

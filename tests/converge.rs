@@ -54,7 +54,10 @@ fn bad_input_fails_clearly_and_writes_nothing() {
         (vec!["--reference", "/nonexistent/ref.exr", "--time", "1", "--out", o], "/nonexistent/ref.exr"),
         (vec!["--reference", r, "--time", "1", "--out", o], "the reference is 32x32 pixels but the camera renders 256x256"),
         ([&["--reference", r, "--integrators", "pt,bdpt:fast", "--time", "1", "--out", o][..], &size].concat(), "unknown join 'fast'"),
-        ([&["--reference", r, "--integrators", "pt,pathtracer", "--time", "1", "--out", o][..], &size].concat(), "unknown integrator 'pathtracer'"),
+        (
+            [&["--reference", r, "--integrators", "pt,pathtracer", "--time", "1", "--out", o][..], &size].concat(),
+            "unknown integrator 'pathtracer'",
+        ),
         ([&["--reference", r, "--time", "0", "--out", o][..], &size].concat(), "must be a positive, finite number of seconds, got 0"),
         ([&["--reference", r, "--time", "-2", "--out", o][..], &size].concat(), "got -2"),
         ([&["--reference", r, "--integrators", "pt,pt", "--time", "1", "--out", o][..], &size].concat(), "integrator pt is listed twice"),
@@ -97,12 +100,24 @@ fn a_small_run_writes_every_file_and_converges() {
     assert!(ok, "{text}");
     let mut names: Vec<String> = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     names.sort();
-    let want = ["bdpt_single.exr", "bdpt_single.png", "convergence.csv", "convergence.png", "convergence.svg", "pt-nee.exr", "pt-nee.png", "side_by_side.png"];
+    let want = [
+        "bdpt_single.exr",
+        "bdpt_single.png",
+        "convergence.csv",
+        "convergence.png",
+        "convergence.svg",
+        "pt-nee.exr",
+        "pt-nee.png",
+        "side_by_side.png",
+    ];
     assert_eq!(names, want, "no temporary files may remain");
     let csv = std::fs::read_to_string(out.join("convergence.csv")).unwrap();
     let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
     assert_eq!(csv.lines().next(), Some("integrator,seconds,spp,rmse,relmse"));
-    assert_eq!(rows.iter().map(|r| (r[0], r[2])).collect::<Vec<_>>(), [("pt-nee", "1"), ("pt-nee", "16"), ("bdpt:single", "1"), ("bdpt:single", "16")]);
+    assert_eq!(
+        rows.iter().map(|r| (r[0], r[2])).collect::<Vec<_>>(),
+        [("pt-nee", "1"), ("pt-nee", "16"), ("bdpt:single", "1"), ("bdpt:single", "16")]
+    );
     for pair in rows.chunks(2) {
         let (t1, t16): (f64, f64) = (pair[0][1].parse().unwrap(), pair[1][1].parse().unwrap());
         let (e1, e16): (f64, f64) = (pair[0][3].parse().unwrap(), pair[1][3].parse().unwrap());
@@ -126,7 +141,11 @@ fn time_snapshots_follow_render_time() {
     let ctx = gpu();
     let scene = Scene::builtin_cornell_box();
     let camera = bidir::scene::Camera { width: SIZE, height: SIZE, ..scene.cameras[0].clone() };
-    let opts = Options { integrators: vec![Integrator::Bdpt(Join::K(2))], schedule: Schedule::Time { budget_s: 0.6, points: 4 }, settings: RenderSettings::new(Integrator::Pt) };
+    let opts = Options {
+        integrators: vec![Integrator::Bdpt(Join::K(2))],
+        schedule: Schedule::Time { budget_s: 0.6, points: 4 },
+        settings: RenderSettings::new(Integrator::Pt),
+    };
     let mut heard = 0;
     let curves = converge::run(&ctx, &scene, &camera, &reference, &opts, |_, _| heard += 1).unwrap();
     finish(ctx);

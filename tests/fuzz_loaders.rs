@@ -48,35 +48,16 @@ const NUMBERS: [&str; 20] = [
     "nan",
     "inf",
 ];
-const OBJ_KEYS: [&str; 12] = [
-    "v", "vt", "vn", "f", "l", "p", "o", "g", "s", "usemtl", "mtllib", "vp",
-];
-const MTL_KEYS: [&str; 14] = [
-    "newmtl",
-    "Kd",
-    "Ke",
-    "Ks",
-    "Ni",
-    "d",
-    "Tr",
-    "illum",
-    "map_Kd",
-    "map_d",
-    "emissivity",
-    "reflectivity",
-    "refractivity",
-    "IOR",
-];
+const OBJ_KEYS: [&str; 12] = ["v", "vt", "vn", "f", "l", "p", "o", "g", "s", "usemtl", "mtllib", "vp"];
+const MTL_KEYS: [&str; 14] =
+    ["newmtl", "Kd", "Ke", "Ks", "Ni", "d", "Tr", "illum", "map_Kd", "map_d", "emissivity", "reflectivity", "refractivity", "IOR"];
 
 fn seed_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data")
 }
 
 fn env_u64(key: &str, default: u64) -> u64 {
-    std::env::var(key)
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(default)
+    std::env::var(key).ok().and_then(|v| v.parse().ok()).unwrap_or(default)
 }
 
 fn pick<'a, T>(rng: &mut Pcg, items: &'a [T]) -> &'a T {
@@ -95,20 +76,8 @@ fn number(rng: &mut Pcg) -> String {
 
 /// Text garbage: control characters, NUL, non-UTF-8 bytes, separators.
 fn garbage(rng: &mut Pcg) -> Vec<u8> {
-    let pool: [&[u8]; 9] = [
-        b"\0",
-        b"\x1b[2J",
-        b"\xff\xfe",
-        b"/",
-        b"//",
-        b"#",
-        b"\r",
-        b"\t",
-        b"\\",
-    ];
-    (0..1 + rng.below(4))
-        .flat_map(|_| pick(rng, &pool).to_vec())
-        .collect()
+    let pool: [&[u8]; 9] = [b"\0", b"\x1b[2J", b"\xff\xfe", b"/", b"//", b"#", b"\r", b"\t", b"\\"];
+    (0..1 + rng.below(4)).flat_map(|_| pick(rng, &pool).to_vec()).collect()
 }
 
 // ---- OBJ and MTL: statements ---------------------------------------------------------
@@ -121,32 +90,22 @@ fn mutate_text(rng: &mut Pcg, text: &[u8], keys: &[&str]) -> Vec<u8> {
         match rng.below(9) {
             // A number or index replaced.
             0..=2 => {
-                let mut words: Vec<Vec<u8>> = lines[at]
-                    .split(|&b| b == b' ')
-                    .map(<[u8]>::to_vec)
-                    .collect();
+                let mut words: Vec<Vec<u8>> = lines[at].split(|&b| b == b' ').map(<[u8]>::to_vec).collect();
                 let w = 1 + rng.below(words.len().max(2) as u32 - 1) as usize;
                 if w < words.len() {
                     let word = String::from_utf8_lossy(&words[w]).into_owned();
                     // Face vertices: one of v/vt/vn replaced.
                     let parts: Vec<&str> = word.split('/').collect();
                     let p = rng.below(parts.len() as u32) as usize;
-                    let new: Vec<String> = parts
-                        .iter()
-                        .enumerate()
-                        .map(|(i, s)| if i == p { number(rng) } else { s.to_string() })
-                        .collect();
+                    let new: Vec<String> =
+                        parts.iter().enumerate().map(|(i, s)| if i == p { number(rng) } else { s.to_string() }).collect();
                     words[w] = new.join("/").into_bytes();
                 }
                 lines[at] = words.join(&b' ');
             }
             // The statement's keyword swapped.
             3 => {
-                let rest: Vec<u8> = lines[at]
-                    .iter()
-                    .copied()
-                    .skip_while(|&b| b != b' ')
-                    .collect();
+                let rest: Vec<u8> = lines[at].iter().copied().skip_while(|&b| b != b' ').collect();
                 lines[at] = [pick(rng, keys).as_bytes(), &rest].concat();
             }
             // A statement repeated, dropped, or cut short.
@@ -166,11 +125,7 @@ fn mutate_text(rng: &mut Pcg, text: &[u8], keys: &[&str]) -> Vec<u8> {
             }
             // Words with too few or too many arguments, or garbage.
             7 => {
-                let extra = if rng.below(2) == 0 {
-                    number(rng).into_bytes()
-                } else {
-                    garbage(rng)
-                };
+                let extra = if rng.below(2) == 0 { number(rng).into_bytes() } else { garbage(rng) };
                 lines[at].push(b' ');
                 lines[at].extend(extra);
             }
@@ -241,17 +196,7 @@ fn mutate_json(rng: &mut Pcg, doc: &mut Value) {
                 *v = serde_json::from_str(&n).unwrap_or(Value::String(n));
             }
             (0..=2, Value::String(s)) => {
-                let choices = [
-                    "SCALAR",
-                    "VEC2",
-                    "VEC3",
-                    "VEC4",
-                    "MAT4",
-                    "image/png",
-                    "data:,",
-                    "../x.bin",
-                    "",
-                ];
+                let choices = ["SCALAR", "VEC2", "VEC3", "VEC4", "MAT4", "image/png", "data:,", "../x.bin", ""];
                 *s = pick(rng, &choices).to_string();
             }
             (3, Value::Array(a)) if !a.is_empty() => {
@@ -267,18 +212,7 @@ fn mutate_json(rng: &mut Pcg, doc: &mut Value) {
                 let keys: Vec<String> = m.keys().cloned().collect();
                 m.remove(pick(rng, &keys));
             }
-            _ => {
-                *v = pick(
-                    rng,
-                    &[
-                        Value::Null,
-                        Value::from(-1),
-                        Value::from(1u64 << 40),
-                        Value::Array(vec![]),
-                    ],
-                )
-                .clone()
-            }
+            _ => *v = pick(rng, &[Value::Null, Value::from(-1), Value::from(1u64 << 40), Value::Array(vec![])]).clone(),
         }
     }
 }
@@ -339,16 +273,7 @@ fn mutate_glb(rng: &mut Pcg, seed: &[u8]) -> Vec<u8> {
         let fields = [0usize, 4, 8, 12, 16, 20 + json_len, 24 + json_len];
         let at = *pick(rng, &fields);
         if at + 4 <= out.len() {
-            let values = [
-                0u32,
-                1,
-                3,
-                0xffff_ffff,
-                0x8000_0000,
-                out.len() as u32 + 4,
-                0x4e4f534a,
-                0x004e4942,
-            ];
+            let values = [0u32, 1, 3, 0xffff_ffff, 0x8000_0000, out.len() as u32 + 4, 0x4e4f534a, 0x004e4942];
             out[at..at + 4].copy_from_slice(&pick(rng, &values).to_le_bytes());
         }
     }
@@ -366,11 +291,7 @@ fn crc32(bytes: &[u8]) -> u32 {
     for &b in bytes {
         c ^= b as u32;
         for _ in 0..8 {
-            c = if c & 1 != 0 {
-                0xedb8_8320 ^ (c >> 1)
-            } else {
-                c >> 1
-            };
+            c = if c & 1 != 0 { 0xedb8_8320 ^ (c >> 1) } else { c >> 1 };
         }
     }
     !c
@@ -413,31 +334,15 @@ fn as_info_does(path: &Path, strict: bool) -> Result<(), String> {
     for c in &s.cameras {
         let _ = c.validate();
     }
-    let _ = (
-        s.emitters().len(),
-        s.total_emitted_power(),
-        s.bounds(),
-        s.material_counts(),
-    );
-    let _ = (
-        s.texture_bytes(),
-        s.gpu_bytes_estimate().total(),
-        s.features(),
-    );
+    let _ = (s.emitters().len(), s.total_emitted_power(), s.bounds(), s.material_counts());
+    let _ = (s.texture_bytes(), s.gpu_bytes_estimate().total(), s.features());
     Ok(())
 }
 
 /// Peak resident set of this process (Linux), if known.
 fn peak_rss() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
-    let kb: u64 = status
-        .lines()
-        .find_map(|l| l.strip_prefix("VmHWM:"))?
-        .trim()
-        .trim_end_matches(" kB")
-        .trim()
-        .parse()
-        .ok()?;
+    let kb: u64 = status.lines().find_map(|l| l.strip_prefix("VmHWM:"))?.trim().trim_end_matches(" kB").trim().parse().ok()?;
     Some(kb * 1024)
 }
 
@@ -447,21 +352,12 @@ fn structure_aware_loader_fuzz() {
     let seed = env_u64("BIDIR_FUZZ_SEED", 18);
     let dir = std::env::temp_dir().join(format!("bidir-fuzz-{}-{seed}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let keep =
-        std::env::var_os("BIDIR_FUZZ_KEEP").map_or_else(|| dir.join("findings"), PathBuf::from);
+    let keep = std::env::var_os("BIDIR_FUZZ_KEEP").map_or_else(|| dir.join("findings"), PathBuf::from);
     let d = seed_dir();
     let read = |p: &str| std::fs::read(d.join(p)).unwrap();
     let (obj, mtl) = (read("room/room.obj"), read("room/room.mtl"));
-    let (tga, leaf, mask) = (
-        read("room/floor_d.tga"),
-        read("room/leaf.png"),
-        read("room/mask_grey.png"),
-    );
-    let (gltf_json, glb_bytes, bin) = (
-        read("gltf/instanced.gltf"),
-        read("gltf/instanced.glb"),
-        read("gltf/instanced.bin"),
-    );
+    let (tga, leaf, mask) = (read("room/floor_d.tga"), read("room/leaf.png"), read("room/mask_grey.png"));
+    let (gltf_json, glb_bytes, bin) = (read("gltf/instanced.gltf"), read("gltf/instanced.glb"), read("gltf/instanced.bin"));
     let gltf_doc: Value = serde_json::from_slice(&gltf_json).unwrap();
 
     let mut rng = Pcg::new(seed);
@@ -483,41 +379,17 @@ fn structure_aware_loader_fuzz() {
         }
         let kind = rng.below(7);
         let (name, bytes, target) = match kind {
-            0 => (
-                "room.obj",
-                mutate_text(&mut rng, &obj, &OBJ_KEYS),
-                "room.obj",
-            ),
-            1 => (
-                "room.mtl",
-                mutate_text(&mut rng, &mtl, &MTL_KEYS),
-                "room.obj",
-            ),
+            0 => ("room.obj", mutate_text(&mut rng, &obj, &OBJ_KEYS), "room.obj"),
+            1 => ("room.mtl", mutate_text(&mut rng, &mtl, &MTL_KEYS), "room.obj"),
             2 | 3 => {
                 let mut doc = gltf_doc.clone();
                 mutate_json(&mut rng, &mut doc);
-                (
-                    "instanced.gltf",
-                    serde_json::to_vec_pretty(&doc).unwrap(),
-                    "instanced.gltf",
-                )
+                ("instanced.gltf", serde_json::to_vec_pretty(&doc).unwrap(), "instanced.gltf")
             }
-            4 => (
-                "instanced.glb",
-                mutate_glb(&mut rng, &glb_bytes),
-                "instanced.glb",
-            ),
-            5 => (
-                "floor_d.tga",
-                mutate_image(&mut rng, &tga, false),
-                "room.obj",
-            ),
+            4 => ("instanced.glb", mutate_glb(&mut rng, &glb_bytes), "instanced.glb"),
+            5 => ("floor_d.tga", mutate_image(&mut rng, &tga, false), "room.obj"),
             _ => {
-                let (n, seed) = if rng.below(2) == 0 {
-                    ("leaf.png", &leaf)
-                } else {
-                    ("mask_grey.png", &mask)
-                };
+                let (n, seed) = if rng.below(2) == 0 { ("leaf.png", &leaf) } else { ("mask_grey.png", &mask) };
                 (n, mutate_image(&mut rng, seed, true), "room.obj")
             }
         };
@@ -557,19 +429,8 @@ fn structure_aware_loader_fuzz() {
         findings.len()
     );
     std::fs::remove_dir_all(&dir).ok();
-    assert!(
-        findings.is_empty(),
-        "findings (inputs kept):\n{}",
-        findings.join("\n")
-    );
-    assert!(
-        rss.is_none_or(|b| b < PEAK_RSS_BYTES),
-        "peak RSS {} MiB",
-        rss.unwrap_or(0) >> 20
-    );
+    assert!(findings.is_empty(), "findings (inputs kept):\n{}", findings.join("\n"));
+    assert!(rss.is_none_or(|b| b < PEAK_RSS_BYTES), "peak RSS {} MiB", rss.unwrap_or(0) >> 20);
     // The mutators must leave many inputs loadable, or they only test the first parse error.
-    assert!(
-        loaded > cases / 10 && refused > cases / 10,
-        "{loaded} loaded, {refused} refused"
-    );
+    assert!(loaded > cases / 10 && refused > cases / 10, "{loaded} loaded, {refused} refused");
 }

@@ -8,8 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 const SAMPLES: &str = "../shared/scenes/gltf-samples";
-const WARNING: &str =
-    "no emitter, no punctual light and no --env: lit by a uniform white environment of radiance 1";
+const WARNING: &str = "no emitter, no punctual light and no --env: lit by a uniform white environment of radiance 1";
 
 fn models() -> Option<Vec<PathBuf>> {
     let dir = Path::new(SAMPLES);
@@ -25,10 +24,7 @@ fn models() -> Option<Vec<PathBuf>> {
         }
         for f in std::fs::read_dir(&sub).unwrap() {
             let f = f.unwrap().path();
-            if matches!(
-                f.extension().and_then(|e| e.to_str()),
-                Some("gltf") | Some("glb")
-            ) {
+            if matches!(f.extension().and_then(|e| e.to_str()), Some("gltf") | Some("glb")) {
                 found.push(f);
             }
         }
@@ -39,16 +35,8 @@ fn models() -> Option<Vec<PathBuf>> {
 }
 
 fn bidir(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_bidir"))
-        .args(args)
-        .env("BIDIR_VALIDATION", "1")
-        .output()
-        .expect("bidir runs");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    let out = Command::new(env!("CARGO_BIN_EXE_bidir")).args(args).env("BIDIR_VALIDATION", "1").output().expect("bidir runs");
+    (out.status.success(), String::from_utf8_lossy(&out.stdout).into_owned(), String::from_utf8_lossy(&out.stderr).into_owned())
 }
 
 /// Mean of a tiny render of `model` with `extra` flags, and bidir's stderr.
@@ -58,65 +46,33 @@ fn tiny_render(model: &Path, extra: &[&str]) -> (f64, String) {
         std::process::id(),
         model.file_stem().unwrap().to_string_lossy()
     ));
-    let mut args = vec![
-        "render",
-        model.to_str().unwrap(),
-        "--width",
-        "24",
-        "--height",
-        "16",
-        "--spp",
-        "2",
-        "-o",
-        exr.to_str().unwrap(),
-    ];
+    let mut args = vec!["render", model.to_str().unwrap(), "--width", "24", "--height", "16", "--spp", "2", "-o", exr.to_str().unwrap()];
     args.extend(extra);
     let (ok, _, err) = bidir(&args);
     assert!(ok, "bidir render {} failed:\n{err}", model.display());
     let img = bidir::film::read_exr(&exr).unwrap();
     std::fs::remove_file(&exr).unwrap();
-    (
-        img.data.iter().map(|&v| v as f64).sum::<f64>() / img.data.len() as f64,
-        err,
-    )
+    (img.data.iter().map(|&v| v as f64).sum::<f64>() / img.data.len() as f64, err)
 }
 
 #[test]
 fn every_sample_model_renders_lit_by_default() {
     let Some(models) = models() else { return };
     for model in &models {
-        let scene = bidir::scene::load(model, &Default::default())
-            .unwrap()
-            .scene;
+        let scene = bidir::scene::load(model, &Default::default()).unwrap().scene;
         let (mean, err) = tiny_render(model, &[]);
         let warned = err.matches(WARNING).count();
-        eprintln!(
-            "{}: mean {mean:.4}, emitters {}, default-light warnings {warned}",
-            model.display(),
-            scene.emitters().len()
-        );
-        assert!(
-            mean > 0.0 && mean.is_finite(),
-            "{}: black or non-finite image by default (mean {mean})",
-            model.display()
-        );
+        eprintln!("{}: mean {mean:.4}, emitters {}, default-light warnings {warned}", model.display(), scene.emitters().len());
+        assert!(mean > 0.0 && mean.is_finite(), "{}: black or non-finite image by default (mean {mean})", model.display());
         let expect = usize::from(scene.emitters().is_empty());
-        assert_eq!(
-            warned,
-            expect,
-            "{}: expected {expect} default-light warning(s), stderr:\n{err}",
-            model.display()
-        );
+        assert_eq!(warned, expect, "{}: expected {expect} default-light warning(s), stderr:\n{err}", model.display());
     }
 }
 
 #[test]
 fn env_none_keeps_an_unlit_model_dark() {
     let Some(models) = models() else { return };
-    let model = models
-        .iter()
-        .find(|m| m.to_string_lossy().contains("CesiumMilkTruck"))
-        .expect("CesiumMilkTruck");
+    let model = models.iter().find(|m| m.to_string_lossy().contains("CesiumMilkTruck")).expect("CesiumMilkTruck");
     let (mean, err) = tiny_render(model, &["--env", "none"]);
     assert_eq!(mean, 0.0, "--env none: nothing should light the truck");
     assert!(!err.contains(WARNING), "--env none should not warn:\n{err}");
@@ -130,10 +86,7 @@ fn cameraless_models_are_framed_from_the_front() {
     for model in &models {
         let (ok, out, err) = bidir(&["info", model.to_str().unwrap()]);
         assert!(ok, "bidir info {} failed:\n{err}", model.display());
-        let Some(line) = out
-            .lines()
-            .find(|l| l.starts_with("camera used:") && l.contains("framing"))
-        else {
+        let Some(line) = out.lines().find(|l| l.starts_with("camera used:") && l.contains("framing")) else {
             continue;
         };
         let vec_after = |key: &str| -> [f64; 3] {
@@ -158,31 +111,12 @@ fn cameraless_models_are_framed_from_the_front() {
 #[test]
 fn punctual_lights_are_read_from_gltf() {
     let Some(models) = models() else { return };
-    let lamp = models
-        .iter()
-        .find(|m| m.to_string_lossy().contains("LightsPunctualLamp"))
-        .expect("LightsPunctualLamp");
+    let lamp = models.iter().find(|m| m.to_string_lossy().contains("LightsPunctualLamp")).expect("LightsPunctualLamp");
     let loaded = bidir::scene::load(lamp, &Default::default()).unwrap();
     let lights = &loaded.scene.punctual_lights;
     assert_eq!(lights.len(), 5, "{lights:?}");
-    assert!(lights
-        .iter()
-        .all(|l| l.kind == bidir::scene::PunctualKind::Point && l.intensity.min_element() > 0.0));
-    let bright = lights
-        .iter()
-        .find(|l| l.name == "Point.004")
-        .expect("Point.004");
-    assert!(
-        (bright.position - glam::Vec3::new(0.292, 1.0324, 1.5589)).length() < 1e-3,
-        "{:?}",
-        bright.position
-    );
-    assert!(
-        !loaded
-            .warnings
-            .iter()
-            .any(|w| w.contains("KHR_lights_punctual")),
-        "{:?}",
-        loaded.warnings
-    );
+    assert!(lights.iter().all(|l| l.kind == bidir::scene::PunctualKind::Point && l.intensity.min_element() > 0.0));
+    let bright = lights.iter().find(|l| l.name == "Point.004").expect("Point.004");
+    assert!((bright.position - glam::Vec3::new(0.292, 1.0324, 1.5589)).length() < 1e-3, "{:?}", bright.position);
+    assert!(!loaded.warnings.iter().any(|w| w.contains("KHR_lights_punctual")), "{:?}", loaded.warnings);
 }

@@ -143,10 +143,16 @@ fn dispatch_rejects_wrong_bindings_and_push_constants() {
     let buf = ctx.create_buffer("b", 64, Memory::Device).unwrap();
     let img = ctx.create_image("i", 4, 4, Format::R32G32B32A32_SFLOAT).unwrap();
     let push = abi::ScanPush::default();
-    let missing = ctx.submit("missing", |rec| rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf)], bytemuck::bytes_of(&push), [1, 1, 1]));
+    let missing =
+        ctx.submit("missing", |rec| rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf)], bytemuck::bytes_of(&push), [1, 1, 1]));
     assert!(missing.unwrap_err().to_string().contains("binding 1"), "a missing binding is named");
     let wrong = ctx.submit("wrong", |rec| {
-        rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf), Bind::image(abi::REDUCE_BIND_OUTPUT, &img)], bytemuck::bytes_of(&push), [1, 1, 1])
+        rec.dispatch(
+            &k,
+            &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf), Bind::image(abi::REDUCE_BIND_OUTPUT, &img)],
+            bytemuck::bytes_of(&push),
+            [1, 1, 1],
+        )
     });
     assert!(wrong.unwrap_err().to_string().contains("expects"), "a wrong resource type is named");
     let short = ctx.submit("short", |rec| {
@@ -170,7 +176,12 @@ fn timestamps_measure_gpu_work() {
         rec.reset_timer(&timer);
         rec.fill_buffer(&out, 0);
         rec.timestamp(&timer, 0);
-        rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &data), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &out)], bytemuck::bytes_of(&push), [64, 1, 1])?;
+        rec.dispatch(
+            &k,
+            &[Bind::buffer(abi::REDUCE_BIND_INPUT, &data), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &out)],
+            bytemuck::bytes_of(&push),
+            [64, 1, 1],
+        )?;
         rec.timestamp(&timer, 1);
         Ok(())
     })

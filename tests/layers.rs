@@ -88,7 +88,10 @@ fn every_arrow_between_modules_points_down() {
     // Every module the library declares has a layer (a new module must be placed).
     for line in lib.lines() {
         if let Some(name) = line.trim().strip_prefix("pub mod ").and_then(|s| s.strip_suffix(';')) {
-            assert!(layers.contains_key(name), "src/lib.rs declares module `{name}`: give it a layer in tests/layers.rs and docs/architecture.md");
+            assert!(
+                layers.contains_key(name),
+                "src/lib.rs declares module `{name}`: give it a layer in tests/layers.rs and docs/architecture.md"
+            );
         }
     }
     let mut files = Vec::new();
@@ -109,8 +112,12 @@ fn every_arrow_between_modules_points_down() {
                 arrows += 1;
                 match layers.get(target.as_str()) {
                     Some(&to) if to < from => {}
-                    Some(&to) => violations.push(format!("src/{}:{}: `{top}` (layer {from}) uses `{target}` (layer {to})", rel.display(), n + 1)),
-                    None => violations.push(format!("src/{}:{}: `{top}` uses `{target}`, which is not a library layer", rel.display(), n + 1)),
+                    Some(&to) => {
+                        violations.push(format!("src/{}:{}: `{top}` (layer {from}) uses `{target}` (layer {to})", rel.display(), n + 1))
+                    }
+                    None => {
+                        violations.push(format!("src/{}:{}: `{top}` uses `{target}`, which is not a library layer", rel.display(), n + 1))
+                    }
                 }
             }
         }

@@ -44,7 +44,15 @@ fn bdpt_beats_pt_nee_at_equal_time_on_a_caustic() {
         let img = r.image().unwrap();
         let e = metrics::rmse(&img, &reference);
         let ratio = metrics::mean_ratio(&img, &reference);
-        eprintln!("{}: {} spp in {:?}, RMSE {e:.5}, mean ratio {:.4} {:.4} {:.4}", integrator.name(), r.samples(), time, ratio[0], ratio[1], ratio[2]);
+        eprintln!(
+            "{}: {} spp in {:?}, RMSE {e:.5}, mean ratio {:.4} {:.4} {:.4}",
+            integrator.name(),
+            r.samples(),
+            time,
+            ratio[0],
+            ratio[1],
+            ratio[2]
+        );
         if integrator != Integrator::PtNee {
             // BDPT's mean must match the reference within its own noise: 4 standard errors of
             // the image mean, estimated from the pixel variance. On lavapipe (~50 spp in 12 s)

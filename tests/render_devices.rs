@@ -23,12 +23,7 @@ fn assert_same(what: &str, a: &RgbImage, b: &RgbImage) {
     assert_eq!((a.width, a.height), (b.width, b.height));
     for (i, (x, y)) in a.data.iter().zip(&b.data).enumerate() {
         let rel = (x - y).abs() as f64 / x.abs().max(y.abs()).max(1e-30) as f64;
-        assert!(
-            rel <= 1e-5,
-            "{what}: pixel {} channel {}: {x} vs {y}",
-            i / 3,
-            i % 3
-        );
+        assert!(rel <= 1e-5, "{what}: pixel {} channel {}: {x} vs {y}", i / 3, i % 3);
     }
     assert!(a.mean()[0] > 0.0, "{what}: a black image proves nothing");
 }
@@ -36,11 +31,7 @@ fn assert_same(what: &str, a: &RgbImage, b: &RgbImage) {
 fn check(integrator: Integrator, spp: u32) {
     let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let scene = Scene::builtin_cornell_box();
-    let camera = Camera {
-        width: 40,
-        height: 32,
-        ..scene.cameras[0].clone()
-    };
+    let camera = Camera { width: 40, height: 32, ..scene.cameras[0].clone() };
     let mut settings = RenderSettings::new(integrator);
     settings.seed = 11;
     // Small passes, so that both devices take several from the counter.
@@ -50,44 +41,19 @@ fn check(integrator: Integrator, spp: u32) {
     r.render_spp(spp, |_| {}).unwrap();
     let single = r.image().unwrap();
     drop(r);
-    assert!(
-        ctx.close().unwrap().is_empty(),
-        "validation messages (single device)"
-    );
+    assert!(ctx.close().unwrap().is_empty(), "validation messages (single device)");
 
     let devices = [opts(), opts()];
-    let done =
-        multi::render_on_devices(&devices, &scene, &camera, &settings, spp, &|_| {}).unwrap();
-    assert!(
-        done.validation.is_empty(),
-        "validation messages: {:?}",
-        done.validation
-    );
+    let done = multi::render_on_devices(&devices, &scene, &camera, &settings, spp, &|_| {}).unwrap();
+    assert!(done.validation.is_empty(), "validation messages: {:?}", done.validation);
     assert_eq!(done.sums.spp, spp as u64);
-    assert_eq!(
-        done.devices.iter().map(|d| d.samples).sum::<u64>(),
-        spp as u64
-    );
+    assert_eq!(done.devices.iter().map(|d| d.samples).sum::<u64>(), spp as u64);
     for d in &done.devices {
-        eprintln!(
-            "{}: {}: {} spp in {:.3} s",
-            integrator.name(),
-            d.name,
-            d.samples,
-            d.elapsed.as_secs_f64()
-        );
-        assert!(
-            d.samples > 0,
-            "{} took no pass from the shared counter",
-            d.name
-        );
+        eprintln!("{}: {}: {} spp in {:.3} s", integrator.name(), d.name, d.samples, d.elapsed.as_secs_f64());
+        assert!(d.samples > 0, "{} took no pass from the shared counter", d.name);
     }
     assert_eq!(done.nan_samples, 0);
-    assert_same(
-        &format!("{} on two devices", integrator.name()),
-        &done.sums.resolve(),
-        &single,
-    );
+    assert_same(&format!("{} on two devices", integrator.name()), &done.sums.resolve(), &single);
 }
 
 #[test]
@@ -109,29 +75,11 @@ fn cli_device_list() {
     std::fs::create_dir_all(&d).unwrap();
     let run = |dev: &str, out: &std::path::Path| {
         let o = std::process::Command::new(env!("CARGO_BIN_EXE_bidir"))
-            .args([
-                "--device",
-                dev,
-                "render",
-                "--width",
-                "24",
-                "--height",
-                "16",
-                "--spp",
-                "16",
-                "--seed",
-                "5",
-                "-o",
-                out.to_str().unwrap(),
-            ])
+            .args(["--device", dev, "render", "--width", "24", "--height", "16", "--spp", "16", "--seed", "5", "-o", out.to_str().unwrap()])
             .env("BIDIR_VALIDATION", "1")
             .output()
             .unwrap();
-        let text = format!(
-            "{}{}",
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        );
+        let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
         eprintln!("--device {dev}:\n{text}");
         assert!(o.status.success(), "{text}");
         assert!(!text.to_lowercase().contains("validation"), "{text}");
@@ -140,17 +88,7 @@ fn cli_device_list() {
     let (one, two) = (d.join("one.exr"), d.join("two.exr"));
     run("0", &one);
     let text = run("0,0", &two);
-    assert!(
-        text.contains("2 devices")
-            && text.contains("#0: ")
-            && text.contains("#1: ")
-            && text.contains("Msamples/s"),
-        "{text}"
-    );
-    assert_same(
-        "--device 0,0",
-        &bidir::film::read_exr(&two).unwrap(),
-        &bidir::film::read_exr(&one).unwrap(),
-    );
+    assert!(text.contains("2 devices") && text.contains("#0: ") && text.contains("#1: ") && text.contains("Msamples/s"), "{text}");
+    assert_same("--device 0,0", &bidir::film::read_exr(&two).unwrap(), &bidir::film::read_exr(&one).unwrap());
     std::fs::remove_dir_all(&d).ok();
 }

@@ -50,7 +50,12 @@ fn check_with(integrator: Integrator, sampler: Sampler, rho: f32, le: f32, spp: 
     let (mean, se) = mean_and_se(&img.data);
     let sigma = se / expect;
     let err = mean / expect - 1.0;
-    eprintln!("{} {sampler:?} rho={rho} Le={le}: mean {mean:.5} expected {expect:.5} ({:+.3} %), 3 sigma {:.3} %", integrator.name(), err * 100.0, 300.0 * sigma);
+    eprintln!(
+        "{} {sampler:?} rho={rho} Le={le}: mean {mean:.5} expected {expect:.5} ({:+.3} %), 3 sigma {:.3} %",
+        integrator.name(),
+        err * 100.0,
+        300.0 * sigma
+    );
     assert!(3.0 * sigma < 0.0025, "test too noisy to resolve 0.5 %: raise spp");
     assert!(err.abs() < 0.005, "{}: furnace mean {mean} vs {expect} ({:+.3} %)", integrator.name(), err * 100.0);
     drop(r);
@@ -158,9 +163,18 @@ fn bdpt_matches_pt_nee_with_shading_normals() {
     let diff: Vec<f32> = a.data.iter().zip(&b.data).map(|(x, y)| x - y).collect();
     let (d, se) = mean_and_se(&diff);
     let (ma, _) = mean_and_se(&a.data);
-    eprintln!("shading normals: pt-nee mean {ma:.5} (analytic flat-shaded 2), bdpt - pt-nee {:+.3} % of it, 4 sigma {:.3} %", 100.0 * d / ma, 400.0 * se / ma);
+    eprintln!(
+        "shading normals: pt-nee mean {ma:.5} (analytic flat-shaded 2), bdpt - pt-nee {:+.3} % of it, 4 sigma {:.3} %",
+        100.0 * d / ma,
+        400.0 * se / ma
+    );
     assert!(4.0 * se / ma < 0.005, "test too noisy to resolve 0.5 %");
-    assert!(d.abs() < 4.0 * se, "bdpt:lvc differs from pt-nee by {:+.3} % (4 sigma {:.3} %) with shading normals", 100.0 * d / ma, 400.0 * se / ma);
+    assert!(
+        d.abs() < 4.0 * se,
+        "bdpt:lvc differs from pt-nee by {:+.3} % (4 sigma {:.3} %) with shading normals",
+        100.0 * d / ma,
+        400.0 * se / ma
+    );
 }
 
 /// Several samples of a pixel per pass, one invocation each (the GPU default for small
@@ -181,7 +195,12 @@ fn furnace_sample_slices() {
         assert_eq!(r.nan_samples().unwrap(), 0);
         let (mean, se) = mean_and_se(&img.data);
         let err = mean / 2.0 - 1.0;
-        eprintln!("{} with 3 sample slices: mean {mean:.5} expected 2 ({:+.3} %), 3 sigma {:.3} %", integrator.name(), 100.0 * err, 150.0 * se);
+        eprintln!(
+            "{} with 3 sample slices: mean {mean:.5} expected 2 ({:+.3} %), 3 sigma {:.3} %",
+            integrator.name(),
+            100.0 * err,
+            150.0 * se
+        );
         assert!(1.5 * se < 0.0025, "test too noisy to resolve 0.5 %");
         assert!(err.abs() < 0.005, "{}: furnace mean {mean} vs 2 ({:+.3} %) with sample slices", integrator.name(), 100.0 * err);
         drop(r);

@@ -49,7 +49,15 @@ fn slab_scene(size: u32) -> Scene {
     }
     assert_eq!(s.triangles.len(), 12);
     quad(&mut s, Vec3::new(-30.0, -30.0, -3.0), Vec3::X * 60.0, Vec3::Y * 60.0, Vec3::Z, 1);
-    s.cameras.push(Camera { name: "slab".into(), eye: Vec3::new(0.0, 0.0, 10.0), target: Vec3::ZERO, up: Vec3::Y, fov_y_deg: 4.0, width: size, height: size });
+    s.cameras.push(Camera {
+        name: "slab".into(),
+        eye: Vec3::new(0.0, 0.0, 10.0),
+        target: Vec3::ZERO,
+        up: Vec3::Y,
+        fov_y_deg: 4.0,
+        width: size,
+        height: size,
+    });
     s
 }
 
@@ -69,7 +77,12 @@ fn render(integrator: Integrator, size: u32, spp: u32) -> (f64, f64) {
     let mean = px.iter().sum::<f64>() / n;
     let var = px.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
     let se = (var / n).sqrt() / mean;
-    eprintln!("{}: {size}x{size}, {spp} spp in {:.1} s: mean {mean:.6} Le, relative SE {:.4} %", integrator.name(), t.elapsed().as_secs_f64(), 100.0 * se);
+    eprintln!(
+        "{}: {size}x{size}, {spp} spp in {:.1} s: mean {mean:.6} Le, relative SE {:.4} %",
+        integrator.name(),
+        t.elapsed().as_secs_f64(),
+        100.0 * se
+    );
     drop(r);
     finish(ctx);
     (mean, se)
@@ -93,9 +106,21 @@ fn check(integrator: Integrator, size: u32, spp: u32, must_resolve: bool) {
     );
     assert!(tol <= 0.005, "{}: too noisy to test 0.5 % (4 SE = {:.3} %): raise spp", integrator.name(), 100.0 * tol);
     if must_resolve {
-        assert!(tol < gap, "{}: 4 SE ({:.3} %) does not resolve the internal reflections ({:.3} %): raise spp", integrator.name(), 100.0 * tol, 100.0 * gap);
+        assert!(
+            tol < gap,
+            "{}: 4 SE ({:.3} %) does not resolve the internal reflections ({:.3} %): raise spp",
+            integrator.name(),
+            100.0 * tol,
+            100.0 * gap
+        );
     }
-    assert!(err.abs() <= tol, "{}: slab transmission {mean:.6} vs {expect:.6} ({:+.3} %, 4 SE {:.3} %)", integrator.name(), 100.0 * err, 100.0 * tol);
+    assert!(
+        err.abs() <= tol,
+        "{}: slab transmission {mean:.6} vs {expect:.6} ({:+.3} %, 4 SE {:.3} %)",
+        integrator.name(),
+        100.0 * err,
+        100.0 * tol
+    );
 }
 
 #[test]

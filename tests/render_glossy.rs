@@ -127,7 +127,8 @@ fn glossy_cornell() -> (Scene, Camera) {
 /// Whether images a and b have the same expectation: the per-pixel difference (channels
 /// summed) averaged over 16x16 blocks, each block's mean against its standard error.
 fn assert_agree(what: &str, a: &[f32], b: &[f32], width: usize) {
-    let diff: Vec<f64> = a.chunks_exact(3).zip(b.chunks_exact(3)).map(|(x, y)| x.iter().zip(y).map(|(p, q)| (p - q) as f64).sum()).collect();
+    let diff: Vec<f64> =
+        a.chunks_exact(3).zip(b.chunks_exact(3)).map(|(x, y)| x.iter().zip(y).map(|(p, q)| (p - q) as f64).sum()).collect();
     let level = a.iter().map(|&v| v as f64).sum::<f64>() / (a.len() / 3) as f64;
     let height = diff.len() / width;
     let mut chi2 = 0.0;
@@ -287,9 +288,12 @@ fn blend_passes_paths_with_probability_one_minus_alpha() {
     material_ids.extend([1, 1]);
     let walls = Material { name: "walls".into(), albedo: Vec3::ZERO, emission: Vec3::ONE, ..Default::default() };
     let veil = Material { name: "veil".into(), albedo: Vec3::ZERO, blend: Some(0.3), ..Default::default() };
-    let scene = Scene { source: "test:blend".into(), positions, triangles, material_ids, materials: vec![walls, veil], ..Default::default() };
+    let scene =
+        Scene { source: "test:blend".into(), positions, triangles, material_ids, materials: vec![walls, veil], ..Default::default() };
     let camera = Camera { name: "c".into(), eye: Vec3::ZERO, target: Vec3::Z, up: Vec3::Y, fov_y_deg: 60.0, width: 32, height: 32 };
-    for (integrator, spp) in [(Integrator::Pt, 64), (Integrator::PtNee, 64), (Integrator::Bdpt(Join::Lvc(0)), 64), (Integrator::Bdpt(Join::Full), 64)] {
+    for (integrator, spp) in
+        [(Integrator::Pt, 64), (Integrator::PtNee, 64), (Integrator::Bdpt(Join::Lvc(0)), 64), (Integrator::Bdpt(Join::Full), 64)]
+    {
         let img = render(&scene, &camera, integrator, spp);
         let px: Vec<f64> = img.chunks_exact(3).map(|c| c[0] as f64).collect();
         let (mean, se) = mean_and_se(&px);

@@ -27,7 +27,10 @@ fn first_quarter_of_a_time_budget_runs_near_the_steady_rate() {
     let &(t_end, s_end) = points.last().unwrap();
     let first = s_q / t_q;
     let steady = (s_end - s_h) / (t_end - t_h);
-    eprintln!("{} passes; first quarter {first:.1} spp/s ({s_q} spp by {t_q:.2} s), steady {steady:.1} spp/s; ended at {t_end:.2} s", points.len());
+    eprintln!(
+        "{} passes; first quarter {first:.1} spp/s ({s_q} spp by {t_q:.2} s), steady {steady:.1} spp/s; ended at {t_end:.2} s",
+        points.len()
+    );
     assert!(first >= 0.8 * steady, "the first quarter ran at {:.0} % of the steady rate", 100.0 * first / steady);
     // The budget is kept: the last pass did not overshoot by more than 10 %.
     assert!(t_end <= 1.1 * total, "ended at {t_end:.2} s of a {total} s budget");

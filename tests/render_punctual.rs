@@ -18,33 +18,18 @@ use glam::Vec3;
 fn add(scene: &mut Scene, (positions, tris): (Vec<Vec3>, Vec<[u32; 3]>), m: u32) {
     let base = scene.positions.len() as u32;
     scene.positions.extend(positions);
-    scene
-        .material_ids
-        .extend(std::iter::repeat_n(m, tris.len()));
-    scene
-        .triangles
-        .extend(tris.into_iter().map(|t| t.map(|i| i + base)));
+    scene.material_ids.extend(std::iter::repeat_n(m, tris.len()));
+    scene.triangles.extend(tris.into_iter().map(|t| t.map(|i| i + base)));
 }
 
 fn render(scene: &Scene, integrator: Integrator, spp: u32) -> RgbImage {
     let ctx = gpu();
-    let mut r = Renderer::new(
-        &ctx,
-        scene,
-        &scene.cameras[0],
-        RenderSettings::new(integrator),
-    )
-    .unwrap();
+    let mut r = Renderer::new(&ctx, scene, &scene.cameras[0], RenderSettings::new(integrator)).unwrap();
     assert!(r.gpu_scene().features.punctual);
     assert_eq!(r.gpu_scene().features.env, scene.environment.is_some());
     r.render_spp(spp, |_| {}).unwrap();
     let img = r.image().unwrap();
-    assert_eq!(
-        r.nan_samples().unwrap(),
-        0,
-        "{}: NaN/Inf samples",
-        integrator.name()
-    );
+    assert_eq!(r.nan_samples().unwrap(), 0, "{}: NaN/Inf samples", integrator.name());
     drop(r);
     finish(ctx);
     img
@@ -64,22 +49,10 @@ const I: f32 = 3.0;
 /// The plane y = 0 (a 20 x 20 quad facing up) under a point light at (0.3, H, -0.2), seen
 /// from above at an angle.
 fn plane_scene() -> Scene {
-    let mut s = Scene {
-        source: "test:point-over-plane".into(),
-        ..Default::default()
-    };
-    s.materials.push(Material {
-        name: "plane".into(),
-        albedo: Vec3::splat(RHO),
-        ..Default::default()
-    });
+    let mut s = Scene { source: "test:point-over-plane".into(), ..Default::default() };
+    s.materials.push(Material { name: "plane".into(), albedo: Vec3::splat(RHO), ..Default::default() });
     let quad = (
-        vec![
-            Vec3::new(-10.0, 0.0, -10.0),
-            Vec3::new(-10.0, 0.0, 10.0),
-            Vec3::new(10.0, 0.0, 10.0),
-            Vec3::new(10.0, 0.0, -10.0),
-        ],
+        vec![Vec3::new(-10.0, 0.0, -10.0), Vec3::new(-10.0, 0.0, 10.0), Vec3::new(10.0, 0.0, 10.0), Vec3::new(10.0, 0.0, -10.0)],
         vec![[0, 1, 2], [0, 2, 3]],
     );
     add(&mut s, quad, 0);
@@ -113,10 +86,7 @@ fn analytic(scene: &Scene) -> Vec<f64> {
         for i in 0..cam.width {
             let mut sum = 0.0;
             for k in 0..64 {
-                let (x, y) = (
-                    i as f32 + (k % 8) as f32 / 8.0 + 1.0 / 16.0,
-                    j as f32 + (k / 8) as f32 / 8.0 + 1.0 / 16.0,
-                );
+                let (x, y) = (i as f32 + (k % 8) as f32 / 8.0 + 1.0 / 16.0, j as f32 + (k / 8) as f32 / 8.0 + 1.0 / 16.0);
                 let d = cam.ray_direction(x, y).as_dvec3();
                 let p = eye + d * (-eye.y / d.y);
                 let v = light - p;
@@ -142,81 +112,28 @@ fn point_light_irradiance_is_i_cos_over_r2() {
     ] {
         let img = render(&scene, integrator, spp);
         // Per pixel, the relative error (pixels differ by up to ~10x across the image).
-        let rel: Vec<f64> = img
-            .data
-            .chunks_exact(3)
-            .zip(&expect)
-            .map(|(c, e)| (c[0] + c[1] + c[2]) as f64 / 3.0 / e - 1.0)
-            .collect();
+        let rel: Vec<f64> = img.data.chunks_exact(3).zip(&expect).map(|(c, e)| (c[0] + c[1] + c[2]) as f64 / 3.0 / e - 1.0).collect();
         let (err, se) = mean_and_se(&rel);
         let worst = rel.iter().fold(0.0f64, |a, r| a.max(r.abs()));
         eprintln!("point light over a plane, {}: mean relative error {:+.3} % (4 sigma {:.3} %), worst pixel {:.2} %, expected mean {expect_mean:.5}", integrator.name(), 100.0 * err, 400.0 * se, 100.0 * worst);
-        assert!(
-            4.0 * se < 0.005,
-            "{}: too noisy to resolve 0.5 %",
-            integrator.name()
-        );
-        assert!(
-            err.abs() < 0.005 && err.abs() < 4.0 * se.max(1e-5),
-            "{}: irradiance off by {:+.3} %",
-            integrator.name(),
-            100.0 * err
-        );
+        assert!(4.0 * se < 0.005, "{}: too noisy to resolve 0.5 %", integrator.name());
+        assert!(err.abs() < 0.005 && err.abs() < 4.0 * se.max(1e-5), "{}: irradiance off by {:+.3} %", integrator.name(), 100.0 * err);
     }
     // Plain path tracing cannot find a delta light.
-    assert!(render(&scene, Integrator::Pt, 2)
-        .data
-        .iter()
-        .all(|&v| v == 0.0));
+    assert!(render(&scene, Integrator::Pt, 2).data.iter().all(|&v| v == 0.0));
 }
 
 /// The box [-1, 1]^3 without its top, a sphere inside, lit by a spot from above, a point light
 /// inside and a low directional light.
 fn lit_box_scene() -> Scene {
-    let mut s = Scene {
-        source: "test:punctual-box".into(),
-        ..Default::default()
-    };
-    s.materials.push(Material {
-        name: "box".into(),
-        albedo: Vec3::splat(0.7),
-        ..Default::default()
-    });
-    s.materials.push(Material {
-        name: "sphere".into(),
-        albedo: Vec3::new(0.8, 0.5, 0.3),
-        ..Default::default()
-    });
-    let c = |i: u32| {
-        Vec3::new(
-            if i & 1 == 0 { -1.0 } else { 1.0 },
-            if i & 2 == 0 { -1.0 } else { 1.0 },
-            if i & 4 == 0 { -1.0 } else { 1.0 },
-        )
-    };
-    let quads = [
-        [0u32, 1, 5, 4],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-    ];
-    add(
-        &mut s,
-        (
-            (0..8).map(c).collect(),
-            quads
-                .iter()
-                .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
-                .collect(),
-        ),
-        0,
-    );
-    add(
-        &mut s,
-        geometry::icosphere(2, Vec3::new(0.2, -0.5, 0.1), 0.45),
-        1,
-    );
+    let mut s = Scene { source: "test:punctual-box".into(), ..Default::default() };
+    s.materials.push(Material { name: "box".into(), albedo: Vec3::splat(0.7), ..Default::default() });
+    s.materials.push(Material { name: "sphere".into(), albedo: Vec3::new(0.8, 0.5, 0.3), ..Default::default() });
+    let c =
+        |i: u32| Vec3::new(if i & 1 == 0 { -1.0 } else { 1.0 }, if i & 2 == 0 { -1.0 } else { 1.0 }, if i & 4 == 0 { -1.0 } else { 1.0 });
+    let quads = [[0u32, 1, 5, 4], [0, 4, 6, 2], [1, 3, 7, 5], [0, 2, 3, 1], [4, 5, 7, 6]];
+    add(&mut s, ((0..8).map(c).collect(), quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect()), 0);
+    add(&mut s, geometry::icosphere(2, Vec3::new(0.2, -0.5, 0.1), 0.45), 1);
     s.cameras.push(Camera {
         name: "test".into(),
         eye: Vec3::new(1.6, 3.2, 2.4),
@@ -226,10 +143,7 @@ fn lit_box_scene() -> Scene {
         width: 48,
         height: 48,
     });
-    let spot = PunctualKind::Spot {
-        inner: 0.25,
-        outer: 0.5,
-    };
+    let spot = PunctualKind::Spot { inner: 0.25, outer: 0.5 };
     s.punctual_lights.push(PunctualLight {
         name: "spot".into(),
         kind: spot,
@@ -256,12 +170,7 @@ fn lit_box_scene() -> Scene {
 
 #[test]
 fn pt_nee_and_every_bdpt_join_agree_under_spot_point_and_directional_lights() {
-    let joins = [
-        Integrator::Bdpt(Join::Full),
-        Integrator::Bdpt(Join::K(2)),
-        Integrator::Bdpt(Join::K(1)),
-        Integrator::Bdpt(Join::Lvc(0)),
-    ];
+    let joins = [Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::K(2)), Integrator::Bdpt(Join::K(1)), Integrator::Bdpt(Join::Lvc(0))];
     check_agreement("spot + point + directional", &lit_box_scene(), &joins);
 }
 
@@ -278,14 +187,8 @@ fn pt_nee_and_bdpt_agree_with_every_kind_of_light() {
     )
     .unwrap();
     scene.add_quad_light(&quad, "quad");
-    scene.environment = Some(bidir::scene::Environment::uniform(Vec3::new(
-        0.2, 0.25, 0.35,
-    )));
-    check_agreement(
-        "punctual + quad + environment",
-        &scene,
-        &[Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(0))],
-    );
+    scene.environment = Some(bidir::scene::Environment::uniform(Vec3::new(0.2, 0.25, 0.35)));
+    check_agreement("punctual + quad + environment", &scene, &[Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(0))]);
 }
 
 fn check_agreement(what: &str, scene: &Scene, integrators: &[Integrator]) {
@@ -299,25 +202,19 @@ fn check_agreement(what: &str, scene: &Scene, integrators: &[Integrator]) {
             .zip(reference.data.chunks_exact(3))
             .map(|(x, y)| (0..3).map(|c| x[c] as f64 - y[c] as f64).sum::<f64>() / 3.0)
             .collect();
-        let (mean_ref, _) =
-            mean_and_se(&reference.data.iter().map(|&v| v as f64).collect::<Vec<_>>());
+        let (mean_ref, _) = mean_and_se(&reference.data.iter().map(|&v| v as f64).collect::<Vec<_>>());
         let (d, se) = mean_and_se(&diff);
         // 8 x 8 blocks: sum of z^2 is chi-square with one degree of freedom per block.
         let (mut chi2, mut blocks) = (0.0, 0u32);
         for by in (0..reference.height as usize).step_by(8) {
             for bx in (0..w).step_by(8) {
-                let b: Vec<f64> = (by..by + 8)
-                    .flat_map(|y| (bx..bx + 8).map(move |x| y * w + x))
-                    .map(|k| diff[k])
-                    .collect();
+                let b: Vec<f64> = (by..by + 8).flat_map(|y| (bx..bx + 8).map(move |x| y * w + x)).map(|k| diff[k]).collect();
                 let (m, s) = mean_and_se(&b);
                 // Pixels that see only the environment are exact up to the float rounding of
                 // sums accumulated in passes of varying size: ~1e-7 relative, not noise.
-                let level: f64 = (by..by + 8)
-                    .flat_map(|y| (bx..bx + 8).map(move |x| y * w + x))
-                    .map(|k| reference.data[3 * k] as f64)
-                    .sum::<f64>()
-                    / 64.0;
+                let level: f64 =
+                    (by..by + 8).flat_map(|y| (bx..bx + 8).map(move |x| y * w + x)).map(|k| reference.data[3 * k] as f64).sum::<f64>()
+                        / 64.0;
                 let s = s.max(1e-5 * level.abs());
                 if s > 0.0 {
                     chi2 += (m / s).powi(2);
@@ -326,22 +223,14 @@ fn check_agreement(what: &str, scene: &Scene, integrators: &[Integrator]) {
             }
         }
         let p = common::stats::chi2_sf(chi2, blocks.max(1));
-        eprintln!("{what}: {} - pt-nee {:+.3} % (4 sigma {:.3} %), blocks X^2 = {chi2:.1} dof {blocks} p = {p:.4}", integrator.name(), 100.0 * d / mean_ref, 400.0 * se / mean_ref);
-        assert!(
-            4.0 * se / mean_ref < 0.02,
-            "{}: too noisy to resolve 2 %",
-            integrator.name()
-        );
-        assert!(
-            d.abs() < 4.0 * se,
-            "{}: mean differs from pt-nee by {:+.3} %",
+        eprintln!(
+            "{what}: {} - pt-nee {:+.3} % (4 sigma {:.3} %), blocks X^2 = {chi2:.1} dof {blocks} p = {p:.4}",
             integrator.name(),
-            100.0 * d / mean_ref
+            100.0 * d / mean_ref,
+            400.0 * se / mean_ref
         );
-        assert!(
-            p >= 1e-3,
-            "{}: block means disagree with pt-nee beyond noise",
-            integrator.name()
-        );
+        assert!(4.0 * se / mean_ref < 0.02, "{}: too noisy to resolve 2 %", integrator.name());
+        assert!(d.abs() < 4.0 * se, "{}: mean differs from pt-nee by {:+.3} %", integrator.name(), 100.0 * d / mean_ref);
+        assert!(p >= 1e-3, "{}: block means disagree with pt-nee beyond noise", integrator.name());
     }
 }

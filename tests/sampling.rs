@@ -50,7 +50,14 @@ impl<'a> Sampler<'a> {
     }
 
     /// As `run`, with the environment's (GpuEnv, texels, alias) buffers where given.
-    fn run_env(&self, push: abi::SamplingTestPush, per_sample: u64, input: Option<&Buffer>, lights: Option<(&Buffer, &Buffer)>, env: Option<[&Buffer; 3]>) -> Vec<Vec4> {
+    fn run_env(
+        &self,
+        push: abi::SamplingTestPush,
+        per_sample: u64,
+        input: Option<&Buffer>,
+        lights: Option<(&Buffer, &Buffer)>,
+        env: Option<[&Buffer; 3]>,
+    ) -> Vec<Vec4> {
         let out = self.ctx.create_buffer("sampling.out", push.count as u64 * per_sample * 16, Memory::Device).unwrap();
         let (emitters, alias) = lights.unwrap_or((&self.placeholder, &self.placeholder));
         let [env, env_texels, env_alias] = env.unwrap_or([&self.placeholder; 3]);
@@ -183,7 +190,8 @@ fn check_cosine(s: &Sampler, normal: Vec3, seed: u32) -> Fit {
         dirs.push(d.extend(0.0));
     }
     let input = s.ctx.upload_buffer("sampling.dirs", &dirs).unwrap();
-    let push = abi::SamplingTestPush { mode: abi::SAMPLING_COSINE_PDF, count: dirs.len() as u32, a: normal.extend(0.0), ..Default::default() };
+    let push =
+        abi::SamplingTestPush { mode: abi::SAMPLING_COSINE_PDF, count: dirs.len() as u32, a: normal.extend(0.0), ..Default::default() };
     let pdf: Vec<f64> = s.run(push, 1, Some(&input), None).iter().map(|v| v.x as f64).collect();
     let mut expected = vec![0.0f64; cells];
     for (k, w) in weights.iter().enumerate() {
@@ -223,7 +231,8 @@ fn cosine_hemisphere_matches_its_pdf() {
     let s = Sampler::new(&ctx);
     // Axis-aligned, tilted, and tilted into the lower half space (the other branch of the
     // orthonormal basis).
-    let fits = [check_cosine(&s, Vec3::Z, 1), check_cosine(&s, Vec3::new(0.36, -0.48, 0.8), 2), check_cosine(&s, Vec3::new(-0.64, 0.48, -0.6), 3)];
+    let fits =
+        [check_cosine(&s, Vec3::Z, 1), check_cosine(&s, Vec3::new(0.36, -0.48, 0.8), 2), check_cosine(&s, Vec3::new(-0.64, 0.48, -0.6), 3)];
     for (i, f) in fits.iter().enumerate() {
         assert!(f.p >= ALPHA, "normal {i}: cosine samples do not follow the reported pdf ({f})");
     }
@@ -353,7 +362,8 @@ fn emitter_sampling_follows_power_and_area() {
     let choice = stats::pearson(&chosen, &expected);
     eprintln!("emitter choice: observed {chosen:?}\n  expected {:?}\n  {choice}", expected.iter().map(|e| e.round()).collect::<Vec<_>>());
     let per_cell = 1.0 / (TRI_SPLIT * TRI_SPLIT) as f64;
-    let expected_joint: Vec<f64> = (0..joint.len()).map(|k| if sub_triangle_valid(k % cells) { prob[k / cells] * N as f64 * per_cell } else { 0.0 }).collect();
+    let expected_joint: Vec<f64> =
+        (0..joint.len()).map(|k| if sub_triangle_valid(k % cells) { prob[k / cells] * N as f64 * per_cell } else { 0.0 }).collect();
     let points = stats::pearson(&joint, &expected_joint);
     eprintln!("emitter x equal-area sub-triangle ({} pieces each): {points}, {} cells after pooling", TRI_SPLIT * TRI_SPLIT, points.cells);
     assert!(choice.p >= ALPHA, "emitters are not chosen in proportion to their power ({choice})");
@@ -411,8 +421,11 @@ fn dielectric_reflects_with_fresnel_probability() {
     let (t, _) = frame(n);
     let mut fits = Vec::new();
     // From outside (eta = 1 / 1.5) and from inside (eta = 1.5, critical angle 41.81°).
-    let cases: Vec<(f64, f64)> =
-        [0.0, 30.0, 60.0, 80.0, 88.0].iter().map(|&a| (1.0 / ior, a)).chain([0.0, 25.0, 40.0, 41.5, 42.0, 60.0, 85.0].iter().map(|&a| (ior, a))).collect();
+    let cases: Vec<(f64, f64)> = [0.0, 30.0, 60.0, 80.0, 88.0]
+        .iter()
+        .map(|&a| (1.0 / ior, a))
+        .chain([0.0, 25.0, 40.0, 41.5, 42.0, 60.0, 85.0].iter().map(|&a| (ior, a)))
+        .collect();
     for (k, &(eta, deg)) in cases.iter().enumerate() {
         let theta = deg.to_radians();
         let d = (t * theta.sin() - n * theta.cos()).normalize();
@@ -478,7 +491,11 @@ fn environment_sampling_matches_its_pdf() {
         .map(|i| {
             let (x, y) = ((i % w) as f32, (i / w) as f32);
             let g = 0.05 + 0.1 * x + 0.3 * y;
-            if (x, y) == (11.0, 2.0) { Vec3::new(40.0, 30.0, 20.0) } else { Vec3::new(g, 0.5 * g, 0.2) }
+            if (x, y) == (11.0, 2.0) {
+                Vec3::new(40.0, 30.0, 20.0)
+            } else {
+                Vec3::new(g, 0.5 * g, 0.2)
+            }
         })
         .collect();
     let mut env = Environment::from_texels("test:gradient+hot", w, h, texels);
@@ -594,7 +611,8 @@ fn environment_sampling_with_a_sun_matches_its_pdf() {
     eprintln!("env_lookup found another texel's pdf for {mismatched} of {N} directions");
     assert!(mismatched <= N as u64 / 1000);
     let omega_sun = 2.0 * PI * (1.0 - cos_max);
-    let mut expected: Vec<f64> = (0..inside).map(|k| table.texels[k / 4].pdf_w as f64 * env.texel_solid_angle((k / 4) as u32 / w) as f64 / 4.0 * N as f64).collect();
+    let mut expected: Vec<f64> =
+        (0..inside).map(|k| table.texels[k / 4].pdf_w as f64 * env.texel_solid_angle((k / 4) as u32 / w) as f64 / 4.0 * N as f64).collect();
     let texel_pdf = table.texels[sun_cell / 4].pdf_w as f64;
     expected[sun_cell] -= texel_pdf * omega_sun * N as f64;
     expected.push((texel_pdf + table.env.sun_pdf_w as f64) * omega_sun * N as f64);

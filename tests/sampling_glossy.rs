@@ -286,7 +286,8 @@ fn continuous_bsdf_is_reciprocal_and_pdfs_swap() {
     let input_swapped = ctx.upload_buffer("glossy.swapped", &swapped).unwrap();
     let base = Vec3::new(0.8, 0.5, 0.2);
     let mut worst = 0.0f64;
-    for bsdf in [Bsdf::conductor(0.05), Bsdf::conductor(0.3), Bsdf::conductor(0.8), Bsdf::gltf(base, 0.5, 0.3), Bsdf::gltf(base, 0.0, 0.6)] {
+    for bsdf in [Bsdf::conductor(0.05), Bsdf::conductor(0.3), Bsdf::conductor(0.8), Bsdf::gltf(base, 0.5, 0.3), Bsdf::gltf(base, 0.0, 0.6)]
+    {
         let e = run(&ctx, &kernel, bsdf.push(abi::SAMPLING_GLOSSY_EVAL, count as u32, 0, DVec3::Z), 2, Some(&input));
         let s = run(&ctx, &kernel, bsdf.push(abi::SAMPLING_GLOSSY_EVAL, count as u32, 0, DVec3::Z), 2, Some(&input_swapped));
         for i in 0..count {
@@ -297,7 +298,10 @@ fn continuous_bsdf_is_reciprocal_and_pdfs_swap() {
             assert!(f_ab.min_element() >= 0.0, "{bsdf:?}: negative f {f_ab}");
             // The reverse pdf of (a, b) is the forward pdf of (b, a).
             let (rev, fwd_swapped) = (e[2 * i + 1].w as f64, s[2 * i].w as f64);
-            assert!((rev - fwd_swapped).abs() <= 1e-4 * rev.max(fwd_swapped).max(1e-3), "{bsdf:?}: pdf_rev {rev} vs swapped pdf_fwd {fwd_swapped}");
+            assert!(
+                (rev - fwd_swapped).abs() <= 1e-4 * rev.max(fwd_swapped).max(1e-3),
+                "{bsdf:?}: pdf_rev {rev} vs swapped pdf_fwd {fwd_swapped}"
+            );
         }
     }
     eprintln!("largest relative |f(a, b) - f(b, a)|: {worst:.2e}");

@@ -123,21 +123,14 @@ fn room_with_thesis_keys() {
     assert!((lum - scene::luminance(want)).abs() < 1e-4);
 
     let (_, half) = material(s, "HalfMirror");
-    assert_eq!(
-        (half.albedo, half.reflectivity, half.refractivity, half.ior),
-        (Vec3::new(0.5, 0.25, 0.125), 0.3, 0.2, 1.2)
-    );
+    assert_eq!((half.albedo, half.reflectivity, half.refractivity, half.ior), (Vec3::new(0.5, 0.25, 0.125), 0.3, 0.2, 1.2));
     let (_, old) = material(s, "OldGlass");
     assert_eq!((old.reflectivity, old.refractivity, old.ior), (0.0, 1.0, 1.33));
     let (_, chrome) = material(s, "Chrome");
     assert_eq!((chrome.reflectivity, chrome.refractivity), (1.0, 0.0));
 
     let c = s.material_counts();
-    assert_eq!(
-        (c.total, c.diffuse, c.mirror, c.glass, c.emissive, c.alpha_masked, c.textured),
-        (9, 5, 3, 3, 1, 2, 2),
-        "{c:?}"
-    );
+    assert_eq!((c.total, c.diffuse, c.mirror, c.glass, c.emissive, c.alpha_masked, c.textured), (9, 5, 3, 3, 1, 2, 2), "{c:?}");
 
     // The pentagon: fan-triangulated into 3 triangles covering its area.
     let (penta, _) = material(s, "OldGlass");

@@ -16,10 +16,7 @@ fn root() -> PathBuf {
 struct Cluster(PathBuf);
 impl Drop for Cluster {
     fn drop(&mut self) {
-        let _ = Command::new(root().join("scripts/slurm-local"))
-            .arg("stop")
-            .arg(&self.0)
-            .status();
+        let _ = Command::new(root().join("scripts/slurm-local")).arg("stop").arg(&self.0).status();
     }
 }
 
@@ -37,10 +34,7 @@ fn slurm_array_and_merge() {
         .unwrap();
     let cluster = Cluster(dir.join("cluster"));
     if !up.status.success() {
-        eprintln!(
-            "SKIPPED: a local Slurm could not start here: {}",
-            String::from_utf8_lossy(&up.stderr).trim()
-        );
+        eprintln!("SKIPPED: a local Slurm could not start here: {}", String::from_utf8_lossy(&up.stderr).trim());
         return;
     }
     let conf = dir.join("cluster/slurm.conf");
@@ -56,62 +50,34 @@ fn slurm_array_and_merge() {
         .env("BIDIR_VALIDATION", "1")
         .output()
         .unwrap();
-    let said = String::from_utf8_lossy(&submit.stdout).into_owned()
-        + &String::from_utf8_lossy(&submit.stderr);
+    let said = String::from_utf8_lossy(&submit.stdout).into_owned() + &String::from_utf8_lossy(&submit.stderr);
     assert!(submit.status.success(), "slurm-render failed: {said}");
     eprintln!("{said}");
     let merged = out.join("merged.exr");
     let deadline = Instant::now() + Duration::from_secs(300);
     while !merged.exists() {
-        assert!(
-            Instant::now() < deadline,
-            "no merged image after 300 s; logs in {}",
-            out.join("logs").display()
-        );
+        assert!(Instant::now() < deadline, "no merged image after 300 s; logs in {}", out.join("logs").display());
         std::thread::sleep(Duration::from_millis(200));
     }
     let wall = start.elapsed();
     let merge_log = std::fs::read_to_string(out.join("logs/merge.log")).unwrap_or_default();
-    eprintln!(
-        "Slurm: 4 array tasks + merge in {:.2} s wall (cluster start included)\n{merge_log}",
-        wall.as_secs_f64()
-    );
-    assert!(
-        merge_log.contains("merged 4 parts") && merge_log.contains("samples 0..12 (12 spp)"),
-        "{merge_log}"
-    );
+    eprintln!("Slurm: 4 array tasks + merge in {:.2} s wall (cluster start included)\n{merge_log}", wall.as_secs_f64());
+    assert!(merge_log.contains("merged 4 parts") && merge_log.contains("samples 0..12 (12 spp)"), "{merge_log}");
     for i in 0..4 {
-        let log =
-            std::fs::read_to_string(out.join(format!("logs/part-{i}.log"))).unwrap_or_default();
-        assert!(
-            !log.to_lowercase().contains("validation"),
-            "task {i}: {log}"
-        );
+        let log = std::fs::read_to_string(out.join(format!("logs/part-{i}.log"))).unwrap_or_default();
+        assert!(!log.to_lowercase().contains("validation"), "task {i}: {log}");
     }
     // The same render in one go.
     let whole = dir.join("whole.exr");
-    let one = Command::new(bidir)
-        .arg("render")
-        .args(args)
-        .args(["--spp", "12", "-o"])
-        .arg(&whole)
-        .output()
-        .unwrap();
-    assert!(
-        one.status.success(),
-        "{}",
-        String::from_utf8_lossy(&one.stderr)
-    );
+    let one = Command::new(bidir).arg("render").args(args).args(["--spp", "12", "-o"]).arg(&whole).output().unwrap();
+    assert!(one.status.success(), "{}", String::from_utf8_lossy(&one.stderr));
     same(&merged, &whole);
     drop(cluster);
     let _ = std::fs::remove_dir_all(&dir);
 }
 
 fn same(a: &Path, b: &Path) {
-    let (a, b) = (
-        bidir::film::read_exr(a).unwrap(),
-        bidir::film::read_exr(b).unwrap(),
-    );
+    let (a, b) = (bidir::film::read_exr(a).unwrap(), bidir::film::read_exr(b).unwrap());
     assert_eq!((a.width, a.height), (b.width, b.height));
     for (x, y) in a.data.iter().zip(&b.data) {
         assert!((x - y).abs() <= 1e-5 * x.abs().max(y.abs()), "{x} vs {y}");

@@ -187,13 +187,21 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     let (p, t) = geometry::icosphere(5, Vec3::ZERO, 1.0);
     let rays = edge_rays(&mut rng, &p, &t, 1_000_000);
     let mut leaks = Vec::new();
-    for (test, layout) in [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)] {
+    for (test, layout) in
+        [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)]
+    {
         let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, layout, ..Default::default() }).unwrap();
         let g = GpuBvh::upload(&ctx, &bvh).unwrap();
         let tracer = Tracer::with_options(&ctx, &TraceOptions { layout, ..TraceOptions::new(test) }).unwrap();
         let hits = tracer.trace(&ctx, &g, &rays, false).unwrap();
         let missed = hits.iter().filter(|h| h.tri == NO_HIT).count();
-        eprintln!("{} [{}]: {missed} of {} edge/vertex rays leaked ({:.4} %)", test.name(), layout.name(), rays.len(), 100.0 * missed as f64 / rays.len() as f64);
+        eprintln!(
+            "{} [{}]: {missed} of {} edge/vertex rays leaked ({:.4} %)",
+            test.name(),
+            layout.name(),
+            rays.len(),
+            100.0 * missed as f64 / rays.len() as f64
+        );
         leaks.push(missed);
     }
     assert_eq!(leaks[0], 0, "watertight test leaked rays through shared edges");
@@ -218,7 +226,14 @@ fn cornell_box_matches_cpu_hit_for_hit() {
     }
     for tri_test in [TriTest::Watertight, TriTest::Woop] {
         for pre_split in [false, true] {
-            check_scene(&ctx, "cornell", &scene.positions, &scene.triangles, &rays, BuildOptions { tri_test, pre_split, ..Default::default() });
+            check_scene(
+                &ctx,
+                "cornell",
+                &scene.positions,
+                &scene.triangles,
+                &rays,
+                BuildOptions { tri_test, pre_split, ..Default::default() },
+            );
         }
     }
     finish(ctx);
@@ -359,7 +374,9 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         rays.push(ray(o, d, if stop { (target - o).length() } else { 3.0e38 }));
     }
     let ctx = gpu();
-    for (tri_test, layout) in [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)] {
+    for (tri_test, layout) in
+        [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)]
+    {
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, layout, ..Default::default() }).unwrap();
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
@@ -395,12 +412,19 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
                 compared += 1;
                 let g = closest[i];
                 match want {
-                    None => assert_eq!(g.tri, NO_HIT, "{variant} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU (alpha) missed", g.tri, g.t),
+                    None => {
+                        assert_eq!(g.tri, NO_HIT, "{variant} ray {i} ({o}, {d}): GPU hit prim {} at t={}, CPU (alpha) missed", g.tri, g.t)
+                    }
                     Some((tri, h)) => {
                         assert_ne!(g.tri, NO_HIT, "{variant} ray {i} ({o}, {d}): CPU (alpha) hit triangle {tri} at t={}, GPU missed", h.t);
                         let gtri = bvh.tri_ids[g.tri as usize];
                         // The two triangles of a quad share a diagonal: a tie there is fine.
-                        assert!(layer(gtri) == layer(tri) && (g.t - h.t).abs() <= 1e-4 * h.t, "{variant} ray {i} ({o}, {d}): GPU triangle {gtri} t={}, CPU (alpha) triangle {tri} t={}", g.t, h.t);
+                        assert!(
+                            layer(gtri) == layer(tri) && (g.t - h.t).abs() <= 1e-4 * h.t,
+                            "{variant} ray {i} ({o}, {d}): GPU triangle {gtri} t={}, CPU (alpha) triangle {tri} t={}",
+                            g.t,
+                            h.t
+                        );
                         per_layer[layer(tri)] += 1;
                         if cpu.closest(o, d, 0.0, tmax).is_some_and(|(t0, _)| layer(t0) != layer(tri)) {
                             through_mask += 1;
@@ -409,7 +433,11 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
                 }
                 assert_eq!(any[i].tri != NO_HIT, want_any, "{variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict with alpha");
                 if tmax < 1e30 {
-                    if want_any { occluded += 1 } else { unoccluded += 1 }
+                    if want_any {
+                        occluded += 1
+                    } else {
+                        unoccluded += 1
+                    }
                 }
             }
             eprintln!(

@@ -176,8 +176,11 @@ fn bidir(args: &[&str], env: &[(&str, Option<&str>)], limit: Duration) -> (bool,
 
 #[test]
 fn viewer_without_a_display_fails_clearly() {
-    let (ok, _, err) =
-        bidir(&["view", "--frames", "1"], &[("DISPLAY", None), ("WAYLAND_DISPLAY", None), ("WAYLAND_SOCKET", None)], Duration::from_secs(60));
+    let (ok, _, err) = bidir(
+        &["view", "--frames", "1"],
+        &[("DISPLAY", None), ("WAYLAND_DISPLAY", None), ("WAYLAND_SOCKET", None)],
+        Duration::from_secs(60),
+    );
     assert!(!ok, "the viewer must fail without a display");
     assert!(err.contains("cannot open a window") && err.contains("xvfb-run"), "unclear error: {err}");
     assert!(!err.contains("panicked"), "{err}");
@@ -188,7 +191,8 @@ fn parse_summary(stdout: &str) -> (u32, u32, u32) {
     let line = stdout.lines().find(|l| l.contains("spp in the film")).unwrap_or_else(|| panic!("no summary in: {stdout}"));
     let words: Vec<&str> = line.split_whitespace().collect();
     let spp = words.iter().position(|w| *w == "spp").map(|i| words[i - 1].parse().unwrap()).unwrap();
-    let size = words.iter().find_map(|w| w.split_once('x').and_then(|(a, b)| Some((a.parse().ok()?, b.trim_end_matches(':').parse().ok()?))));
+    let size =
+        words.iter().find_map(|w| w.split_once('x').and_then(|(a, b)| Some((a.parse().ok()?, b.trim_end_matches(':').parse().ok()?))));
     let (w, h) = size.unwrap_or_else(|| panic!("no size in: {line}"));
     (w, h, spp)
 }

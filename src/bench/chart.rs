@@ -126,7 +126,11 @@ fn log_axis(range: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> {
     range.log_scale().with_key_points(bold).with_light_points(light)
 }
 
-fn draw_log_log<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, series: &[Series], text: &ChartText) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+fn draw_log_log<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    series: &[Series],
+    text: &ChartText,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     root.fill(&WHITE)?;
     let xs = log_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
     let ys = log_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.1)));

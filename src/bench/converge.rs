@@ -126,20 +126,36 @@ pub fn check(opts: &Options, camera: &Camera, reference: &RgbImage) -> Result<()
 /// Renders every integrator in turn; `on_point` hears of each snapshot as it is taken. After
 /// [`request_stop`](crate::render::request_stop) the integrator in flight ends with a last
 /// snapshot after its current pass and the rest are skipped.
-pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, reference: &RgbImage, opts: &Options, mut on_point: impl FnMut(Integrator, &Point)) -> Result<Vec<Curve>, ConvergeError> {
+pub fn run(
+    ctx: &Context,
+    scene: &Scene,
+    camera: &Camera,
+    reference: &RgbImage,
+    opts: &Options,
+    mut on_point: impl FnMut(Integrator, &Point),
+) -> Result<Vec<Curve>, ConvergeError> {
     check(opts, camera, reference)?;
     let mut curves = Vec::new();
     for &integrator in &opts.integrators {
         if stop_requested() && !curves.is_empty() {
             break;
         }
-        let c = curve(ctx, scene, camera, reference, opts, integrator, &mut on_point).map_err(|source| ConvergeError::Render { integrator: integrator.name(), source })?;
+        let c = curve(ctx, scene, camera, reference, opts, integrator, &mut on_point)
+            .map_err(|source| ConvergeError::Render { integrator: integrator.name(), source })?;
         curves.push(c);
     }
     Ok(curves)
 }
 
-fn curve(ctx: &Context, scene: &Scene, camera: &Camera, reference: &RgbImage, opts: &Options, integrator: Integrator, on_point: &mut impl FnMut(Integrator, &Point)) -> Result<Curve, RenderError> {
+fn curve(
+    ctx: &Context,
+    scene: &Scene,
+    camera: &Camera,
+    reference: &RgbImage,
+    opts: &Options,
+    integrator: Integrator,
+    on_point: &mut impl FnMut(Integrator, &Point),
+) -> Result<Curve, RenderError> {
     let settings = RenderSettings { integrator, ..opts.settings.clone() };
     let start = Instant::now();
     let mut r = Renderer::new(ctx, scene, camera, settings)?;
@@ -152,7 +168,8 @@ fn curve(ctx: &Context, scene: &Scene, camera: &Camera, reference: &RgbImage, op
             return Ok(()); // a long pass already passed this moment
         }
         let img = r.image()?;
-        let p = Point { seconds: rendered, spp: r.samples(), rmse: metrics::rmse(&img, reference), rel_mse: metrics::rel_mse(&img, reference) };
+        let p =
+            Point { seconds: rendered, spp: r.samples(), rmse: metrics::rmse(&img, reference), rel_mse: metrics::rel_mse(&img, reference) };
         on_point(integrator, &p);
         points.push(p);
         image = Some(img);
@@ -283,7 +300,8 @@ fn side_by_side(curves: &[Curve], reference: &RgbImage, exposure: f32) -> Result
         })
         .collect();
     pixels.push((vec!["reference".into()], film::to_srgb8(reference, exposure)));
-    let panels: Vec<Panel> = pixels.iter().map(|(lines, rgb)| Panel { lines: lines.clone(), rgb, width: reference.width, height: reference.height }).collect();
+    let panels: Vec<Panel> =
+        pixels.iter().map(|(lines, rgb)| Panel { lines: lines.clone(), rgb, width: reference.width, height: reference.height }).collect();
     chart::side_by_side(&panels)
 }
 
@@ -318,7 +336,10 @@ mod tests {
         let err = |o: Options, r: &RgbImage| check(&o, &cam, r).unwrap_err().to_string();
         assert!(check(&opts(all.clone(), time(20.0, 12)), &cam, &reference).is_ok());
         assert_eq!(err(opts(vec![], time(1.0, 2)), &reference), "no integrators to compare");
-        assert_eq!(err(opts(vec![Integrator::Pt, Integrator::PtNee, Integrator::Pt], time(1.0, 2)), &reference), "integrator pt is listed twice");
+        assert_eq!(
+            err(opts(vec![Integrator::Pt, Integrator::PtNee, Integrator::Pt], time(1.0, 2)), &reference),
+            "integrator pt is listed twice"
+        );
         for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
             assert!(err(opts(all.clone(), time(bad, 12)), &reference).contains("(--time) must be a positive"));
         }
@@ -328,21 +349,39 @@ mod tests {
         }
         assert!(check(&opts(all.clone(), Schedule::Spp(vec![1, 4, 16])), &cam, &reference).is_ok());
         let small = RgbImage::new(128, 256);
-        assert_eq!(err(opts(all, time(1.0, 2)), &small), "the reference is 128x256 pixels but the camera renders 256x256 (match them with --width/--height)");
+        assert_eq!(
+            err(opts(all, time(1.0, 2)), &small),
+            "the reference is 128x256 pixels but the camera renders 256x256 (match them with --width/--height)"
+        );
     }
 
     #[test]
     fn csv_rows_and_file_names() {
         let p = |s: f64, n: u32, e: f64| Point { seconds: s, spp: n, rmse: e, rel_mse: 2.0 * e };
         let curves = vec![
-            Curve { integrator: Integrator::PtNee, points: vec![p(0.25, 1, 0.5), p(2.0, 8, 0.125)], image: RgbImage::new(1, 1), setup_s: 0.0, nan_samples: 0 },
-            Curve { integrator: Integrator::Bdpt(Join::K(4)), points: vec![p(1.5, 3, 0.25)], image: RgbImage::new(1, 1), setup_s: 0.0, nan_samples: 0 },
+            Curve {
+                integrator: Integrator::PtNee,
+                points: vec![p(0.25, 1, 0.5), p(2.0, 8, 0.125)],
+                image: RgbImage::new(1, 1),
+                setup_s: 0.0,
+                nan_samples: 0,
+            },
+            Curve {
+                integrator: Integrator::Bdpt(Join::K(4)),
+                points: vec![p(1.5, 3, 0.25)],
+                image: RgbImage::new(1, 1),
+                setup_s: 0.0,
+                nan_samples: 0,
+            },
         ];
         assert_eq!(
             csv(&curves),
             "integrator,seconds,spp,rmse,relmse\npt-nee,0.250000,1,0.5000000,1.0000000\npt-nee,2.000000,8,0.1250000,0.2500000\nbdpt:k=4,1.500000,3,0.2500000,0.5000000\n"
         );
-        let stems: Vec<String> = [Integrator::Pt, Integrator::PtNee, Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::K(1)), Integrator::Bdpt(Join::K(4))].map(file_stem).into();
+        let stems: Vec<String> =
+            [Integrator::Pt, Integrator::PtNee, Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::K(1)), Integrator::Bdpt(Join::K(4))]
+                .map(file_stem)
+                .into();
         assert_eq!(stems, ["pt", "pt-nee", "bdpt_full", "bdpt_single", "bdpt_k4"]);
     }
 }

@@ -4,9 +4,9 @@
 //! traversal kernel timed with GPU timestamps: warm-up runs, then repetitions, median.
 
 use super::median;
+use crate::bvh::BvhError;
 use crate::bvh::{BuildOptions, Bvh, BvhLayout, TriTest};
 use crate::gpu::abi::GpuCamera;
-use crate::bvh::BvhError;
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::render::GpuScene;
 use crate::scene::Scene;
@@ -170,11 +170,13 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         let (rays, count, any_hit): (&Buffer, u32, bool) = match kind {
             RayKind::Primary => (&primary, n, false),
             RayKind::Shadow => {
-                let c = timing.secondary(ctx, &gbvh, Secondary::Shadow, light, 1, &primary, &primary_hits, n, &scratch, &flags, &secondary)?;
+                let c =
+                    timing.secondary(ctx, &gbvh, Secondary::Shadow, light, 1, &primary, &primary_hits, n, &scratch, &flags, &secondary)?;
                 (&secondary, c, true)
             }
             RayKind::Diffuse => {
-                let c = timing.secondary(ctx, &gbvh, Secondary::Diffuse, light, 2, &primary, &primary_hits, n, &scratch, &flags, &secondary)?;
+                let c =
+                    timing.secondary(ctx, &gbvh, Secondary::Diffuse, light, 2, &primary, &primary_hits, n, &scratch, &flags, &secondary)?;
                 (&secondary, c, false)
             }
         };
@@ -307,7 +309,10 @@ impl Report {
             self.bvh_depth,
             self.bvh_bytes as f64 / (1 << 20) as f64
         );
-        println!("{:<8} {:>10} {:>10} {:>12} {:>11} {:>10} {:>6}", "rays", "count", "median ms", "Mrays/s", "nodes/ray", "tris/ray", "hit %");
+        println!(
+            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>10} {:>6}",
+            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "tris/ray", "hit %"
+        );
         for r in &self.results {
             println!(
                 "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>10.1} {:>6.1}",

@@ -42,7 +42,14 @@ impl<'a> CpuTracer<'a> {
     /// As `closest`, counting only hits `accept(original triangle, hit)` keeps (alpha masks:
     /// false where the texture is transparent); a rejected hit neither shortens the ray nor
     /// ends the search.
-    pub fn closest_where(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, accept: impl Fn(u32, &TriHit) -> bool) -> Option<(u32, TriHit)> {
+    pub fn closest_where(
+        &self,
+        origin: Vec3,
+        dir: Vec3,
+        tmin: f32,
+        tmax: f32,
+        accept: impl Fn(u32, &TriHit) -> bool,
+    ) -> Option<(u32, TriHit)> {
         let pr = PreparedRay::new(origin, dir, tmin);
         let ray = Ray::new(origin.into(), dir.into(), tmin, tmax);
         let mut best: Option<(u32, TriHit)> = None;
@@ -70,7 +77,9 @@ impl<'a> CpuTracer<'a> {
         let src = &self.bvh.source;
         !src.ray_traverse_miss(ray, |r, id| {
             let orig = src.primitive_indices[id];
-            intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax).filter(|h| accept(orig, h)).map_or(f32::INFINITY, |h| h.t)
+            intersect::intersect(self.test, &pr, &self.tris[orig as usize], r.tmax)
+                .filter(|h| accept(orig, h))
+                .map_or(f32::INFINITY, |h| h.t)
         })
     }
 }

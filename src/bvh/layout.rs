@@ -95,13 +95,30 @@ pub(crate) fn convert(src: Bvh2, positions: &[Vec3], triangles: &[[u32; 3]], tes
         return Err(BvhError::TooDeep { depth, max: abi::TRAVERSAL_STACK_SIZE });
     }
     let (nodes, tris, tri_ids, leaves) = (b.nodes, b.tris, b.tri_ids, b.leaves);
-    Ok(Bvh { layout: BvhLayout::Bvh2, nodes, wide_nodes: Vec::new(), tris, tri_ids, tri_test: test, depth, leaves, build_time: Duration::ZERO, source: src })
+    Ok(Bvh {
+        layout: BvhLayout::Bvh2,
+        nodes,
+        wide_nodes: Vec::new(),
+        tris,
+        tri_ids,
+        tri_test: test,
+        depth,
+        leaves,
+        build_time: Duration::ZERO,
+        source: src,
+    })
 }
 
 /// obvhs' BVH2 (one triangle per leaf) to its compressed 8-wide BVH (leaves of up to
 /// `max_leaf_tris` <= 3 triangles, children ordered for the ray octant), nodes copied byte
 /// for byte, triangles in its primitive order.
-pub(crate) fn convert_wide(src: Bvh2, positions: &[Vec3], triangles: &[[u32; 3]], test: TriTest, max_leaf_tris: u32) -> Result<Bvh, BvhError> {
+pub(crate) fn convert_wide(
+    src: Bvh2,
+    positions: &[Vec3],
+    triangles: &[[u32; 3]],
+    test: TriTest,
+    max_leaf_tris: u32,
+) -> Result<Bvh, BvhError> {
     let wide = obvhs::cwbvh::bvh2_to_cwbvh::bvh2_to_cwbvh(&src, max_leaf_tris.clamp(1, 3), true, false);
     let wide_nodes: Vec<CwbvhNode> = wide.nodes.iter().map(|n| bytemuck::cast::<obvhs::cwbvh::node::CwBvhNode, CwbvhNode>(*n)).collect();
     let tri_ids = wide.primitive_indices.clone();
@@ -136,7 +153,18 @@ pub(crate) fn convert_wide(src: Bvh2, positions: &[Vec3], triangles: &[[u32; 3]]
     if 2 * (depth + 1) > abi::CWBVH_STACK_SIZE as usize {
         return Err(BvhError::TooDeep { depth, max: abi::CWBVH_STACK_SIZE });
     }
-    Ok(Bvh { layout: BvhLayout::Cwbvh, nodes: Vec::new(), wide_nodes, tris, tri_ids, tri_test: test, depth, leaves, build_time: Duration::ZERO, source: src })
+    Ok(Bvh {
+        layout: BvhLayout::Cwbvh,
+        nodes: Vec::new(),
+        wide_nodes,
+        tris,
+        tri_ids,
+        tri_test: test,
+        depth,
+        leaves,
+        build_time: Duration::ZERO,
+        source: src,
+    })
 }
 
 #[cfg(test)]

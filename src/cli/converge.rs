@@ -84,7 +84,13 @@ pub fn run(args: &ConvergeArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     result
 }
 
-fn render_and_write(args: &ConvergeArgs, ctx: &Context, loaded: &super::scene_args::LoadedScene, reference: &film::RgbImage, options: &Options) -> anyhow::Result<()> {
+fn render_and_write(
+    args: &ConvergeArgs,
+    ctx: &Context,
+    loaded: &super::scene_args::LoadedScene,
+    reference: &film::RgbImage,
+    options: &Options,
+) -> anyhow::Result<()> {
     let device = ctx.info().name.clone();
     let cam = &loaded.camera;
     println!("{device}, {} {}x{}: integrator, seconds, spp, RMSE, relMSE", loaded.scene.source, cam.width, cam.height);

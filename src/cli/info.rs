@@ -57,11 +57,8 @@ fn devices(opts: &ContextOptions) -> anyhow::Result<()> {
             String::new()
         };
         println!("  subgroup:      size {}{sg_range}; ops: {}", d.subgroup_size, d.subgroup_ops.names().join(" "));
-        let heaps: Vec<String> = d
-            .memory_heaps
-            .iter()
-            .map(|h| format!("{}{}", gib(h.bytes), if h.device_local { " device-local" } else { " host" }))
-            .collect();
+        let heaps: Vec<String> =
+            d.memory_heaps.iter().map(|h| format!("{}{}", gib(h.bytes), if h.device_local { " device-local" } else { " host" })).collect();
         println!("  memory heaps:  {}", heaps.join(", "));
         println!(
             "  limits:        storage buffer {} MiB, shared memory {} KiB, workgroup {} invocations, timestamps {} bits @ {} ns",
@@ -71,7 +68,11 @@ fn devices(opts: &ContextOptions) -> anyhow::Result<()> {
             d.timestamp_valid_bits,
             d.timestamp_period_ns
         );
-        println!("  features:      atomic float add {}, int64 {}", if d.atomic_float_add { "yes" } else { "no" }, if d.shader_int64 { "yes" } else { "no" });
+        println!(
+            "  features:      atomic float add {}, int64 {}",
+            if d.atomic_float_add { "yes" } else { "no" },
+            if d.shader_int64 { "yes" } else { "no" }
+        );
         if !d.usable() {
             println!("  not usable:    lacks {}", d.missing.join(", "));
         }

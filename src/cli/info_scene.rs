@@ -93,7 +93,14 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
         );
     }
     for l in &s.punctual_lights {
-        println!("  punctual {:?} \"{}\": position {} direction {} intensity {}", l.kind, l.name, fmt_vec(l.position), fmt_vec(l.direction), fmt_vec(l.intensity));
+        println!(
+            "  punctual {:?} \"{}\": position {} direction {} intensity {}",
+            l.kind,
+            l.name,
+            fmt_vec(l.position),
+            fmt_vec(l.direction),
+            fmt_vec(l.intensity)
+        );
     }
     if let Some(e) = &s.environment {
         println!("environment:  {} ({}x{}, scale {}, rotated {} deg)", e.source, e.width, e.height, e.scale, e.rotate_deg);
@@ -102,13 +109,7 @@ pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
         println!("  added {name}: --quad-light \"{quad}\" (area {:.4}, front {})", quad.area(), fmt_vec(quad.front()));
     }
     let srgb = s.textures.iter().filter(|t| t.srgb).count();
-    println!(
-        "textures:     {} ({} sRGB, {} linear), {}",
-        s.textures.len(),
-        srgb,
-        s.textures.len() - srgb,
-        bytes(s.texture_bytes())
-    );
+    println!("textures:     {} ({} sRGB, {} linear), {}", s.textures.len(), srgb, s.textures.len() - srgb, bytes(s.texture_bytes()));
     let b = s.bounds();
     println!("bounds:       min {} max {} (size {})", fmt_vec(b.min), fmt_vec(b.max), fmt_vec(b.diagonal()));
     println!("cameras:      {}", s.cameras.len());

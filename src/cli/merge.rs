@@ -21,12 +21,7 @@ pub struct MergeArgs {
 pub fn run(args: &MergeArgs) -> anyhow::Result<()> {
     let mut exr = None;
     for o in &args.outputs {
-        match o
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase)
-            .as_deref()
-        {
+        match o.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
             Some("exr") if exr.is_none() => exr = Some(o),
             Some("exr") => bail!("{}: give one .exr output (and PNGs)", o.display()),
             Some("png") => {}
@@ -36,11 +31,7 @@ pub fn run(args: &MergeArgs) -> anyhow::Result<()> {
     let start = std::time::Instant::now();
     // Every header is checked before a pixel is read or anything written; then the parts
     // are read and added one at a time.
-    let headers = args
-        .parts
-        .iter()
-        .map(|p| Ok((p.clone(), part::read_part_header(p)?)))
-        .collect::<anyhow::Result<Vec<_>>>()?;
+    let headers = args.parts.iter().map(|p| Ok((p.clone(), part::read_part_header(p)?))).collect::<anyhow::Result<Vec<_>>>()?;
     let plan = merge::plan(&headers)?;
     for w in &plan.warnings {
         eprintln!("warning: {w}");
@@ -82,23 +73,14 @@ pub fn run(args: &MergeArgs) -> anyhow::Result<()> {
 /// `bidir info IMAGE.exr`: the render's metadata.
 pub fn info(path: &Path) -> anyhow::Result<()> {
     let p = part::read_part(path)?;
-    println!(
-        "{}: {}x{} pixels",
-        path.display(),
-        p.sums.width,
-        p.sums.height
-    );
+    println!("{}: {}x{} pixels", path.display(), p.sums.width, p.sums.height);
     for (k, v) in &p.info.entries {
         println!("  {k:<14} {v}");
     }
     println!(
         "  {:<14} {}",
         "channels",
-        if p.sums.light.is_some() {
-            "R G B, camera.R/G/B/N, light.R/G/B"
-        } else {
-            "R G B, camera.R/G/B/N"
-        }
+        if p.sums.light.is_some() { "R G B, camera.R/G/B/N, light.R/G/B" } else { "R G B, camera.R/G/B/N" }
     );
     Ok(())
 }

@@ -23,14 +23,9 @@ pub struct PartArgs {
 impl PartArgs {
     /// Sets the sample start and crop of `settings`; a crop outside `camera`'s image is an
     /// error before any GPU work.
-    pub fn apply(
-        &self,
-        settings: &mut RenderSettings,
-        camera: &bidir::scene::Camera,
-    ) -> anyhow::Result<()> {
+    pub fn apply(&self, settings: &mut RenderSettings, camera: &bidir::scene::Camera) -> anyhow::Result<()> {
         if let Some(c) = self.crop {
-            c.check(camera.width, camera.height)
-                .map_err(|e| anyhow::anyhow!("--crop: {e}"))?;
+            c.check(camera.width, camera.height).map_err(|e| anyhow::anyhow!("--crop: {e}"))?;
         }
         settings.sample_start = self.sample_range.map_or(0, |r| r.start);
         settings.crop = self.crop;
@@ -51,32 +46,20 @@ fn fnv1a(mut h: u64, bytes: &[u8]) -> u64 {
 pub fn scene_hash(scene: &Scene) -> String {
     let mut h = 0xcbf2_9ce4_8422_2325u64;
     h = fnv1a(h, bytemuck::cast_slice(&scene.positions));
-    h = fnv1a(
-        h,
-        bytemuck::cast_slice(scene.normals.as_deref().unwrap_or(&[])),
-    );
+    h = fnv1a(h, bytemuck::cast_slice(scene.normals.as_deref().unwrap_or(&[])));
     h = fnv1a(h, bytemuck::cast_slice(scene.uvs.as_deref().unwrap_or(&[])));
     h = fnv1a(h, bytemuck::cast_slice(&scene.triangles));
     h = fnv1a(h, bytemuck::cast_slice(&scene.material_ids));
     h = fnv1a(h, format!("{:?}", scene.materials).as_bytes());
     for t in &scene.textures {
-        h = fnv1a(
-            h,
-            format!("{} {}x{} {}", t.name, t.width, t.height, t.srgb).as_bytes(),
-        );
+        h = fnv1a(h, format!("{} {}x{} {}", t.name, t.width, t.height, t.srgb).as_bytes());
         h = fnv1a(h, &t.rgba8);
     }
     format!("{h:016x}")
 }
 
 /// Metadata of a finished render (see `film::part::keys`).
-pub fn render_info(
-    loaded: &LoadedScene,
-    settings: &RenderSettings,
-    samples: SampleRange,
-    seconds: f64,
-    device: &str,
-) -> RenderInfo {
+pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: SampleRange, seconds: f64, device: &str) -> RenderInfo {
     let c = &loaded.camera;
     let s = settings;
     let mut info = RenderInfo::default();
@@ -87,33 +70,15 @@ pub fn render_info(
         keys::CAMERA,
         format!(
             "eye {} {} {} target {} {} {} up {} {} {} fov_y {}",
-            c.eye.x,
-            c.eye.y,
-            c.eye.z,
-            c.target.x,
-            c.target.y,
-            c.target.z,
-            c.up.x,
-            c.up.y,
-            c.up.z,
-            c.fov_y_deg
+            c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fov_y_deg
         ),
     );
     info.set(keys::FULL_SIZE, format!("{}x{}", c.width, c.height));
-    info.set(
-        keys::CROP,
-        s.crop.unwrap_or(Crop::full(c.width, c.height)).to_string(),
-    );
+    info.set(keys::CROP, s.crop.unwrap_or(Crop::full(c.width, c.height)).to_string());
     info.set(keys::INTEGRATOR, s.integrator.name());
-    let mut set = format!(
-        "sampler {:?} max_depth {} rr_depth {} tri_test {:?}",
-        s.sampler, s.max_depth, s.rr_depth, s.bvh.tri_test
-    );
+    let mut set = format!("sampler {:?} max_depth {} rr_depth {} tri_test {:?}", s.sampler, s.max_depth, s.rr_depth, s.bvh.tri_test);
     if let bidir::render::Integrator::Bdpt(_) = s.integrator {
-        set += &format!(
-            " light_path_len {} light_paths {}",
-            s.light_path_len, s.light_path_ratio
-        );
+        set += &format!(" light_path_len {} light_paths {}", s.light_path_len, s.light_path_ratio);
     }
     info.set(keys::SETTINGS, set);
     info.set(keys::SEED, s.seed.to_string());
@@ -135,12 +100,7 @@ pub fn write_outputs(
     exposure: f32,
 ) -> anyhow::Result<()> {
     for o in outputs {
-        match o
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase)
-            .as_deref()
-        {
+        match o.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
             Some("exr") => bidir::film::part::write_part(o, sums, info, crop)?,
             _ => bidir::film::write_image(o, img, exposure)?,
         }
@@ -151,8 +111,7 @@ pub fn write_outputs(
 /// BDPT iterations hold `slices` samples, starting at multiples of it: a range that starts or
 /// ends elsewhere is still an unbiased part, but not the whole render's iterations exactly.
 pub fn warn_unaligned(args: &PartArgs, settings: &RenderSettings, slices: u32) {
-    if let (Some(r), bidir::render::Integrator::Bdpt(_)) = (args.sample_range, settings.integrator)
-    {
+    if let (Some(r), bidir::render::Integrator::Bdpt(_)) = (args.sample_range, settings.integrator) {
         if slices > 1 && (r.start % slices != 0 || r.end % slices != 0) {
             eprintln!("warning: BDPT renders {slices} samples per iteration here: sample range {r} does not start and end at multiples of {slices}, so merged parts will equal a whole render in expectation, not pixel for pixel (give --sample-slices, or align the ranges)");
         }

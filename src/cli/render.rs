@@ -164,7 +164,14 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     );
     if let Some(reference) = reference {
         let ratio = metrics::mean_ratio(&img, &reference);
-        println!("RMSE {:.5}, relMSE {:.5}, mean ratio {:.4} {:.4} {:.4}", metrics::rmse(&img, &reference), metrics::rel_mse(&img, &reference), ratio[0], ratio[1], ratio[2]);
+        println!(
+            "RMSE {:.5}, relMSE {:.5}, mean ratio {:.4} {:.4} {:.4}",
+            metrics::rmse(&img, &reference),
+            metrics::rel_mse(&img, &reference),
+            ratio[0],
+            ratio[1],
+            ratio[2]
+        );
     }
     for o in &outputs {
         println!("wrote {}", o.display());

@@ -21,28 +21,14 @@ pub fn device_list(opts: &ContextOptions) -> anyhow::Result<Option<Vec<ContextOp
     }
     let devices = vk::list_devices().context("cannot list Vulkan devices")?;
     let picked: Vec<usize> = if sel == "all" {
-        devices
-            .iter()
-            .filter(|d| d.usable())
-            .map(|d| d.index)
-            .collect()
+        devices.iter().filter(|d| d.usable()).map(|d| d.index).collect()
     } else {
-        sel.split(',')
-            .map(|s| vk::choose_device(&devices, Some(s)).map(|i| devices[i].index))
-            .collect::<Result<_, _>>()?
+        sel.split(',').map(|s| vk::choose_device(&devices, Some(s)).map(|i| devices[i].index)).collect::<Result<_, _>>()?
     };
     if picked.is_empty() {
         bail!("--device {sel}: no usable Vulkan device");
     }
-    Ok(Some(
-        picked
-            .into_iter()
-            .map(|i| ContextOptions {
-                device: Some(i.to_string()),
-                ..opts.clone()
-            })
-            .collect(),
-    ))
+    Ok(Some(picked.into_iter().map(|i| ContextOptions { device: Some(i.to_string()), ..opts.clone() }).collect()))
 }
 
 /// Renders `spp` samples on `devices` and writes the outputs.
@@ -57,26 +43,17 @@ pub fn run(
     if args.time.is_some() {
         bail!("--time renders on one device; give --spp or --sample-range with several devices");
     }
-    let spp = args
-        .part
-        .sample_range
-        .map_or(args.spp.unwrap_or(64), |r| r.len());
+    let spp = args.part.sample_range.map_or(args.spp.unwrap_or(64), |r| r.len());
     if spp == 0 {
         bail!("--spp must be at least 1");
     }
     let camera = &loaded.camera;
-    let pixels = settings
-        .crop
-        .map_or(camera.width as f64 * camera.height as f64, |c| {
-            c.pixels() as f64
-        });
+    let pixels = settings.crop.map_or(camera.width as f64 * camera.height as f64, |c| c.pixels() as f64);
     let bar = indicatif::ProgressBar::new(spp as u64);
     bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{elapsed_precise} [{bar:32}] {pos}/{len} spp {msg}",
-        )
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
-        .progress_chars("=> "),
+        indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:32}] {pos}/{len} spp {msg}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+            .progress_chars("=> "),
     );
     let rates = |p: &[multi::DeviceProgress]| {
         p.iter()
@@ -101,22 +78,11 @@ pub fn run(
     for m in &done.validation {
         eprintln!("validation: {m}");
     }
-    let range = SampleRange {
-        start: settings.sample_start,
-        end: settings.sample_start + spp,
-    };
+    let range = SampleRange { start: settings.sample_start, end: settings.sample_start + spp };
     let names: Vec<&str> = done.devices.iter().map(|d| d.name.as_str()).collect();
-    let info = part_args::render_info(
-        loaded,
-        settings,
-        range,
-        elapsed.as_secs_f64(),
-        &names.join(", "),
-    );
+    let info = part_args::render_info(loaded, settings, range, elapsed.as_secs_f64(), &names.join(", "));
     let img = done.sums.resolve();
-    let crop = settings
-        .crop
-        .unwrap_or(film::Crop::full(camera.width, camera.height));
+    let crop = settings.crop.unwrap_or(film::Crop::full(camera.width, camera.height));
     part_args::write_outputs(outputs, &done.sums, &img, &info, crop, args.exposure)?;
     println!(
         "{} devices, {}x{} {}: {spp} spp in {:.3} s ({:.2} Msamples/s), {} NaN/Inf samples dropped",
@@ -131,19 +97,9 @@ pub fn run(
     println!("{}", rates(&done.devices));
     if let Some(reference) = reference {
         if reference.width != img.width || reference.height != img.height {
-            bail!(
-                "reference is {}x{}, the render {}x{}",
-                reference.width,
-                reference.height,
-                img.width,
-                img.height
-            );
+            bail!("reference is {}x{}, the render {}x{}", reference.width, reference.height, img.width, img.height);
         }
-        println!(
-            "RMSE {:.5}, relMSE {:.5}",
-            metrics::rmse(&img, &reference),
-            metrics::rel_mse(&img, &reference)
-        );
+        println!("RMSE {:.5}, relMSE {:.5}", metrics::rmse(&img, &reference), metrics::rel_mse(&img, &reference));
     }
     for o in outputs {
         println!("wrote {}", o.display());

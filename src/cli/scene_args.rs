@@ -178,7 +178,12 @@ impl SceneArgs {
                     let (w, h) = DEFAULT_IMAGE_SIZE;
                     let (w, h) = (self.width.unwrap_or(w), self.height.unwrap_or(h));
                     // glTF assets face +Z: look at their front, toward -Z.
-                    let gltf = self.scene.as_ref().and_then(|p| p.extension()).and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"));
+                    let gltf = self
+                        .scene
+                        .as_ref()
+                        .and_then(|p| p.extension())
+                        .and_then(|e| e.to_str())
+                        .is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"));
                     let look = if gltf { -Vec3::Z } else { Vec3::Z };
                     (Camera::framing_along(&scene.bounds(), w, h, look), None)
                 }

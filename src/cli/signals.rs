@@ -37,7 +37,9 @@ pub fn on_interrupt(first: FirstInterrupt) -> anyhow::Result<()> {
             count += 1;
             if count == 1 && first == FirstInterrupt::FinishPass {
                 bidir::render::request_stop();
-                eprintln!("\ninterrupted: finishing the current pass, then writing what was rendered (Ctrl-C again aborts without writing)");
+                eprintln!(
+                    "\ninterrupted: finishing the current pass, then writing what was rendered (Ctrl-C again aborts without writing)"
+                );
             } else {
                 let removed = bidir::film::abort_writes();
                 let note = if removed > 0 { format!(" ({removed} partial file(s) removed)") } else { String::new() };

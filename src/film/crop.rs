@@ -13,12 +13,7 @@ pub struct Crop {
 impl Crop {
     /// The whole image.
     pub fn full(width: u32, height: u32) -> Crop {
-        Crop {
-            x0: 0,
-            y0: 0,
-            x1: width,
-            y1: height,
-        }
+        Crop { x0: 0, y0: 0, x1: width, y1: height }
     }
     pub fn width(&self) -> u32 {
         self.x1 - self.x0
@@ -35,9 +30,7 @@ impl Crop {
             return Err(format!("crop {self} is empty (X0 < X1 and Y0 < Y1 needed)"));
         }
         if self.x1 > width || self.y1 > height {
-            return Err(format!(
-                "crop {self} reaches outside the {width}x{height} image"
-            ));
+            return Err(format!("crop {self} reaches outside the {width}x{height} image"));
         }
         Ok(())
     }
@@ -47,12 +40,7 @@ impl Crop {
     }
     /// The smallest window holding both.
     pub fn union(&self, o: &Crop) -> Crop {
-        Crop {
-            x0: self.x0.min(o.x0),
-            y0: self.y0.min(o.y0),
-            x1: self.x1.max(o.x1),
-            y1: self.y1.max(o.y1),
-        }
+        Crop { x0: self.x0.min(o.x0), y0: self.y0.min(o.y0), x1: self.x1.max(o.x1), y1: self.y1.max(o.y1) }
     }
 }
 
@@ -73,9 +61,7 @@ impl std::str::FromStr for Crop {
             .map_err(|_| format!("crop '{s}' is not X0,Y0,X1,Y1 (four pixel numbers)"))?;
         match v[..] {
             [x0, y0, x1, y1] => Ok(Crop { x0, y0, x1, y1 }),
-            _ => Err(format!(
-                "crop '{s}' is not X0,Y0,X1,Y1 (four pixel numbers)"
-            )),
+            _ => Err(format!("crop '{s}' is not X0,Y0,X1,Y1 (four pixel numbers)")),
         }
     }
 }
@@ -108,10 +94,7 @@ impl std::str::FromStr for SampleRange {
     fn from_str(s: &str) -> Result<SampleRange, String> {
         let bad = || format!("sample range '{s}' is not START..END with START < END (e.g. 0..64)");
         let (a, b) = s.split_once("..").ok_or_else(bad)?;
-        let (start, end) = (
-            a.trim().parse::<u32>().map_err(|_| bad())?,
-            b.trim().parse::<u32>().map_err(|_| bad())?,
-        );
+        let (start, end) = (a.trim().parse::<u32>().map_err(|_| bad())?, b.trim().parse::<u32>().map_err(|_| bad())?);
         if start >= end {
             return Err(bad());
         }
@@ -125,15 +108,7 @@ mod tests {
     #[test]
     fn parse_and_check() {
         let c: Crop = "0,8,16,32".parse().unwrap();
-        assert_eq!(
-            c,
-            Crop {
-                x0: 0,
-                y0: 8,
-                x1: 16,
-                y1: 32
-            }
-        );
+        assert_eq!(c, Crop { x0: 0, y0: 8, x1: 16, y1: 32 });
         assert_eq!((c.width(), c.height()), (16, 24));
         assert!(c.check(16, 32).is_ok());
         assert!(c.check(15, 32).is_err());

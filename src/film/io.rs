@@ -92,8 +92,7 @@ pub fn check_writable(path: &Path) -> Result<(), ImageIoError> {
 
 /// The temporary file beside `path`: hidden, named for this process.
 fn temporary_path(path: &Path) -> Result<PathBuf, ImageIoError> {
-    let file_name =
-        path.file_name().ok_or_else(|| ImageIoError::Write { path: path.to_path_buf(), msg: "not a file path".into() })?;
+    let file_name = path.file_name().ok_or_else(|| ImageIoError::Write { path: path.to_path_buf(), msg: "not a file path".into() })?;
     let mut tmp_name = std::ffi::OsString::from(".");
     tmp_name.push(file_name);
     tmp_name.push(format!(".{}.tmp", std::process::id()));

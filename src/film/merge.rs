@@ -13,10 +13,7 @@ pub struct Merged {
 }
 
 fn names(parts: &[(PathBuf, PartHeader)], idx: &[usize]) -> String {
-    idx.iter()
-        .map(|&i| parts[i].0.display().to_string())
-        .collect::<Vec<_>>()
-        .join(", ")
+    idx.iter().map(|&i| parts[i].0.display().to_string()).collect::<Vec<_>>().join(", ")
 }
 
 /// Merges `parts` (path, part). Refused, naming the files: parts that differ in any of
@@ -26,10 +23,7 @@ fn names(parts: &[(PathBuf, PartHeader)], idx: &[usize]) -> String {
 /// rectangle the windows span, are reported as warnings (the merge is still an unbiased
 /// estimate, with fewer samples; or a crop of the image).
 pub fn merge(parts: &[(PathBuf, Part)]) -> Result<Merged, PartError> {
-    let headers: Vec<(PathBuf, PartHeader)> = parts
-        .iter()
-        .map(|(p, part)| (p.clone(), part.header()))
-        .collect();
+    let headers: Vec<(PathBuf, PartHeader)> = parts.iter().map(|(p, part)| (p.clone(), part.header())).collect();
     let plan = plan(&headers)?;
     let mut sums = plan.empty();
     for (_, p) in parts {
@@ -47,11 +41,7 @@ pub struct Plan {
 impl Plan {
     /// The merged window's sums, zero.
     pub fn empty(&self) -> Accumulation {
-        let mut a = Accumulation::new(
-            self.header.crop.width(),
-            self.header.crop.height(),
-            self.header.has_light,
-        );
+        let mut a = Accumulation::new(self.header.crop.width(), self.header.crop.height(), self.header.has_light);
         a.spp = self.header.ranges.iter().map(|r| r.len() as u64).sum();
         a
     }
@@ -62,16 +52,7 @@ impl Plan {
     }
     pub fn finish(self, sums: Accumulation) -> Merged {
         let h = self.header;
-        Merged {
-            part: Part {
-                info: h.info,
-                full: h.full,
-                crop: h.crop,
-                ranges: h.ranges,
-                sums,
-            },
-            warnings: self.warnings,
-        }
+        Merged { part: Part { info: h.info, full: h.full, crop: h.crop, ranges: h.ranges, sums }, warnings: self.warnings }
     }
 }
 
@@ -84,24 +65,13 @@ pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
     };
     for (path, p) in &parts[1..] {
         for key in keys::MUST_MATCH {
-            let (a, b) = (
-                first.info.get(key).unwrap_or("(none)"),
-                p.info.get(key).unwrap_or("(none)"),
-            );
+            let (a, b) = (first.info.get(key).unwrap_or("(none)"), p.info.get(key).unwrap_or("(none)"));
             if a != b {
-                return merr(format!(
-                    "{key} differs: {} has '{a}', {} has '{b}'",
-                    first_path.display(),
-                    path.display()
-                ));
+                return merr(format!("{key} differs: {} has '{a}', {} has '{b}'", first_path.display(), path.display()));
             }
         }
         if p.has_light != first.has_light {
-            return merr(format!(
-                "{} has light-tracing sums and {} has none",
-                first_path.display(),
-                path.display()
-            ));
+            return merr(format!("{} has light-tracing sums and {} has none", first_path.display(), path.display()));
         }
     }
     // Windows, each with its parts' sample ranges.
@@ -111,10 +81,7 @@ pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
     }
     let mut window_ranges: Vec<(Crop, Vec<usize>, Vec<SampleRange>)> = Vec::new();
     for (crop, idx) in &windows {
-        let mut ranges: Vec<(SampleRange, usize)> = idx
-            .iter()
-            .flat_map(|&i| parts[i].1.ranges.iter().map(move |r| (*r, i)))
-            .collect();
+        let mut ranges: Vec<(SampleRange, usize)> = idx.iter().flat_map(|&i| parts[i].1.ranges.iter().map(move |r| (*r, i))).collect();
         ranges.sort();
         for w in ranges.windows(2) {
             if w[1].0.start < w[0].0.end {
@@ -127,25 +94,11 @@ pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
                 ));
             }
         }
-        window_ranges.push((
-            *crop,
-            idx.clone(),
-            ranges.into_iter().map(|r| r.0).collect(),
-        ));
+        window_ranges.push((*crop, idx.clone(), ranges.into_iter().map(|r| r.0).collect()));
     }
-    for (a, b) in window_ranges
-        .iter()
-        .enumerate()
-        .flat_map(|(i, a)| window_ranges[i + 1..].iter().map(move |b| (a, b)))
-    {
+    for (a, b) in window_ranges.iter().enumerate().flat_map(|(i, a)| window_ranges[i + 1..].iter().map(move |b| (a, b))) {
         if a.0.overlaps(&b.0) {
-            return merr(format!(
-                "tiles {} (crop {}) and {} (crop {}) overlap",
-                names(parts, &a.1),
-                a.0,
-                names(parts, &b.1),
-                b.0
-            ));
+            return merr(format!("tiles {} (crop {}) and {} (crop {}) overlap", names(parts, &a.1), a.0, names(parts, &b.1), b.0));
         }
         if a.2 != b.2 {
             return merr(format!(
@@ -159,25 +112,25 @@ pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
             ));
         }
     }
-    let bounds = window_ranges
-        .iter()
-        .fold(window_ranges[0].0, |u, w| u.union(&w.0));
+    let bounds = window_ranges.iter().fold(window_ranges[0].0, |u, w| u.union(&w.0));
     let covered: u64 = window_ranges.iter().map(|w| w.0.pixels()).sum();
     if covered != bounds.pixels() {
         let hole = (bounds.y0..bounds.y1)
             .flat_map(|y| (bounds.x0..bounds.x1).map(move |x| (x, y)))
-            .find(|&(x, y)| {
-                !window_ranges
-                    .iter()
-                    .any(|w| x >= w.0.x0 && x < w.0.x1 && y >= w.0.y0 && y < w.0.y1)
-            });
+            .find(|&(x, y)| !window_ranges.iter().any(|w| x >= w.0.x0 && x < w.0.x1 && y >= w.0.y0 && y < w.0.y1));
         let (x, y) = hole.unwrap_or_default();
-        return merr(format!("tiles are missing: they cover {covered} of the {} pixels of window {bounds} (pixel {x},{y} is in none)", bounds.pixels()));
+        return merr(format!(
+            "tiles are missing: they cover {covered} of the {} pixels of window {bounds} (pixel {x},{y} is in none)",
+            bounds.pixels()
+        ));
     }
     let ranges = window_ranges[0].2.clone();
     let mut warnings = Vec::new();
     if bounds != Crop::full(first.full.0, first.full.1) {
-        warnings.push(format!("the parts cover window {bounds} of the {}x{} image, not all of it: the merge is that window", first.full.0, first.full.1));
+        warnings.push(format!(
+            "the parts cover window {bounds} of the {}x{} image, not all of it: the merge is that window",
+            first.full.0, first.full.1
+        ));
     }
     for w in ranges.windows(2) {
         if w[0].end < w[1].start {
@@ -202,20 +155,8 @@ pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
     info.set(keys::CROP, bounds.to_string());
     info.set(keys::SAMPLE_RANGE, format_ranges(&joined));
     info.set(keys::SPP, spp.to_string());
-    let time: f64 = parts
-        .iter()
-        .filter_map(|(_, p)| p.info.get(keys::RENDER_TIME)?.parse::<f64>().ok())
-        .sum();
+    let time: f64 = parts.iter().filter_map(|(_, p)| p.info.get(keys::RENDER_TIME)?.parse::<f64>().ok()).sum();
     info.set(keys::RENDER_TIME, format!("{time:.3}"));
     info.set(keys::MERGED_FROM, parts.len().to_string());
-    Ok(Plan {
-        header: PartHeader {
-            info,
-            full: first.full,
-            crop: bounds,
-            ranges: joined,
-            has_light: first.has_light,
-        },
-        warnings,
-    })
+    Ok(Plan { header: PartHeader { info, full: first.full, crop: bounds, ranges: joined, has_light: first.has_light }, warnings })
 }

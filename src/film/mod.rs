@@ -9,8 +9,7 @@ pub mod part;
 
 pub use crop::{Crop, SampleRange};
 pub use io::{
-    abort_writes, check_writable, linear_to_srgb, read_exr, to_srgb8, write_atomically, write_image, write_png_rgb8,
-    ImageIoError,
+    abort_writes, check_writable, linear_to_srgb, read_exr, to_srgb8, write_atomically, write_image, write_png_rgb8, ImageIoError,
 };
 
 /// A linear RGB float image, rows top to bottom.

@@ -27,13 +27,7 @@ pub struct Accumulation {
 impl Accumulation {
     pub fn new(width: u32, height: u32, with_light: bool) -> Accumulation {
         let n = width as usize * height as usize;
-        Accumulation {
-            width,
-            height,
-            camera: vec![[0.0; 4]; n],
-            light: with_light.then(|| vec![[0.0; 3]; n]),
-            spp: 0,
-        }
+        Accumulation { width, height, camera: vec![[0.0; 4]; n], light: with_light.then(|| vec![[0.0; 3]; n]), spp: 0 }
     }
 
     /// The estimate: camera sums over their counts plus light sums over the samples.
@@ -54,10 +48,7 @@ impl Accumulation {
     pub fn add_at(&mut self, o: &Accumulation, at: (u32, u32)) {
         for y in 0..o.height {
             for x in 0..o.width {
-                let (src, dst) = (
-                    (y * o.width + x) as usize,
-                    ((y + at.1) * self.width + x + at.0) as usize,
-                );
+                let (src, dst) = ((y * o.width + x) as usize, ((y + at.1) * self.width + x + at.0) as usize);
                 for k in 0..4 {
                     self.camera[dst][k] += o.camera[src][k];
                 }
@@ -101,10 +92,7 @@ pub struct RenderInfo {
 
 impl RenderInfo {
     pub fn get(&self, key: &str) -> Option<&str> {
-        self.entries
-            .iter()
-            .find(|(k, _)| k == key)
-            .map(|(_, v)| v.as_str())
+        self.entries.iter().find(|(k, _)| k == key).map(|(_, v)| v.as_str())
     }
     /// Sets `key` (in place if present, else appended).
     pub fn set(&mut self, key: &str, value: impl Into<String>) {
@@ -118,11 +106,7 @@ impl RenderInfo {
 
 /// Sample ranges as `a..b,c..d`.
 pub fn format_ranges(ranges: &[SampleRange]) -> String {
-    ranges
-        .iter()
-        .map(|r| r.to_string())
-        .collect::<Vec<_>>()
-        .join(",")
+    ranges.iter().map(|r| r.to_string()).collect::<Vec<_>>().join(",")
 }
 
 /// A part read back: its metadata, window, sample ranges and sums.
@@ -168,74 +152,33 @@ pub enum PartError {
 }
 
 fn ferr(path: &Path, msg: impl Into<String>) -> PartError {
-    PartError::File {
-        path: path.to_path_buf(),
-        msg: msg.into(),
-    }
+    PartError::File { path: path.to_path_buf(), msg: msg.into() }
 }
 
 /// Writes a part: the estimate, the sums and `info` (which must name `full_size`, `crop`),
 /// atomically.
-pub fn write_part(
-    path: &Path,
-    sums: &Accumulation,
-    info: &RenderInfo,
-    crop: Crop,
-) -> Result<(), PartError> {
+pub fn write_part(path: &Path, sums: &Accumulation, info: &RenderInfo, crop: Crop) -> Result<(), PartError> {
     use exr::prelude::*;
     let img = sums.resolve();
     let (w, h) = (sums.width as usize, sums.height as usize);
     let mut channels: Vec<AnyChannel<FlatSamples>> = Vec::new();
-    let mut add =
-        |name: &str, v: Vec<f32>| channels.push(AnyChannel::new(name, FlatSamples::F32(v)));
+    let mut add = |name: &str, v: Vec<f32>| channels.push(AnyChannel::new(name, FlatSamples::F32(v)));
     for (k, c) in ["R", "G", "B"].iter().enumerate() {
         add(c, img.data.iter().skip(k).step_by(3).copied().collect());
-        add(
-            &format!("camera.{c}"),
-            sums.camera.iter().map(|p| p[k] as f32).collect(),
-        );
+        add(&format!("camera.{c}"), sums.camera.iter().map(|p| p[k] as f32).collect());
         if let Some(l) = &sums.light {
-            add(
-                &format!("light.{c}"),
-                l.iter().map(|p| p[k] as f32).collect(),
-            );
+            add(&format!("light.{c}"), l.iter().map(|p| p[k] as f32).collect());
         }
     }
-    add(
-        "camera.N",
-        sums.camera.iter().map(|p| p[3] as f32).collect(),
-    );
-    let mut attrs = LayerAttributes {
-        layer_position: Vec2(crop.x0 as i32, crop.y0 as i32),
-        ..LayerAttributes::default()
-    };
+    add("camera.N", sums.camera.iter().map(|p| p[3] as f32).collect());
+    let mut attrs = LayerAttributes { layer_position: Vec2(crop.x0 as i32, crop.y0 as i32), ..LayerAttributes::default() };
     for (k, v) in &info.entries {
-        attrs.other.insert(
-            Text::from(format!("{PREFIX}{k}").as_str()),
-            AttributeValue::Text(Text::from(v.as_str())),
-        );
+        attrs.other.insert(Text::from(format!("{PREFIX}{k}").as_str()), AttributeValue::Text(Text::from(v.as_str())));
     }
-    let layer = Layer::new(
-        (w, h),
-        attrs,
-        Encoding::default(),
-        AnyChannels::sort(SmallVec::from_vec(channels)),
-    );
-    let full = info
-        .get(keys::FULL_SIZE)
-        .and_then(parse_size)
-        .unwrap_or((crop.x1, crop.y1));
-    let image = Image::new(
-        ImageAttributes::new(IntegerBounds::new(
-            (0, 0),
-            (full.0 as usize, full.1 as usize),
-        )),
-        layer,
-    );
-    super::write_atomically(path, |tmp| {
-        image.write().to_file(tmp).map_err(|e| e.to_string())
-    })
-    .map_err(|e| ferr(path, e.to_string()))
+    let layer = Layer::new((w, h), attrs, Encoding::default(), AnyChannels::sort(SmallVec::from_vec(channels)));
+    let full = info.get(keys::FULL_SIZE).and_then(parse_size).unwrap_or((crop.x1, crop.y1));
+    let image = Image::new(ImageAttributes::new(IntegerBounds::new((0, 0), (full.0 as usize, full.1 as usize))), layer);
+    super::write_atomically(path, |tmp| image.write().to_file(tmp).map_err(|e| e.to_string())).map_err(|e| ferr(path, e.to_string()))
 }
 
 fn parse_size(s: &str) -> Option<(u32, u32)> {
@@ -244,20 +187,10 @@ fn parse_size(s: &str) -> Option<(u32, u32)> {
 }
 
 /// Text attributes `bidir.*` in print order.
-fn render_info<'a>(
-    attrs: impl Iterator<
-        Item = (
-            &'a exr::meta::attribute::Text,
-            &'a exr::meta::attribute::AttributeValue,
-        ),
-    >,
-) -> RenderInfo {
+fn render_info<'a>(attrs: impl Iterator<Item = (&'a exr::meta::attribute::Text, &'a exr::meta::attribute::AttributeValue)>) -> RenderInfo {
     let mut entries: Vec<(String, String)> = attrs
         .filter_map(|(k, v)| match v {
-            exr::meta::attribute::AttributeValue::Text(t) => k
-                .to_string()
-                .strip_prefix(PREFIX)
-                .map(|k| (k.to_string(), t.to_string())),
+            exr::meta::attribute::AttributeValue::Text(t) => k.to_string().strip_prefix(PREFIX).map(|k| (k.to_string(), t.to_string())),
             _ => None,
         })
         .collect();
@@ -278,35 +211,15 @@ fn render_info<'a>(
         keys::DEVICE,
         keys::MERGED_FROM,
     ];
-    entries.sort_by_key(|(k, _)| {
-        (
-            order.iter().position(|o| o == k).unwrap_or(order.len()),
-            k.clone(),
-        )
-    });
+    entries.sort_by_key(|(k, _)| (order.iter().position(|o| o == k).unwrap_or(order.len()), k.clone()));
     RenderInfo { entries }
 }
 
 /// The header of a part: metadata checked against the image's size and channels.
-fn header(
-    path: &Path,
-    info: RenderInfo,
-    size: (u32, u32),
-    channels: &[String],
-) -> Result<PartHeader, PartError> {
-    let need = |k: &str| {
-        info.get(k).ok_or_else(|| {
-            ferr(
-                path,
-                format!("no bidir.{k} attribute: not a part written by bidir render"),
-            )
-        })
-    };
-    let full = parse_size(need(keys::FULL_SIZE)?)
-        .ok_or_else(|| ferr(path, "bidir.full_size is not WxH"))?;
-    let crop: super::Crop = need(keys::CROP)?
-        .parse()
-        .map_err(|e: String| ferr(path, e))?;
+fn header(path: &Path, info: RenderInfo, size: (u32, u32), channels: &[String]) -> Result<PartHeader, PartError> {
+    let need = |k: &str| info.get(k).ok_or_else(|| ferr(path, format!("no bidir.{k} attribute: not a part written by bidir render")));
+    let full = parse_size(need(keys::FULL_SIZE)?).ok_or_else(|| ferr(path, "bidir.full_size is not WxH"))?;
+    let crop: super::Crop = need(keys::CROP)?.parse().map_err(|e: String| ferr(path, e))?;
     crop.check(full.0, full.1).map_err(|e| ferr(path, e))?;
     let ranges = need(keys::SAMPLE_RANGE)?
         .split(',')
@@ -314,59 +227,25 @@ fn header(
         .collect::<std::result::Result<Vec<_>, String>>()
         .map_err(|e| ferr(path, e))?;
     if size != (crop.width(), crop.height()) {
-        return Err(ferr(
-            path,
-            format!(
-                "the image is {}x{} but its crop {crop} is {}x{}",
-                size.0,
-                size.1,
-                crop.width(),
-                crop.height()
-            ),
-        ));
+        return Err(ferr(path, format!("the image is {}x{} but its crop {crop} is {}x{}", size.0, size.1, crop.width(), crop.height())));
     }
     for name in ["camera.R", "camera.G", "camera.B", "camera.N"] {
         if !channels.iter().any(|c| c == name) {
-            return Err(ferr(
-                path,
-                format!("no {name} channel: not a part written by bidir render"),
-            ));
+            return Err(ferr(path, format!("no {name} channel: not a part written by bidir render")));
         }
     }
-    let has_light = ["light.R", "light.G", "light.B"]
-        .iter()
-        .all(|l| channels.iter().any(|c| c == l));
-    Ok(PartHeader {
-        info,
-        full,
-        crop,
-        ranges,
-        has_light,
-    })
+    let has_light = ["light.R", "light.G", "light.B"].iter().all(|l| channels.iter().any(|c| c == l));
+    Ok(PartHeader { info, full, crop, ranges, has_light })
 }
 
 /// Reads only the header of a part written by [`write_part`] (for checks before reading
 /// pixels).
 pub fn read_part_header(path: &Path) -> Result<PartHeader, PartError> {
-    let meta = exr::meta::MetaData::read_from_file(path, false)
-        .map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
-    let h = meta
-        .headers
-        .first()
-        .ok_or_else(|| ferr(path, "no image layer"))?;
-    let info = render_info(
-        h.own_attributes
-            .other
-            .iter()
-            .chain(h.shared_attributes.other.iter()),
-    );
+    let meta = exr::meta::MetaData::read_from_file(path, false).map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
+    let h = meta.headers.first().ok_or_else(|| ferr(path, "no image layer"))?;
+    let info = render_info(h.own_attributes.other.iter().chain(h.shared_attributes.other.iter()));
     let channels: Vec<String> = h.channels.list.iter().map(|c| c.name.to_string()).collect();
-    header(
-        path,
-        info,
-        (h.layer_size.0 as u32, h.layer_size.1 as u32),
-        &channels,
-    )
+    header(path, info, (h.layer_size.0 as u32, h.layer_size.1 as u32), &channels)
 }
 
 /// Reads a part written by [`write_part`] (an EXR without bidir's sums is refused, naming
@@ -381,23 +260,9 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
         .all_attributes()
         .from_file(path)
         .map_err(|e| ferr(path, format!("cannot read EXR: {e}")))?;
-    let layer = image
-        .layer_data
-        .first()
-        .ok_or_else(|| ferr(path, "no image layer"))?;
-    let info = render_info(
-        layer
-            .attributes
-            .other
-            .iter()
-            .chain(image.attributes.other.iter()),
-    );
-    let names: Vec<String> = layer
-        .channel_data
-        .list
-        .iter()
-        .map(|c| c.name.to_string())
-        .collect();
+    let layer = image.layer_data.first().ok_or_else(|| ferr(path, "no image layer"))?;
+    let info = render_info(layer.attributes.other.iter().chain(image.attributes.other.iter()));
+    let names: Vec<String> = layer.channel_data.list.iter().map(|c| c.name.to_string()).collect();
     let (w, h) = (layer.size.0 as u32, layer.size.1 as u32);
     let head = header(path, info, (w, h), &names)?;
     let channel = |name: &str| -> Vec<f64> {
@@ -406,16 +271,9 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
             .list
             .iter()
             .find(|c| c.name.to_string() == name)
-            .map_or_else(Vec::new, |c| {
-                c.sample_data.values_as_f32().map(f64::from).collect()
-            })
+            .map_or_else(Vec::new, |c| c.sample_data.values_as_f32().map(f64::from).collect())
     };
-    let cam = [
-        channel("camera.R"),
-        channel("camera.G"),
-        channel("camera.B"),
-        channel("camera.N"),
-    ];
+    let cam = [channel("camera.R"), channel("camera.G"), channel("camera.B"), channel("camera.N")];
     let light = head.has_light.then(|| {
         let (r, g, b) = (channel("light.R"), channel("light.G"), channel("light.B"));
         (0..r.len()).map(|i| [r[i], g[i], b[i]]).collect()
@@ -424,17 +282,9 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
     let sums = Accumulation {
         width: w,
         height: h,
-        camera: (0..cam[0].len())
-            .map(|i| [cam[0][i], cam[1][i], cam[2][i], cam[3][i]])
-            .collect(),
+        camera: (0..cam[0].len()).map(|i| [cam[0][i], cam[1][i], cam[2][i], cam[3][i]]).collect(),
         light,
         spp,
     };
-    Ok(Part {
-        info: head.info,
-        full: head.full,
-        crop: head.crop,
-        ranges: head.ranges,
-        sums,
-    })
+    Ok(Part { info: head.info, full: head.full, crop: head.crop, ranges: head.ranges, sums })
 }

@@ -50,7 +50,9 @@ pub fn sobol(index: u32, dim: usize) -> u32 {
 /// constant array indexed at run time is copied into every invocation by some drivers).
 pub fn glsl() -> String {
     let v = sobol_directions();
-    let mut s = String::from("uint sobol_point(uint index, uint dim) {\n    if (dim == 0u) {\n        return bitfieldReverse(index);\n    }\n    uint x = 0u;\n");
+    let mut s = String::from(
+        "uint sobol_point(uint index, uint dim) {\n    if (dim == 0u) {\n        return bitfieldReverse(index);\n    }\n    uint x = 0u;\n",
+    );
     for (d, dirs) in v.iter().enumerate().skip(1) {
         s += &format!("    if (dim == {d}u) {{\n");
         for (k, c) in dirs.iter().enumerate() {

@@ -61,7 +61,16 @@ impl SceneFeatures {
     /// where it has none (only to measure what specialisation buys; vertex attributes stay as
     /// they are, since their buffers are only uploaded when present).
     pub fn with_all_material_code(self) -> SceneFeatures {
-        SceneFeatures { textures: true, mirror: true, glass: true, alpha: true, glossy: true, emission_textures: true, normal_maps: true, ..self }
+        SceneFeatures {
+            textures: true,
+            mirror: true,
+            glass: true,
+            alpha: true,
+            glossy: true,
+            emission_textures: true,
+            normal_maps: true,
+            ..self
+        }
     }
 
     pub fn specs(&self) -> Vec<Spec> {

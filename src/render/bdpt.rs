@@ -85,7 +85,14 @@ impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together).
-    pub fn new(ctx: &Context, scene: &GpuScene, pixels: u32, settings: &super::RenderSettings, join: Join, camera_samples: u32) -> Result<Bdpt, RenderError> {
+    pub fn new(
+        ctx: &Context,
+        scene: &GpuScene,
+        pixels: u32,
+        settings: &super::RenderSettings,
+        join: Join,
+        camera_samples: u32,
+    ) -> Result<Bdpt, RenderError> {
         let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
         let ratio = settings.light_path_ratio;
         if !(ratio > 0.0 && ratio.is_finite()) {
@@ -102,7 +109,10 @@ impl Bdpt {
         let paths = per_sample.saturating_mul(camera_samples);
         let info = ctx.info();
         if !info.atomic_float_add {
-            return Err(RenderError::Unsupported(format!("{} lacks atomic float add (VK_EXT_shader_atomic_float), which BDPT's light tracing needs", info.name)));
+            return Err(RenderError::Unsupported(format!(
+                "{} lacks atomic float add (VK_EXT_shader_atomic_float), which BDPT's light tracing needs",
+                info.name
+            )));
         }
         let light_path_len = light_path_len.max(1);
         let bytes = paths as u64 * light_path_len as u64 * std::mem::size_of::<LightVertex>() as u64;
@@ -118,7 +128,9 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
         specs.push(sampler.spec());
         let vertices = ctx.create_buffer("bdpt.light_vertices", bytes, Memory::Device).map_err(|e| match e {
-            VkError::Alloc { bytes, .. } => RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len")),
+            VkError::Alloc { bytes, .. } => {
+                RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len"))
+            }
             e => e.into(),
         })?;
         let lvc = match join {

@@ -1,6 +1,6 @@
+use super::RenderError;
 use crate::film::RgbImage;
 use crate::gpu::abi;
-use super::RenderError;
 use crate::vk::{Buffer, Context, Memory, Result, VkError};
 
 fn mib(bytes: u64) -> String {

@@ -51,11 +51,7 @@ impl GpuScene {
                 UVec4::new(a, b, c, scene.material_ids[t as usize])
             })
             .collect();
-        let materials: Vec<GpuMaterial> = scene
-            .materials
-            .iter()
-            .map(gpu_material)
-            .collect();
+        let materials: Vec<GpuMaterial> = scene.materials.iter().map(gpu_material).collect();
         let lights = LightTable::build(scene);
         let placeholder = |name: &str| ctx.create_buffer(name, 4, Memory::Device);
         let normals = match (&scene.normals, features.normals) {
@@ -76,12 +72,21 @@ impl GpuScene {
             (Vec::new(), Vec::new(), 0)
         };
         if downsamples > 0 {
-            log::warn!("textures halved {downsamples} time(s) to fit {} MiB storage buffers on {}", ctx.info().max_storage_buffer_range >> 20, ctx.info().name);
+            log::warn!(
+                "textures halved {downsamples} time(s) to fit {} MiB storage buffers on {}",
+                ctx.info().max_storage_buffer_range >> 20,
+                ctx.info().name
+            );
         }
         let textures = if table.is_empty() { placeholder("scene.textures (none)")? } else { ctx.upload_buffer("scene.textures", &table)? };
         let texels = if texels.is_empty() { placeholder("scene.texels (none)")? } else { ctx.upload_buffer("scene.texels", &texels)? };
-        let emitters = if lights.emitters.is_empty() { placeholder("scene.emitters (none)")? } else { ctx.upload_buffer("scene.emitters", &lights.emitters)? };
-        let alias = if lights.alias.is_empty() { placeholder("scene.alias (none)")? } else { ctx.upload_buffer("scene.alias", &lights.alias)? };
+        let emitters = if lights.emitters.is_empty() {
+            placeholder("scene.emitters (none)")?
+        } else {
+            ctx.upload_buffer("scene.emitters", &lights.emitters)?
+        };
+        let alias =
+            if lights.alias.is_empty() { placeholder("scene.alias (none)")? } else { ctx.upload_buffer("scene.alias", &lights.alias)? };
         let emitter_uvs = match features.emission_textures && !lights.emitters.is_empty() {
             true => ctx.upload_buffer("scene.emitter_uvs", &lights.emitter_uvs(scene))?,
             false => placeholder("scene.emitter_uvs (none)")?,
@@ -109,13 +114,27 @@ impl GpuScene {
             Some(t) => (ctx.upload_buffer("scene.env_texels", &t.texels)?, ctx.upload_buffer("scene.env_alias", &t.alias)?),
             None => (placeholder("scene.env_texels (none)")?, placeholder("scene.env_alias (none)")?),
         };
-        let punctual = if punctual.is_empty() { placeholder("scene.punctual (none)")? } else { ctx.upload_buffer("scene.punctual", &punctual)? };
+        let punctual =
+            if punctual.is_empty() { placeholder("scene.punctual (none)")? } else { ctx.upload_buffer("scene.punctual", &punctual)? };
         let positions = ctx.upload_buffer("scene.positions", &scene.positions.iter().flat_map(|v| v.to_array()).collect::<Vec<f32>>())?;
         let prim_info = ctx.upload_buffer("scene.prim_info", &prim_info)?;
         let materials = ctx.upload_buffer("scene.materials", &materials)?;
         let bytes = [
-            &prim_info, &materials, &emitters, &alias, &emitter_uvs, &normals, &tangents, &uvs, &textures, &texels, &positions, &env, &env_texels,
-            &env_alias, &punctual,
+            &prim_info,
+            &materials,
+            &emitters,
+            &alias,
+            &emitter_uvs,
+            &normals,
+            &tangents,
+            &uvs,
+            &textures,
+            &texels,
+            &positions,
+            &env,
+            &env_texels,
+            &env_alias,
+            &punctual,
         ]
         .iter()
         .map(|b| b.size())
@@ -211,7 +230,15 @@ fn gpu_punctual(l: &crate::scene::PunctualLight) -> GpuPunctual {
         PunctualKind::Spot { inner, outer } => (abi::PUNCTUAL_SPOT, outer.cos(), inner.cos()),
         PunctualKind::Directional => (abi::PUNCTUAL_DIRECTIONAL, 1.0, 1.0),
     };
-    GpuPunctual { position: l.position.extend(0.0), direction: l.direction.normalize_or_zero().extend(0.0), intensity: l.intensity.extend(0.0), kind, cos_outer, cos_inner, pad0: 0 }
+    GpuPunctual {
+        position: l.position.extend(0.0),
+        direction: l.direction.normalize_or_zero().extend(0.0),
+        intensity: l.intensity.extend(0.0),
+        kind,
+        cos_outer,
+        cos_inner,
+        pad0: 0,
+    }
 }
 
 /// Concatenates textures as packed RGBA8 words, halving all of them until they fit `limit`

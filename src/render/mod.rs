@@ -15,9 +15,9 @@
 mod bdpt;
 pub mod env;
 mod film;
-pub mod multi;
 pub mod gpu_scene;
 pub mod lights;
+pub mod multi;
 mod pacing;
 mod pt;
 mod stop;
@@ -69,7 +69,9 @@ impl std::str::FromStr for Integrator {
             "bdpt" => Ok(Integrator::Bdpt(Join::Lvc(0))),
             _ => match s.strip_prefix("bdpt:") {
                 Some(j) => Ok(Integrator::Bdpt(j.parse()?)),
-                None => Err(format!("unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N)")),
+                None => Err(format!(
+                    "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N)"
+                )),
             },
         }
     }
@@ -142,7 +144,21 @@ pub struct RenderSettings {
 
 impl RenderSettings {
     pub fn new(integrator: Integrator) -> Self {
-        RenderSettings { integrator, max_depth: 0, rr_depth: 3, seed: 0, sampler: Sampler::Sobol, light_path_len: 8, light_path_ratio: 1.0, sample_slices: 0, all_material_code: false, pass_target: Duration::from_millis(250), bvh: BuildOptions::default(), sample_start: 0, crop: None }
+        RenderSettings {
+            integrator,
+            max_depth: 0,
+            rr_depth: 3,
+            seed: 0,
+            sampler: Sampler::Sobol,
+            light_path_len: 8,
+            light_path_ratio: 1.0,
+            sample_slices: 0,
+            all_material_code: false,
+            pass_target: Duration::from_millis(250),
+            bvh: BuildOptions::default(),
+            sample_start: 0,
+            crop: None,
+        }
     }
 }
 
@@ -239,7 +255,14 @@ fn slice_pixels(settings: &RenderSettings, full_pixels: u32, window: Crop) -> u3
 }
 
 /// The kernels of `integrator` for a film of `pixels` pixels.
-fn build_kernels(ctx: &Context, scene: &GpuScene, integrator: Integrator, pixels: u32, settings: &RenderSettings, slices: u32) -> Result<Kernels, RenderError> {
+fn build_kernels(
+    ctx: &Context,
+    scene: &GpuScene,
+    integrator: Integrator,
+    pixels: u32,
+    settings: &RenderSettings,
+    slices: u32,
+) -> Result<Kernels, RenderError> {
     check_layout(scene.bvh.layout)?;
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
@@ -320,7 +343,13 @@ impl Renderer {
     }
 
     /// Records the film's current estimate, tonemapped, into `target` (see [`Tonemap::record`]).
-    pub fn record_tonemap(&self, rec: &mut Recorder, tonemap: &Tonemap, target: &Image, settings: TonemapSettings) -> crate::vk::Result<()> {
+    pub fn record_tonemap(
+        &self,
+        rec: &mut Recorder,
+        tonemap: &Tonemap,
+        target: &Image,
+        settings: TonemapSettings,
+    ) -> crate::vk::Result<()> {
         tonemap.record(rec, &self.film, self.samples, target, settings)
     }
 
@@ -337,7 +366,11 @@ impl Renderer {
             let slices = sample_slices(&self.ctx, &self.settings, slice_pixels(&self.settings, pixels, window));
             // Path tracers keep their kernels; BDPT's store is sized by the pixel count.
             let bdpt = matches!(self.kernels, Kernels::Bdpt(_));
-            let kernels = if bdpt { Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings, slices)?) } else { None };
+            let kernels = if bdpt {
+                Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings, slices)?)
+            } else {
+                None
+            };
             let film = Film::new(&self.ctx, window.width(), window.height(), bdpt, slices)?;
             if let Some(k) = kernels {
                 self.kernels = k;

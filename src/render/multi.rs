@@ -56,8 +56,7 @@ pub fn render_on_devices(
             .and_then(|ctx| Renderer::new(&ctx, scene, camera, settings.clone()).map(|r| (ctx, r)));
         ready.wait();
         let (ctx, mut r) = setup?;
-        status.lock().unwrap_or_else(|e| e.into_inner())[i].name =
-            format!("{} #{i}", ctx.info().name);
+        status.lock().unwrap_or_else(|e| e.into_inner())[i].name = format!("{} #{i}", ctx.info().name);
         // Whole BDPT iterations where the counter allows (see `Renderer::pass_at`).
         let align = r.sample_slices().max(1);
         let start = Instant::now();
@@ -99,13 +98,7 @@ pub fn render_on_devices(
             .collect();
         handles
             .into_iter()
-            .map(|h| {
-                h.join().unwrap_or_else(|_| {
-                    Err(RenderError::Unsupported(
-                        "a device's render thread panicked".into(),
-                    ))
-                })
-            })
+            .map(|h| h.join().unwrap_or_else(|_| Err(RenderError::Unsupported("a device's render thread panicked".into()))))
             .collect()
     });
     let mut total: Option<Accumulation> = None;
@@ -123,10 +116,5 @@ pub fn render_on_devices(
         }
     }
     let sums = total.ok_or_else(|| RenderError::Unsupported("no device to render on".into()))?;
-    Ok(MultiRender {
-        sums,
-        nan_samples,
-        devices: status.into_inner().unwrap_or_else(|e| e.into_inner()),
-        validation,
-    })
+    Ok(MultiRender { sums, nan_samples, devices: status.into_inner().unwrap_or_else(|e| e.into_inner()), validation })
 }

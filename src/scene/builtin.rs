@@ -15,8 +15,8 @@ impl Scene {
     /// and the reference camera (256 × 256).
     pub fn builtin_cornell_box() -> Scene {
         let mtl = |name: &str| (name == "cornell-box.mtl").then(|| MTL.to_owned());
-        let loaded = load_obj_str(BUILTIN_SOURCE, OBJ, &mtl, &LoadOptions { strict: true })
-            .expect("the embedded Cornell box loads (tested)");
+        let loaded =
+            load_obj_str(BUILTIN_SOURCE, OBJ, &mtl, &LoadOptions { strict: true }).expect("the embedded Cornell box loads (tested)");
         debug_assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
         let mut scene = loaded.scene;
         scene.cameras.push(Camera::cornell_box());

@@ -194,8 +194,7 @@ mod tests {
 
     #[test]
     fn gltf_camera_looks_down_minus_z_and_keeps_1080_rows() {
-        let world =
-            Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0)) * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2);
+        let world = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0)) * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2);
         let c = Camera::from_gltf("c".into(), world, 0.5, Some(2.0));
         assert!((c.eye - Vec3::new(1.0, 2.0, 3.0)).length() < 1e-6);
         // -Z rotated 90° about +Y is -X.

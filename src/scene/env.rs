@@ -68,33 +68,16 @@ impl std::str::FromStr for Sun {
             return Err(usage());
         }
         let vec3 = |t: &str| -> Option<Vec3> {
-            let v: Vec<f32> = t
-                .split(',')
-                .map(|x| x.trim().parse::<f32>())
-                .collect::<Result<_, _>>()
-                .ok()?;
+            let v: Vec<f32> = t.split(',').map(|x| x.trim().parse::<f32>()).collect::<Result<_, _>>().ok()?;
             (v.len() == 3 && v.iter().all(|c| c.is_finite())).then(|| Vec3::new(v[0], v[1], v[2]))
         };
-        let direction = vec3(parts[0])
-            .and_then(|d| d.try_normalize())
-            .ok_or_else(usage)?;
-        let irradiance = vec3(parts[1])
-            .filter(|e| e.min_element() >= 0.0)
-            .ok_or_else(usage)?;
+        let direction = vec3(parts[0]).and_then(|d| d.try_normalize()).ok_or_else(usage)?;
+        let irradiance = vec3(parts[1]).filter(|e| e.min_element() >= 0.0).ok_or_else(usage)?;
         let angle_deg = match parts.get(2) {
-            Some(a) => a
-                .trim()
-                .parse::<f32>()
-                .ok()
-                .filter(|a| *a > 0.0 && *a <= 90.0)
-                .ok_or_else(usage)?,
+            Some(a) => a.trim().parse::<f32>().ok().filter(|a| *a > 0.0 && *a <= 90.0).ok_or_else(usage)?,
             None => 0.53,
         };
-        Ok(Sun {
-            direction,
-            irradiance,
-            angle_deg,
-        })
+        Ok(Sun { direction, irradiance, angle_deg })
     }
 }
 
@@ -107,9 +90,7 @@ pub enum EnvError {
     Extension { file: PathBuf },
     #[error("{file}: environment texel ({x}, {y}) is not finite")]
     NotFinite { file: PathBuf, x: u32, y: u32 },
-    #[error(
-        "--env '{0}': expected none, R,G,B (three non-negative finite numbers) or a .hdr/.exr file"
-    )]
+    #[error("--env '{0}': expected none, R,G,B (three non-negative finite numbers) or a .hdr/.exr file")]
     Spec(String),
 }
 
@@ -128,22 +109,14 @@ impl std::str::FromStr for EnvSpec {
         if s.eq_ignore_ascii_case("none") {
             return Ok(EnvSpec::None);
         }
-        let ext = Path::new(s)
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
+        let ext = Path::new(s).extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
         if matches!(ext.as_deref(), Some("hdr") | Some("exr")) {
             return Ok(EnvSpec::File(PathBuf::from(s)));
         }
         let parts: Vec<&str> = s.split(',').collect();
-        let rgb: Vec<f32> = parts
-            .iter()
-            .filter_map(|p| p.trim().parse::<f32>().ok())
-            .collect();
+        let rgb: Vec<f32> = parts.iter().filter_map(|p| p.trim().parse::<f32>().ok()).collect();
         match rgb.as_slice() {
-            [r, g, b] if parts.len() == 3 && rgb.iter().all(|c| c.is_finite() && *c >= 0.0) => {
-                Ok(EnvSpec::Uniform(Vec3::new(*r, *g, *b)))
-            }
+            [r, g, b] if parts.len() == 3 && rgb.iter().all(|c| c.is_finite() && *c >= 0.0) => Ok(EnvSpec::Uniform(Vec3::new(*r, *g, *b))),
             _ => Err(EnvError::Spec(s.to_owned())),
         }
     }
@@ -165,33 +138,15 @@ impl Environment {
 
     /// A map from texels (rows top to bottom); negative values are clamped to 0.
     pub fn from_texels(source: &str, width: u32, height: u32, texels: Vec<Vec3>) -> Environment {
-        assert_eq!(
-            texels.len(),
-            (width * height) as usize,
-            "environment texel count"
-        );
+        assert_eq!(texels.len(), (width * height) as usize, "environment texel count");
         let texels = texels.into_iter().map(|t| t.max(Vec3::ZERO)).collect();
-        Environment {
-            source: source.to_owned(),
-            width,
-            height,
-            texels,
-            scale: 1.0,
-            rotate_deg: 0.0,
-            sun: None,
-        }
+        Environment { source: source.to_owned(), width, height, texels, scale: 1.0, rotate_deg: 0.0, sun: None }
     }
 
     /// Reads an equirectangular `.hdr` (Radiance RGBE) or `.exr` (first RGB(A) layer) map.
     pub fn load(path: &Path) -> Result<Environment, EnvError> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
-        let rerr = |msg: String| EnvError::Read {
-            file: path.to_path_buf(),
-            msg,
-        };
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+        let rerr = |msg: String| EnvError::Read { file: path.to_path_buf(), msg };
         let (w, h, data) = match ext.as_deref() {
             Some("hdr") => {
                 let img = image::ImageReader::open(path)
@@ -202,32 +157,16 @@ impl Environment {
                 (img.width(), img.height(), img.into_raw())
             }
             Some("exr") => read_exr_rgb(path).map_err(rerr)?,
-            _ => {
-                return Err(EnvError::Extension {
-                    file: path.to_path_buf(),
-                })
-            }
+            _ => return Err(EnvError::Extension { file: path.to_path_buf() }),
         };
         if w == 0 || h == 0 {
             return Err(rerr("the image is empty".into()));
         }
-        let texels: Vec<Vec3> = data
-            .chunks_exact(3)
-            .map(|c| Vec3::new(c[0], c[1], c[2]))
-            .collect();
+        let texels: Vec<Vec3> = data.chunks_exact(3).map(|c| Vec3::new(c[0], c[1], c[2])).collect();
         if let Some(i) = texels.iter().position(|t| !t.is_finite()) {
-            return Err(EnvError::NotFinite {
-                file: path.to_path_buf(),
-                x: i as u32 % w,
-                y: i as u32 / w,
-            });
+            return Err(EnvError::NotFinite { file: path.to_path_buf(), x: i as u32 % w, y: i as u32 / w });
         }
-        Ok(Environment::from_texels(
-            &path.display().to_string(),
-            w,
-            h,
-            texels,
-        ))
+        Ok(Environment::from_texels(&path.display().to_string(), w, h, texels))
     }
 
     /// The environment `spec` names (`None` for `--env none`).
@@ -248,10 +187,7 @@ impl Environment {
     /// Solid angle of texel row `row`: (2 pi / width) (cos theta0 - cos theta1).
     pub fn texel_solid_angle(&self, row: u32) -> f32 {
         let h = self.height as f64;
-        let (t0, t1) = (
-            std::f64::consts::PI * row as f64 / h,
-            std::f64::consts::PI * (row + 1) as f64 / h,
-        );
+        let (t0, t1) = (std::f64::consts::PI * row as f64 / h, std::f64::consts::PI * (row + 1) as f64 / h);
         (2.0 * std::f64::consts::PI / self.width as f64 * (t0.cos() - t1.cos())) as f32
     }
 
@@ -259,8 +195,7 @@ impl Environment {
     pub fn radiance(&self, w: Vec3) -> Vec3 {
         let theta = w.y.clamp(-1.0, 1.0).acos();
         let tau = std::f32::consts::TAU;
-        let phi =
-            (std::f32::consts::PI + w.x.atan2(-w.z) + self.rotate_deg.to_radians()).rem_euclid(tau);
+        let phi = (std::f32::consts::PI + w.x.atan2(-w.z) + self.rotate_deg.to_radians()).rem_euclid(tau);
         let x = ((phi / tau * self.width as f32) as u32).min(self.width - 1);
         let y = ((theta / std::f32::consts::PI * self.height as f32) as u32).min(self.height - 1);
         self.texels[(y * self.width + x) as usize] * self.scale
@@ -280,11 +215,7 @@ fn read_exr_rgb(path: &Path) -> Result<(u32, u32, Vec<f32>), String> {
     )
     .map_err(|e| e.to_string())?;
     let size = image.layer_data.size;
-    Ok((
-        size.width() as u32,
-        size.height() as u32,
-        image.layer_data.channel_data.pixels.1,
-    ))
+    Ok((size.width() as u32, size.height() as u32, image.layer_data.channel_data.pixels.1))
 }
 
 #[cfg(test)]
@@ -294,14 +225,8 @@ mod tests {
     #[test]
     fn spec_parses_none_colour_and_files() {
         assert_eq!("none".parse::<EnvSpec>().unwrap(), EnvSpec::None);
-        assert_eq!(
-            "1,0.5,2".parse::<EnvSpec>().unwrap(),
-            EnvSpec::Uniform(Vec3::new(1.0, 0.5, 2.0))
-        );
-        assert_eq!(
-            "sky.HDR".parse::<EnvSpec>().unwrap(),
-            EnvSpec::File("sky.HDR".into())
-        );
+        assert_eq!("1,0.5,2".parse::<EnvSpec>().unwrap(), EnvSpec::Uniform(Vec3::new(1.0, 0.5, 2.0)));
+        assert_eq!("sky.HDR".parse::<EnvSpec>().unwrap(), EnvSpec::File("sky.HDR".into()));
         for bad in ["1,2", "1,2,3,4", "-1,0,0", "a,b,c", "nan,1,1", "sky.png"] {
             assert!(bad.parse::<EnvSpec>().is_err(), "{bad}");
         }
@@ -316,14 +241,7 @@ mod tests {
         let e = s.radiance() * std::f32::consts::PI * r.sin() * r.sin();
         assert!((e - s.irradiance).abs().max_element() < 1e-2, "{e}");
         assert_eq!("1,0,0;1,1,1;5".parse::<Sun>().unwrap().angle_deg, 5.0);
-        for bad in [
-            "0,0,0;1,1,1",
-            "0,1,0;1,1",
-            "0,1,0;1,-1,1",
-            "0,1,0;1,1,1;0",
-            "0,1,0;1,1,1;91",
-            "0,1,0",
-        ] {
+        for bad in ["0,0,0;1,1,1", "0,1,0;1,1", "0,1,0;1,-1,1", "0,1,0;1,1,1;0", "0,1,0;1,1,1;91", "0,1,0"] {
             let e = bad.parse::<Sun>().unwrap_err();
             assert!(e.contains("--sun") && e.contains(bad), "{bad}: {e}");
         }

@@ -67,9 +67,7 @@ impl SceneError {
     /// The 1-based line of an OBJ/MTL error, where there is one.
     pub fn line(&self) -> Option<usize> {
         match self {
-            SceneError::Syntax { line, .. }
-            | SceneError::Missing { line, .. }
-            | SceneError::UnknownMaterial { line, .. } => Some(*line),
+            SceneError::Syntax { line, .. } | SceneError::Missing { line, .. } | SceneError::UnknownMaterial { line, .. } => Some(*line),
             _ => None,
         }
     }

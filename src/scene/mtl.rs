@@ -70,9 +70,7 @@ pub(crate) struct MtlEntry {
 /// Keys read but not part of the material model: ignored without a word.
 const IGNORED: &[&str] = &["ka", "ks", "ns", "tf", "sharpness", "map_ka"];
 /// Texture maps the model cannot use: one warning per key.
-const UNSUPPORTED_MAPS: &[&str] = &[
-    "map_ks", "map_ns", "map_bump", "bump", "disp", "decal", "refl", "map_refl",
-];
+const UNSUPPORTED_MAPS: &[&str] = &["map_ks", "map_ns", "map_bump", "bump", "disp", "decal", "refl", "map_refl"];
 
 pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<MtlEntry>, SceneError> {
     let mut out: Vec<MtlEntry> = Vec::new();
@@ -96,9 +94,7 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             continue;
         }
         let Some(m) = out.last_mut() else {
-            w.warn_once("mtl-before-newmtl", || {
-                format!("{}:{line}: `{key}` before any `newmtl` ignored", file.display())
-            });
+            w.warn_once("mtl-before-newmtl", || format!("{}:{line}: `{key}` before any `newmtl` ignored", file.display()));
             continue;
         };
         match key_lc.as_str() {
@@ -160,14 +156,9 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             }
             k if IGNORED.contains(&k) => {}
             k if UNSUPPORTED_MAPS.contains(&k) => w.warn_once(&format!("mtl-map-{k}"), || {
-                format!(
-                    "{}:{line}: `{key}` is not supported (bidir has no bump, specular or displacement maps); ignored",
-                    file.display()
-                )
+                format!("{}:{line}: `{key}` is not supported (bidir has no bump, specular or displacement maps); ignored", file.display())
             }),
-            _ => w.warn_once(&format!("mtl-key-{key_lc}"), || {
-                format!("{}:{line}: unknown MTL key `{key}` ignored", file.display())
-            }),
+            _ => w.warn_once(&format!("mtl-key-{key_lc}"), || format!("{}:{line}: unknown MTL key `{key}` ignored", file.display())),
         }
     }
     Ok(out)
@@ -263,12 +254,7 @@ pub(crate) fn to_material(
             _ => match e.d {
                 Some(d) if d < 1.0 => {
                     w.warn_once("mtl-dissolve", || {
-                        format!(
-                            "{}: material '{}': dissolve d = {d} approximated as refractivity {}",
-                            at(e.line),
-                            e.name,
-                            1.0 - d
-                        )
+                        format!("{}: material '{}': dissolve d = {d} approximated as refractivity {}", at(e.line), e.name, 1.0 - d)
                     });
                     (0.0, 1.0 - d)
                 }
@@ -277,30 +263,19 @@ pub(crate) fn to_material(
         }
     };
     if !(0.0..=1.0).contains(&refl) || !(0.0..=1.0).contains(&refr) {
-        w.warn(format!(
-            "{}: material '{}': reflectivity {refl} / refractivity {refr} clamped to [0, 1]",
-            at(e.line),
-            e.name
-        ));
+        w.warn(format!("{}: material '{}': reflectivity {refl} / refractivity {refr} clamped to [0, 1]", at(e.line), e.name));
         refl = refl.clamp(0.0, 1.0);
         refr = refr.clamp(0.0, 1.0);
     }
     if refl + refr > 1.0 {
-        w.warn(format!(
-            "{}: material '{}': reflectivity {refl} + refractivity {refr} exceed 1; scaled to sum to 1",
-            at(e.line),
-            e.name
-        ));
+        w.warn(format!("{}: material '{}': reflectivity {refl} + refractivity {refr} exceed 1; scaled to sum to 1", at(e.line), e.name));
         let s = refl + refr;
         refl /= s;
         refr /= s;
     }
     let albedo_texture = e.map_kd.as_ref().and_then(|(line, name)| texture(name, *line, Role::Colour, w));
-    let alpha = e
-        .map_d
-        .as_ref()
-        .and_then(|(line, name)| texture(name, *line, Role::Opacity, w))
-        .map(|t| AlphaMask { texture: t, cutoff: 0.5 });
+    let alpha =
+        e.map_d.as_ref().and_then(|(line, name)| texture(name, *line, Role::Opacity, w)).map(|t| AlphaMask { texture: t, cutoff: 0.5 });
     // `map_Ke` scales Ke (1 where Ke is absent, as Blender writes both).
     let emission_texture = e.map_ke.as_ref().and_then(|(line, name)| texture(name, *line, Role::Colour, w));
     let emission = match (emission_texture, e.ke) {

@@ -44,12 +44,7 @@ pub fn load_obj(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {
 
 /// Loads OBJ text held in memory; `mtl(name)` returns the material library `mtllib name`
 /// refers to (`None`: missing). `name` labels messages. Textures cannot be loaded this way.
-pub fn load_obj_str(
-    name: &str,
-    obj: &str,
-    mtl: &dyn Fn(&str) -> Option<String>,
-    opts: &LoadOptions,
-) -> Result<Loaded, SceneError> {
+pub fn load_obj_str(name: &str, obj: &str, mtl: &dyn Fn(&str) -> Option<String>, opts: &LoadOptions) -> Result<Loaded, SceneError> {
     load_text(Path::new(name), obj, Files::Memory(mtl), opts)
 }
 
@@ -105,12 +100,7 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
     for (k, (lib, e)) in entries.iter().enumerate() {
         match by_name.get(&e.name) {
             Some(&m) => {
-                w.warn(format!(
-                    "{}:{}: material '{}' defined again; the later definition wins",
-                    lib.display(),
-                    e.line,
-                    e.name
-                ));
+                w.warn(format!("{}:{}: material '{}' defined again; the later definition wins", lib.display(), e.line, e.name));
                 defs[m] = k;
             }
             None => {
@@ -136,17 +126,14 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
         .iter()
         .map(|&k| {
             let (lib, e) = &entries[k];
-            mtl::to_material(e, lib, &mut w, &mut |name, line, role, w| {
-                texture_request(&files, &mut requests, lib, name, line, role, w)
-            })
+            mtl::to_material(e, lib, &mut w, &mut |name, line, role, w| texture_request(&files, &mut requests, lib, name, line, role, w))
         })
         .collect();
 
     // Geometry, through tobj.
     let source = check.rewritten.as_deref().unwrap_or(text);
     let calls = Cell::new(0usize);
-    let load_options =
-        tobj::LoadOptions { single_index: true, triangulate: true, ignore_points: true, ignore_lines: true };
+    let load_options = tobj::LoadOptions { single_index: true, triangulate: true, ignore_points: true, ignore_lines: true };
     let (models, tobj_materials) = tobj::load_obj_buf(&mut source.as_bytes(), &load_options, |_| {
         // Called once per `mtllib`, in order: answer with the names that statement defined.
         let k = calls.get();
@@ -185,29 +172,14 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
         let uvs_ok = has(mesh.texcoords.len() / 2, verts);
         for (what, len) in [("normals", mesh.normals.len()), ("texture coordinates", mesh.texcoords.len())] {
             if len > 0 && !(if what == "normals" { normals_ok } else { uvs_ok }) {
-                w.warn(format!(
-                    "{}: object '{}' has {what} on only some faces; using none for it",
-                    file.display(),
-                    model.name
-                ));
+                w.warn(format!("{}: object '{}' has {what} on only some faces; using none for it", file.display(), model.name));
             }
         }
-        let normals: Option<Vec<Vec3>> =
-            normals_ok.then(|| mesh.normals.chunks_exact(3).map(Vec3::from_slice).collect());
-        let uvs: Option<Vec<Vec2>> =
-            uvs_ok.then(|| mesh.texcoords.chunks_exact(2).map(|t| Vec2::new(t[0], 1.0 - t[1])).collect());
+        let normals: Option<Vec<Vec3>> = normals_ok.then(|| mesh.normals.chunks_exact(3).map(Vec3::from_slice).collect());
+        let uvs: Option<Vec<Vec2>> = uvs_ok.then(|| mesh.texcoords.chunks_exact(2).map(|t| Vec2::new(t[0], 1.0 - t[1])).collect());
         let triangles: Vec<[u32; 3]> = mesh.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
         let material = material_of(mesh.material_id, &mut materials);
-        b.push(
-            &Part {
-                positions: &positions,
-                normals: normals.as_deref(),
-                uvs: uvs.as_deref(),
-                triangles: &triangles,
-                material,
-            },
-            None,
-        );
+        b.push(&Part { positions: &positions, normals: normals.as_deref(), uvs: uvs.as_deref(), triangles: &triangles, material }, None);
     }
 
     let decoded = requests.decode(opts.strict, &mut w)?;
@@ -291,9 +263,7 @@ fn texture_request(
             }))
         }
         Files::Memory(_) => {
-            w.warn_once("obj-memory-textures", || {
-                format!("{}:{line}: texture '{name}' not loaded (scene held in memory)", lib.display())
-            });
+            w.warn_once("obj-memory-textures", || format!("{}:{line}: texture '{name}' not loaded (scene held in memory)", lib.display()));
             None
         }
     }

@@ -59,9 +59,7 @@ pub(crate) fn check(file: &Path, text: &str, w: &mut Warnings) -> Result<ObjChec
                         }
                         n[..3].iter().all(|x| (x / n[3]).is_finite())
                     }
-                    k => {
-                        return Err(err(format!("a vertex needs 3 coordinates (plus w, or r g b); found {k} numbers")))
-                    }
+                    k => return Err(err(format!("a vertex needs 3 coordinates (plus w, or r g b); found {k} numbers"))),
                 };
                 if !pos_ok {
                     return Err(err("vertex coordinate is not finite".into()));
@@ -104,9 +102,7 @@ pub(crate) fn check(file: &Path, text: &str, w: &mut Warnings) -> Result<ObjChec
                 c.faces += 1;
             }
             "l" | "p" => {
-                w.warn_once("obj-lines", || {
-                    format!("{}:{line}: points and lines (`{key}`) are not rendered; ignored", file.display())
-                });
+                w.warn_once("obj-lines", || format!("{}:{line}: points and lines (`{key}`) are not rendered; ignored", file.display()));
                 rewrite = Some(String::new());
             }
             "mtllib" | "usemtl" => {
@@ -130,9 +126,7 @@ pub(crate) fn check(file: &Path, text: &str, w: &mut Warnings) -> Result<ObjChec
                     rewrite = Some(raw.trim_start().to_owned());
                 }
             }
-            k => w.warn_once(&format!("obj-key-{k}"), || {
-                format!("{}:{line}: unsupported OBJ statement `{k}` ignored", file.display())
-            }),
+            k => w.warn_once(&format!("obj-key-{k}"), || format!("{}:{line}: unsupported OBJ statement `{k}` ignored", file.display())),
         }
         if rewrite.is_some() && out.is_none() {
             out = Some(text.lines().take(i).flat_map(|l| [l, "\n"]).collect());
@@ -168,11 +162,8 @@ fn check_ref(r: &str, c: &ObjCheck, err: &dyn Fn(String) -> SceneError) -> Resul
     if parts.len() > 3 || parts[0].is_empty() {
         return Err(err(format!("'{}' is not a face vertex (v, v/vt, v//vn or v/vt/vn)", crate::text::quote(r))));
     }
-    let kinds = [
-        ("vertex", "vertices", c.positions),
-        ("texture coordinate", "texture coordinates", c.texcoords),
-        ("normal", "normals", c.normals),
-    ];
+    let kinds =
+        [("vertex", "vertices", c.positions), ("texture coordinate", "texture coordinates", c.texcoords), ("normal", "normals", c.normals)];
     for (part, (what, whats, count)) in parts.iter().zip(kinds) {
         if part.is_empty() {
             continue;
@@ -207,10 +198,7 @@ mod tests {
 
     #[test]
     fn accepts_valid_statements() {
-        let c = run(
-            "# c\nv 0 0 0\nv 1 0 0 1\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\nf -3 -2 -1\nf 1//1 2//1 3//1\n",
-        )
-        .unwrap();
+        let c = run("# c\nv 0 0 0\nv 1 0 0 1\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\nf -3 -2 -1\nf 1//1 2//1 3//1\n").unwrap();
         assert_eq!((c.positions, c.texcoords, c.normals, c.faces), (3, 1, 1, 3));
         assert!(c.rewritten.is_none());
     }

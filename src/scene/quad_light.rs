@@ -100,7 +100,8 @@ impl QuadLight {
         let aim = Vec3::new(-2.0, 4.0, -3.0);
         let sun_center = aim + sun_dir * ((38.0 - aim.y) / sun_dir.y);
         let sun = QuadLight::facing(sun_center, -sun_dir, 2.0, 4000.0 * Vec3::new(1.0, 0.92, 0.8));
-        let sky = QuadLight::new(Vec3::new(-60.0, 40.0, -45.0), Vec3::new(117.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 87.0), Vec3::new(0.25, 0.4, 0.8));
+        let sky =
+            QuadLight::new(Vec3::new(-60.0, 40.0, -45.0), Vec3::new(117.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 87.0), Vec3::new(0.25, 0.4, 0.8));
         [sun.expect("the sun preset is valid (tested)"), sky.expect("the sky preset is valid (tested)")]
     }
 }
@@ -180,7 +181,15 @@ mod tests {
     #[test]
     fn parses_and_prints_the_flag_syntax() {
         let q = quad("1,2,3; 4,0,0 ;0,0,-2;10,5,0").unwrap();
-        assert_eq!(q, QuadLight { corner: Vec3::new(1.0, 2.0, 3.0), edge1: Vec3::X * 4.0, edge2: Vec3::Z * -2.0, radiance: Vec3::new(10.0, 5.0, 0.0) });
+        assert_eq!(
+            q,
+            QuadLight {
+                corner: Vec3::new(1.0, 2.0, 3.0),
+                edge1: Vec3::X * 4.0,
+                edge2: Vec3::Z * -2.0,
+                radiance: Vec3::new(10.0, 5.0, 0.0)
+            }
+        );
         assert_eq!(quad(&q.to_string()).unwrap(), q);
         // e1 = +x, e2 = -z: e1 x e2 = +y.
         assert_eq!(q.front(), Vec3::Y);

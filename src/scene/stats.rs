@@ -110,9 +110,7 @@ pub(crate) const GPU_MATERIAL_BYTES: u64 = 96;
 fn has_diffuse(m: &Material) -> bool {
     match m.model {
         crate::scene::MaterialModel::Thesis => m.reflectivity + m.refractivity < 1.0,
-        crate::scene::MaterialModel::MetalRough => {
-            (m.metallic < 1.0 || m.metallic_texture.is_some()) && m.refractivity < 1.0
-        }
+        crate::scene::MaterialModel::MetalRough => (m.metallic < 1.0 || m.metallic_texture.is_some()) && m.refractivity < 1.0,
     }
 }
 
@@ -253,23 +251,12 @@ mod tests {
 
     fn two_triangle_scene() -> Scene {
         Scene {
-            positions: vec![
-                Vec3::ZERO,
-                Vec3::new(2.0, 0.0, 0.0),
-                Vec3::new(0.0, 3.0, 0.0),
-                Vec3::new(9.0, 9.0, 9.0),
-                Vec3::splat(-50.0),
-            ],
+            positions: vec![Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 3.0, 0.0), Vec3::new(9.0, 9.0, 9.0), Vec3::splat(-50.0)],
             triangles: vec![[0, 1, 2], [0, 2, 1]],
             material_ids: vec![0, 1],
             materials: vec![
                 Material::default(),
-                Material {
-                    emission: Vec3::new(1.0, 2.0, 0.0),
-                    reflectivity: 0.25,
-                    refractivity: 0.75,
-                    ..Default::default()
-                },
+                Material { emission: Vec3::new(1.0, 2.0, 0.0), reflectivity: 0.25, refractivity: 0.75, ..Default::default() },
             ],
             ..Default::default()
         }

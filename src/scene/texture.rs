@@ -120,12 +120,7 @@ impl<'a> Requests<'a> {
                                     msg: format!("image '{}' not found (looked for {})", crate::text::quote(&req.name), path.display()),
                                 },
                             },
-                            format!(
-                                "{}: texture '{}' not found (looked for {}); using none",
-                                req.at,
-                                req.name,
-                                path.display()
-                            ),
+                            format!("{}: texture '{}' not found (looked for {}); using none", req.at, req.name, path.display()),
                         ),
                         Failure::Bad(why) => (
                             SceneError::Texture {
@@ -164,16 +159,14 @@ impl Decoded {
             m.emission_texture = m.emission_texture.and_then(|t| self.remap[t as usize]);
             m.normal_texture = m.normal_texture.and_then(|t| self.remap[t as usize]);
             m.metallic_texture = m.metallic_texture.and_then(|t| self.remap[t as usize]);
-            m.alpha =
-                m.alpha.and_then(|a| self.remap[a.texture as usize].map(|t| super::AlphaMask { texture: t, ..a }));
+            m.alpha = m.alpha.and_then(|a| self.remap[a.texture as usize].map(|t| super::AlphaMask { texture: t, ..a }));
         }
     }
 }
 
 fn decode_all(reqs: &[Request]) -> Vec<Result<Texture, Failure>> {
     let one = |r: &Request| {
-        catch_unwind(AssertUnwindSafe(|| decode_request(r)))
-            .unwrap_or_else(|_| Err(Failure::Bad("the image decoder panicked".into())))
+        catch_unwind(AssertUnwindSafe(|| decode_request(r))).unwrap_or_else(|_| Err(Failure::Bad("the image decoder panicked".into())))
     };
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(reqs.len());
     if threads <= 1 {
@@ -335,10 +328,8 @@ mod tests {
         let d = reqs.decode(false, &mut w).unwrap();
         assert_eq!(d.textures.len(), 1);
         assert_eq!((d.textures[0].width, d.textures[0].height), (3, 2));
-        let mut mats = vec![
-            Material { albedo_texture: Some(a), ..Default::default() },
-            Material { albedo_texture: Some(b), ..Default::default() },
-        ];
+        let mut mats =
+            vec![Material { albedo_texture: Some(a), ..Default::default() }, Material { albedo_texture: Some(b), ..Default::default() }];
         d.apply(&mut mats);
         assert_eq!(mats[0].albedo_texture, None);
         assert_eq!(mats[1].albedo_texture, Some(0));

@@ -113,7 +113,8 @@ impl Tracer {
     }
 
     pub fn with_options(ctx: &Context, opts: &TraceOptions) -> Result<Tracer> {
-        let base = [Spec { id: abi::SPEC_TRI_TEST, value: opts.tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: opts.stats as u32 }];
+        let base =
+            [Spec { id: abi::SPEC_TRI_TEST, value: opts.tri_test.spec_value() }, Spec { id: abi::SPEC_STATS, value: opts.stats as u32 }];
         let mut trace_specs = base.to_vec();
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
         match opts.layout {
@@ -171,7 +172,16 @@ impl Tracer {
     /// `alpha`. `stats` receives two u32 counters (nodes, triangles) when the tracer counts
     /// them.
     #[allow(clippy::too_many_arguments)]
-    pub fn record_trace(&self, rec: &mut Recorder, geometry: &[Bind], rays: &Buffer, hits: &Buffer, stats: &Buffer, count: u32, any_hit: bool) -> Result<()> {
+    pub fn record_trace(
+        &self,
+        rec: &mut Recorder,
+        geometry: &[Bind],
+        rays: &Buffer,
+        hits: &Buffer,
+        stats: &Buffer,
+        count: u32,
+        any_hit: bool,
+    ) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
         let mut push = TracePush { count, ..Default::default() };
         let mut binds = geometry.to_vec();
@@ -207,7 +217,12 @@ impl Tracer {
     /// (`tiled_invocations` of them; those outside the image have tmax < 0).
     pub fn record_primary(&self, rec: &mut Recorder, cam: &GpuCamera, rays: &Buffer) -> Result<()> {
         let n = crate::gpu_data::tiled_invocations(cam.size.x, cam.size.y);
-        rec.dispatch(&self.gen_primary, &[Bind::buffer(abi::BIND_RAYS_OUT, rays)], bytemuck::bytes_of(cam), [self.gen_primary.groups_for(n), 1, 1])
+        rec.dispatch(
+            &self.gen_primary,
+            &[Bind::buffer(abi::BIND_RAYS_OUT, rays)],
+            bytemuck::bytes_of(cam),
+            [self.gen_primary.groups_for(n), 1, 1],
+        )
     }
 
     /// Spawns secondary rays from `hits` of `rays` and compacts the valid ones to the front

@@ -140,7 +140,11 @@ const MOVE_KEYS: [KeyCode; 6] = [KeyCode::KeyW, KeyCode::KeyA, KeyCode::KeyS, Ke
 impl Input {
     fn motion(&self) -> Motion {
         let axis = |pos, neg| (self.held.contains(&pos) as i8 - self.held.contains(&neg) as i8) as f32;
-        Motion { forward: axis(KeyCode::KeyW, KeyCode::KeyS), right: axis(KeyCode::KeyD, KeyCode::KeyA), up: axis(KeyCode::KeyE, KeyCode::KeyQ) }
+        Motion {
+            forward: axis(KeyCode::KeyW, KeyCode::KeyS),
+            right: axis(KeyCode::KeyD, KeyCode::KeyA),
+            up: axis(KeyCode::KeyE, KeyCode::KeyQ),
+        }
     }
 }
 

@@ -82,7 +82,8 @@ impl FrameStats {
 
     /// The window title.
     pub fn title(&self, integrator: &str, spp: u32, exposure: f32) -> String {
-        let mut t = format!("bidir view - {integrator} - {spp} spp - {:.1} ms/frame - {:.2} Msamples/s", self.frame_ms(), self.msamples_per_s());
+        let mut t =
+            format!("bidir view - {integrator} - {spp} spp - {:.1} ms/frame - {:.2} Msamples/s", self.frame_ms(), self.msamples_per_s());
         if exposure != 0.0 {
             t += &format!(" - exposure {exposure:+.1}");
         }

@@ -45,7 +45,10 @@ impl<'a> Recorder<'a> {
         let mb = [vk::MemoryBarrier::default()
             .src_access_mask(vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE)
             .dst_access_mask(
-                vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE,
+                vk::AccessFlags::SHADER_READ
+                    | vk::AccessFlags::SHADER_WRITE
+                    | vk::AccessFlags::TRANSFER_READ
+                    | vk::AccessFlags::TRANSFER_WRITE,
             )];
         // SAFETY: recording into a command buffer in the recording state.
         unsafe { self.shared.device.cmd_pipeline_barrier(self.cmd, stages, stages, vk::DependencyFlags::empty(), &mb, &[], &[]) };
@@ -74,7 +77,11 @@ impl<'a> Recorder<'a> {
                 (Resource::StorageImage(img), vk::DescriptorType::STORAGE_IMAGE) => {
                     image_infos.push((
                         b.binding,
-                        vk::DescriptorImageInfo { sampler: vk::Sampler::null(), image_view: img.view, image_layout: vk::ImageLayout::GENERAL },
+                        vk::DescriptorImageInfo {
+                            sampler: vk::Sampler::null(),
+                            image_view: img.view,
+                            image_layout: vk::ImageLayout::GENERAL,
+                        },
                     ));
                 }
                 (_, ty) => return Err(kerr(format!("binding {} expects {ty:?}, a different resource was given", b.binding))),
@@ -103,7 +110,13 @@ impl<'a> Recorder<'a> {
         unsafe {
             d.cmd_bind_pipeline(self.cmd, vk::PipelineBindPoint::COMPUTE, kernel.pipeline);
             if !writes.is_empty() {
-                self.shared.push_descriptor.cmd_push_descriptor_set(self.cmd, vk::PipelineBindPoint::COMPUTE, kernel.pipeline_layout, 0, &writes);
+                self.shared.push_descriptor.cmd_push_descriptor_set(
+                    self.cmd,
+                    vk::PipelineBindPoint::COMPUTE,
+                    kernel.pipeline_layout,
+                    0,
+                    &writes,
+                );
             }
             if !push.is_empty() {
                 d.cmd_push_constants(self.cmd, kernel.pipeline_layout, vk::ShaderStageFlags::COMPUTE, 0, push);
@@ -139,7 +152,8 @@ impl<'a> Recorder<'a> {
     /// Moves `image` from layout `old` to `new`, ordering all compute and transfer work
     /// before against all after.
     fn transition(&mut self, image: &Image, old: vk::ImageLayout, new: vk::ImageLayout) {
-        let all = vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE;
+        let all =
+            vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE;
         let src_access = if old == vk::ImageLayout::UNDEFINED { vk::AccessFlags::empty() } else { all };
         let b = [vk::ImageMemoryBarrier::default()
             .image(image.raw)
@@ -172,7 +186,12 @@ impl<'a> Recorder<'a> {
             buffer_offset: 0,
             buffer_row_length: 0,
             buffer_image_height: 0,
-            image_subresource: vk::ImageSubresourceLayers { aspect_mask: vk::ImageAspectFlags::COLOR, mip_level: 0, base_array_layer: 0, layer_count: 1 },
+            image_subresource: vk::ImageSubresourceLayers {
+                aspect_mask: vk::ImageAspectFlags::COLOR,
+                mip_level: 0,
+                base_array_layer: 0,
+                layer_count: 1,
+            },
             image_offset: vk::Offset3D::default(),
             image_extent: vk::Extent3D { width: image.width(), height: image.height(), depth: 1 },
         }]
@@ -234,14 +253,17 @@ impl Context {
     {
         let s = &*self.shared;
         let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
-        let alloc = vk::CommandBufferAllocateInfo::default().command_pool(*pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
+        let alloc =
+            vk::CommandBufferAllocateInfo::default().command_pool(*pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
         // SAFETY: the pool is externally synchronised by its mutex, held through recording.
         let cmd = unsafe { s.device.allocate_command_buffers(&alloc) }.ctx(|| format!("allocate command buffer for {what}"))?[0];
         s.name(cmd, what);
         // SAFETY: the pool mutex is held for the whole submission; a buffer is freed once, after it ran or failed.
         let free = |cmd| unsafe { s.device.free_command_buffers(*pool, &[cmd]) };
         // SAFETY: fresh command buffer.
-        if let Err(result) = unsafe { s.device.begin_command_buffer(cmd, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT)) } {
+        if let Err(result) = unsafe {
+            s.device.begin_command_buffer(cmd, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT))
+        } {
             free(cmd);
             return Err(VkError::Vk { what: format!("begin {what}"), result });
         }
@@ -334,9 +356,7 @@ impl Timer {
         let mut data = vec![0u64; self.count as usize];
         // SAFETY: the submission that wrote them has completed (submit waits).
         unsafe {
-            self.shared
-                .device
-                .get_query_pool_results(self.pool, 0, &mut data, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
+            self.shared.device.get_query_pool_results(self.pool, 0, &mut data, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
         }
         .ctx(|| "read timestamps".into())?;
         let mask = if self.valid_bits >= 64 { u64::MAX } else { (1u64 << self.valid_bits) - 1 };

@@ -257,8 +257,8 @@ fn create_device(
     // rather than fail inside vkCreateDevice.
     if !opts.device_extensions.is_empty() {
         // SAFETY: query on a live physical device.
-        let available = unsafe { instance.enumerate_device_extension_properties(physical) }
-            .ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
+        let available =
+            unsafe { instance.enumerate_device_extension_properties(physical) }.ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
         for want in &opts.device_extensions {
             if !available.iter().any(|e| e.extension_name_as_c_str() == Ok(*want)) {
                 return Err(VkError::MissingExtension {

@@ -60,11 +60,7 @@ pub(crate) fn load_entry() -> Result<ash::Entry> {
     unsafe { ash::Entry::load() }.map_err(|e| VkError::Loader(e.to_string()))
 }
 
-pub(crate) fn create_instance(
-    validation: bool,
-    extra_extensions: &[&CStr],
-    log: &std::sync::Arc<ValidationLog>,
-) -> Result<InstanceParts> {
+pub(crate) fn create_instance(validation: bool, extra_extensions: &[&CStr], log: &std::sync::Arc<ValidationLog>) -> Result<InstanceParts> {
     let entry = load_entry()?;
     // SAFETY: plain queries on a loaded entry.
     let (loader_version, layers, exts) = unsafe {
@@ -99,11 +95,8 @@ pub(crate) fn create_instance(
     }
 
     let app_name = CString::new("bidir").unwrap();
-    let app = vk::ApplicationInfo::default()
-        .application_name(&app_name)
-        .application_version(1)
-        .engine_name(&app_name)
-        .api_version(api_version);
+    let app =
+        vk::ApplicationInfo::default().application_name(&app_name).application_version(1).engine_name(&app_name).api_version(api_version);
     let mut ext_ptrs: Vec<*const i8> = extra_extensions.iter().map(|e| e.as_ptr()).collect();
     if has_debug_utils {
         ext_ptrs.push(ash::ext::debug_utils::NAME.as_ptr());
@@ -122,10 +115,8 @@ pub(crate) fn create_instance(
         .user_data(log_ptr);
     let enables = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
     let mut features = vk::ValidationFeaturesEXT::default().enabled_validation_features(&enables);
-    let mut info = vk::InstanceCreateInfo::default()
-        .application_info(&app)
-        .enabled_extension_names(&ext_ptrs)
-        .enabled_layer_names(&layer_ptrs);
+    let mut info =
+        vk::InstanceCreateInfo::default().application_info(&app).enabled_extension_names(&ext_ptrs).enabled_layer_names(&layer_ptrs);
     if validation {
         info = info.push_next(&mut messenger_info).push_next(&mut features);
     }
@@ -291,9 +282,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
         let mut size_control = vk::PhysicalDeviceSubgroupSizeControlProperties::default();
         let mut sm = vk::PhysicalDeviceShaderSMBuiltinsPropertiesNV::default();
-        let exts = instance
-            .enumerate_device_extension_properties(pd)
-            .ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
+        let exts = instance.enumerate_device_extension_properties(pd).ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
         let has_ext = |n: &CStr| exts.iter().any(|e| e.extension_name_as_c_str() == Ok(n));
         {
             let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut subgroup);
@@ -406,17 +395,15 @@ pub fn choose_device(devices: &[DeviceInfo], selector: Option<&str>) -> Result<u
             }
             pos
         }
-        None => devices
-            .iter()
-            .enumerate()
-            .filter(|(_, d)| d.usable())
-            .min_by_key(|(_, d)| (d.rank(), d.index))
-            .map(|(i, _)| i)
-            .ok_or_else(|| {
-                VkError::NoSuitableDevice(
-                    devices.iter().map(|d| format!("{}: lacks {}", d.name, d.missing.join(", "))).collect::<Vec<_>>().join("; "),
-                )
-            })?,
+        None => {
+            devices.iter().enumerate().filter(|(_, d)| d.usable()).min_by_key(|(_, d)| (d.rank(), d.index)).map(|(i, _)| i).ok_or_else(
+                || {
+                    VkError::NoSuitableDevice(
+                        devices.iter().map(|d| format!("{}: lacks {}", d.name, d.missing.join(", "))).collect::<Vec<_>>().join("; "),
+                    )
+                },
+            )?
+        }
     };
     Ok(pos)
 }

@@ -64,8 +64,7 @@ impl Kernel {
         };
         let info = vk::PipelineInfoKHR::default().pipeline(self.pipeline);
         // SAFETY: a live pipeline of this device, created with CAPTURE_STATISTICS_KHR.
-        let executables =
-            unsafe { pe.get_pipeline_executable_properties(&info) }.ctx(|| format!("executables of kernel {}", self.name))?;
+        let executables = unsafe { pe.get_pipeline_executable_properties(&info) }.ctx(|| format!("executables of kernel {}", self.name))?;
         let mut out = Vec::new();
         for (i, exe) in executables.iter().enumerate() {
             let ei = vk::PipelineExecutableInfoKHR::default().pipeline(self.pipeline).executable_index(i as u32);
@@ -157,7 +156,8 @@ impl Context {
         // SAFETY: live device, valid create infos; every object is destroyed by Kernel::drop
         // or on the error paths below.
         unsafe {
-            let set_layout = s.device.create_descriptor_set_layout(&set_info, None).ctx(|| format!("descriptor set layout of {}", source.name))?;
+            let set_layout =
+                s.device.create_descriptor_set_layout(&set_info, None).ctx(|| format!("descriptor set layout of {}", source.name))?;
             let ranges = [vk::PushConstantRange { stage_flags: vk::ShaderStageFlags::COMPUTE, offset: 0, size: push_size }];
             let set_layouts = [set_layout];
             let mut pl_info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
@@ -187,10 +187,7 @@ impl Context {
             let data: Vec<u8> = specs.iter().flat_map(|sp| sp.value.to_le_bytes()).collect();
             let spec_info = vk::SpecializationInfo::default().map_entries(&entries).data(&data);
             let entry = c"main";
-            let mut stage = vk::PipelineShaderStageCreateInfo::default()
-                .stage(vk::ShaderStageFlags::COMPUTE)
-                .module(shader)
-                .name(entry);
+            let mut stage = vk::PipelineShaderStageCreateInfo::default().stage(vk::ShaderStageFlags::COMPUTE).module(shader).name(entry);
             if !specs.is_empty() {
                 stage = stage.specialization_info(&spec_info);
             }

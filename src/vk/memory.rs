@@ -134,7 +134,11 @@ pub(crate) fn texel_bytes(format: vk::Format) -> u64 {
     match format {
         vk::Format::R32G32B32A32_SFLOAT | vk::Format::R32G32B32A32_UINT => 16,
         vk::Format::R16G16B16A16_SFLOAT => 8,
-        vk::Format::R32_SFLOAT | vk::Format::R32_UINT | vk::Format::R8G8B8A8_UNORM | vk::Format::R8G8B8A8_SRGB | vk::Format::B8G8R8A8_UNORM => 4,
+        vk::Format::R32_SFLOAT
+        | vk::Format::R32_UINT
+        | vk::Format::R8G8B8A8_UNORM
+        | vk::Format::R8G8B8A8_SRGB
+        | vk::Format::B8G8R8A8_UNORM => 4,
         _ => 16,
     }
 }

@@ -186,9 +186,7 @@ impl Module {
             }
             let descriptor_type = match (storage, self.types.get(&ty)) {
                 (SC_STORAGE_BUFFER, _) => vk::DescriptorType::STORAGE_BUFFER,
-                (SC_UNIFORM, _) if self.decorations.contains_key(&(ty, DEC_BUFFER_BLOCK)) => {
-                    vk::DescriptorType::STORAGE_BUFFER
-                }
+                (SC_UNIFORM, _) if self.decorations.contains_key(&(ty, DEC_BUFFER_BLOCK)) => vk::DescriptorType::STORAGE_BUFFER,
                 (SC_UNIFORM, _) if self.decorations.contains_key(&(ty, DEC_BLOCK)) => vk::DescriptorType::UNIFORM_BUFFER,
                 (SC_UNIFORM_CONSTANT, Some(Type::Image { sampled: 2 })) => vk::DescriptorType::STORAGE_IMAGE,
                 (SC_UNIFORM_CONSTANT, Some(Type::Image { sampled: 1 })) => vk::DescriptorType::SAMPLED_IMAGE,
@@ -222,17 +220,13 @@ impl Module {
             Type::Vector { elem, count } => Some(self.size_of(*elem)? * count),
             // A bare matrix's stride lives on the enclosing struct member (handled there).
             Type::Matrix { .. } => None,
-            Type::Array { length_id, .. } => {
-                Some(self.decoration(ty, DEC_ARRAY_STRIDE)? * self.constants.get(length_id)?)
-            }
+            Type::Array { length_id, .. } => Some(self.decoration(ty, DEC_ARRAY_STRIDE)? * self.constants.get(length_id)?),
             Type::Struct { members } => {
                 let last = members.len().checked_sub(1)? as u32;
                 let off = self.member_decorations.get(&(ty, last, DEC_OFFSET))?[0];
                 let last_ty = members[last as usize];
                 let size = match self.types.get(&last_ty)? {
-                    Type::Matrix { count, .. } => {
-                        self.member_decorations.get(&(ty, last, DEC_MATRIX_STRIDE))?[0] * count
-                    }
+                    Type::Matrix { count, .. } => self.member_decorations.get(&(ty, last, DEC_MATRIX_STRIDE))?[0] * count,
                     _ => self.size_of(last_ty)?,
                 };
                 Some(off + size)

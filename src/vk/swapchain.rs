@@ -163,7 +163,8 @@ impl Swapchain {
 
     fn semaphore(&self, name: &str) -> Result<vk::Semaphore> {
         // SAFETY: live device; destroyed in Drop or `resize`.
-        let sem = unsafe { self.shared.device.create_semaphore(&vk::SemaphoreCreateInfo::default(), None) }.ctx(|| format!("semaphore {name}"))?;
+        let sem = unsafe { self.shared.device.create_semaphore(&vk::SemaphoreCreateInfo::default(), None) }
+            .ctx(|| format!("semaphore {name}"))?;
         self.shared.name(sem, name);
         Ok(sem)
     }
@@ -182,7 +183,10 @@ impl Swapchain {
         }
         Err(VkError::CannotPresent {
             device: s.info.name.clone(),
-            why: format!("the surface offers no 8-bit RGBA/BGRA sRGB format, only {:?}", formats.iter().map(|f| f.format).collect::<Vec<_>>()),
+            why: format!(
+                "the surface offers no 8-bit RGBA/BGRA sRGB format, only {:?}",
+                formats.iter().map(|f| f.format).collect::<Vec<_>>()
+            ),
         })
     }
 
@@ -317,7 +321,9 @@ impl Swapchain {
         let (index, suboptimal) = match acquired {
             Ok(r) => r,
             Err(vk::Result::ERROR_OUT_OF_DATE_KHR) => return Ok(Presented::OutOfDate),
-            Err(vk::Result::TIMEOUT | vk::Result::NOT_READY) => return Err(VkError::Timeout("acquire a swapchain image".into(), s.gpu_timeout)),
+            Err(vk::Result::TIMEOUT | vk::Result::NOT_READY) => {
+                return Err(VkError::Timeout("acquire a swapchain image".into(), s.gpu_timeout))
+            }
             Err(result) => return Err(VkError::Vk { what: "vkAcquireNextImageKHR".into(), result }),
         };
         let image = self.images[index as usize];
@@ -390,11 +396,20 @@ fn copy_to_swapchain(rec: &mut Recorder, source: &Image, target: vk::Image, exte
         if w > 0 && h > 0 {
             d.cmd_copy_image(rec.cmd, source.raw, src, target, dst, &region);
         }
-        let all = vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE;
+        let all =
+            vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE;
         let to_general = [barrier(source.raw, src, general, vk::AccessFlags::empty(), all)];
         d.cmd_pipeline_barrier(rec.cmd, transfer, compute_or_transfer, vk::DependencyFlags::empty(), &[], &[], &to_general);
         let to_present = [layout(dst, vk::ImageLayout::PRESENT_SRC_KHR, vk::AccessFlags::TRANSFER_WRITE, vk::AccessFlags::empty())];
-        d.cmd_pipeline_barrier(rec.cmd, transfer, vk::PipelineStageFlags::BOTTOM_OF_PIPE, vk::DependencyFlags::empty(), &[], &[], &to_present);
+        d.cmd_pipeline_barrier(
+            rec.cmd,
+            transfer,
+            vk::PipelineStageFlags::BOTTOM_OF_PIPE,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[],
+            &to_present,
+        );
     }
 }
 

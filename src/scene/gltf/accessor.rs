@@ -19,12 +19,7 @@ fn bad<T>(msg: String) -> Result<T> {
 }
 
 /// The bytes of `acc`: (data starting at element 0, stride, count, component type).
-fn view<'b>(
-    acc: &Accessor,
-    buffers: &'b [Vec<u8>],
-    dims: Dimensions,
-    types: &[DataType],
-) -> Result<(&'b [u8], usize, usize, DataType)> {
+fn view<'b>(acc: &Accessor, buffers: &'b [Vec<u8>], dims: Dimensions, types: &[DataType]) -> Result<(&'b [u8], usize, usize, DataType)> {
     if acc.sparse().is_some() {
         return Err(AccessorError::Unsupported("a sparse accessor".into()));
     }
@@ -36,9 +31,7 @@ fn view<'b>(
         return bad(format!("component type {ty:?} is not one of {types:?}"));
     }
     let Some(view) = acc.view() else {
-        return Err(AccessorError::Unsupported(
-            "an accessor without a bufferView (Draco-compressed or sparse-only data)".into(),
-        ));
+        return Err(AccessorError::Unsupported("an accessor without a bufferView (Draco-compressed or sparse-only data)".into()));
     };
     let count = acc.count();
     if count == 0 {
@@ -56,9 +49,7 @@ fn view<'b>(
     let span = (count - 1).checked_mul(stride).and_then(|s| s.checked_add(elem));
     let view_end = view.offset().checked_add(view.length());
     match (start, span, view_end) {
-        (Some(start), Some(span), Some(view_end))
-            if start.checked_add(span).is_some_and(|end| end <= view_end && end <= buf.len()) =>
-        {
+        (Some(start), Some(span), Some(view_end)) if start.checked_add(span).is_some_and(|end| end <= view_end && end <= buf.len()) => {
             Ok((&buf[start..start + span], stride, count, ty))
         }
         _ => bad(format!(
@@ -102,8 +93,7 @@ pub(super) fn read_uv(acc: &Accessor, buffers: &[Vec<u8>]) -> Result<Vec<Vec2>> 
         let uv = match ty {
             DataType::U8 => Vec2::new(d[o] as f32, d[o + 1] as f32) / 255.0,
             DataType::U16 => {
-                Vec2::new(u16::from_le_bytes([d[o], d[o + 1]]) as f32, u16::from_le_bytes([d[o + 2], d[o + 3]]) as f32)
-                    / 65535.0
+                Vec2::new(u16::from_le_bytes([d[o], d[o + 1]]) as f32, u16::from_le_bytes([d[o + 2], d[o + 3]]) as f32) / 65535.0
             }
             _ => Vec2::new(f32_at(d, o), f32_at(d, o + 4)),
         };

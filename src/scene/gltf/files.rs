@@ -17,8 +17,7 @@ pub(super) enum Uri {
 /// Resolves `uri` against the directory of the glTF file.
 pub(super) fn resolve(uri: &str, base: &Path) -> Result<Uri, String> {
     if uri.starts_with("data:") {
-        let data = ::gltf::buffer::Data::from_source(::gltf::buffer::Source::Uri(uri), None)
-            .map_err(|e| format!("bad data URI: {e}"))?;
+        let data = ::gltf::buffer::Data::from_source(::gltf::buffer::Source::Uri(uri), None).map_err(|e| format!("bad data URI: {e}"))?;
         return Ok(Uri::Data(data.0));
     }
     let path = if let Some(rest) = uri.strip_prefix("file://").or_else(|| uri.strip_prefix("file:")) {
@@ -53,25 +52,16 @@ fn percent_decode(s: &str) -> String {
 
 /// Every buffer's bytes, checked against its declared length. A buffer that cannot be read
 /// is an error: the geometry in it cannot be loaded.
-pub(super) fn load_buffers(
-    file: &Path,
-    doc: &Document,
-    base: &Path,
-    mut blob: Option<Vec<u8>>,
-) -> Result<Vec<Vec<u8>>, SceneError> {
+pub(super) fn load_buffers(file: &Path, doc: &Document, base: &Path, mut blob: Option<Vec<u8>>) -> Result<Vec<Vec<u8>>, SceneError> {
     let mut out = Vec::new();
     for buffer in doc.buffers() {
         let element = format!("buffer {}", buffer.index());
         let err = |msg: String| SceneError::Gltf { file: file.to_path_buf(), element: element.clone(), msg };
         let data = match buffer.source() {
-            ::gltf::buffer::Source::Bin => {
-                blob.take().ok_or_else(|| err("refers to the GLB binary chunk, which is missing".into()))?
-            }
+            ::gltf::buffer::Source::Bin => blob.take().ok_or_else(|| err("refers to the GLB binary chunk, which is missing".into()))?,
             ::gltf::buffer::Source::Uri(uri) => match resolve(uri, base).map_err(&err)? {
                 Uri::Data(d) => d,
-                Uri::File(path) => {
-                    std::fs::read(&path).map_err(|e| err(format!("cannot read '{uri}' ({}): {e}", path.display())))?
-                }
+                Uri::File(path) => std::fs::read(&path).map_err(|e| err(format!("cannot read '{uri}' ({}): {e}", path.display())))?,
             },
         };
         if data.len() < buffer.length() {
@@ -98,9 +88,7 @@ mod tests {
     fn uris() {
         let base = Path::new("/scenes");
         assert!(matches!(resolve("tex/a%20b.png", base), Ok(Uri::File(p)) if p == Path::new("/scenes/tex/a b.png")));
-        assert!(
-            matches!(resolve("data:application/octet-stream;base64,AAEC", base), Ok(Uri::Data(d)) if d[..3] == [0, 1, 2])
-        );
+        assert!(matches!(resolve("data:application/octet-stream;base64,AAEC", base), Ok(Uri::Data(d)) if d[..3] == [0, 1, 2]));
         assert!(resolve("https://example.com/a.bin", base).is_err());
         assert!(resolve("data:application/octet-stream;base64,@@@", base).is_err());
     }

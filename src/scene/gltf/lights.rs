@@ -12,11 +12,7 @@ use crate::scene::{PunctualKind, PunctualLight};
 /// cycles and non-finite transforms, which are skipped here).
 pub fn punctual_lights(doc: &Document, roots: Vec<Node>) -> Vec<PunctualLight> {
     let mut lights = Vec::new();
-    let mut stack: Vec<(Node, Mat4, usize)> = roots
-        .into_iter()
-        .rev()
-        .map(|n| (n, Mat4::IDENTITY, 0))
-        .collect();
+    let mut stack: Vec<(Node, Mat4, usize)> = roots.into_iter().rev().map(|n| (n, Mat4::IDENTITY, 0)).collect();
     while let Some((node, parent, depth)) = stack.pop() {
         let Some(local) = local_matrix(&node) else {
             continue;
@@ -29,18 +25,11 @@ pub fn punctual_lights(doc: &Document, roots: Vec<Node>) -> Vec<PunctualLight> {
             let kind = match l.kind() {
                 Kind::Point => PunctualKind::Point,
                 Kind::Directional => PunctualKind::Directional,
-                Kind::Spot {
-                    inner_cone_angle,
-                    outer_cone_angle,
-                } => PunctualKind::Spot {
-                    inner: inner_cone_angle,
-                    outer: outer_cone_angle,
-                },
+                Kind::Spot { inner_cone_angle, outer_cone_angle } => {
+                    PunctualKind::Spot { inner: inner_cone_angle, outer: outer_cone_angle }
+                }
             };
-            let name = l
-                .name()
-                .or(node.name())
-                .map_or_else(|| format!("light {}", l.index()), str::to_owned);
+            let name = l.name().or(node.name()).map_or_else(|| format!("light {}", l.index()), str::to_owned);
             let direction = world.transform_vector3(-Vec3::Z).normalize_or_zero();
             lights.push(PunctualLight {
                 name,
@@ -50,13 +39,7 @@ pub fn punctual_lights(doc: &Document, roots: Vec<Node>) -> Vec<PunctualLight> {
                 intensity: Vec3::from(l.color()) * l.intensity(),
             });
         }
-        stack.extend(
-            node.children()
-                .map(|c| (c, world, depth + 1))
-                .collect::<Vec<_>>()
-                .into_iter()
-                .rev(),
-        );
+        stack.extend(node.children().map(|c| (c, world, depth + 1)).collect::<Vec<_>>().into_iter().rev());
     }
     lights
 }

@@ -107,10 +107,7 @@ pub(super) fn convert<'a>(
                 match albedo_texture {
                     Some(t) if a > 0.0 => Some(AlphaMask { texture: t, cutoff: cutoff / a }),
                     _ => {
-                        w.warn(format!(
-                            "{}: {element}: alphaMode MASK without a base colour texture; treated as opaque",
-                            file.display()
-                        ));
+                        w.warn(format!("{}: {element}: alphaMode MASK without a base colour texture; treated as opaque", file.display()));
                         None
                     }
                 }
@@ -136,11 +133,7 @@ pub(super) fn convert<'a>(
             metallic_texture: metal_rough_texture,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
-        if !finite
-            || material.albedo.min_element() < 0.0
-            || material.emission.min_element() < 0.0
-            || material.ior <= 0.0
-        {
+        if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {
             return Err(SceneError::Gltf {
                 file: file.to_path_buf(),
                 element,
@@ -164,13 +157,11 @@ fn image_request<'a>(
 ) -> Result<Option<u32>, SceneError> {
     let index = image.index();
     let label = image.name().map(str::to_owned);
-    let at =
-        format!("{}: image {index}{}", file.display(), label.as_ref().map_or(String::new(), |n| format!(" \"{n}\"")));
+    let at = format!("{}: image {index}{}", file.display(), label.as_ref().map_or(String::new(), |n| format!(" \"{n}\"")));
     let source = match image.source() {
         ::gltf::image::Source::View { view, mime_type } => {
             let start = view.offset();
-            let bytes =
-                buffers.get(view.buffer().index()).and_then(|b| b.get(start..start.checked_add(view.length())?));
+            let bytes = buffers.get(view.buffer().index()).and_then(|b| b.get(start..start.checked_add(view.length())?));
             match bytes {
                 Some(bytes) => Source::Memory { bytes, mime: Some(mime_type.to_owned()) },
                 None => {
@@ -193,17 +184,8 @@ fn image_request<'a>(
     };
     let name = match (&label, &source) {
         (Some(n), _) => n.clone(),
-        (None, Source::File(p)) => {
-            p.file_name().map_or_else(|| format!("image {index}"), |f| f.to_string_lossy().into_owned())
-        }
+        (None, Source::File(p)) => p.file_name().map_or_else(|| format!("image {index}"), |f| f.to_string_lossy().into_owned()),
         _ => format!("image {index}"),
     };
-    Ok(Some(requests.request(format!("image {index}"), role, || Request {
-        name,
-        source,
-        role,
-        at,
-        file: file.to_path_buf(),
-        line: None,
-    })))
+    Ok(Some(requests.request(format!("image {index}"), role, || Request { name, source, role, at, file: file.to_path_buf(), line: None })))
 }

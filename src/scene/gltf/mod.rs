@@ -45,8 +45,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     let bytes = std::fs::read(path).map_err(|e| SceneError::io(path, e))?;
     check_glb_magic(file, &bytes)?;
     let mut w = Warnings::default();
-    let ::gltf::Gltf { document, blob } =
-        ::gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| gerr("file", e.to_string()))?;
+    let ::gltf::Gltf { document, blob } = ::gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| gerr("file", e.to_string()))?;
     drop(bytes);
     let relaxed = check_extensions(file, &document, &mut w)?;
     check_what_validation_misses(file, &document)?;
@@ -71,9 +70,8 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     let (geometry, decoded) = std::thread::scope(|s| {
         let decoder = s.spawn(|| requests.decode(opts.strict, &mut tex_warnings));
         let geometry = geometry(file, &doc, &buffers, default_material, &mut w);
-        let decoded = decoder.join().unwrap_or_else(|_| {
-            Err(SceneError::Parse { file: file.to_path_buf(), msg: "texture decoding failed".into() })
-        });
+        let decoded =
+            decoder.join().unwrap_or_else(|_| Err(SceneError::Parse { file: file.to_path_buf(), msg: "texture decoding failed".into() }));
         (geometry, decoded)
     });
     let (b, cameras, used_default) = geometry?;
@@ -190,11 +188,7 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
             "KHR_mesh_quantization" => "quantized vertex attributes (KHR_mesh_quantization)".to_owned(),
             _ => format!("the required extension {ext}"),
         };
-        return Err(SceneError::Unsupported {
-            file: file.to_path_buf(),
-            element: format!("extensionsRequired[{i}]"),
-            what,
-        });
+        return Err(SceneError::Unsupported { file: file.to_path_buf(), element: format!("extensionsRequired[{i}]"), what });
     }
     for ext in json.extensions_used.iter().chain(&relaxed) {
         if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
@@ -203,9 +197,7 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
                 "KHR_draco_mesh_compression" => "uncompressed fallback data is read",
                 _ => "ignored",
             };
-            w.warn_once(&format!("gltf-ext-{ext}"), || {
-                format!("{}: glTF extension {ext} is not supported; {effect}", file.display())
-            });
+            w.warn_once(&format!("gltf-ext-{ext}"), || format!("{}: glTF extension {ext} is not supported; {effect}", file.display()));
         }
     }
     Ok(relaxed)
@@ -225,11 +217,7 @@ fn check_what_validation_misses(file: &Path, doc: &Document) -> Result<(), Scene
                 if acc.value() >= json.accessors.len() {
                     return err(
                         format!("meshes[{mi}].primitives[{pi}].attributes[\"POSITION\"]"),
-                        format!(
-                            "invalid: accessor {} does not exist ({} accessors)",
-                            acc.value(),
-                            json.accessors.len()
-                        ),
+                        format!("invalid: accessor {} does not exist ({} accessors)", acc.value(), json.accessors.len()),
                     );
                 }
             }
@@ -269,13 +257,7 @@ type Geometry = (Builder, Vec<Camera>, bool);
 
 /// Flattens the scene graph: returns the geometry, the cameras, and whether the default
 /// material (index `default_material`) was used.
-fn geometry(
-    file: &Path,
-    doc: &Document,
-    buffers: &[Vec<u8>],
-    default_material: u32,
-    w: &mut Warnings,
-) -> Result<Geometry, SceneError> {
+fn geometry(file: &Path, doc: &Document, buffers: &[Vec<u8>], default_material: u32, w: &mut Warnings) -> Result<Geometry, SceneError> {
     let gerr = |element: String, msg: String| SceneError::Gltf { file: file.to_path_buf(), element, msg };
     let nodes = doc.nodes().len();
     if let Some(scene) = doc.default_scene().or_else(|| doc.scenes().next()) {
@@ -301,15 +283,12 @@ fn geometry(
             instances.push((mesh.index(), world));
         }
         if node.skin().is_some() {
-            w.warn_once("gltf-skin", || {
-                format!("{}: {}: skins are not supported; the bind pose is used", file.display(), element())
-            });
+            w.warn_once("gltf-skin", || format!("{}: {}: skins are not supported; the bind pose is used", file.display(), element()));
         }
         if let Some(cam) = node.camera() {
             match cam.projection() {
                 ::gltf::camera::Projection::Perspective(p) => {
-                    let name =
-                        node.name().or(cam.name()).map_or_else(|| format!("camera {}", cam.index()), str::to_owned);
+                    let name = node.name().or(cam.name()).map_or_else(|| format!("camera {}", cam.index()), str::to_owned);
                     if let Some(a) = p.aspect_ratio().filter(|a| !(a.is_finite() && *a > 0.0)) {
                         w.warn(format!(
                             "{}: {}, camera {} \"{name}\": aspect ratio {a} is not positive; ignored (the image is 1920x1080 unless --width/--height say otherwise)",
@@ -442,11 +421,9 @@ fn read_mesh(
                 element: format!("{element}, accessor {} ({what})", acc.index()),
                 what: what_,
             },
-            AccessorError::Bad(msg) => SceneError::Gltf {
-                file: file.to_path_buf(),
-                element: format!("{element}, accessor {} ({what})", acc.index()),
-                msg,
-            },
+            AccessorError::Bad(msg) => {
+                SceneError::Gltf { file: file.to_path_buf(), element: format!("{element}, accessor {} ({what})", acc.index()), msg }
+            }
         };
         let Some(pos_acc) = prim.get(&Semantic::Positions) else {
             w.warn(format!("{}: {element}: no POSITION attribute; skipped", file.display()));
@@ -455,11 +432,7 @@ fn read_mesh(
         let positions = read_vec3(&pos_acc, buffers).map_err(|e| read_err(&pos_acc, "POSITION", e))?;
         let same_count = |acc: &::gltf::Accessor, what: &str| {
             if acc.count() != positions.len() {
-                Err(read_err(
-                    acc,
-                    what,
-                    AccessorError::Bad(format!("{} elements, but POSITION has {}", acc.count(), positions.len())),
-                ))
+                Err(read_err(acc, what, AccessorError::Bad(format!("{} elements, but POSITION has {}", acc.count(), positions.len()))))
             } else {
                 Ok(())
             }
@@ -480,19 +453,17 @@ fn read_mesh(
         };
         for (semantic, _) in prim.attributes() {
             match semantic {
-                Semantic::Colors(_) => w.warn_once("gltf-colors", || {
-                    format!("{}: {element}: vertex colours are not supported; ignored", file.display())
-                }),
-                Semantic::Joints(_) | Semantic::Weights(_) => w.warn_once("gltf-skin", || {
-                    format!("{}: {element}: skinning is not supported; the bind pose is used", file.display())
-                }),
+                Semantic::Colors(_) => {
+                    w.warn_once("gltf-colors", || format!("{}: {element}: vertex colours are not supported; ignored", file.display()))
+                }
+                Semantic::Joints(_) | Semantic::Weights(_) => {
+                    w.warn_once("gltf-skin", || format!("{}: {element}: skinning is not supported; the bind pose is used", file.display()))
+                }
                 _ => {}
             }
         }
         if prim.morph_targets().len() > 0 {
-            w.warn_once("gltf-morph", || {
-                format!("{}: {element}: morph targets are not supported; the base shape is used", file.display())
-            });
+            w.warn_once("gltf-morph", || format!("{}: {element}: morph targets are not supported; the base shape is used", file.display()));
         }
         let indices: Vec<u32> = match prim.indices() {
             Some(acc) => read_indices(&acc, buffers, positions.len()).map_err(|e| read_err(&acc, "indices", e))?,
