@@ -89,12 +89,17 @@ impl Bsdf {
 
 fn run(ctx: &Context, kernel: &Kernel, push: abi::SamplingTestPush, per_sample: u64, input: Option<&Buffer>) -> Vec<Vec4> {
     let out = ctx.create_buffer("glossy.out", push.count as u64 * per_sample * 16, Memory::Device).unwrap();
-    let placeholder = ctx.create_buffer("glossy.placeholder", 64, Memory::Device).unwrap();
+    // Bindings the sampling kernel declares but the glossy modes never read (emitters, the
+    // environment): one placeholder, as large as the largest struct read from them.
+    let placeholder = ctx.create_buffer("glossy.placeholder", 128, Memory::Device).unwrap();
     let binds = [
         Bind::buffer(abi::SAMPLING_BIND_OUT, &out),
         Bind::buffer(abi::SAMPLING_BIND_IN, input.unwrap_or(&placeholder)),
         Bind::buffer(abi::BIND_EMITTERS, &placeholder),
         Bind::buffer(abi::BIND_ALIAS, &placeholder),
+        Bind::buffer(abi::BIND_ENV, &placeholder),
+        Bind::buffer(abi::BIND_ENV_TEXELS, &placeholder),
+        Bind::buffer(abi::BIND_ENV_ALIAS, &placeholder),
     ];
     let groups = kernel.groups_for(push.count);
     ctx.submit("glossy", |rec| rec.dispatch(kernel, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])).unwrap();

@@ -39,9 +39,10 @@ pub struct SettingsArgs {
     /// Most path segments (0: unbounded; Russian roulette ends paths).
     #[arg(long, default_value_t = 0)]
     pub max_depth: u32,
-    /// First bounce at which Russian roulette may end a path (1 = from the first hit).
-    #[arg(long, default_value_t = 3, value_name = "N")]
-    pub rr_depth: u32,
+    /// First bounce at which Russian roulette may end a path (1 = from the first hit; default
+    /// 5 for pt and pt-nee, 3 for bdpt).
+    #[arg(long, value_name = "N")]
+    pub rr_depth: Option<u32>,
     /// BDPT: light vertices kept per light path (a reservoir over the whole path).
     #[arg(long, default_value_t = 8)]
     pub light_path_len: u32,
@@ -73,10 +74,12 @@ impl SettingsArgs {
         s.seed = self.seed;
         s.sampler = self.sampler;
         s.max_depth = self.max_depth;
-        if self.rr_depth == 0 {
-            bail!("--rr-depth must be at least 1 (the bounce at which Russian roulette may start)");
+        if let Some(rr) = self.rr_depth {
+            if rr == 0 {
+                bail!("--rr-depth must be at least 1 (the bounce at which Russian roulette may start)");
+            }
+            s.rr_depth = rr;
         }
-        s.rr_depth = self.rr_depth;
         s.light_path_len = self.light_path_len;
         s.light_path_ratio = self.light_paths;
         s.sample_slices = self.sample_slices;
