@@ -44,7 +44,7 @@ fn check(integrator: Integrator, spp: u32) {
     assert!(ctx.close().unwrap().is_empty(), "validation messages (single device)");
 
     let devices = [opts(), opts()];
-    let done = multi::render_on_devices(&devices, &scene, &camera, &settings, spp, &|_| {}).unwrap();
+    let done = multi::render_on_devices(&devices, &scene, &camera, &settings, spp, None, &|_| {}).unwrap();
     assert!(done.validation.is_empty(), "validation messages: {:?}", done.validation);
     assert_eq!(done.sums.spp, spp as u64);
     assert_eq!(done.devices.iter().map(|d| d.samples).sum::<u64>(), spp as u64);
@@ -54,6 +54,37 @@ fn check(integrator: Integrator, spp: u32) {
     }
     assert_eq!(done.nan_samples, 0);
     assert_same(&format!("{} on two devices", integrator.name()), &done.sums.resolve(), &single);
+}
+
+/// `--time` on several devices: they stop taking passes when the budget is spent, and what
+/// they rendered is one contiguous range of samples, the same image a single device makes of
+/// that many samples.
+#[test]
+fn two_devices_with_a_time_budget_equal_one_render_of_their_samples() {
+    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let scene = Scene::builtin_cornell_box();
+    let camera = Camera { width: 40, height: 32, ..scene.cameras[0].clone() };
+    let mut settings = RenderSettings::new(Integrator::PtNee);
+    settings.seed = 12;
+    settings.pass_target = std::time::Duration::from_millis(20);
+    let devices = [opts(), opts()];
+    let budget = std::time::Duration::from_millis(1500);
+    let done = multi::render_on_devices(&devices, &scene, &camera, &settings, u32::MAX, Some(budget), &|_| {}).unwrap();
+    assert!(done.validation.is_empty(), "validation messages: {:?}", done.validation);
+    let spp = done.sums.spp as u32;
+    assert!(spp > 0, "nothing rendered in {budget:?}");
+    assert_eq!(done.devices.iter().map(|d| d.samples).sum::<u64>(), spp as u64);
+    for d in &done.devices {
+        eprintln!("time budget: {}: {} spp in {:.3} s", d.name, d.samples, d.elapsed.as_secs_f64());
+        assert!(d.elapsed.as_secs_f64() < 3.0 * budget.as_secs_f64(), "{} ran {:?} on a {budget:?} budget", d.name, d.elapsed);
+    }
+    let ctx = Context::new(&opts()).unwrap();
+    let mut r = Renderer::new(&ctx, &scene, &camera, settings).unwrap();
+    r.render_spp(spp, |_| {}).unwrap();
+    let single = r.image().unwrap();
+    drop(r);
+    assert!(ctx.close().unwrap().is_empty(), "validation messages (single device)");
+    assert_same("pt-nee on two devices with a time budget", &done.sums.resolve(), &single);
 }
 
 #[test]

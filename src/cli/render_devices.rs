@@ -40,16 +40,19 @@ pub fn run(
     outputs: &[std::path::PathBuf],
     reference: Option<film::RgbImage>,
 ) -> anyhow::Result<()> {
-    if args.time.is_some() {
-        bail!("--time renders on one device; give --spp or --sample-range with several devices");
-    }
-    let spp = args.part.sample_range.map_or(args.spp.unwrap_or(64), |r| r.len());
+    let time = args.time.map(std::time::Duration::from_secs_f64);
+    // With --time the devices render what they can in it (the sample count is known after).
+    let cap = match time {
+        Some(_) => u32::MAX - settings.sample_start,
+        None => args.part.sample_range.map_or(args.spp.unwrap_or(64), |r| r.len()),
+    };
+    let spp = cap;
     if spp == 0 {
         bail!("--spp must be at least 1");
     }
     let camera = &loaded.camera;
     let pixels = settings.crop.map_or(camera.width as f64 * camera.height as f64, |c| c.pixels() as f64);
-    let bar = indicatif::ProgressBar::new(spp as u64);
+    let bar = indicatif::ProgressBar::new(if time.is_some() { 0 } else { spp as u64 });
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:32}] {pos}/{len} spp {msg}")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
@@ -69,12 +72,16 @@ pub fn run(
             .join("; ")
     };
     let start = Instant::now();
-    let done = multi::render_on_devices(devices, &loaded.scene, camera, settings, spp, &|p| {
+    let done = multi::render_on_devices(devices, &loaded.scene, camera, settings, cap, time, &|p| {
         bar.set_position(p.iter().map(|d| d.samples).sum());
         bar.set_message(rates(p));
     })?;
     bar.finish_and_clear();
     let elapsed = start.elapsed();
+    let spp = done.sums.spp as u32;
+    if spp == 0 {
+        bail!("no device rendered a sample in the time given");
+    }
     for m in &done.validation {
         eprintln!("validation: {m}");
     }

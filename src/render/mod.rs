@@ -522,6 +522,16 @@ impl Renderer {
         sized.clamp(1, self.max_pass_spp())
     }
 
+    /// Most samples per pixel a pass can render in `seconds` by the pass model (1 before
+    /// anything was measured), for callers that schedule passes themselves (`multi`).
+    pub fn pass_spp_within(&self, seconds: f64) -> u32 {
+        if self.pacing.known() {
+            self.pacing.spp_within(seconds).clamp(1, self.max_pass_spp())
+        } else {
+            1
+        }
+    }
+
     /// Renders samples `first..first + spp` and teaches the pass model how long it took.
     pub fn adaptive_pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
         let t = Instant::now();

@@ -34,14 +34,18 @@ pub struct MultiRender {
 type DeviceResult = Result<(Accumulation, u64, Vec<String>), RenderError>;
 
 /// Renders samples `settings.sample_start ..` `+ spp` of every pixel on the devices of
-/// `devices` (one context each; the same device may appear twice). `progress` is called
-/// after every pass of any device with all devices' progress.
+/// `devices` (one context each; the same device may appear twice). With `time`, devices stop
+/// taking passes once it has passed (their last passes sized to end near it), and the render
+/// holds the samples handed out by then (`sums.spp`, at most `spp`): always a contiguous
+/// range from `sample_start`, since every pass taken is finished. `progress` is called after
+/// every pass of any device with all devices' progress.
 pub fn render_on_devices(
     devices: &[ContextOptions],
     scene: &Scene,
     camera: &Camera,
     settings: &RenderSettings,
     spp: u32,
+    time: Option<Duration>,
     progress: &(dyn Fn(&[DeviceProgress]) + Sync),
 ) -> Result<MultiRender, RenderError> {
     let next = AtomicU64::new(0);
@@ -61,7 +65,15 @@ pub fn render_on_devices(
         let align = r.sample_slices().max(1);
         let start = Instant::now();
         loop {
-            let want = r.next_pass_spp().div_ceil(align) * align;
+            let mut want = r.next_pass_spp();
+            if let Some(t) = time {
+                let left = t.as_secs_f64() - start.elapsed().as_secs_f64();
+                if left <= 0.0 {
+                    break;
+                }
+                want = want.min(r.pass_spp_within(left).max(1));
+            }
+            let want = want.div_ceil(align) * align;
             let first = next.fetch_add(want as u64, Ordering::SeqCst);
             if first >= spp as u64 {
                 break;
