@@ -16,9 +16,9 @@
 pub mod bench;
 pub mod bvh;
 pub mod compute;
-pub mod film;
 pub mod gpu;
 pub mod gpu_data;
+pub mod imaging;
 pub mod limits;
 pub mod render;
 pub mod scene;

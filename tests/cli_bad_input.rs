@@ -3,7 +3,7 @@
 //! existing output untouched. The last tests render on the GPU (lavapipe) and stop them with
 //! SIGINT.
 
-use bidir::film::{write_image, RgbImage};
+use bidir::imaging::{write_image, RgbImage};
 use std::io::{BufRead, BufReader};
 use std::os::unix::process::ExitStatusExt;
 use std::path::{Path, PathBuf};
@@ -311,7 +311,7 @@ fn first_ctrl_c_writes_what_was_rendered() {
     std::io::Read::read_to_string(&mut child.stdout.take().unwrap(), &mut stdout).unwrap();
     assert!(status.success(), "{status:?}: {seen:?}");
     assert!(seen.iter().any(|l| l.starts_with("interrupted: writing the ")), "{seen:?}");
-    let img = bidir::film::read_exr(&exr).unwrap();
+    let img = bidir::imaging::read_exr(&exr).unwrap();
     assert_eq!((img.width, img.height), (32, 32));
     assert!(img.mean()[0] > 0.0, "the Cornell box is not black");
     assert!(stdout.contains("wrote") && png.exists(), "{stdout}");

@@ -43,7 +43,7 @@ fn render_ranges_merge_info_and_refusal() {
     assert!(out.contains("samples 0..8 (8 spp)"), "{out}");
     assert!(png.exists());
     // The merge equals the whole render (every pixel within 1e-5 relative).
-    let (m, w) = (bidir::film::read_exr(&merged).unwrap(), bidir::film::read_exr(&whole).unwrap());
+    let (m, w) = (bidir::imaging::read_exr(&merged).unwrap(), bidir::imaging::read_exr(&whole).unwrap());
     for (x, y) in m.data.iter().zip(&w.data) {
         assert!((x - y).abs() <= 1e-5 * x.abs().max(y.abs()), "{x} vs {y}");
     }
@@ -79,7 +79,7 @@ fn render_ranges_merge_info_and_refusal() {
     assert!(!refused.exists() && !d.join("refused.png").exists(), "a refused merge wrote output");
     // An EXR without bidir's sums is refused by name.
     let plain = d.join("plain.exr");
-    bidir::film::write_image(&plain, &w, 0.0).unwrap();
+    bidir::imaging::write_image(&plain, &w, 0.0).unwrap();
     let out = bidir(&["merge", s(&a), s(&plain), "-o", s(&refused)]);
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("plain.exr"));
     std::fs::remove_dir_all(&d).ok();

@@ -4,7 +4,7 @@
 mod common;
 
 use bidir::bench::converge::{self, Options, Schedule};
-use bidir::film::{read_exr, write_image, RgbImage};
+use bidir::imaging::{read_exr, write_image, RgbImage};
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::Scene;
 use common::{finish, gpu};
@@ -128,7 +128,7 @@ fn a_small_run_writes_every_file_and_converges() {
     // The final image written is the one the last row measured.
     let img = read_exr(&out.join("pt-nee.exr")).unwrap();
     let refi = read_exr(&reference).unwrap();
-    let rmse = bidir::film::metrics::rmse(&img, &refi);
+    let rmse = bidir::imaging::metrics::rmse(&img, &refi);
     assert!((rmse - rows[1][3].parse::<f64>().unwrap()).abs() < 1e-6, "{rmse} vs {}", rows[1][3]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -157,5 +157,5 @@ fn time_snapshots_follow_render_time() {
     }
     let last = points.last().unwrap();
     assert!(last.seconds >= 0.6, "the budget is rendered in full: {points:?}");
-    assert_eq!(last.rmse, bidir::film::metrics::rmse(&curves[0].image, &reference));
+    assert_eq!(last.rmse, bidir::imaging::metrics::rmse(&curves[0].image, &reference));
 }

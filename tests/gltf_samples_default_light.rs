@@ -50,7 +50,7 @@ fn tiny_render(model: &Path, extra: &[&str]) -> (f64, String) {
     args.extend(extra);
     let (ok, _, err) = bidir(&args);
     assert!(ok, "bidir render {} failed:\n{err}", model.display());
-    let img = bidir::film::read_exr(&exr).unwrap();
+    let img = bidir::imaging::read_exr(&exr).unwrap();
     std::fs::remove_file(&exr).unwrap();
     (img.data.iter().map(|&v| v as f64).sum::<f64>() / img.data.len() as f64, err)
 }

@@ -14,7 +14,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("limits", 0),
     ("vk", 1),
     ("scene", 1),
-    ("film", 1),
+    ("imaging", 1),
     ("gpu", 2),
     ("compute", 3),
     ("bvh", 3),

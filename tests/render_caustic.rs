@@ -5,7 +5,7 @@
 
 mod common;
 
-use bidir::film::{metrics, read_exr};
+use bidir::imaging::{metrics, read_exr};
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::Camera;
 use common::{finish, gpu};

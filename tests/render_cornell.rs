@@ -21,7 +21,7 @@
 
 mod common;
 
-use bidir::film::{read_exr, RgbImage};
+use bidir::imaging::{read_exr, RgbImage};
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::Scene;
 use common::{finish, gpu};
@@ -51,7 +51,7 @@ struct Estimate {
 /// The statistics of one image: channel means, then block means (channels summed / 3).
 fn statistics(img: &RgbImage) -> (Vec<f64>, Vec<f64>) {
     let channels = img.mean().to_vec();
-    let blocks = bidir::film::metrics::block_means(img, BLOCK).iter().map(|(_, _, m)| (m[0] + m[1] + m[2]) / 3.0).collect();
+    let blocks = bidir::imaging::metrics::block_means(img, BLOCK).iter().map(|(_, _, m)| (m[0] + m[1] + m[2]) / 3.0).collect();
     (channels, blocks)
 }
 

@@ -4,7 +4,7 @@
 //! single-device render pixel for pixel (within 1e-5 relative: float summation order), and
 //! both devices must have taken passes.
 
-use bidir::film::RgbImage;
+use bidir::imaging::RgbImage;
 use bidir::render::{multi, Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Scene};
 use bidir::vk::{Context, ContextOptions};
@@ -120,6 +120,6 @@ fn cli_device_list() {
     run("0", &one);
     let text = run("0,0", &two);
     assert!(text.contains("2 devices") && text.contains("#0: ") && text.contains("#1: ") && text.contains("Msamples/s"), "{text}");
-    assert_same("--device 0,0", &bidir::film::read_exr(&two).unwrap(), &bidir::film::read_exr(&one).unwrap());
+    assert_same("--device 0,0", &bidir::imaging::read_exr(&two).unwrap(), &bidir::imaging::read_exr(&one).unwrap());
     std::fs::remove_dir_all(&d).ok();
 }

@@ -9,7 +9,7 @@
 
 mod common;
 
-use bidir::film::RgbImage;
+use bidir::imaging::RgbImage;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Environment, Material, Scene};
 use common::stats::chi2_sf;
@@ -263,7 +263,7 @@ fn environment_maps_load_from_exr_and_refuse_bad_files() {
     for (i, v) in img.data.iter_mut().enumerate() {
         *v = i as f32 * 0.25;
     }
-    bidir::film::write_image(&exr, &img, 0.0).unwrap();
+    bidir::imaging::write_image(&exr, &img, 0.0).unwrap();
     let env = Environment::load(&exr).unwrap();
     std::fs::remove_file(&exr).unwrap();
     assert_eq!((env.width, env.height), (4, 2));

@@ -4,9 +4,9 @@
 
 mod common;
 
-use bidir::film::merge::merge;
-use bidir::film::part::{keys, read_part, write_part, Accumulation, Part, RenderInfo};
-use bidir::film::{Crop, RgbImage, SampleRange};
+use bidir::imaging::merge::merge;
+use bidir::imaging::part::{keys, read_part, write_part, Accumulation, Part, RenderInfo};
+use bidir::imaging::{Crop, RgbImage, SampleRange};
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Scene};
 use common::{finish, gpu};

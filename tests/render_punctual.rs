@@ -9,7 +9,7 @@
 
 mod common;
 
-use bidir::film::RgbImage;
+use bidir::imaging::RgbImage;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Material, PunctualKind, PunctualLight, Scene};
 use common::{finish, geometry, gpu};

@@ -77,7 +77,7 @@ fn slurm_array_and_merge() {
 }
 
 fn same(a: &Path, b: &Path) {
-    let (a, b) = (bidir::film::read_exr(a).unwrap(), bidir::film::read_exr(b).unwrap());
+    let (a, b) = (bidir::imaging::read_exr(a).unwrap(), bidir::imaging::read_exr(b).unwrap());
     assert_eq!((a.width, a.height), (b.width, b.height));
     for (x, y) in a.data.iter().zip(&b.data) {
         assert!((x - y).abs() <= 1e-5 * x.abs().max(y.abs()), "{x} vs {y}");

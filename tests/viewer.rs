@@ -5,7 +5,7 @@
 
 mod common;
 
-use bidir::film::{linear_to_srgb, read_exr, RgbImage};
+use bidir::imaging::{linear_to_srgb, read_exr, RgbImage};
 use bidir::render::{Integrator, Join, RenderSettings, Renderer, Tonemap, TonemapSettings};
 use bidir::scene::{Camera, Scene};
 use common::{finish, gpu};
@@ -18,7 +18,7 @@ fn camera(width: u32, height: u32) -> Camera {
     Camera { width, height, ..Camera::cornell_box() }
 }
 
-/// The PNG writer's byte for a linear value (film::write_image).
+/// The PNG writer's byte for a linear value (imaging::write_image).
 fn png_byte(v: f32, scale: f32) -> u8 {
     let v = if v.is_finite() { v * scale } else { 0.0 };
     (linear_to_srgb(v.clamp(0.0, 1.0)) * 255.0 + 0.5) as u8

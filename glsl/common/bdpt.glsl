@@ -18,14 +18,6 @@ float mis(float x) {
     return x * x;
 }
 
-float max3(vec3 v) {
-    return max(v.x, max(v.y, v.z));
-}
-
-float luminance(vec3 c) {
-    return dot(c, vec3(0.2126, 0.7152, 0.0722));
-}
-
 // Importance (light-path throughput) scattered at a vertex with shading normals is not
 // symmetric with radiance: the adjoint BSDF picks up |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|)
 // (Veach 1997, section 5.3.2, eq. 5.20), wo toward the vertex the light came from, wi the

@@ -2,6 +2,8 @@
 #ifndef BIDIR_RAY_GLSL
 #define BIDIR_RAY_GLSL
 
+#include "color.glsl"
+
 const float PI = 3.14159265358979323846;
 
 // Moves a surface point off its surface along the geometric normal `n` (pointing to the side

@@ -23,10 +23,6 @@ layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; 
 layout(push_constant) uniform Push { PtPush pc; };
 layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[]; };
 
-float max3(vec3 v) {
-    return max(v.x, max(v.y, v.z));
-}
-
 // Power heuristic with beta = 2 for two strategies.
 float power_heuristic(float pdf_a, float pdf_b) {
     float a = pdf_a * pdf_a;
@@ -133,7 +129,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 float cos_s = dot(wi, ns_f);
                 float cos_l = -dot(wi, ls.n);
                 if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
-                    float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(dot(ls.le, vec3(0.2126, 0.7152, 0.0722)), pc.emitter_power) * dist2 / cos_l;
+                    float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(luminance(ls.le), pc.emitter_power) * dist2 / cos_l;
                     float pdf_fwd_w, pdf_rev_w;
                     vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
                     float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use super::chart::{self, ChartText, Panel, Series};
-use crate::film::{self, metrics, ImageIoError, RgbImage};
+use crate::imaging::{self, metrics, ImageIoError, RgbImage};
 use crate::render::{stop_requested, Integrator, RenderError, RenderSettings, Renderer};
 use crate::scene::{Camera, Scene};
 use crate::vk::Context;
@@ -265,7 +265,7 @@ pub fn write_outputs(dir: &Path, curves: &[Curve], reference: &RgbImage, how: &P
     let mut written = Vec::new();
     let mut text_file = |name: &str, contents: &str| -> Result<(), ConvergeError> {
         let path = dir.join(name);
-        film::write_atomically(&path, |tmp| std::fs::write(tmp, contents).map_err(|e| e.to_string()))?;
+        imaging::write_atomically(&path, |tmp| std::fs::write(tmp, contents).map_err(|e| e.to_string()))?;
         written.push(path);
         Ok(())
     };
@@ -273,7 +273,7 @@ pub fn write_outputs(dir: &Path, curves: &[Curve], reference: &RgbImage, how: &P
     text_file("convergence.svg", &svg)?;
     let mut png_file = |name: &str, rgb: &[u8], (w, h): (u32, u32)| -> Result<(), ConvergeError> {
         let path = dir.join(name);
-        film::write_atomically(&path, |tmp| film::write_png_rgb8(tmp, rgb, w, h))?;
+        imaging::write_atomically(&path, |tmp| imaging::write_png_rgb8(tmp, rgb, w, h))?;
         written.push(path);
         Ok(())
     };
@@ -282,7 +282,7 @@ pub fn write_outputs(dir: &Path, curves: &[Curve], reference: &RgbImage, how: &P
     for c in curves {
         for ext in ["exr", "png"] {
             let path = dir.join(format!("{}.{ext}", file_stem(c.integrator)));
-            film::write_image(&path, &c.image, how.exposure)?;
+            imaging::write_image(&path, &c.image, how.exposure)?;
             written.push(path);
         }
     }
@@ -296,10 +296,10 @@ fn side_by_side(curves: &[Curve], reference: &RgbImage, exposure: f32) -> Result
         .map(|c| {
             let last = c.points.last().copied().unwrap_or(Point { seconds: 0.0, spp: 0, rmse: f64::NAN, rel_mse: f64::NAN });
             let lines = vec![c.integrator.name(), format!("{} spp, {:.3} s", last.spp, last.seconds), format!("RMSE {:.5}", last.rmse)];
-            (lines, film::to_srgb8(&c.image, exposure))
+            (lines, imaging::to_srgb8(&c.image, exposure))
         })
         .collect();
-    pixels.push((vec!["reference".into()], film::to_srgb8(reference, exposure)));
+    pixels.push((vec!["reference".into()], imaging::to_srgb8(reference, exposure)));
     let panels: Vec<Panel> =
         pixels.iter().map(|(lines, rgb)| Panel { lines: lines.clone(), rgb, width: reference.width, height: reference.height }).collect();
     chart::side_by_side(&panels)

@@ -87,7 +87,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {layout})");
     }
     if let Some(path) = &a.json {
-        bidir::film::check_writable(path)?;
+        bidir::imaging::check_writable(path)?;
     }
     super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
@@ -112,7 +112,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     report.print();
     if let Some(path) = &a.json {
         let json = report.to_json().to_pretty();
-        bidir::film::write_atomically(path, |tmp| std::fs::write(tmp, json).map_err(|e| e.to_string()))?;
+        bidir::imaging::write_atomically(path, |tmp| std::fs::write(tmp, json).map_err(|e| e.to_string()))?;
         println!("wrote {}", path.display());
     }
     Ok(())

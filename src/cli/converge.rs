@@ -5,7 +5,7 @@ use super::scene_args::SceneArgs;
 use super::settings_args::SettingsArgs;
 use anyhow::Context as _;
 use bidir::bench::converge::{self, Options, Presentation, Schedule, XAxis};
-use bidir::film;
+use bidir::imaging;
 use bidir::render::Integrator;
 use bidir::vk::{Context, ContextOptions};
 use std::path::PathBuf;
@@ -61,7 +61,7 @@ pub fn run(args: &ConvergeArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if !args.exposure.is_finite() {
         anyhow::bail!("--exposure {}: must be a finite number of stops", args.exposure);
     }
-    let reference = film::read_exr(&args.reference).context("--reference")?;
+    let reference = imaging::read_exr(&args.reference).context("--reference")?;
     super::diff::warn_non_finite(&args.reference, &reference);
     let loaded = args.scene.load()?;
     super::print_warnings(&loaded.warnings);
@@ -88,7 +88,7 @@ fn render_and_write(
     args: &ConvergeArgs,
     ctx: &Context,
     loaded: &super::scene_args::LoadedScene,
-    reference: &film::RgbImage,
+    reference: &imaging::RgbImage,
     options: &Options,
 ) -> anyhow::Result<()> {
     let device = ctx.info().name.clone();

@@ -1,7 +1,7 @@
 //! `bidir diff`: error metrics between two EXR images and an optional false-colour heatmap.
 
 use anyhow::bail;
-use bidir::film::{self, metrics, RgbImage};
+use bidir::imaging::{self, metrics, RgbImage};
 use std::path::PathBuf;
 
 #[derive(clap::Args, Debug)]
@@ -26,8 +26,8 @@ pub fn run(args: &DiffArgs) -> anyhow::Result<()> {
         super::render::check_output(path)?;
     }
     super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
-    let a = film::read_exr(&args.a)?;
-    let b = film::read_exr(&args.b)?;
+    let a = imaging::read_exr(&args.a)?;
+    let b = imaging::read_exr(&args.b)?;
     if a.width != b.width || a.height != b.height {
         bail!("{} is {}x{} but {} is {}x{}", args.a.display(), a.width, a.height, args.b.display(), b.width, b.height);
     }
@@ -48,7 +48,7 @@ pub fn run(args: &DiffArgs) -> anyhow::Result<()> {
         }
     }
     if let Some(path) = &args.heatmap {
-        film::write_image(path, &heatmap(&a, &b), 0.0)?;
+        imaging::write_image(path, &heatmap(&a, &b), 0.0)?;
         println!("wrote {}", path.display());
     }
     Ok(())

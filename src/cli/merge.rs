@@ -2,7 +2,7 @@
 //! IMAGE.exr`.
 
 use anyhow::bail;
-use bidir::film::{self, merge, part};
+use bidir::imaging::{self, merge, part};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args, Debug)]
@@ -51,7 +51,7 @@ pub fn run(args: &MergeArgs) -> anyhow::Result<()> {
         if Some(o) == exr {
             part::write_part(o, &m.sums, &m.info, m.crop)?;
         } else {
-            film::write_image(o, &m.sums.resolve(), args.exposure)?;
+            imaging::write_image(o, &m.sums.resolve(), args.exposure)?;
         }
     }
     println!(

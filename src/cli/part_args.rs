@@ -2,8 +2,8 @@
 //! metadata every render writes into its EXR so that parts can be checked and merged.
 
 use super::scene_args::LoadedScene;
-use bidir::film::part::{keys, RenderInfo};
-use bidir::film::{Crop, SampleRange};
+use bidir::imaging::part::{keys, RenderInfo};
+use bidir::imaging::{Crop, SampleRange};
 use bidir::render::RenderSettings;
 use bidir::scene::Scene;
 
@@ -58,7 +58,7 @@ pub fn scene_hash(scene: &Scene) -> String {
     format!("{h:016x}")
 }
 
-/// Metadata of a finished render (see `film::part::keys`).
+/// Metadata of a finished render (see `imaging::part::keys`).
 pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: SampleRange, seconds: f64, device: &str) -> RenderInfo {
     let c = &loaded.camera;
     let s = settings;
@@ -93,16 +93,16 @@ pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: Sam
 /// info`, `bidir merge`), PNG as the `exposure`-scaled estimate.
 pub fn write_outputs(
     outputs: &[std::path::PathBuf],
-    sums: &bidir::film::part::Accumulation,
-    img: &bidir::film::RgbImage,
+    sums: &bidir::imaging::part::Accumulation,
+    img: &bidir::imaging::RgbImage,
     info: &RenderInfo,
     crop: Crop,
     exposure: f32,
 ) -> anyhow::Result<()> {
     for o in outputs {
         match o.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-            Some("exr") => bidir::film::part::write_part(o, sums, info, crop)?,
-            _ => bidir::film::write_image(o, img, exposure)?,
+            Some("exr") => bidir::imaging::part::write_part(o, sums, info, crop)?,
+            _ => bidir::imaging::write_image(o, img, exposure)?,
         }
     }
     Ok(())

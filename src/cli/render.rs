@@ -3,7 +3,7 @@
 use super::scene_args::SceneArgs;
 use super::settings_args::{IntegratorArgs, SettingsArgs};
 use anyhow::{bail, Context as _};
-use bidir::film::{self, metrics};
+use bidir::imaging::{self, metrics};
 use bidir::render::Renderer;
 use bidir::vk::{Context, ContextOptions};
 use std::path::{Path, PathBuf};
@@ -37,13 +37,13 @@ pub struct RenderArgs {
 }
 
 /// Checks an output path before any work: `.exr` or `.png`, and writable (see
-/// [`film::check_writable`]).
+/// [`imaging::check_writable`]).
 pub(super) fn check_output(path: &Path) -> anyhow::Result<()> {
     match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("exr") | Some("png") => {}
         _ => bail!("{}: output must end in .exr or .png", path.display()),
     }
-    Ok(film::check_writable(path)?)
+    Ok(imaging::check_writable(path)?)
 }
 
 pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
@@ -65,7 +65,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if !args.exposure.is_finite() {
         bail!("--exposure {}: must be a finite number of stops", args.exposure);
     }
-    let reference = args.reference.as_ref().map(|p| film::read_exr(p)).transpose()?;
+    let reference = args.reference.as_ref().map(|p| imaging::read_exr(p)).transpose()?;
     let loaded = args.scene.load()?;
     super::print_warnings(&loaded.warnings);
     let camera = loaded.camera.clone();
@@ -142,9 +142,9 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let img = r.image()?;
     let nan = r.nan_samples()?;
     let spp = r.samples();
-    let range = bidir::film::SampleRange { start: info_settings.sample_start, end: info_settings.sample_start + spp };
+    let range = bidir::imaging::SampleRange { start: info_settings.sample_start, end: info_settings.sample_start + spp };
     let info = super::part_args::render_info(&loaded, &info_settings, range, elapsed.as_secs_f64(), &ctx.info().name);
-    let crop = info_settings.crop.unwrap_or(film::Crop::full(camera.width, camera.height));
+    let crop = info_settings.crop.unwrap_or(imaging::Crop::full(camera.width, camera.height));
     super::part_args::write_outputs(&outputs, &r.sums()?, &img, &info, crop, args.exposure)?;
     println!(
         "{} {}x{} {}: {spp} spp in {:.3} s ({:.2} Msamples/s; setup {:.2} s), {} NaN/Inf samples dropped",

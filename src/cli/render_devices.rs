@@ -5,7 +5,7 @@ use super::part_args;
 use super::render::RenderArgs;
 use super::scene_args::LoadedScene;
 use anyhow::{bail, Context as _};
-use bidir::film::{self, metrics, SampleRange};
+use bidir::imaging::{self, metrics, SampleRange};
 use bidir::render::{multi, RenderSettings};
 use bidir::vk::{self, ContextOptions};
 use std::time::Instant;
@@ -38,7 +38,7 @@ pub fn run(
     settings: &RenderSettings,
     devices: &[ContextOptions],
     outputs: &[std::path::PathBuf],
-    reference: Option<film::RgbImage>,
+    reference: Option<imaging::RgbImage>,
 ) -> anyhow::Result<()> {
     let time = args.time.map(std::time::Duration::from_secs_f64);
     // With --time the devices render what they can in it (the sample count is known after).
@@ -89,7 +89,7 @@ pub fn run(
     let names: Vec<&str> = done.devices.iter().map(|d| d.name.as_str()).collect();
     let info = part_args::render_info(loaded, settings, range, elapsed.as_secs_f64(), &names.join(", "));
     let img = done.sums.resolve();
-    let crop = settings.crop.unwrap_or(film::Crop::full(camera.width, camera.height));
+    let crop = settings.crop.unwrap_or(imaging::Crop::full(camera.width, camera.height));
     part_args::write_outputs(outputs, &done.sums, &img, &info, crop, args.exposure)?;
     println!(
         "{} devices, {}x{} {}: {spp} spp in {:.3} s ({:.2} Msamples/s), {} NaN/Inf samples dropped",

@@ -41,7 +41,7 @@ pub fn on_interrupt(first: FirstInterrupt) -> anyhow::Result<()> {
                     "\ninterrupted: finishing the current pass, then writing what was rendered (Ctrl-C again aborts without writing)"
                 );
             } else {
-                let removed = bidir::film::abort_writes();
+                let removed = bidir::imaging::abort_writes();
                 let note = if removed > 0 { format!(" ({removed} partial file(s) removed)") } else { String::new() };
                 eprintln!("\naborted: nothing written{note}");
                 std::process::exit(130);

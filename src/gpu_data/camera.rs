@@ -24,7 +24,7 @@ pub fn gpu_camera(cam: &Camera) -> GpuCamera {
 }
 
 /// `camera` restricted to the window `crop` of its image (the projection is unchanged).
-pub fn gpu_camera_window(camera: &GpuCamera, crop: crate::film::Crop) -> GpuCamera {
+pub fn gpu_camera_window(camera: &GpuCamera, crop: crate::imaging::Crop) -> GpuCamera {
     GpuCamera { window_x: crop.x0, window_y: crop.y0, window_size: UVec2::new(crop.width(), crop.height()), ..*camera }
 }
 

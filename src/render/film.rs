@@ -1,6 +1,6 @@
 use super::RenderError;
-use crate::film::RgbImage;
 use crate::gpu::abi;
+use crate::imaging::RgbImage;
 use crate::vk::{Buffer, Context, Memory, Result, VkError};
 
 fn mib(bytes: u64) -> String {
@@ -89,11 +89,11 @@ impl Film {
     }
 
     /// The film's sums after `samples` samples per pixel (one BDPT iteration per sample).
-    pub fn sums(&self, ctx: &Context, samples: u32) -> Result<crate::film::part::Accumulation> {
+    pub fn sums(&self, ctx: &Context, samples: u32) -> Result<crate::imaging::part::Accumulation> {
         let acc: Vec<Vec4> = ctx.read_buffer(&self.accum)?;
         let splat: Option<Vec<f32>> = self.splat.as_ref().map(|s| ctx.read_buffer(s)).transpose()?;
         let n = (self.width * self.height) as usize;
-        Ok(crate::film::part::Accumulation {
+        Ok(crate::imaging::part::Accumulation {
             width: self.width,
             height: self.height,
             camera: acc.iter().take(n).map(|a| [a.x as f64, a.y as f64, a.z as f64, a.w as f64]).collect(),

@@ -32,8 +32,8 @@ pub use stop::{request_stop, stop_requested};
 pub use tonemap::{Tonemap, TonemapSettings};
 
 use crate::bvh::{BuildOptions, Bvh, BvhError, BvhLayout};
-use crate::film::{part::Accumulation, Crop, RgbImage};
 use crate::gpu::abi::{BdptPush, GpuCamera, PtPush};
+use crate::imaging::{part::Accumulation, Crop, RgbImage};
 use crate::scene::{Camera, Scene};
 use crate::vk::{Context, Image, Recorder, VkError};
 use std::time::{Duration, Instant};

@@ -5,7 +5,7 @@
 //! single-device image (up to float summation order).
 
 use super::{RenderError, RenderSettings, Renderer};
-use crate::film::part::Accumulation;
+use crate::imaging::part::Accumulation;
 use crate::scene::{Camera, Scene};
 use crate::vk::{Context, ContextOptions};
 use std::sync::atomic::{AtomicU64, Ordering};

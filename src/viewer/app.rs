@@ -5,7 +5,7 @@
 use super::controls::{FlyCamera, Motion};
 use super::pacing::{FrameStats, Pacer};
 use super::{fit_to_monitor, next_screenshot, ViewOptions, ViewSummary, ViewerError};
-use crate::film;
+use crate::imaging;
 use crate::render::{Integrator, Join, RenderError, Renderer, Tonemap, TonemapSettings};
 use crate::vk::{self, Context, Image, Presented, Swapchain};
 use std::collections::HashSet;
@@ -350,7 +350,7 @@ impl State {
         }
         let image = self.renderer.image()?;
         for p in paths {
-            film::write_image(p, &image, exposure)?;
+            imaging::write_image(p, &image, exposure)?;
             eprintln!("view: saved {} ({} spp)", p.display(), self.renderer.samples());
             self.screenshots.push(p.clone());
         }

@@ -23,7 +23,7 @@ mod app;
 pub mod controls;
 pub mod pacing;
 
-use crate::film::ImageIoError;
+use crate::imaging::ImageIoError;
 use crate::render::{RenderError, RenderSettings};
 use crate::scene::{Camera, Scene};
 use crate::vk::{ContextOptions, VkError, Vsync};
