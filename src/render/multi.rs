@@ -54,10 +54,17 @@ pub fn render_on_devices(
     // Passes start once every device is set up (or has failed), so that a device whose
     // kernels compile first does not take the whole render before the others can start.
     let ready = Barrier::new(devices.len());
+    // Set-up (instance, device, pipelines) runs one device at a time: on the H200 one
+    // `--device 0,0` render hung once with set-ups in parallel (not reproduced; see
+    // docs/scale-out.md), and drivers need not make concurrent instance creation safe.
+    let setup_lock = Mutex::new(());
     let run = |i: usize, opts: &ContextOptions| -> DeviceResult {
-        let setup = Context::new(opts)
-            .map_err(RenderError::from)
-            .and_then(|ctx| Renderer::new(&ctx, scene, camera, settings.clone()).map(|r| (ctx, r)));
+        let setup = {
+            let _one_at_a_time = setup_lock.lock().unwrap_or_else(|e| e.into_inner());
+            Context::new(opts)
+                .map_err(RenderError::from)
+                .and_then(|ctx| Renderer::new(&ctx, scene, camera, settings.clone()).map(|r| (ctx, r)))
+        };
         ready.wait();
         let (ctx, mut r) = setup?;
         status.lock().unwrap_or_else(|e| e.into_inner())[i].name = format!("{} #{i}", ctx.info().name);
