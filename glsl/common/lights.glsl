@@ -34,11 +34,11 @@ LightSample sample_emitter(uint count, float u0, float u1, float u2) {
     float b1 = u2 * su;        // weight of v1
     float b2 = 1.0 - su;       // weight of v2 (v0 gets su (1 - u2))
     LightSample s;
-    s.p = e.p0.xyz + b1 * e.e1.xyz + b2 * e.e2.xyz;
-    s.n = normalize(cross(e.e1.xyz, e.e2.xyz));
-    s.le = e.radiance.rgb;
-    s.pick = e.radiance.w;
-    s.area = e.p0.w;
+    s.p = e.v0 + b1 * e.e1 + b2 * e.e2;
+    s.n = normalize(cross(e.e1, e.e2));
+    s.le = e.radiance;
+    s.pick = e.pick;
+    s.area = e.area;
     s.emitter = index;
     s.bary = vec2(b1, b2);
     return s;
@@ -46,8 +46,8 @@ LightSample sample_emitter(uint count, float u0, float u1, float u2) {
 
 // Area pdf of light sampling at a point of an emitter with emission luminance `lum`:
 // (lum * area / total) * (1 / area).
-float light_pdf_a(float lum, float total_power) {
-    return lum / total_power;
+float light_pdf_a(float lum, float total_weight) {
+    return lum / total_weight;
 }
 
 #endif

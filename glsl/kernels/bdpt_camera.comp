@@ -122,7 +122,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             if (depth == 1u) {
                 radiance += beta * material_emission(m, s.uv);
             } else {
-                float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * m.emission.w / pc.emitter_power;
+                float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * m.emission.w / pc.emitter_weight;
                 float cos_l = max(0.0, -dot(s.ng, d));
                 float emission_pdf_w = direct_pdf_a * cos_l / PI;
                 // Light sampling and emission see an emitter through its geometric normal:

@@ -151,7 +151,7 @@ void main() {
         LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
         d = sample_cosine_hemisphere(ls.n, rng_next(rng), rng_next(rng));
         float cos0 = dot(d, ls.n);
-        float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * luminance(ls.le) / pc.emitter_power;
+        float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * luminance(ls.le) / pc.emitter_weight;
         float emission_pdf_w = direct_pdf_a * cos0 / PI;
         if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
             light_counts[path] = uvec2(0u);

@@ -60,7 +60,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             float w = 1.0;
             if (NEE != 0u && !specular && pc.emitter_count > 0u) {
                 float cos_l = -dot(s.ng, d);
-                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission.w, pc.emitter_power) * h.t * h.t / cos_l;
+                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission.w, pc.emitter_weight) * h.t * h.t / cos_l;
                 w = power_heuristic(prev_pdf_w, pdf_light_w);
             }
             radiance += throughput * material_emission(m, s.uv) * w;
@@ -129,7 +129,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 float cos_s = dot(wi, ns_f);
                 float cos_l = -dot(wi, ls.n);
                 if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
-                    float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(luminance(ls.le), pc.emitter_power) * dist2 / cos_l;
+                    float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(luminance(ls.le), pc.emitter_weight) * dist2 / cos_l;
                     float pdf_fwd_w, pdf_rev_w;
                     vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
                     float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);

@@ -353,14 +353,19 @@ gpu_structs! {
 
     /// An emissive triangle for light sampling.
     pub struct GpuEmitter (64 bytes) {
-        /// v0 (xyz), area (w).
-        pub p0: Vec4,
-        /// v1 - v0 (xyz), w unused.
-        pub e1: Vec4,
-        /// v2 - v0 (xyz), w unused.
-        pub e2: Vec4,
-        /// Emitted radiance (rgb); w: probability of choosing this emitter.
-        pub radiance: Vec4,
+        /// The triangle's first vertex.
+        pub v0: Vec3,
+        pub area: f32,
+        /// v1 - v0.
+        pub e1: Vec3,
+        pub pad0: f32,
+        /// v2 - v0.
+        pub e2: Vec3,
+        pub pad1: f32,
+        /// Emitted radiance (the emission factor; a texture scales it at the point).
+        pub radiance: Vec3,
+        /// Probability that light sampling chooses this emitter: its weight over the total.
+        pub pick: f32,
     }
 
     /// Where an emitter's emission texture is read (one per GpuEmitter, same order).
@@ -458,7 +463,7 @@ gpu_structs! {
         pub emitter_count: u32,
         /// Sum over emitters of luminance(Le) * area: pdf_a of light sampling at an emitter
         /// point is luminance(Le) / this.
-        pub emitter_power: f32,
+        pub emitter_weight: f32,
         /// 0: unbounded (Russian roulette ends paths).
         pub max_depth: u32,
         /// First bounce at which Russian roulette applies.
@@ -497,7 +502,7 @@ gpu_structs! {
         pub sample_base: u32,
         pub seed: u32,
         pub emitter_count: u32,
-        pub emitter_power: f32,
+        pub emitter_weight: f32,
         /// 0: unbounded; else the most segments of a full path.
         pub max_depth: u32,
         pub rr_depth: u32,

@@ -32,7 +32,7 @@ pub struct GpuScene {
     pub punctual: Buffer,
     pub features: SceneFeatures,
     pub emitter_count: u32,
-    pub emitter_power: f32,
+    pub emitter_weight: f32,
     /// Total bytes uploaded.
     pub bytes: u64,
     /// Textures were halved this many times to fit the device's storage-buffer limit.
@@ -159,7 +159,7 @@ impl GpuScene {
             punctual,
             features,
             emitter_count: lights.emitters.len() as u32,
-            emitter_power: lights.total_power,
+            emitter_weight: lights.total_weight,
             bytes,
             texture_downsamples: downsamples,
         })

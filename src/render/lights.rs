@@ -1,5 +1,7 @@
-//! Light sampling tables: emissive triangles chosen in proportion to their power with
-//! Walker's alias method (Vose's O(n) construction), sampled in O(1) on the GPU.
+//! Light sampling tables: emissive triangles chosen in proportion to their *weight*,
+//! luminance(Le) x area (their luminous power up to the factor pi, which cancels: "power" in
+//! bidir means pi x area x Le, `scene::stats::Emitter::power`), with Walker's alias method
+//! (Vose's O(n) construction), sampled in O(1) on the GPU.
 
 use crate::gpu::abi::{GpuAlias, GpuEmitter, GpuEmitterUv};
 use crate::scene::Scene;
@@ -13,9 +15,9 @@ pub struct LightTable {
     /// The scene triangle of each emitter.
     pub triangles: Vec<u32>,
     pub alias: Vec<GpuAlias>,
-    /// Sum of luminance(Le) * area: light sampling's area pdf at an emitter point is
-    /// luminance(Le) / total_power.
-    pub total_power: f32,
+    /// Sum of the weights luminance(Le) * area: light sampling's area pdf at an emitter point
+    /// is luminance(Le) / total_weight.
+    pub total_weight: f32,
 }
 
 impl LightTable {
@@ -36,19 +38,19 @@ impl LightTable {
             if area <= 0.0 || !area.is_finite() {
                 continue;
             }
-            emitters.push(GpuEmitter { p0: v0.extend(area), e1: e1.extend(0.0), e2: e2.extend(0.0), radiance: m.emission.extend(0.0) });
+            emitters.push(GpuEmitter { v0, area, e1, e2, radiance: m.emission, pick: 0.0, pad0: 0.0, pad1: 0.0 });
             triangles.push(t as u32);
             weights.push(lum as f64 * area as f64);
         }
         let total: f64 = weights.iter().sum();
         for (e, w) in emitters.iter_mut().zip(&weights) {
-            e.radiance.w = (w / total) as f32;
+            e.pick = (w / total) as f32;
         }
-        LightTable { alias: alias_table(&weights), emitters, triangles, total_power: total as f32 }
+        LightTable { alias: alias_table(&weights), emitters, triangles, total_weight: total as f32 }
     }
 
     /// Per emitter, its vertices' texture coordinates and its material's emission texture.
-    /// Emitters are chosen by the power of their emission factor (the texture's scale is not
+    /// Emitters are chosen by the weight of their emission factor (the texture's scale is not
     /// known per triangle), which is unbiased: the texture only scales the radiance found.
     pub fn emitter_uvs(&self, scene: &Scene) -> Vec<GpuEmitterUv> {
         self.triangles
