@@ -39,6 +39,19 @@ fn mean_and_se(v: &[f64]) -> (f64, f64) {
 
 // ---- Energy: a furnace with a rough F = 1 conductor ------------------------------------------
 
+/// A square view from inside the furnace boxes of these tests.
+fn inside_camera(size: u32) -> Camera {
+    Camera {
+        name: "inside".into(),
+        eye: Vec3::new(0.1, -0.05, 0.02),
+        target: Vec3::new(1.0, 0.3, 0.2),
+        up: Vec3::Y,
+        fov_y_deg: 90.0,
+        width: size,
+        height: size,
+    }
+}
+
 #[test]
 fn rough_conductor_furnace_never_gains_energy() {
     let (positions, tris) = geometry::icosphere(3, Vec3::ZERO, 1.0);
@@ -47,15 +60,7 @@ fn rough_conductor_furnace_never_gains_energy() {
     let (refl, rho_d, le) = (0.5f32, 0.6f32, 1.0f32);
     // Lossless bound: every bounce keeps refl * 1 + (1 - refl) * rho_d.
     let bound = (le / (1.0 - refl - (1.0 - refl) * rho_d)) as f64;
-    let camera = Camera {
-        name: "inside".into(),
-        eye: Vec3::new(0.1, -0.05, 0.02),
-        target: Vec3::new(1.0, 0.3, 0.2),
-        up: Vec3::Y,
-        fov_y_deg: 90.0,
-        width: 32,
-        height: 32,
-    };
+    let camera = inside_camera(32);
     eprintln!("furnace, half rough conductor (F = 1) and half diffuse 0.6, lossless radiance {bound}:");
     for roughness in [0.05f32, 0.3, 0.8] {
         let material = Material {
@@ -250,15 +255,7 @@ fn integrators_agree_in_a_normal_mapped_glossy_furnace() {
         textures: vec![bumpy_normal_map()],
         ..Default::default()
     };
-    let camera = Camera {
-        name: "inside".into(),
-        eye: Vec3::new(0.1, -0.05, 0.02),
-        target: Vec3::new(1.0, 0.3, 0.2),
-        up: Vec3::Y,
-        fov_y_deg: 90.0,
-        width: 64,
-        height: 64,
-    };
+    let camera = inside_camera(64);
     let mut flat = scene.clone();
     flat.materials[0].normal_texture = None;
     let reference = render(&scene, &camera, Integrator::PtNee, 128);

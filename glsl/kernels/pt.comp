@@ -141,27 +141,16 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);
             vec3 dn;
-            if (HAS_GLOSSY == 0u) {
-                // Lambertian only (the thesis' scenes): cosine-weighted, so f cos / pdf_fwd_w
-                // is the diffuse albedo over the lobe's pick; no BSDF evaluation needed.
-                dn = sample_cosine_hemisphere(ns_f, u1, u2);
-                if (dot(dn, ng_f) <= 0.0) {
-                    break; // below the geometric surface (shading-normal artefact)
-                }
-                prev_pdf_w = dot(dn, ns_f) / PI;
-                throughput *= c.diffuse / c.pick;
-            } else {
-                if (!continuous_sample(c, ns_f, -d, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
-                    break; // below the surface (shading-normal artefact) or a masked reflection
-                }
-                float pdf_fwd_w, pdf_rev_w;
-                vec3 f = continuous_eval(c, ns_f, -d, dn, pdf_fwd_w, pdf_rev_w);
-                if (pdf_fwd_w <= 0.0) {
-                    break;
-                }
-                prev_pdf_w = pdf_fwd_w / c.pick;
-                throughput *= f * (dot(dn, ns_f) / pdf_fwd_w);
+            if (!continuous_sample(c, ns_f, -d, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
+                break; // below the surface (shading-normal artefact) or a masked reflection
             }
+            float pdf_fwd_w, pdf_rev_w;
+            vec3 f = continuous_eval(c, ns_f, -d, dn, pdf_fwd_w, pdf_rev_w);
+            if (pdf_fwd_w <= 0.0) {
+                break;
+            }
+            prev_pdf_w = pdf_fwd_w / c.pick;
+            throughput *= f * (dot(dn, ns_f) / pdf_fwd_w);
             d = dn;
             o = p_off;
             specular = false;

@@ -16,9 +16,11 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
         println!("  the driver does not offer VK_KHR_pipeline_executable_properties: no kernel statistics");
         return Ok(());
     }
+    // One scene upload and BVH; only the kernels change between integrators.
     let integrators = [Integrator::Pt, Integrator::PtNee, Integrator::Bdpt(Join::Lvc(0)), Integrator::Bdpt(Join::Full)];
+    let mut r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrators[0]))?;
     for integrator in integrators {
-        let r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrator))?;
+        r.set_integrator(integrator)?;
         for kernel in r.kernels() {
             let stats = kernel.statistics()?;
             let line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
