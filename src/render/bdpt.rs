@@ -1,3 +1,4 @@
+use super::integrator::{IntegratorKernels, PassInputs};
 use super::{film::Film, gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::LightVertex, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec, VkError};
@@ -76,12 +77,6 @@ pub struct Bdpt {
 }
 
 impl Bdpt {
-    /// The kernels an iteration runs (the light-vertex cache's scan kernels are shared
-    /// utilities, `compute::Scan`).
-    pub fn kernels(&self) -> Vec<&Kernel> {
-        vec![&self.light, &self.camera]
-    }
-
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together).
@@ -188,6 +183,69 @@ impl Bdpt {
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
         rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])?;
         film.record_add_slices(rec, samples)
+    }
+}
+
+impl IntegratorKernels for Bdpt {
+    /// The kernels an iteration runs (the light-vertex cache's scan kernels are shared
+    /// utilities, `compute::Scan`).
+    fn kernels(&self) -> Vec<&Kernel> {
+        vec![&self.light, &self.camera]
+    }
+
+    fn storage_bytes(&self) -> u64 {
+        self.vertex_bytes
+    }
+
+    fn splats(&self) -> bool {
+        true
+    }
+
+    fn sized_by_pixels(&self) -> bool {
+        true
+    }
+
+    fn slice_aligned(&self) -> bool {
+        true
+    }
+
+    fn pass(&self, ctx: &Context, inputs: &PassInputs, first: u32, spp: u32) -> std::result::Result<(), RenderError> {
+        let (s, scene, slices) = (inputs.settings, inputs.scene, inputs.slices);
+        let (join, join_k) = match self.join {
+            Join::Full => (abi::JOIN_FULL, 0),
+            Join::K(k) => (abi::JOIN_K, k),
+            Join::Lvc(k) => (abi::JOIN_LVC, k),
+        };
+        ctx.submit("bdpt pass", |rec| {
+            // Iterations of up to `slices` camera samples per pixel, their light paths traced
+            // together. Iterations start at multiples of `slices` whatever the pass sizes, so
+            // the light paths (and the light vertex cache) of a sample depend on its index
+            // only: passes, sample ranges and devices split one render exactly.
+            let mut done = 0;
+            while done < spp {
+                let base = first + done;
+                let samples = (slices - base % slices).min(spp - done);
+                let push = BdptPush {
+                    camera: inputs.camera,
+                    sample_base: base,
+                    seed: s.seed,
+                    emitter_count: scene.emitter_count,
+                    emitter_weight: scene.emitter_weight,
+                    max_depth: s.max_depth,
+                    rr_depth: s.rr_depth,
+                    light_path_len: self.light_path_len,
+                    join,
+                    join_k,
+                    light_paths: self.light_paths,
+                    camera_samples: samples,
+                    light_path_total: self.light_paths * samples,
+                };
+                self.record(rec, scene, inputs.film, &push)?;
+                done += samples;
+            }
+            Ok(())
+        })?;
+        Ok(())
     }
 }
 

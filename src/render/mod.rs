@@ -15,6 +15,7 @@
 mod bdpt;
 pub mod env;
 mod film;
+mod integrator;
 pub mod gpu_scene;
 pub mod lights;
 pub mod multi;
@@ -26,13 +27,14 @@ mod tonemap;
 pub use bdpt::{Bdpt, Join};
 pub use film::Film;
 pub use gpu_scene::GpuScene;
+pub use integrator::{IntegratorKernels, PassInputs};
 pub use pacing::PassModel;
 pub use pt::PathTracer;
 pub use stop::{request_stop, stop_requested};
 pub use tonemap::{Tonemap, TonemapSettings};
 
 use crate::bvh::{BuildOptions, Bvh, BvhError, BvhLayout};
-use crate::gpu::abi::{BdptPush, GpuCamera, PtPush};
+use crate::gpu::abi::GpuCamera;
 use crate::imaging::{part::Accumulation, Crop, RgbImage};
 use crate::scene::{Camera, Scene};
 use crate::vk::{Context, Image, Recorder, VkError};
@@ -56,6 +58,12 @@ impl Integrator {
             Integrator::PtNee => "pt-nee".into(),
             Integrator::Bdpt(j) => format!("bdpt:{}", j.name()),
         }
+    }
+
+    /// Whether it traces light paths into a store sized by the full image's pixel count
+    /// (whatever the crop), which bounds its sample slices.
+    pub fn stores_light_vertices(self) -> bool {
+        matches!(self, Integrator::Bdpt(_))
     }
 }
 
@@ -190,11 +198,8 @@ pub enum RenderError {
     Memory(String),
 }
 
-/// The integrator's kernels.
-enum Kernels {
-    Pt(PathTracer),
-    Bdpt(Box<Bdpt>),
-}
+/// The integrator's kernels, storage and passes.
+type Kernels = Box<dyn IntegratorKernels>;
 
 /// A scene on the GPU with an integrator and a film.
 pub struct Renderer {
@@ -239,7 +244,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
         return 1;
     }
     let mut s = TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64);
-    if let Integrator::Bdpt(_) = settings.integrator {
+    if settings.integrator.stores_light_vertices() {
         let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
         let limit = SLICED_STORE_BYTES.min(ctx.info().max_storage_buffer_range as u64);
@@ -259,13 +264,14 @@ fn window(settings: &RenderSettings, camera: &Camera) -> Result<Crop, RenderErro
 /// whatever the window (so a crop's iterations are the full render's), a path tracer's
 /// invocations are the window's.
 fn slice_pixels(settings: &RenderSettings, full_pixels: u32, window: Crop) -> u32 {
-    match settings.integrator {
-        Integrator::Bdpt(_) => full_pixels,
-        _ => window.pixels() as u32,
+    if settings.integrator.stores_light_vertices() {
+        full_pixels
+    } else {
+        window.pixels() as u32
     }
 }
 
-/// The kernels of `integrator` for a film of `pixels` pixels.
+/// The kernels of `integrator` for a film of `pixels` pixels: the integrators' registration.
 fn build_kernels(
     ctx: &Context,
     scene: &GpuScene,
@@ -276,8 +282,8 @@ fn build_kernels(
 ) -> Result<Kernels, RenderError> {
     check_layout(scene.bvh.layout)?;
     Ok(match integrator {
-        Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
-        Integrator::Bdpt(join) => Kernels::Bdpt(Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices)?)),
+        Integrator::Pt | Integrator::PtNee => Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
+        Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices)?),
     })
 }
 
@@ -303,7 +309,7 @@ impl Renderer {
         let pixels = camera.width * camera.height;
         let slices = sample_slices(ctx, &settings, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
-        let film = Film::new(ctx, window.width(), window.height(), matches!(kernels, Kernels::Bdpt(_)), slices)?;
+        let film = Film::new(ctx, window.width(), window.height(), kernels.splats(), slices)?;
         let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
         Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera, settings, samples: 0, pacing: PassModel::default(), slices })
     }
@@ -376,13 +382,12 @@ impl Renderer {
             let pixels = camera.width * camera.height;
             let slices = sample_slices(&self.ctx, &self.settings, slice_pixels(&self.settings, pixels, window));
             // Path tracers keep their kernels; BDPT's store is sized by the pixel count.
-            let bdpt = matches!(self.kernels, Kernels::Bdpt(_));
-            let kernels = if bdpt {
+            let kernels = if self.kernels.sized_by_pixels() {
                 Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings, slices)?)
             } else {
                 None
             };
-            let film = Film::new(&self.ctx, window.width(), window.height(), bdpt, slices)?;
+            let film = Film::new(&self.ctx, window.width(), window.height(), self.kernels.splats(), slices)?;
             if let Some(k) = kernels {
                 self.kernels = k;
             }
@@ -406,7 +411,7 @@ impl Renderer {
         let window = Crop { x0, y0, x1: x0 + self.film.width, y1: y0 + self.film.height };
         let slices = sample_slices(&self.ctx, &settings, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(&self.ctx, &self.scene, integrator, pixels, &settings, slices)?;
-        let film = Film::new(&self.ctx, self.film.width, self.film.height, matches!(kernels, Kernels::Bdpt(_)), slices)?;
+        let film = Film::new(&self.ctx, self.film.width, self.film.height, kernels.splats(), slices)?;
         self.kernels = kernels;
         self.film = film;
         self.slices = slices;
@@ -419,18 +424,12 @@ impl Renderer {
 
     /// The integrator's kernels (e.g. for their compile statistics, `Kernel::statistics`).
     pub fn kernels(&self) -> Vec<&crate::vk::Kernel> {
-        match &self.kernels {
-            Kernels::Pt(pt) => pt.kernels(),
-            Kernels::Bdpt(b) => b.kernels(),
-        }
+        self.kernels.kernels()
     }
 
     /// Bytes of integrator-specific GPU memory (BDPT light vertices).
     pub fn integrator_bytes(&self) -> u64 {
-        match &self.kernels {
-            Kernels::Pt(_) => 0,
-            Kernels::Bdpt(b) => b.vertex_bytes,
-        }
+        self.kernels.storage_bytes()
     }
 
     /// Renders `spp` more samples per pixel in one submission (the ones after those
@@ -442,60 +441,8 @@ impl Renderer {
     /// Renders samples `first..first + spp` of every pixel in one submission and adds them to
     /// the film (several devices render the passes of one image this way).
     pub fn pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
-        let s = &self.settings;
-        match &self.kernels {
-            Kernels::Pt(pt) => {
-                let push = PtPush {
-                    camera: self.camera,
-                    sample_base: first,
-                    spp,
-                    seed: s.seed,
-                    emitter_count: self.scene.emitter_count,
-                    emitter_weight: self.scene.emitter_weight,
-                    max_depth: s.max_depth,
-                    rr_depth: s.rr_depth,
-                    slices: self.slices.min(spp),
-                };
-                self.ctx.submit("render pass", |rec| pt.record(rec, &self.scene, &self.film, &push))?;
-            }
-            Kernels::Bdpt(b) => {
-                let (join, join_k) = match b.join {
-                    Join::Full => (crate::gpu::abi::JOIN_FULL, 0),
-                    Join::K(k) => (crate::gpu::abi::JOIN_K, k),
-                    Join::Lvc(k) => (crate::gpu::abi::JOIN_LVC, k),
-                };
-                self.ctx.submit("bdpt pass", |rec| {
-                    // Iterations of up to `slices` camera samples per pixel, their light
-                    // paths traced together. Iterations start at multiples of `slices`
-                    // whatever the pass sizes, so the light paths (and the light vertex
-                    // cache) of a sample depend on its index only: passes, sample ranges and
-                    // devices split one render exactly.
-                    let mut done = 0;
-                    while done < spp {
-                        let base = first + done;
-                        let samples = (self.slices - base % self.slices).min(spp - done);
-                        let push = BdptPush {
-                            camera: self.camera,
-                            sample_base: base,
-                            seed: s.seed,
-                            emitter_count: self.scene.emitter_count,
-                            emitter_weight: self.scene.emitter_weight,
-                            max_depth: s.max_depth,
-                            rr_depth: s.rr_depth,
-                            light_path_len: b.light_path_len,
-                            join,
-                            join_k,
-                            light_paths: b.light_paths,
-                            camera_samples: samples,
-                            light_path_total: b.light_paths * samples,
-                        };
-                        b.record(rec, &self.scene, &self.film, &push)?;
-                        done += samples;
-                    }
-                    Ok(())
-                })?;
-            }
-        }
+        let inputs = PassInputs { scene: &self.scene, film: &self.film, camera: self.camera, settings: &self.settings, slices: self.slices };
+        self.kernels.pass(&self.ctx, &inputs, first, spp)?;
         self.samples += spp;
         Ok(())
     }
@@ -505,7 +452,7 @@ impl Renderer {
     fn adaptive_pass(&mut self, max_spp: u32) -> Result<u32, RenderError> {
         let first = self.settings.sample_start + self.samples;
         let mut spp = self.next_pass_spp().min(max_spp).max(1);
-        if matches!(self.kernels, Kernels::Bdpt(_)) && self.slices > 1 {
+        if self.kernels.slice_aligned() && self.slices > 1 {
             // Whole BDPT iterations (see `pass_at`): a pass ends at a multiple of the slices
             // unless the render ends first.
             spp = ((first + spp).next_multiple_of(self.slices) - first).min(max_spp);

@@ -1,4 +1,5 @@
-use super::{film::Film, gpu_scene::GpuScene};
+use super::integrator::{IntegratorKernels, PassInputs};
+use super::{film::Film, gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::PtPush, kernels};
 use crate::vk::{Bind, Context, Kernel, Recorder, Result, Spec};
 
@@ -8,11 +9,6 @@ pub struct PathTracer {
 }
 
 impl PathTracer {
-    /// The kernels a pass runs.
-    pub fn kernels(&self) -> Vec<&Kernel> {
-        vec![&self.kernel]
-    }
-
     pub fn new(ctx: &Context, scene: &GpuScene, nee: bool, sampler: super::Sampler) -> Result<PathTracer> {
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
@@ -31,5 +27,27 @@ impl PathTracer {
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * slices;
         rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(push), [self.kernel.groups_for(n), 1, 1])?;
         film.record_add_slices(rec, slices)
+    }
+}
+
+impl IntegratorKernels for PathTracer {
+    fn kernels(&self) -> Vec<&Kernel> {
+        vec![&self.kernel]
+    }
+
+    fn pass(&self, ctx: &Context, inputs: &PassInputs, first: u32, spp: u32) -> std::result::Result<(), RenderError> {
+        let (s, scene) = (inputs.settings, inputs.scene);
+        let push = PtPush {
+            camera: inputs.camera,
+            sample_base: first,
+            spp,
+            seed: s.seed,
+            emitter_count: scene.emitter_count,
+            emitter_weight: scene.emitter_weight,
+            max_depth: s.max_depth,
+            rr_depth: s.rr_depth,
+            slices: inputs.slices.min(spp),
+        };
+        Ok(ctx.submit("render pass", |rec| self.record(rec, scene, inputs.film, &push))?)
     }
 }
