@@ -192,3 +192,46 @@ fn timestamps_measure_gpu_work() {
     drop((scan, timer, data, k, out));
     finish(ctx);
 }
+
+/// Per-kernel GPU timing (what `bidir bench render` reports): every dispatch of a profiled
+/// submission is timed under its kernel's name, fills apart, and nothing is recorded while
+/// profiling is off.
+#[test]
+fn profiling_times_each_dispatch_by_kernel() {
+    let ctx = gpu();
+    if ctx.info().timestamp_valid_bits == 0 {
+        eprintln!("skipped: {} has no timestamps", ctx.info().name);
+        return;
+    }
+    let values: Vec<u32> = (0..100_000).collect();
+    let input = ctx.upload_buffer("profile.in", &values).unwrap();
+    let sum = ctx.create_buffer("profile.sum", 4, Memory::Device).unwrap();
+    let k = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
+    let push = abi::ScanPush { count: 100_000, ..Default::default() };
+    let binds = [Bind::buffer(abi::REDUCE_BIND_INPUT, &input), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &sum)];
+    let record = |rec: &mut bidir::vk::Recorder| {
+        rec.fill_buffer(&sum, 0);
+        for _ in 0..3 {
+            rec.dispatch(&k, &binds, bytemuck::bytes_of(&push), [k.groups_for(100_000), 1, 1])?;
+        }
+        Ok(())
+    };
+    ctx.submit("unprofiled", record).unwrap();
+    assert!(ctx.take_profile().0.is_empty(), "profiling is off by default");
+    ctx.set_profiling(true).unwrap();
+    ctx.submit("profiled", record).unwrap();
+    ctx.submit("profiled again", record).unwrap();
+    let (times, untimed) = ctx.take_profile();
+    assert_eq!(untimed, 0);
+    let names: Vec<(&str, u64)> = times.iter().map(|t| (t.name.as_str(), t.dispatches)).collect();
+    assert!(names.contains(&("reduce_sum", 6)) && names.contains(&("fill", 2)) && names.len() == 2, "{names:?}");
+    assert!(times.iter().all(|t| t.ns.is_finite() && t.ns >= 0.0), "{times:?}");
+    assert!(times.iter().find(|t| t.name == "reduce_sum").unwrap().ns > 0.0, "{times:?}");
+    assert!(ctx.take_profile().0.is_empty(), "take_profile empties the table");
+    ctx.set_profiling(false).unwrap();
+    ctx.submit("off again", record).unwrap();
+    assert!(ctx.take_profile().0.is_empty());
+    assert_eq!(ctx.read_buffer::<u32>(&sum).unwrap(), vec![(0..100_000u32).fold(0u32, |a, v| a.wrapping_add(v)) * 3]);
+    drop((k, input, sum));
+    finish(ctx);
+}

@@ -1,9 +1,10 @@
-//! Benchmarks (not tests): traversal speed (GPU-timestamped, warmed up, repeated, median
+//! Benchmarks (not tests): where a render's GPU time goes (per-kernel timestamps), traversal speed (GPU-timestamped, warmed up, repeated, median
 //! reported) and convergence runs (RMSE against a reference over render time, with charts).
 
 pub mod chart;
 pub mod converge;
 pub mod json;
+pub mod render;
 pub mod traversal;
 
 /// Median of a non-empty sample (sorted copy).

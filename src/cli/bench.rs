@@ -1,4 +1,4 @@
-//! `bidir bench traversal`.
+//! `bidir bench traversal` and `bidir bench render`.
 
 use super::scene_args::SceneArgs;
 use anyhow::Context as _;
@@ -11,6 +11,30 @@ use std::path::PathBuf;
 pub enum BenchCommand {
     /// Traversal speed: primary, shadow and diffuse rays, GPU-timed.
     Traversal(TraversalArgs),
+    /// Where a render's GPU time goes: per-kernel GPU timestamps over repeated renders.
+    Render(RenderBenchArgs),
+}
+
+#[derive(clap::Args, Debug)]
+pub struct RenderBenchArgs {
+    #[command(flatten)]
+    pub scene: super::scene_args::SceneArgs,
+    #[command(flatten)]
+    pub integrator: super::settings_args::IntegratorArgs,
+    #[command(flatten)]
+    pub settings: super::settings_args::SettingsArgs,
+    /// Samples per pixel of each run.
+    #[arg(long, default_value_t = 256)]
+    pub spp: u32,
+    /// Untimed runs first.
+    #[arg(long, default_value_t = 2)]
+    pub warmup: usize,
+    /// Timed runs (the median is reported).
+    #[arg(long, default_value_t = 5)]
+    pub runs: usize,
+    /// Write the report as JSON.
+    #[arg(long)]
+    pub json: Option<PathBuf>,
 }
 
 #[derive(clap::Args, Debug)]
@@ -69,7 +93,27 @@ pub struct TraversalArgs {
 pub fn run(cmd: &BenchCommand, opts: &ContextOptions) -> anyhow::Result<()> {
     match cmd {
         BenchCommand::Traversal(a) => traversal_cmd(a, opts),
+        BenchCommand::Render(a) => render_cmd(a, opts),
     }
+}
+
+fn render_cmd(a: &RenderBenchArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    if let Some(path) = &a.json {
+        bidir::imaging::check_writable(path)?;
+    }
+    let settings = a.settings.settings(a.integrator.integrator()?)?;
+    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
+    let loaded = a.scene.load()?;
+    let ctx = Context::new(opts).context("cannot start Vulkan")?;
+    let o = bidir::bench::render::Options { spp: a.spp, warmup: a.warmup, runs: a.runs.max(1) };
+    let report = bidir::bench::render::run(&ctx, &loaded.scene, &loaded.camera, settings, &o)?;
+    report.print();
+    if let Some(path) = &a.json {
+        let json = report.to_json().to_pretty();
+        bidir::imaging::write_atomically(path, |tmp| std::fs::write(tmp, json).map_err(|e| e.to_string()))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
 }
 
 fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()> {

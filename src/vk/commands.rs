@@ -7,6 +7,7 @@ use super::{
     kernel::Kernel,
     memory::{color_range, Buffer, Image},
 };
+use super::profile::RecordingProfile;
 use ash::vk;
 use std::sync::{atomic::Ordering, Arc};
 
@@ -37,9 +38,24 @@ impl<'a> Bind<'a> {
 pub struct Recorder<'a> {
     pub(super) shared: &'a Shared,
     pub(super) cmd: vk::CommandBuffer,
+    /// With profiling on: the timestamps written so far (one after each command).
+    profile: Option<RecordingProfile>,
+    /// Commands recorded after the profile's timestamps ran out.
+    untimed: u64,
 }
 
 impl<'a> Recorder<'a> {
+    /// With profiling on, writes a timestamp that closes the command `name` just recorded
+    /// (after its barrier, so it brackets that command alone).
+    fn mark(&mut self, name: &str) {
+        let Some(p) = &mut self.profile else { return };
+        match p.next(name) {
+            // SAFETY: recording state; the profile's pool was reset at the start of this buffer.
+            Some(i) => unsafe { self.shared.device.cmd_write_timestamp(self.cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, p.pool, i) },
+            None => self.untimed += 1,
+        }
+    }
+
     fn barrier(&mut self) {
         let stages = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER;
         let mb = [vk::MemoryBarrier::default()
@@ -124,6 +140,7 @@ impl<'a> Recorder<'a> {
             d.cmd_dispatch(self.cmd, groups[0], groups[1], groups[2]);
         }
         self.barrier();
+        self.mark(kernel.name());
         Ok(())
     }
 
@@ -133,6 +150,7 @@ impl<'a> Recorder<'a> {
         // SAFETY: recording state, live buffers.
         unsafe { self.shared.device.cmd_copy_buffer(self.cmd, src.raw, dst.raw, &region) };
         self.barrier();
+        self.mark("copy");
     }
 
     /// Fills a whole buffer with a repeated u32.
@@ -140,6 +158,7 @@ impl<'a> Recorder<'a> {
         // SAFETY: recording state, live buffer.
         unsafe { self.shared.device.cmd_fill_buffer(self.cmd, buffer.raw, 0, vk::WHOLE_SIZE, value) };
         self.barrier();
+        self.mark("fill");
     }
 
     /// Fills `bytes` bytes of `buffer` from byte `offset` with a repeated u32.
@@ -147,6 +166,7 @@ impl<'a> Recorder<'a> {
         // SAFETY: recording state, live buffer.
         unsafe { self.shared.device.cmd_fill_buffer(self.cmd, buffer.raw, offset, bytes, value) };
         self.barrier();
+        self.mark("fill");
     }
 
     /// Moves `image` from layout `old` to `new`, ordering all compute and transfer work
@@ -267,8 +287,10 @@ impl Context {
             free(cmd);
             return Err(VkError::Vk { what: format!("begin {what}"), result });
         }
-        let mut rec = Recorder { shared: s, cmd };
+        let profile = s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_ref().map(|p| p.begin(&s.device, cmd));
+        let mut rec = Recorder { shared: s, cmd, profile, untimed: 0 };
         let recorded = record(&mut rec);
+        let (profile, untimed) = (rec.profile.take(), rec.untimed);
         // SAFETY: recording state.
         let ended = unsafe { s.device.end_command_buffer(cmd) };
         if let Err(e) = recorded {
@@ -313,7 +335,10 @@ impl Context {
                 // SAFETY: the fence is not in use: the submission failed, or it signalled.
                 unsafe { s.device.destroy_fence(fence, None) };
                 free(cmd);
-                Ok(())
+                match (profile, s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_mut()) {
+                    (Some(rp), Some(p)) => p.finish(s, rp, untimed),
+                    _ => Ok(()),
+                }
             }
             Err(vk::Result::TIMEOUT) => {
                 // The GPU may still run this work: leak rather than destroy in-flight objects.

@@ -101,6 +101,8 @@ pub(crate) struct Shared {
     /// Set when a submission timed out: the device may still be executing, so nothing is
     /// destroyed (destroying in-flight objects is undefined behaviour).
     pub poisoned: AtomicBool,
+    /// Per-kernel GPU timing, when on (`Context::set_profiling`).
+    pub profiler: Mutex<Option<super::profile::Profiler>>,
     _log: Arc<ValidationLog>,
 }
 
@@ -125,6 +127,9 @@ impl Drop for Shared {
         // an Arc<Shared>), so destroying in reverse creation order is sound.
         unsafe {
             let _ = self.device.device_wait_idle();
+            if let Some(p) = self.profiler.get_mut().unwrap_or_else(|e| e.into_inner()).take() {
+                p.destroy(&self.device);
+            }
             ManuallyDrop::drop(&mut self.allocator);
             self.device.destroy_command_pool(*self.command_pool.get_mut().unwrap_or_else(|e| e.into_inner()), None);
             self.device.destroy_device(None);
@@ -200,6 +205,7 @@ impl Context {
                     info,
                     gpu_timeout: opts.gpu_timeout,
                     poisoned: AtomicBool::new(false),
+                    profiler: Mutex::new(None),
                     _log: log.clone(),
                 };
                 shared.name(queue, "bidir.queue");

@@ -31,6 +31,7 @@ mod error;
 mod instance;
 mod kernel;
 mod memory;
+mod profile;
 pub mod reflect;
 mod swapchain;
 
@@ -41,4 +42,5 @@ pub use error::{Result, VkError};
 pub use instance::{choose_device, list_devices, DeviceInfo, MemoryHeap, SubgroupOps};
 pub use kernel::{Kernel, KernelSource, KernelStatistic, Spec};
 pub use memory::{Buffer, Image, Memory};
+pub use profile::KernelTime;
 pub use swapchain::{surface_extensions, Presented, Swapchain, Vsync, SWAPCHAIN_EXTENSION};

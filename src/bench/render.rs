@@ -1,0 +1,157 @@
+//! Where a render's GPU time goes: `bidir bench render` renders the same samples several
+//! times with per-kernel GPU timestamps (`vk::Context::set_profiling`) after a warm-up, and
+//! reports each kernel's median time per run, its share, and the samples per second of GPU
+//! time.
+
+use super::json::Json;
+use crate::render::{RenderError, RenderSettings, Renderer};
+use crate::scene::{Camera, Scene};
+use crate::vk::Context;
+use std::time::Instant;
+
+/// How much to render.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Samples per pixel of each timed run.
+    pub spp: u32,
+    /// Runs before the timed ones (pipelines, caches, the pass model settle).
+    pub warmup: usize,
+    /// Timed runs; medians are reported.
+    pub runs: usize,
+}
+
+/// One kernel's share of a run.
+#[derive(Clone, Debug)]
+pub struct KernelRow {
+    pub name: String,
+    /// Median over runs of its GPU milliseconds per run.
+    pub ms: f64,
+    /// Dispatches per run (the last run's).
+    pub dispatches: u64,
+}
+
+/// The benchmark's result.
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub device: String,
+    pub integrator: String,
+    pub pixels: u64,
+    pub spp: u32,
+    /// Median GPU milliseconds of a run (the sum of its dispatches' times).
+    pub gpu_ms: f64,
+    /// Median wall-clock milliseconds of a run (host work between passes included).
+    pub wall_ms: f64,
+    pub kernels: Vec<KernelRow>,
+    /// Dispatches not timed (more than a submission's timestamps).
+    pub untimed: u64,
+}
+
+impl Report {
+    /// Samples (pixels x spp) per second of GPU time, in millions.
+    pub fn msamples_per_s(&self) -> f64 {
+        self.pixels as f64 * self.spp as f64 / (self.gpu_ms * 1e-3) / 1e6
+    }
+
+    pub fn print(&self) {
+        println!(
+            "{} on {}: {} pixels x {} spp; GPU {:.2} ms ({:.4} Msamples/s), wall {:.2} ms (median of runs)",
+            self.integrator,
+            self.device,
+            self.pixels,
+            self.spp,
+            self.gpu_ms,
+            self.msamples_per_s(),
+            self.wall_ms
+        );
+        let per_sample_ns = |ms: f64| ms * 1e6 / (self.pixels as f64 * self.spp as f64);
+        println!("{:<22} {:>10} {:>7} {:>12} {:>10}", "kernel", "ms/run", "share", "ns/sample", "dispatches");
+        for k in &self.kernels {
+            println!(
+                "{:<22} {:>10.3} {:>6.1}% {:>12.3} {:>10}",
+                k.name,
+                k.ms,
+                100.0 * k.ms / self.gpu_ms.max(1e-12),
+                per_sample_ns(k.ms),
+                k.dispatches
+            );
+        }
+        if self.untimed > 0 {
+            println!("({} dispatches were not timed: a submission held more than the profiler's timestamps)", self.untimed);
+        }
+    }
+
+    pub fn to_json(&self) -> Json {
+        Json::obj(vec![
+            ("device", Json::Str(self.device.clone())),
+            ("integrator", Json::Str(self.integrator.clone())),
+            ("pixels", Json::Int(self.pixels as i64)),
+            ("spp", Json::Int(self.spp as i64)),
+            ("gpu_ms", Json::Num(self.gpu_ms)),
+            ("wall_ms", Json::Num(self.wall_ms)),
+            ("msamples_per_s", Json::Num(self.msamples_per_s())),
+            (
+                "kernels",
+                Json::Arr(
+                    self.kernels
+                        .iter()
+                        .map(|k| {
+                            Json::obj(vec![
+                                ("name", Json::Str(k.name.clone())),
+                                ("ms", Json::Num(k.ms)),
+                                ("dispatches", Json::Int(k.dispatches as i64)),
+                            ])
+                        })
+                        .collect(),
+                ),
+            ),
+        ])
+    }
+}
+
+/// Renders `o.spp` samples per pixel `o.warmup + o.runs` times with `settings` and reports
+/// the timed runs' medians. Leaves profiling off.
+pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings, o: &Options) -> Result<Report, RenderError> {
+    let integrator = settings.integrator.name();
+    let mut r = Renderer::new(ctx, scene, camera, settings)?;
+    let spp = o.spp.max(1);
+    for _ in 0..o.warmup {
+        r.reset(None)?;
+        r.render_spp(spp, |_| {})?;
+    }
+    let mut per_kernel: std::collections::BTreeMap<String, (Vec<f64>, u64)> = Default::default();
+    let (mut gpu, mut wall, mut untimed) = (Vec::new(), Vec::new(), 0);
+    let runs = o.runs.max(1);
+    let result = (|| {
+        for run in 0..runs {
+            r.reset(None)?;
+            ctx.set_profiling(true)?;
+            let start = Instant::now();
+            r.render_spp(spp, |_| {})?;
+            wall.push(start.elapsed().as_secs_f64() * 1e3);
+            let (times, n) = ctx.take_profile();
+            untimed += n;
+            gpu.push(times.iter().map(|k| k.ns).sum::<f64>() * 1e-6);
+            for k in times {
+                let e = per_kernel.entry(k.name).or_insert_with(|| (vec![0.0; runs], 0));
+                e.0[run] = k.ns * 1e-6;
+                e.1 = k.dispatches;
+            }
+        }
+        Ok::<(), RenderError>(())
+    })();
+    ctx.set_profiling(false)?;
+    result?;
+    let mut kernels: Vec<KernelRow> =
+        per_kernel.into_iter().map(|(name, (ms, dispatches))| KernelRow { name, ms: super::median(&ms), dispatches }).collect();
+    kernels.sort_by(|a, b| b.ms.total_cmp(&a.ms));
+    Ok(Report {
+        device: ctx.info().name.clone(),
+        integrator,
+        pixels: camera.width as u64 * camera.height as u64,
+        spp,
+        gpu_ms: super::median(&gpu),
+        wall_ms: super::median(&wall),
+        kernels,
+        untimed,
+    })
+}

@@ -1,0 +1,131 @@
+//! GPU time per kernel. With profiling on ([`Context::set_profiling`]) every submission writes
+//! a timestamp before its first command and after each dispatch (each dispatch is followed by
+//! a full barrier, so consecutive timestamps bracket exactly one dispatch), and the time is
+//! added to a table by kernel name that [`Context::take_profile`] returns. Off by default:
+//! renders pay nothing for it.
+
+use super::{
+    context::{Context, Shared},
+    error::{Result, VkResultExt},
+};
+use ash::vk;
+use std::collections::BTreeMap;
+
+/// Timestamps one submission can hold; dispatches past it are not timed (counted apart).
+const QUERIES: u32 = 4096;
+
+/// GPU time of one kernel over the submissions since profiling started.
+#[derive(Clone, Debug, PartialEq)]
+pub struct KernelTime {
+    /// The kernel's name (its SPIR-V module, e.g. `bdpt_camera`).
+    pub name: String,
+    /// Nanoseconds, summed over its dispatches.
+    pub ns: f64,
+    pub dispatches: u64,
+}
+
+/// The query pool and the table (in `Shared`, behind a mutex).
+pub(crate) struct Profiler {
+    pool: vk::QueryPool,
+    totals: BTreeMap<String, (f64, u64)>,
+    /// Dispatches a submission recorded beyond `QUERIES`.
+    pub untimed: u64,
+}
+
+/// What a recording with profiling on writes: the pool and the name of each timestamp's dispatch.
+pub(crate) struct RecordingProfile {
+    pub pool: vk::QueryPool,
+    pub names: Vec<String>,
+}
+
+impl RecordingProfile {
+    /// The next timestamp's index for a dispatch of `name`, or None when the pool is full.
+    pub fn next(&mut self, name: &str) -> Option<u32> {
+        if self.names.len() as u32 + 1 >= QUERIES {
+            return None;
+        }
+        self.names.push(name.to_string());
+        Some(self.names.len() as u32)
+    }
+}
+
+impl Profiler {
+    /// Starts a recording: resets the pool and writes timestamp 0.
+    pub(crate) fn begin(&self, device: &ash::Device, cmd: vk::CommandBuffer) -> RecordingProfile {
+        // SAFETY: `cmd` is recording; the pool is live and no submission in flight uses it
+        // (submissions are serialised by the command pool's mutex and waited for).
+        unsafe {
+            device.cmd_reset_query_pool(cmd, self.pool, 0, QUERIES);
+            device.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.pool, 0);
+        }
+        RecordingProfile { pool: self.pool, names: Vec::new() }
+    }
+
+    /// Adds a completed submission's dispatch times to the table.
+    pub(crate) fn finish(&mut self, shared: &Shared, rec: RecordingProfile, untimed: u64) -> Result<()> {
+        self.untimed += untimed;
+        if rec.names.is_empty() {
+            return Ok(());
+        }
+        let mut ticks = vec![0u64; rec.names.len() + 1];
+        // SAFETY: the submission that wrote these queries has completed (its fence was waited on).
+        unsafe {
+            shared.device.get_query_pool_results(self.pool, 0, &mut ticks, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
+        }
+        .ctx(|| "read profiling timestamps".into())?;
+        let bits = shared.info.timestamp_valid_bits;
+        let mask = if bits >= 64 { u64::MAX } else { (1u64 << bits) - 1 };
+        let period = shared.info.timestamp_period_ns as f64;
+        for (i, name) in rec.names.into_iter().enumerate() {
+            let dt = (ticks[i + 1] & mask).wrapping_sub(ticks[i] & mask) & mask;
+            let e = self.totals.entry(name).or_insert((0.0, 0));
+            e.0 += dt as f64 * period;
+            e.1 += 1;
+        }
+        Ok(())
+    }
+
+    /// Frees the pool (the device is idle or being destroyed).
+    pub(crate) fn destroy(&self, device: &ash::Device) {
+        // SAFETY: no submission in flight uses the pool.
+        unsafe { device.destroy_query_pool(self.pool, None) };
+    }
+}
+
+impl Context {
+    /// Turns per-kernel GPU timing on (a fresh, empty table) or off. Needs timestamps on the
+    /// compute queue (`DeviceInfo::timestamp_valid_bits` > 0).
+    pub fn set_profiling(&self, on: bool) -> Result<()> {
+        let s = &self.shared;
+        let mut slot = s.profiler.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(old) = slot.take() {
+            old.destroy(&s.device);
+        }
+        if !on {
+            return Ok(());
+        }
+        if s.info.timestamp_valid_bits == 0 {
+            return Err(super::VkError::Usage {
+                name: "profiling".into(),
+                msg: format!("{} has no timestamps on its compute queue", s.info.name),
+            });
+        }
+        let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(QUERIES);
+        // SAFETY: live device.
+        let pool = unsafe { s.device.create_query_pool(&info, None) }.ctx(|| "profiling query pool".into())?;
+        s.name(pool, "bidir.profiling");
+        *slot = Some(Profiler { pool, totals: BTreeMap::new(), untimed: 0 });
+        Ok(())
+    }
+
+    /// The table since profiling was turned on (most time first), and empties it; plus the
+    /// dispatches that were not timed (more than a submission's timestamps).
+    pub fn take_profile(&self) -> (Vec<KernelTime>, u64) {
+        let mut slot = self.shared.profiler.lock().unwrap_or_else(|e| e.into_inner());
+        let Some(p) = slot.as_mut() else { return (Vec::new(), 0) };
+        let mut out: Vec<KernelTime> =
+            std::mem::take(&mut p.totals).into_iter().map(|(name, (ns, dispatches))| KernelTime { name, ns, dispatches }).collect();
+        out.sort_by(|a, b| b.ns.total_cmp(&a.ns));
+        (out, std::mem::take(&mut p.untimed))
+    }
+}
