@@ -15,8 +15,8 @@
 mod bdpt;
 pub mod env;
 mod film;
-mod integrator;
 pub mod gpu_scene;
+mod integrator;
 pub mod lights;
 pub mod multi;
 mod pacing;
@@ -441,7 +441,8 @@ impl Renderer {
     /// Renders samples `first..first + spp` of every pixel in one submission and adds them to
     /// the film (several devices render the passes of one image this way).
     pub fn pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
-        let inputs = PassInputs { scene: &self.scene, film: &self.film, camera: self.camera, settings: &self.settings, slices: self.slices };
+        let inputs =
+            PassInputs { scene: &self.scene, film: &self.film, camera: self.camera, settings: &self.settings, slices: self.slices };
         self.kernels.pass(&self.ctx, &inputs, first, spp)?;
         self.samples += spp;
         Ok(())

@@ -1,13 +1,13 @@
 //! Recording and submitting GPU work: one-shot command buffers with a fence and a timeout,
 //! dispatches with push descriptors and automatic barriers, timestamp queries.
 
+use super::profile::RecordingProfile;
 use super::{
     context::{Context, Shared},
     error::{Result, VkError, VkResultExt},
     kernel::Kernel,
     memory::{color_range, Buffer, Image},
 };
-use super::profile::RecordingProfile;
 use ash::vk;
 use std::sync::{atomic::Ordering, Arc};
 
