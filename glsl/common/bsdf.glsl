@@ -8,6 +8,7 @@
 #define BIDIR_BSDF_GLSL
 
 #include "microfacet.glsl"
+#include "rng.glsl"
 
 const uint LOBE_DIFFUSE = 0u;
 const uint LOBE_MIRROR = 1u;
@@ -33,6 +34,15 @@ uint choose_lobe(GpuMaterial m, float u) {
         return LOBE_GLASS;
     }
     return LOBE_DIFFUSE;
+}
+
+// choose_lobe with a fresh random number, drawn only where the scene has a delta lobe: a
+// scene of continuous materials spends no sample dimension (no scrambled Sobol' number) on it.
+uint choose_lobe_drawn(GpuMaterial m, inout Rng rng) {
+    if (HAS_MIRROR == 0u && HAS_GLASS == 0u) {
+        return LOBE_DIFFUSE;
+    }
+    return choose_lobe(m, rng_next(rng));
 }
 
 // Fresnel reflectance of a smooth dielectric for unpolarised light (exact form, the average

@@ -1,15 +1,18 @@
 // Random numbers for the integrators, a value per (pixel or path, sample index, dimension):
 // - independent (SAMPLER_INDEPENDENT): a PCG-style hash chain, no state in memory;
-// - Owen-scrambled Sobol' (SAMPLER_SOBOL): Burley 2020, "Practical Hash-based Owen
+// - Owen-scrambled Sobol' (SOBOL_DIMS > 0): Burley 2020, "Practical Hash-based Owen
 //   Scrambling" — dimensions in groups of four, each group with its own per-pixel index
 //   shuffle and value scramble, so every dimension stays uniform (unbiased) and each group
-//   keeps Sobol's stratification across a pixel's samples.
+//   keeps Sobol's stratification across a pixel's samples. Only the first SOBOL_DIMS
+//   dimensions (the pixel jitter and the first bounces, where stratification lowers the
+//   error most); later ones continue as a hash chain seeded by (pixel, sample index), which
+//   costs a fraction of a scrambled Sobol' number (docs/results.md: Sobol' dimensions).
 #ifndef BIDIR_RNG_GLSL
 #define BIDIR_RNG_GLSL
 
 #include "bidir_sobol.glsl"
 
-layout(constant_id = SPEC_SAMPLER) const uint SAMPLER = SAMPLER_INDEPENDENT;
+layout(constant_id = SPEC_SAMPLER) const uint SOBOL_DIMS = SAMPLER_INDEPENDENT;
 
 // PCG hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering"): one 32-bit LCG step
 // and an output permutation.
@@ -20,14 +23,14 @@ uint pcg_hash(uint v) {
 }
 
 struct Rng {
-    uint state;   // independent: hash chain; Sobol: per-pixel seed
+    uint state;   // hash chain; while dim < SOBOL_DIMS the per-pixel seed
     uint index;   // Sobol: sample index
-    uint dim;     // Sobol: next dimension
+    uint dim;     // Sobol: next dimension (stops counting past SOBOL_DIMS)
 };
 
 Rng rng_init(uint pixel, uint sample_index, uint seed) {
     uint s = pcg_hash(pixel ^ pcg_hash(seed));
-    if (SAMPLER == SAMPLER_SOBOL) {
+    if (SOBOL_DIMS > 0u) {
         return Rng(s, sample_index, 0u);
     }
     return Rng(pcg_hash(s ^ pcg_hash(sample_index)), 0u, 0u);
@@ -52,12 +55,17 @@ uint nested_uniform_scramble(uint x, uint seed) {
 
 // The next 32 random bits.
 uint rng_next_uint(inout Rng r) {
-    if (SAMPLER == SAMPLER_SOBOL) {
+    if (SOBOL_DIMS > 0u && r.dim < SOBOL_DIMS) {
         uint group_seed = pcg_hash(r.state ^ pcg_hash(r.dim / 4u));
         uint shuffled = nested_uniform_scramble(r.index, group_seed);
         uint k = r.dim % 4u;
         r.dim++;
         return nested_uniform_scramble(sobol_point(shuffled, k), pcg_hash(group_seed ^ (k + 1u)));
+    }
+    if (SOBOL_DIMS > 0u && r.dim == SOBOL_DIMS) {
+        // Past the Sobol' dimensions: a hash chain of its own for this pixel and sample.
+        r.state = pcg_hash(r.state ^ pcg_hash(r.index ^ 0x5bd1e995u));
+        r.dim++;
     }
     r.state = pcg_hash(r.state);
     return r.state;

@@ -72,7 +72,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
         // Normals facing the side the ray came from.
         vec3 ng_f = s.front ? s.ng : -s.ng;
         vec3 ns_f = s.front ? s.ns : -s.ns;
-        uint lobe = choose_lobe(m, rng_next(rng));
+        uint lobe = choose_lobe_drawn(m, rng);
         if (lobe == LOBE_MIRROR) {
             d = reflect(d, ns_f);
             o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
@@ -105,20 +105,27 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 // A delta light: BSDF sampling never finds it, so no MIS.
                 PunctualSample ps = punctual_sample(rng_next(rng), s.p);
                 float cos_s = dot(ps.w, ns_f);
-                if (cos_s > 0.0 && dot(ps.w, ng_f) > 0.0 && max3(ps.li) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                if (cos_s > 0.0 && dot(ps.w, ng_f) > 0.0 && max3(ps.li) > 0.0) {
+                    // The contribution first, so only it stays live across the shadow ray.
                     float pdf_fwd_w, pdf_rev_w;
                     vec3 f = continuous_eval(c, ns_f, -d, ps.w, pdf_fwd_w, pdf_rev_w);
-                    radiance += throughput * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
+                    vec3 contrib = throughput * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
+                    if (max3(contrib) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                        radiance += contrib;
+                    }
                 }
             } else if (env_light) {
                 EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
                 float cos_s = dot(es.w, ns_f);
-                if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
+                if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0) {
                     float pdf_light_w = env.pick * es.pdf_w;
                     float pdf_fwd_w, pdf_rev_w;
                     vec3 f = continuous_eval(c, ns_f, -d, es.w, pdf_fwd_w, pdf_rev_w);
                     float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
-                    radiance += throughput * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
+                    vec3 contrib = throughput * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
+                    if (max3(contrib) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
+                        radiance += contrib;
+                    }
                 }
             } else if (nee) {
                 LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
@@ -128,12 +135,15 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
                 vec3 wi = to_l / dist;
                 float cos_s = dot(wi, ns_f);
                 float cos_l = -dot(wi, ls.n);
-                if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
+                if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0) {
                     float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(luminance(ls.le), pc.emitter_weight) * dist2 / cos_l;
                     float pdf_fwd_w, pdf_rev_w;
                     vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
                     float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
-                    radiance += throughput * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
+                    vec3 contrib = throughput * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
+                    if (max3(contrib) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
+                        radiance += contrib;
+                    }
                 }
             }
             // Continuation by the continuous part's sampling: f cos / pdf_fwd_w.

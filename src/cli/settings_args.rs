@@ -32,8 +32,9 @@ impl IntegratorArgs {
 pub struct SettingsArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u32,
-    /// Random numbers: sobol (Owen-scrambled Sobol', about half the RMSE at equal spp on the
-    /// Cornell box) | independent.
+    /// Random numbers: sobol (Owen-scrambled Sobol' for the first 8 dimensions of a sample,
+    /// the pixel and the first bounce; hashed after) | sobol:N (the first N) | sobol:all |
+    /// independent.
     #[arg(long, default_value = "sobol")]
     pub sampler: Sampler,
     /// Most path segments (0: unbounded; Russian roulette ends paths).

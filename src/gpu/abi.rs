@@ -154,10 +154,12 @@ gpu_consts! {
     pub const SPEC_HAS_MIRROR: u32 = 8;
     pub const SPEC_HAS_GLASS: u32 = 9;
     pub const SPEC_HAS_ALPHA: u32 = 10;
-    /// Random numbers: SAMPLER_INDEPENDENT or SAMPLER_SOBOL.
+    /// Random numbers: how many leading dimensions of each sample come from Owen-scrambled
+    /// Sobol' (glsl/common/rng.glsl); the rest come from a hash chain. SAMPLER_INDEPENDENT
+    /// (0): all from the hash; SOBOL_ALL_DIMS: all from Sobol'.
     pub const SPEC_SAMPLER: u32 = 11;
     pub const SAMPLER_INDEPENDENT: u32 = 0;
-    pub const SAMPLER_SOBOL: u32 = 1;
+    pub const SOBOL_ALL_DIMS: u32 = 0xffff_ffff;
 
     // ---- Bindings and modes: glsl/tests/sampling.comp (tests/sampling.rs) -----------------
     /// Results, vec4 per sample (two per sample for SAMPLING_EMITTER).

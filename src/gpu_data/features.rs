@@ -28,19 +28,21 @@ pub struct SceneFeatures {
 impl SceneFeatures {
     pub fn of(scene: &Scene) -> SceneFeatures {
         let m = &scene.materials;
+        let textures = scene.uvs.is_some()
+            && !scene.textures.is_empty()
+            && m.iter().any(|m| {
+                m.albedo_texture.is_some()
+                    || m.alpha.is_some()
+                    || m.roughness_texture.is_some()
+                    || m.metallic_texture.is_some()
+                    || m.emission_texture.is_some()
+                    || m.normal_texture.is_some()
+            });
         SceneFeatures {
             normals: scene.normals.is_some(),
-            uvs: scene.uvs.is_some(),
-            textures: scene.uvs.is_some()
-                && !scene.textures.is_empty()
-                && m.iter().any(|m| {
-                    m.albedo_texture.is_some()
-                        || m.alpha.is_some()
-                        || m.roughness_texture.is_some()
-                        || m.metallic_texture.is_some()
-                        || m.emission_texture.is_some()
-                        || m.normal_texture.is_some()
-                }),
+            // Texture coordinates are interpolated only where a texture reads them.
+            uvs: textures,
+            textures,
             mirror: m.iter().any(|m| m.reflectivity > 0.0),
             glass: m.iter().any(|m| m.refractivity > 0.0),
             alpha: (scene.uvs.is_some() && m.iter().any(|m| m.alpha.is_some())) || m.iter().any(|m| m.blend.is_some()),

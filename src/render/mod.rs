@@ -90,17 +90,43 @@ impl std::str::FromStr for Integrator {
 pub enum Sampler {
     /// Independent uniform numbers from a counter-based hash.
     Independent,
-    /// Owen-scrambled Sobol' points (Burley 2020), four dimensions per stratified group.
+    /// Owen-scrambled Sobol' points (Burley 2020), four dimensions per stratified group, for
+    /// the first [`Sampler::DEFAULT_SOBOL_DIMS`] dimensions of a sample; the rest hashed.
     Sobol,
+    /// Sobol' for the first `n` dimensions (`u32::MAX`: all), the rest hashed.
+    SobolDims(u32),
 }
 
 impl Sampler {
+    /// Leading Sobol' dimensions of `Sampler::Sobol`: the pixel jitter and the first bounce
+    /// (measured best at equal time for pt-nee and bdpt: docs/results.md, "Sobol' dimensions").
+    pub const DEFAULT_SOBOL_DIMS: u32 = 8;
+
+    /// Leading dimensions of each sample drawn from Sobol' (0: none).
+    pub fn sobol_dims(self) -> u32 {
+        match self {
+            Sampler::Independent => 0,
+            Sampler::Sobol => Self::DEFAULT_SOBOL_DIMS,
+            Sampler::SobolDims(n) => n,
+        }
+    }
+
     pub fn spec(self) -> crate::vk::Spec {
-        let value = match self {
-            Sampler::Independent => crate::gpu::abi::SAMPLER_INDEPENDENT,
-            Sampler::Sobol => crate::gpu::abi::SAMPLER_SOBOL,
+        let value = match self.sobol_dims() {
+            u32::MAX => crate::gpu::abi::SOBOL_ALL_DIMS,
+            n => n,
         };
         crate::vk::Spec { id: crate::gpu::abi::SPEC_SAMPLER, value }
+    }
+
+    /// The name `from_str` reads back.
+    pub fn name(self) -> String {
+        match self {
+            Sampler::Independent => "independent".into(),
+            Sampler::Sobol => "sobol".into(),
+            Sampler::SobolDims(u32::MAX) => "sobol:all".into(),
+            Sampler::SobolDims(n) => format!("sobol:{n}"),
+        }
     }
 }
 
@@ -110,7 +136,11 @@ impl std::str::FromStr for Sampler {
         match s {
             "independent" => Ok(Sampler::Independent),
             "sobol" => Ok(Sampler::Sobol),
-            _ => Err(format!("unknown sampler '{s}' (independent | sobol)")),
+            "sobol:all" => Ok(Sampler::SobolDims(u32::MAX)),
+            _ => match s.strip_prefix("sobol:").map(str::parse::<u32>) {
+                Some(Ok(n)) if n >= 1 => Ok(Sampler::SobolDims(n)),
+                _ => Err(format!("unknown sampler '{s}' (independent | sobol | sobol:N with N >= 1 | sobol:all)")),
+            },
         }
     }
 }
