@@ -8,13 +8,17 @@
 //!   depth the analytic camera-ray distance averaged over the pixel (within the estimator's
 //!   own noise, computed from the within-pixel variance);
 //! - the EXR written carries `A`, `albedo.R/G/B`, `normal.X/Y/Z`, `depth.Z`, read back.
+//!
+//! The `--sky` map (Preetham et al. 1999, src/scene/sky.rs): finite and non-negative, its
+//! luminance that of the paper's formulas (evaluated again here, independently), brighter
+//! toward the sun and toward the horizon; pt, pt-nee and BDPT agree block by block under it.
 
 mod common;
 
 use bidir::imaging::aov::{slot, Aovs};
 use bidir::imaging::part::Accumulation;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
-use bidir::scene::{Camera, Material, Scene};
+use bidir::scene::{Camera, Environment, Material, Preetham, Scene, SkySpec};
 use common::{finish, geometry, gpu};
 use glam::Vec3;
 
@@ -184,4 +188,151 @@ fn aov_needs_an_exr_output_and_known_names() {
     let unknown = run(&["render", "--aov", "albedo,position", "-o", "bidir-lights-aov.exr"]);
     assert!(!unknown.status.success());
     assert!(String::from_utf8_lossy(&unknown.stderr).contains("unknown AOV 'position'"), "{}", String::from_utf8_lossy(&unknown.stderr));
+}
+
+/// Luminance (kcd/m^2) of Preetham et al.'s clear sky, written out from the paper (eq. 3 and
+/// Appendix A.2) for the test: view zenith angle theta, angle gamma to the sun, sun zenith
+/// angle theta_s, turbidity t.
+fn preetham_luminance(theta: f64, gamma: f64, theta_s: f64, t: f64) -> f64 {
+    let (a, b, c, d, e) = (0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771, -0.0670 * t + 0.3703);
+    let f = |th: f64, g: f64| (1.0 + a * (b / th.cos()).exp()) * (1.0 + c * (d * g).exp() + e * g.cos().powi(2));
+    let chi = (4.0 / 9.0 - t / 120.0) * (std::f64::consts::PI - 2.0 * theta_s);
+    let y_z = (4.0453 * t - 4.9710) * chi.tan() - 0.2155 * t + 2.4192;
+    y_z * f(theta, gamma) / f(0.0, theta_s)
+}
+
+/// Rec. 709 luminance of linear RGB.
+fn luminance(c: Vec3) -> f64 {
+    (0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z) as f64
+}
+
+#[test]
+fn sky_map_follows_preetham() {
+    let t = 3.0;
+    let theta_s = 50f64.to_radians();
+    let sun = Vec3::new(theta_s.sin() as f32, theta_s.cos() as f32, 0.0);
+    let spec = SkySpec { turbidity: t, ..SkySpec::default() };
+    let env = Environment::preetham_sky(&spec, sun, Vec3::splat(100.0), 0.0, 256, 128);
+    assert!(env.texels.iter().all(|t| t.is_finite() && t.min_element() >= 0.0), "finite, non-negative");
+    assert!(env.texels[..(256 * 64)].iter().all(|t| t.min_element() > 0.0), "positive above the horizon");
+    let sky = Preetham::new(sun, t);
+    // Directions at (theta, gamma): the view at zenith angle theta, rotated about the zenith
+    // away from the sun by phi (cos gamma = cos theta cos theta_s + sin theta sin theta_s cos phi).
+    let view = |theta: f64, phi: f64| Vec3::new((theta.sin() * phi.cos()) as f32, theta.cos() as f32, (theta.sin() * phi.sin()) as f32);
+    let gamma = |w: Vec3| (w.dot(sun) as f64).clamp(-1.0, 1.0).acos();
+    let to_radiance = 1000.0 / 683.0;
+    for (theta_deg, phi_deg) in [(0.0, 0.0), (30.0, 0.0), (50.0, 8.0), (70.0, 90.0), (85.0, 180.0), (60.0, 135.0)] {
+        let (theta, phi) = (f64::to_radians(theta_deg), f64::to_radians(phi_deg));
+        let w = view(theta, phi);
+        let want = to_radiance * preetham_luminance(theta, gamma(w), theta_s, t);
+        let model = luminance(sky.radiance(w).as_vec3());
+        assert!((model / want - 1.0).abs() < 2e-3, "model at ({theta_deg}, {phi_deg}): {model} vs {want}");
+        // The map holds the value at its texel's centre (1.4 degrees apart).
+        let map = luminance(env.radiance(w));
+        assert!((map / want - 1.0).abs() < 0.03, "map at ({theta_deg}, {phi_deg}): {map} vs {want}");
+    }
+    let lum = |theta_deg: f64, phi_deg: f64| luminance(env.radiance(view(f64::to_radians(theta_deg), f64::to_radians(phi_deg))));
+    // Brighter toward the sun: along the sun's almucantar, and near it than at the zenith.
+    assert!(lum(50.0, 10.0) > lum(50.0, 45.0) && lum(50.0, 45.0) > lum(50.0, 90.0), "toward the sun");
+    assert!(lum(45.0, 5.0) > lum(0.0, 0.0), "near the sun brighter than the zenith");
+    // Brighter toward the horizon, away from the sun (the Perez gradient term, A < 0).
+    assert!(lum(85.0, 180.0) > lum(60.0, 180.0) && lum(60.0, 180.0) > lum(30.0, 180.0), "toward the horizon");
+    // The ground: albedo / pi times the irradiance on a horizontal surface (sky and sun).
+    let ground = env.radiance(Vec3::new(0.1, -0.9, 0.2).normalize());
+    let e_sun = 100.0 * theta_s.cos();
+    assert!(luminance(ground) > 0.3 / std::f64::consts::PI * e_sun, "the ground is lit by the sun and the sky");
+}
+
+/// Per 8 x 8 block, the mean of the pixel differences a - b (channel mean) against its
+/// standard error: the sum of z^2 is chi-square with one degree of freedom per block. And
+/// the whole image's mean difference within 4 standard errors.
+fn assert_agree(what: &str, a: &bidir::imaging::RgbImage, b: &bidir::imaging::RgbImage) {
+    let w = a.width as usize;
+    let diff: Vec<f64> =
+        a.data.chunks_exact(3).zip(b.data.chunks_exact(3)).map(|(x, y)| (0..3).map(|c| (x[c] - y[c]) as f64).sum::<f64>() / 3.0).collect();
+    let mean_se = |d: &[f64]| {
+        let n = d.len() as f64;
+        let m = d.iter().sum::<f64>() / n;
+        (m, (d.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt())
+    };
+    let (mut chi2, mut blocks) = (0.0, 0u32);
+    for by in (0..a.height as usize).step_by(8) {
+        for bx in (0..w).step_by(8) {
+            let d: Vec<f64> = (by..by + 8).flat_map(|y| (bx..bx + 8).map(move |x| (x, y))).map(|(x, y)| diff[y * w + x]).collect();
+            let (m, se) = mean_se(&d);
+            // Pixels that see only the map are exact up to the rounding of float sums.
+            let level = (by..by + 8)
+                .flat_map(|y| (bx..bx + 8).map(move |x| (x, y)))
+                .map(|(x, y)| a.pixel(x as u32, y as u32)[1] as f64)
+                .sum::<f64>()
+                / 64.0;
+            chi2 += (m / se.max(1e-5 * level.abs()).max(1e-12)).powi(2);
+            blocks += 1;
+        }
+    }
+    let level = a.mean().iter().sum::<f64>() / 3.0;
+    let (m, se) = mean_se(&diff);
+    let p = common::stats::chi2_sf(chi2, blocks);
+    eprintln!(
+        "{what}: mean difference {:+.3} % (4 sigma {:.3} %), blocks X^2 = {chi2:.1} dof {blocks} p = {p:.4}",
+        100.0 * m / level,
+        400.0 * se / level
+    );
+    assert!(4.0 * se / level < 0.02, "{what}: too noisy to resolve 2 %");
+    assert!(m.abs() < 4.0 * se, "{what}: means differ by {:+.3} %", 100.0 * m / level);
+    assert!(p >= 1e-3, "{what}: block means disagree beyond noise");
+}
+
+/// The box [-1, 1]^3 without its top (+Y) face, with a sphere inside, under a hazy low-sun
+/// sky (a coarse map: the test is of the integrators, not of the map's resolution).
+#[test]
+fn integrators_agree_under_the_sky() {
+    let mut s = Scene { source: "test:sky-box".into(), ..Default::default() };
+    s.materials.push(Material { name: "box".into(), albedo: Vec3::new(0.7, 0.6, 0.5), ..Default::default() });
+    s.materials.push(Material { name: "sphere".into(), albedo: Vec3::splat(0.5), ..Default::default() });
+    let corner = |i: u32| Vec3::new([-1.0, 1.0][(i & 1) as usize], [-1.0, 1.0][(i >> 1 & 1) as usize], [-1.0, 1.0][(i >> 2 & 1) as usize]);
+    let quads = [[0, 1, 5, 4], [0, 4, 6, 2], [1, 3, 7, 5], [0, 2, 3, 1], [4, 5, 7, 6]];
+    add(&mut s, ((0..8).map(corner).collect(), quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect()), 0);
+    add(&mut s, geometry::icosphere(2, Vec3::new(0.2, -0.5, 0.1), 0.45), 1);
+    s.cameras.push(Camera {
+        name: "test".into(),
+        eye: Vec3::new(1.6, 3.2, 2.4),
+        target: Vec3::new(0.0, -0.4, 0.0),
+        up: Vec3::Y,
+        fov_y_deg: 45.0,
+        width: 32,
+        height: 32,
+    });
+    let sun = Vec3::new(-0.5, 0.6, 0.4).normalize();
+    s.environment =
+        Some(Environment::preetham_sky(&SkySpec { turbidity: 5.0, ..SkySpec::default() }, sun, Vec3::splat(20.0), 30.0, 32, 16));
+    let image = |integrator: Integrator, spp: u32| {
+        let ctx = gpu();
+        let mut r = Renderer::new(&ctx, &s, &s.cameras[0], RenderSettings::new(integrator)).unwrap();
+        r.render_spp(spp, |_| {}).unwrap();
+        let img = r.image().unwrap();
+        assert_eq!(r.nan_samples().unwrap(), 0);
+        drop(r);
+        finish(ctx);
+        img
+    };
+    let reference = image(Integrator::PtNee, 128);
+    for (integrator, spp) in [(Integrator::Pt, 128), (Integrator::Bdpt(Join::Lvc(0)), 64)] {
+        assert_agree(&format!("sky: {} vs pt-nee", integrator.name()), &image(integrator, spp), &reference);
+    }
+}
+
+#[test]
+fn sky_flags_refuse_what_they_cannot_do() {
+    let run = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_bidir")).args(args).current_dir(std::env::temp_dir()).output().unwrap();
+        assert!(!out.status.success(), "{args:?} succeeded");
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    let o = ["-o", "bidir-lights-sky.png"];
+    assert!(run(&["render", "--sky", "turbidity=3", o[0], o[1]]).contains("needs the sun's direction"));
+    assert!(run(&["render", "--sky", "sun=0,1,0", "--env", "1,1,1", o[0], o[1]]).contains("--sky and --env"));
+    assert!(run(&["render", "--sky", "sun=0,-1,0.2", o[0], o[1]]).contains("below the horizon"));
+    assert!(run(&["render", "--sky", "sun=1,1,0", "--sun", "0,1,0;1,1,1", o[0], o[1]]).contains("differ"));
+    assert!(run(&["render", "--sky", "turbidity=20;sun=0,1,0", o[0], o[1]]).contains("bad turbidity"));
 }

@@ -24,6 +24,7 @@ mod obj;
 mod obj_check;
 mod punctual;
 mod quad_light;
+mod sky;
 mod stats;
 pub mod tangents;
 mod texture;
@@ -37,6 +38,7 @@ pub use gltf::load_gltf;
 pub use obj::{load_obj, load_obj_str};
 pub use punctual::{PunctualKind, PunctualLight};
 pub use quad_light::{parse_vec3, QuadLight, QuadLightError};
+pub use sky::{Preetham, SkySpec};
 pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts};
 pub use texture::srgb_to_linear;
 
