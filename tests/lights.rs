@@ -336,3 +336,38 @@ fn sky_flags_refuse_what_they_cannot_do() {
     assert!(run(&["render", "--sky", "sun=1,1,0", "--sun", "0,1,0;1,1,1", o[0], o[1]]).contains("differ"));
     assert!(run(&["render", "--sky", "turbidity=20;sun=0,1,0", o[0], o[1]]).contains("bad turbidity"));
 }
+
+/// Emitters too weak for their scene (DamagedHelmet's emissive texture) get a hint; a room
+/// lit by its lamp (the Cornell box), a scene of bright emissive cubes and the modified
+/// Sponza's sun and sky do not.
+#[test]
+fn weak_emitters_get_a_hint() {
+    let threshold = bidir::scene::DIM_EMISSION_RATIO;
+    let cornell = Scene::builtin_cornell_box().emitted_light_ratio().unwrap();
+    eprintln!("Cornell box: emitted light ratio {cornell:.4}");
+    assert!(cornell > threshold);
+    let samples = std::path::Path::new("../shared/scenes");
+    if !samples.is_dir() {
+        eprintln!("skipping the sample models: ../shared/scenes is absent");
+        return;
+    }
+    let load = |p: &str| bidir::scene::load(&samples.join(p), &Default::default()).unwrap().scene;
+    let mut sponza = load("sponza/Sponza.gltf");
+    for (i, q) in bidir::scene::QuadLight::sponza_sun_sky().iter().enumerate() {
+        sponza.add_quad_light(q, &format!("q{i}"));
+    }
+    let helmet = "gltf-samples/DamagedHelmet/DamagedHelmet.glb";
+    for (what, scene, dim) in [
+        ("Sponza --sponza-sun-sky", sponza, false),
+        ("EmissiveStrengthTest", load("gltf-samples/EmissiveStrengthTest/EmissiveStrengthTest.glb"), false),
+        ("DamagedHelmet", load(helmet), true),
+    ] {
+        let r = scene.emitted_light_ratio().unwrap();
+        eprintln!("{what}: emitted light ratio {r:.4}");
+        assert_eq!(r < threshold, dim, "{what}: ratio {r}");
+    }
+    let out =
+        std::process::Command::new(env!("CARGO_BIN_EXE_bidir")).args(["info", samples.join(helmet).to_str().unwrap()]).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    assert!(text.contains("its emitters are weak for its size") && text.contains("--env 1,1,1"), "{text}");
+}

@@ -155,7 +155,10 @@ impl SceneArgs {
                 warnings.push(w);
                 Some(Environment::uniform(Vec3::ONE))
             }
-            (None, None) => None,
+            (None, None) => {
+                self.hint_if_dim(scene, warnings);
+                None
+            }
         };
         // A sun alone shines from an otherwise black sky.
         let env = match self.sun {
@@ -163,6 +166,23 @@ impl SceneArgs {
             None => env,
         };
         Ok(env.map(|e| Environment { scale: self.env_scale, rotate_deg: self.env_rotate, ..e }))
+    }
+
+    /// A scene lit only by emitters too weak for its size (a small emissive texture) renders
+    /// nearly black: one line says so and how to add light (its own light is kept).
+    fn hint_if_dim(&self, scene: &Scene, warnings: &mut Vec<String>) {
+        if !scene.punctual_lights.is_empty() || self.sun.is_some() {
+            return;
+        }
+        if let Some(ratio) = scene.emitted_light_ratio().filter(|r| *r < bidir::scene::DIM_EMISSION_RATIO) {
+            let w = format!(
+                "{}: its emitters are weak for its size (they give it {:.2} % of the light a uniform environment of radiance 1 would) and it has no --env: the image may be nearly black (add --env 1,1,1, or --sun with --sky)",
+                scene.source,
+                100.0 * ratio
+            );
+            log::warn!("{w}");
+            warnings.push(w);
+        }
     }
 
     /// `--sky`'s map, its sun where `--sun` is (its irradiance lights the ground too).

@@ -15,6 +15,7 @@
 
 mod builder;
 mod builtin;
+mod dim;
 mod camera;
 mod env;
 mod error;
@@ -31,6 +32,7 @@ mod texture;
 mod warnings;
 
 pub use builtin::BUILTIN_SOURCE;
+pub use dim::DIM_EMISSION_RATIO;
 pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
 pub use env::{EnvError, EnvSpec, Environment, Sun};
 pub use error::SceneError;
