@@ -15,8 +15,8 @@
 
 mod builder;
 mod builtin;
-mod dim;
 mod camera;
+mod dim;
 mod env;
 mod error;
 mod gltf;
@@ -32,8 +32,8 @@ mod texture;
 mod warnings;
 
 pub use builtin::BUILTIN_SOURCE;
-pub use dim::DIM_EMISSION_RATIO;
 pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
+pub use dim::DIM_EMISSION_RATIO;
 pub use env::{EnvError, EnvSpec, Environment, Sun};
 pub use error::SceneError;
 pub use gltf::load_gltf;
