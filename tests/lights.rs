@@ -371,3 +371,34 @@ fn weak_emitters_get_a_hint() {
     let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
     assert!(text.contains("its emitters are weak for its size") && text.contains("--env 1,1,1"), "{text}");
 }
+
+/// Parts of disjoint sample ranges merge into the whole render's alpha and AOVs.
+#[test]
+fn merged_parts_carry_alpha_and_aovs() {
+    let dir = std::env::temp_dir().join(format!("bidir-lights-merge-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = |n: &str| dir.join(n).to_str().unwrap().to_owned();
+    let bidir = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_bidir")).args(args).env("BIDIR_VALIDATION", "1").output().unwrap();
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    };
+    let common = ["render", "--width", "12", "--height", "8", "--seed", "5"];
+    fn with<'a>(common: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
+        common.iter().chain(extra).copied().collect()
+    }
+    bidir(&with(&common, &["--sample-range", "0..3", "--aov", "depth,normal", "-o", &p("a.exr")]));
+    bidir(&with(&common, &["--sample-range", "3..5", "--aov", "depth", "-o", &p("b.exr")]));
+    bidir(&with(&common, &["--spp", "5", "--aov", "depth", "-o", &p("whole.exr")]));
+    bidir(&["merge", &p("a.exr"), &p("b.exr"), "-o", &p("merged.exr")]);
+    let read = |f: &str| bidir::imaging::part::read_part(std::path::Path::new(&p(f))).unwrap().sums;
+    let (merged, whole) = (read("merged.exr"), read("whole.exr"));
+    let (m, w) = (merged.first_hit.expect("merged alpha"), whole.first_hit.unwrap());
+    assert_eq!(m.aovs, Aovs { depth: true, ..Aovs::default() }, "the layers both parts have");
+    for (a, b) in m.sums.iter().zip(&w.sums) {
+        for k in [slot::HITS, slot::DEPTH] {
+            assert!((a[k] - b[k]).abs() <= 1e-5 * b[k].abs().max(1.0), "{k}: {} vs {}", a[k], b[k]);
+        }
+    }
+    assert!(w.sums.iter().any(|s| s[slot::DEPTH] > 0.0));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

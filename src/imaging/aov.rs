@@ -74,6 +74,53 @@ impl FirstHit {
     }
 }
 
+impl Aovs {
+    /// The layers both have (what a merge of parts can write).
+    pub fn common(self, o: Aovs) -> Aovs {
+        Aovs { albedo: self.albedo && o.albedo, normal: self.normal && o.normal, depth: self.depth && o.depth }
+    }
+
+    /// The layers whose channels are all among `names`; `None` without an `A` channel.
+    pub fn from_channel_names(names: &[String]) -> Option<Aovs> {
+        let has = |n: &str| names.iter().any(|c| c == n);
+        has("A").then(|| Aovs {
+            albedo: ["albedo.R", "albedo.G", "albedo.B"].iter().all(|c| has(c)),
+            normal: ["normal.X", "normal.Y", "normal.Z"].iter().all(|c| has(c)),
+            depth: has("depth.Z"),
+        })
+    }
+}
+
+impl FirstHit {
+    /// Zero sums for `pixels` pixels.
+    pub fn zero(pixels: usize, aovs: Aovs) -> FirstHit {
+        FirstHit { sums: vec![[0.0; 8]; pixels], aovs }
+    }
+
+    /// The sums back from an EXR's means over `spp` samples per pixel (`channel` gives a
+    /// channel's values by name; layers `aovs` lacks stay zero).
+    pub fn from_means(pixels: usize, aovs: Aovs, spp: u64, channel: impl Fn(&str) -> Vec<f64>) -> FirstHit {
+        let mut f = FirstHit::zero(pixels, aovs);
+        let n = spp as f64;
+        let mut take = |name: &str, k: usize| {
+            for (p, v) in f.sums.iter_mut().zip(channel(name)) {
+                p[k] = v * n;
+            }
+        };
+        take("A", slot::HITS);
+        if aovs.albedo {
+            ["albedo.R", "albedo.G", "albedo.B"].iter().enumerate().for_each(|(i, c)| take(c, slot::ALBEDO + i));
+        }
+        if aovs.normal {
+            ["normal.X", "normal.Y", "normal.Z"].iter().enumerate().for_each(|(i, c)| take(c, slot::NORMAL + i));
+        }
+        if aovs.depth {
+            take("depth.Z", slot::DEPTH);
+        }
+        f
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,8 +8,9 @@
 //! single render of their union makes: camera sums over summed counts, light sums over the
 //! summed samples per pixel (`Film::resolve` divides them the same way).
 //!
-//! A render that asked for them adds alpha `A` and the AOV layers (`aov.rs`) as means; a
-//! merge of parts does not carry them (it reads the sums only).
+//! A render that asked for them adds alpha `A` and the AOV layers (`aov.rs`) as means over
+//! the part's samples (every sample counts in them), so a merge takes them back as sums and
+//! writes the layers every part has.
 
 use super::{Crop, RgbImage, SampleRange};
 use std::path::{Path, PathBuf};
@@ -139,6 +140,8 @@ pub struct PartHeader {
     pub ranges: Vec<SampleRange>,
     /// Whether it has light-tracing sums (BDPT).
     pub has_light: bool,
+    /// Its alpha and AOV layers (`None`: no alpha).
+    pub first_hit: Option<super::aov::Aovs>,
 }
 
 impl Part {
@@ -149,6 +152,7 @@ impl Part {
             crop: self.crop,
             ranges: self.ranges.clone(),
             has_light: self.sums.light.is_some(),
+            first_hit: self.sums.first_hit.as_ref().map(|f| f.aovs),
         }
     }
 }
@@ -251,7 +255,8 @@ fn header(path: &Path, info: RenderInfo, size: (u32, u32), channels: &[String]) 
         }
     }
     let has_light = ["light.R", "light.G", "light.B"].iter().all(|l| channels.iter().any(|c| c == l));
-    Ok(PartHeader { info, full, crop, ranges, has_light })
+    let first_hit = super::aov::Aovs::from_channel_names(channels);
+    Ok(PartHeader { info, full, crop, ranges, has_light, first_hit })
 }
 
 /// Reads only the header of a part written by [`write_part`] (for checks before reading
@@ -301,7 +306,7 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
         camera: (0..cam[0].len()).map(|i| [cam[0][i], cam[1][i], cam[2][i], cam[3][i]]).collect(),
         light,
         spp,
-        first_hit: None,
+        first_hit: head.first_hit.map(|aovs| super::aov::FirstHit::from_means((w * h) as usize, aovs, spp, channel)),
     };
     Ok(Part { info: head.info, full: head.full, crop: head.crop, ranges: head.ranges, sums })
 }
