@@ -402,3 +402,44 @@ fn merged_parts_carry_alpha_and_aovs() {
     assert!(w.sums.iter().any(|s| s[slot::DEPTH] > 0.0));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Albedo and normal are those of the first non-specular surface seen through a mirror (as
+/// OIDN defines them), depth the distance to the mirror: a mirror facing the camera reflects
+/// every camera ray onto a Lambertian wall behind the camera. Half-mirrored, the albedo is the
+/// mixture of the wall's and the material's own, within its binomial noise.
+#[test]
+fn albedo_is_seen_through_mirrors() {
+    let (wall, own) = (Vec3::new(0.2, 0.4, 0.6), Vec3::new(0.9, 0.5, 0.1));
+    let (w, h, spp) = (6u32, 4u32, 16u32);
+    for reflectivity in [1.0f32, 0.5] {
+        let mut s = quad_scene(-50.0, own, w, h);
+        s.materials[0].reflectivity = reflectivity;
+        s.materials.push(Material { name: "wall".into(), albedo: wall, ..Default::default() });
+        let z = 10.0;
+        let back = (
+            vec![Vec3::new(-50.0, -50.0, z), Vec3::new(-50.0, 50.0, z), Vec3::new(50.0, 50.0, z), Vec3::new(50.0, -50.0, z)],
+            vec![[0, 1, 2], [0, 2, 3]],
+        );
+        add(&mut s, back, 1);
+        let sums = render(&s, Integrator::PtNee, spp, ALL_AOVS);
+        let fh = sums.first_hit.unwrap();
+        let n = (w * h * spp) as f64;
+        let total = |k: usize| fh.sums.iter().map(|p| p[k]).sum::<f64>() / n;
+        assert_eq!(total(slot::HITS), 1.0);
+        let r = reflectivity as f64;
+        for k in 0..3 {
+            let expect = r * wall[k] as f64 + (1.0 - r) * own[k] as f64;
+            // Each sample's albedo is the wall's (probability r) or the material's.
+            let se = (r * (1.0 - r)).sqrt() * (wall[k] - own[k]).abs() as f64 / n.sqrt();
+            let got = total(slot::ALBEDO + k);
+            assert!((got - expect).abs() <= 4.0 * se + 1e-6, "reflectivity {r}: albedo[{k}] {got} vs {expect} (se {se})");
+        }
+        // The wall's normal faces the reflected rays (-Z), the quad's the camera (+Z).
+        let nz = total(slot::NORMAL + 2);
+        let expect_nz = -r + (1.0 - r);
+        let se = (r * (1.0 - r)).sqrt() * 2.0 / n.sqrt();
+        assert!((nz - expect_nz).abs() <= 4.0 * se + 1e-6, "reflectivity {r}: normal z {nz} vs {expect_nz}");
+        // Depth is the camera ray's, to the mirror: at least D, nowhere near the wall.
+        assert!(fh.sums.iter().all(|p| p[slot::DEPTH] / spp as f64 >= D as f64 && p[slot::DEPTH] / (spp as f64) < 1.2 * D as f64));
+    }
+}
