@@ -31,6 +31,10 @@ pub struct RenderArgs {
     /// Exposure in stops applied to PNG output.
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub exposure: f32,
+    /// Extra EXR layers for denoisers, any of albedo,normal,depth (comma-separated): written as
+    /// albedo.R/G/B, normal.X/Y/Z, depth.Z beside the colour and its alpha A.
+    #[arg(long, value_name = "LIST")]
+    pub aov: Option<bidir::imaging::aov::Aovs>,
     /// Print RMSE / mean ratio against this reference EXR at the end.
     #[arg(long)]
     pub reference: Option<PathBuf>,
@@ -84,6 +88,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     }
     let integrator = args.integrator.integrator()?;
     let mut settings = args.settings.settings(integrator)?;
+    settings.first_hit = first_hit_request(args.aov, &outputs)?;
     args.part.apply(&mut settings, &camera)?;
     let info_settings = settings.clone();
     super::signals::on_interrupt(super::signals::FirstInterrupt::FinishPass)?;
@@ -177,6 +182,16 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         println!("wrote {}", o.display());
     }
     Ok(())
+}
+
+/// What the first-hit pass must compute: alpha wherever an output is EXR, with the AOV layers
+/// of `--aov` (which needs an EXR output: PNG keeps RGB).
+fn first_hit_request(aov: Option<bidir::imaging::aov::Aovs>, outputs: &[PathBuf]) -> anyhow::Result<Option<bidir::imaging::aov::Aovs>> {
+    let exr = outputs.iter().any(|o| o.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr")));
+    if aov.is_some() && !exr {
+        bail!("--aov writes EXR layers: give an .exr output (-o FILE.exr)");
+    }
+    Ok(exr.then(|| aov.unwrap_or_default()))
 }
 
 /// Pixels rendered: the crop window's, or the whole image's.

@@ -8,6 +8,10 @@ use anyhow::bail;
 use bidir::scene::{self, Camera, EnvSpec, Environment, LoadOptions, QuadLight, Scene, Sun, DEFAULT_IMAGE_SIZE};
 use glam::Vec3;
 
+/// Texels of the `--sky` map: 0.7 degrees each, fine against the sky's smooth gradients (the
+/// sun itself is `--sun`'s disk, not a texel).
+const SKY_MAP_SIZE: (u32, u32) = (512, 256);
+
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct SceneArgs {
     /// Scene file: .obj (with its .mtl), .gltf or .glb [default: the built-in Cornell box]
@@ -68,6 +72,11 @@ pub struct SceneArgs {
     /// e.g. --sun "0.3,1,0.2;800,760,700"
     #[arg(long, value_name = "DIR;R,G,B;ANGLE", allow_hyphen_values = true)]
     pub sun: Option<Sun>,
+    /// A clear sky (Preetham et al. 1999) as the environment, toward --sun's direction (or
+    /// sun=X,Y,Z), quoted: e.g. --sky "turbidity=3;albedo=0.3" [defaults: turbidity 3 (2:
+    /// very clear, 6: hazy), ground albedo 0.3, scale 1 (radiance = luminance / 683 lm/W)]
+    #[arg(long, value_name = "turbidity=T;albedo=A;scale=S;sun=X,Y,Z", num_args = 0..=1, default_missing_value = "", allow_hyphen_values = true)]
+    pub sky: Option<bidir::scene::SkySpec>,
 }
 
 /// A loaded scene with the camera the flags chose.
@@ -136,15 +145,20 @@ impl SceneArgs {
         if !self.env_rotate.is_finite() {
             bail!("--env-rotate {}: must be a finite number of degrees", self.env_rotate);
         }
-        let env = match &self.env {
-            Some(spec) => Environment::from_spec(spec)?,
-            None if scene.emitters().is_empty() && scene.punctual_lights.is_empty() && self.sun.is_none() => {
+        let env = match (&self.env, &self.sky) {
+            (Some(_), Some(_)) => bail!("--sky and --env both give the environment: choose one"),
+            (None, Some(sky)) => Some(self.sky_environment(sky)?),
+            (Some(spec), None) => Environment::from_spec(spec)?,
+            (None, None) if scene.emitters().is_empty() && scene.punctual_lights.is_empty() && self.sun.is_none() => {
                 let w = format!("{}: no emitter, no punctual light and no --env: lit by a uniform white environment of radiance 1 (--env none keeps it dark)", scene.source);
                 log::warn!("{w}");
                 warnings.push(w);
                 Some(Environment::uniform(Vec3::ONE))
             }
-            None => None,
+            (None, None) => {
+                self.hint_if_dim(scene, warnings);
+                None
+            }
         };
         // A sun alone shines from an otherwise black sky.
         let env = match self.sun {
@@ -152,6 +166,42 @@ impl SceneArgs {
             None => env,
         };
         Ok(env.map(|e| Environment { scale: self.env_scale, rotate_deg: self.env_rotate, ..e }))
+    }
+
+    /// A scene lit only by emitters too weak for its size (a small emissive texture) renders
+    /// nearly black: one line says so and how to add light (its own light is kept).
+    fn hint_if_dim(&self, scene: &Scene, warnings: &mut Vec<String>) {
+        if !scene.punctual_lights.is_empty() || self.sun.is_some() {
+            return;
+        }
+        if let Some(ratio) = scene.emitted_light_ratio().filter(|r| *r < bidir::scene::DIM_EMISSION_RATIO) {
+            let w = format!(
+                "{}: its emitters are weak for its size (they give it {:.2} % of the light a uniform environment of radiance 1 would) and it has no --env: the image may be nearly black (add --env 1,1,1, or --sun with --sky)",
+                scene.source,
+                100.0 * ratio
+            );
+            log::warn!("{w}");
+            warnings.push(w);
+        }
+    }
+
+    /// `--sky`'s map, its sun where `--sun` is (its irradiance lights the ground too).
+    fn sky_environment(&self, sky: &bidir::scene::SkySpec) -> anyhow::Result<Environment> {
+        let sun = match (sky.sun, self.sun) {
+            (Some(a), Some(b)) if a.dot(b.direction) < 0.9999 => bail!(
+                "--sky sun={} and --sun {} differ: give the direction once",
+                bidir::scene::fmt_vec(a),
+                bidir::scene::fmt_vec(b.direction)
+            ),
+            (_, Some(s)) => s.direction,
+            (Some(d), None) => d,
+            (None, None) => bail!("--sky needs the sun's direction: give --sun \"DIR;R,G,B\" or --sky \"sun=X,Y,Z\""),
+        };
+        if sun.y <= 0.0 {
+            bail!("--sky: the sun ({}) is below the horizon, where Preetham's clear-sky model does not hold", bidir::scene::fmt_vec(sun));
+        }
+        let irradiance = self.sun.map_or(Vec3::ZERO, |s| s.irradiance);
+        Ok(Environment::preetham_sky(sky, sun, irradiance, self.env_rotate, SKY_MAP_SIZE.0, SKY_MAP_SIZE.1))
     }
 
     /// The camera: `--camera` (or the scene's first, or a framing of its bounds), then each

@@ -117,6 +117,11 @@ gpu_consts! {
     pub const BIND_ENV_ALIAS: u32 = 31;
     /// Punctual (delta) lights, `GpuPunctual` each (glsl/common/punctual.glsl).
     pub const BIND_PUNCTUAL: u32 = 32;
+    /// The first-hit pass (glsl/kernels/first_hit.comp: EXR alpha and `--aov`): per window
+    /// pixel one `FirstHitSums`, added to by every pass that asks for them.
+    pub const BIND_FIRST_HIT: u32 = 40;
+    /// Most specular bounces the first-hit pass follows to the first non-specular surface.
+    pub const FIRST_HIT_SPECULAR_DEPTH: u32 = 16;
     /// `GpuPunctual::kind`.
     pub const PUNCTUAL_POINT: u32 = 0;
     pub const PUNCTUAL_SPOT: u32 = 1;
@@ -567,6 +572,30 @@ gpu_structs! {
         pub d: Vec4,
         /// Glossy: (coat F0, alpha, 0, 0).
         pub e: Vec4,
+    }
+
+    /// Push constants of first_hit.comp: the pass's samples, as the integrator renders them.
+    pub struct FirstHitPush (96 bytes) {
+        pub camera: GpuCamera,
+        /// Index of the first sample of this pass (per pixel).
+        pub sample_base: u32,
+        /// Samples per pixel in this pass.
+        pub spp: u32,
+        pub seed: u32,
+        pub pad0: u32,
+    }
+
+    /// Per pixel, sums over its camera samples of what the camera ray found (first_hit.comp):
+    /// the first non-specular surface's reflectance seen through specular chains (OIDN's
+    /// albedo), its world-space shading normal facing the ray, whether the ray hit geometry,
+    /// and the distance to the first hit. A sample whose ray escapes adds zero to each.
+    pub struct FirstHitSums (32 bytes) {
+        pub albedo: Vec3,
+        /// Samples whose camera ray hit geometry (the EXR's alpha, over the samples).
+        pub hits: f32,
+        pub normal: Vec3,
+        /// Camera-ray distance to the first hit.
+        pub depth: f32,
     }
 
     /// What one invocation of `subgroup_probe.comp` saw.

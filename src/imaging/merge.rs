@@ -43,6 +43,7 @@ impl Plan {
     pub fn empty(&self) -> Accumulation {
         let mut a = Accumulation::new(self.header.crop.width(), self.header.crop.height(), self.header.has_light);
         a.spp = self.header.ranges.iter().map(|r| r.len() as u64).sum();
+        a.first_hit = self.header.first_hit.map(|aovs| super::aov::FirstHit::zero(a.camera.len(), aovs));
         a
     }
     /// Adds a part (one of those planned) into `sums`.
@@ -158,5 +159,8 @@ pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
     let time: f64 = parts.iter().filter_map(|(_, p)| p.info.get(keys::RENDER_TIME)?.parse::<f64>().ok()).sum();
     info.set(keys::RENDER_TIME, format!("{time:.3}"));
     info.set(keys::MERGED_FROM, parts.len().to_string());
-    Ok(Plan { header: PartHeader { info, full: first.full, crop: bounds, ranges: joined, has_light: first.has_light }, warnings })
+    // Alpha and the AOV layers every part has.
+    let first_hit = parts.iter().try_fold(first.first_hit.unwrap_or_default(), |a, (_, p)| p.first_hit.map(|b| a.common(b)));
+    let header = PartHeader { info, full: first.full, crop: bounds, ranges: joined, has_light: first.has_light, first_hit };
+    Ok(Plan { header, warnings })
 }

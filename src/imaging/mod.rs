@@ -1,6 +1,7 @@
 //! Images on the host: the resolved film, EXR/PNG files (written to a temporary file and
 //! renamed, so a crash never leaves half an image), and error metrics against references.
 
+pub mod aov;
 mod crop;
 mod io;
 pub mod merge;

@@ -7,6 +7,10 @@
 //! iteration). Merging adds sums, so parts of disjoint sample ranges merge into the image a
 //! single render of their union makes: camera sums over summed counts, light sums over the
 //! summed samples per pixel (`Film::resolve` divides them the same way).
+//!
+//! A render that asked for them adds alpha `A` and the AOV layers (`aov.rs`) as means over
+//! the part's samples (every sample counts in them), so a merge takes them back as sums and
+//! writes the layers every part has.
 
 use super::{Crop, RgbImage, SampleRange};
 use std::path::{Path, PathBuf};
@@ -22,12 +26,15 @@ pub struct Accumulation {
     pub light: Option<Vec<[f64; 3]>>,
     /// Samples per pixel the sums hold (the light splats' divisor).
     pub spp: u64,
+    /// What the camera rays found (alpha and AOVs), where the render asked for it; summed
+    /// over all `spp` samples of a pixel.
+    pub first_hit: Option<super::aov::FirstHit>,
 }
 
 impl Accumulation {
     pub fn new(width: u32, height: u32, with_light: bool) -> Accumulation {
         let n = width as usize * height as usize;
-        Accumulation { width, height, camera: vec![[0.0; 4]; n], light: with_light.then(|| vec![[0.0; 3]; n]), spp: 0 }
+        Accumulation { width, height, camera: vec![[0.0; 4]; n], light: with_light.then(|| vec![[0.0; 3]; n]), spp: 0, first_hit: None }
     }
 
     /// The estimate: camera sums over their counts plus light sums over the samples.
@@ -55,6 +62,11 @@ impl Accumulation {
                 if let (Some(d), Some(s)) = (self.light.as_mut(), o.light.as_ref()) {
                     for k in 0..3 {
                         d[dst][k] += s[src][k];
+                    }
+                }
+                if let (Some(d), Some(s)) = (self.first_hit.as_mut(), o.first_hit.as_ref()) {
+                    for k in 0..8 {
+                        d.sums[dst][k] += s.sums[src][k];
                     }
                 }
             }
@@ -128,6 +140,8 @@ pub struct PartHeader {
     pub ranges: Vec<SampleRange>,
     /// Whether it has light-tracing sums (BDPT).
     pub has_light: bool,
+    /// Its alpha and AOV layers (`None`: no alpha).
+    pub first_hit: Option<super::aov::Aovs>,
 }
 
 impl Part {
@@ -138,6 +152,7 @@ impl Part {
             crop: self.crop,
             ranges: self.ranges.clone(),
             has_light: self.sums.light.is_some(),
+            first_hit: self.sums.first_hit.as_ref().map(|f| f.aovs),
         }
     }
 }
@@ -171,6 +186,11 @@ pub fn write_part(path: &Path, sums: &Accumulation, info: &RenderInfo, crop: Cro
         }
     }
     add("camera.N", sums.camera.iter().map(|p| p[3] as f32).collect());
+    if let Some(fh) = &sums.first_hit {
+        for (name, values) in fh.channels(sums.spp) {
+            add(name, values);
+        }
+    }
     let mut attrs = LayerAttributes { layer_position: Vec2(crop.x0 as i32, crop.y0 as i32), ..LayerAttributes::default() };
     for (k, v) in &info.entries {
         attrs.other.insert(Text::from(format!("{PREFIX}{k}").as_str()), AttributeValue::Text(Text::from(v.as_str())));
@@ -235,7 +255,8 @@ fn header(path: &Path, info: RenderInfo, size: (u32, u32), channels: &[String]) 
         }
     }
     let has_light = ["light.R", "light.G", "light.B"].iter().all(|l| channels.iter().any(|c| c == l));
-    Ok(PartHeader { info, full, crop, ranges, has_light })
+    let first_hit = super::aov::Aovs::from_channel_names(channels);
+    Ok(PartHeader { info, full, crop, ranges, has_light, first_hit })
 }
 
 /// Reads only the header of a part written by [`write_part`] (for checks before reading
@@ -285,6 +306,7 @@ pub fn read_part(path: &Path) -> Result<Part, PartError> {
         camera: (0..cam[0].len()).map(|i| [cam[0][i], cam[1][i], cam[2][i], cam[3][i]]).collect(),
         light,
         spp,
+        first_hit: head.first_hit.map(|aovs| super::aov::FirstHit::from_means((w * h) as usize, aovs, spp, channel)),
     };
     Ok(Part { info: head.info, full: head.full, crop: head.crop, ranges: head.ranges, sums })
 }

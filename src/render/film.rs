@@ -99,6 +99,7 @@ impl Film {
             camera: acc.iter().take(n).map(|a| [a.x as f64, a.y as f64, a.z as f64, a.w as f64]).collect(),
             light: splat.map(|s| s.chunks_exact(3).take(n).map(|c| [c[0] as f64, c[1] as f64, c[2] as f64]).collect()),
             spp: samples as u64,
+            first_hit: None,
         })
     }
 

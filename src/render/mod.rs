@@ -15,6 +15,7 @@
 mod bdpt;
 pub mod env;
 mod film;
+mod first_hit;
 pub mod gpu_scene;
 mod integrator;
 pub mod lights;
@@ -178,6 +179,8 @@ pub struct RenderSettings {
     /// Render only this window of the camera's image (`--crop`); the projection, the random
     /// numbers of every pixel and BDPT's light paths stay those of the full image.
     pub crop: Option<Crop>,
+    /// Run the first-hit pass for alpha and these AOV layers (`None`: no alpha, no cost).
+    pub first_hit: Option<crate::imaging::aov::Aovs>,
 }
 
 impl RenderSettings {
@@ -196,6 +199,7 @@ impl RenderSettings {
             bvh: BuildOptions::default(),
             sample_start: 0,
             crop: None,
+            first_hit: None,
         }
     }
 }
@@ -245,6 +249,8 @@ pub struct Renderer {
     pacing: PassModel,
     /// Most sample slices per pass (the film's and BDPT's storage are sized for it).
     slices: u32,
+    /// Alpha and AOVs, where the settings ask for them.
+    first_hit: Option<first_hit::FirstHitPass>,
 }
 
 /// Invocations that keep a large GPU busy (132 SMs x 2,048 resident threads on an H100).
@@ -341,7 +347,22 @@ impl Renderer {
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
         let film = Film::new(ctx, window.width(), window.height(), kernels.splats(), slices)?;
         let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
-        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera, settings, samples: 0, pacing: PassModel::default(), slices })
+        let first_hit = settings
+            .first_hit
+            .map(|aovs| first_hit::FirstHitPass::new(ctx, &gscene, settings.sampler, window.width(), window.height(), aovs))
+            .transpose()?;
+        Ok(Renderer {
+            ctx: ctx.clone(),
+            scene: gscene,
+            film,
+            kernels,
+            camera,
+            settings,
+            samples: 0,
+            pacing: PassModel::default(),
+            slices,
+            first_hit,
+        })
     }
 
     /// Most samples of a pixel one pass renders at once (BDPT iterations hold this many
@@ -353,7 +374,9 @@ impl Renderer {
     /// The film's sums (camera samples, light-tracing splats) and the samples they hold,
     /// for parts that merge (`film::part`).
     pub fn sums(&self) -> Result<Accumulation, RenderError> {
-        Ok(self.film.sums(&self.ctx, self.samples)?)
+        let mut sums = self.film.sums(&self.ctx, self.samples)?;
+        sums.first_hit = self.first_hit.as_ref().map(|f| f.read(&self.ctx)).transpose()?;
+        Ok(sums)
     }
 
     pub fn gpu_scene(&self) -> &GpuScene {
@@ -372,6 +395,9 @@ impl Renderer {
             self.camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(c), window(&self.settings, c)?);
         }
         self.film.clear(&self.ctx)?;
+        if let Some(f) = &self.first_hit {
+            f.clear(&self.ctx)?;
+        }
         self.samples = 0;
         Ok(())
     }
@@ -418,6 +444,14 @@ impl Renderer {
                 None
             };
             let film = Film::new(&self.ctx, window.width(), window.height(), self.kernels.splats(), slices)?;
+            let first_hit_sums = self
+                .first_hit
+                .as_ref()
+                .map(|_| first_hit::FirstHitPass::sums_buffer(&self.ctx, window.width(), window.height()))
+                .transpose()?;
+            if let (Some(f), Some(sums)) = (self.first_hit.as_mut(), first_hit_sums) {
+                f.resize(&self.ctx, sums, window.width(), window.height())?;
+            }
             if let Some(k) = kernels {
                 self.kernels = k;
             }
@@ -449,6 +483,9 @@ impl Renderer {
         self.settings.integrator = integrator;
         self.pacing = PassModel::default();
         self.samples = 0;
+        if let Some(f) = &self.first_hit {
+            f.clear(&self.ctx)?;
+        }
         Ok(())
     }
 
@@ -474,6 +511,11 @@ impl Renderer {
         let inputs =
             PassInputs { scene: &self.scene, film: &self.film, camera: self.camera, settings: &self.settings, slices: self.slices };
         self.kernels.pass(&self.ctx, &inputs, first, spp)?;
+        if let Some(f) = &self.first_hit {
+            // Alpha and AOVs: the same samples' camera rays, whatever the integrator.
+            let seed = self.settings.seed;
+            self.ctx.submit("first-hit pass", |rec| f.record(rec, &self.scene, self.camera, first, spp, seed))?;
+        }
         self.samples += spp;
         Ok(())
     }

@@ -16,6 +16,7 @@
 mod builder;
 mod builtin;
 mod camera;
+mod dim;
 mod env;
 mod error;
 mod gltf;
@@ -24,6 +25,7 @@ mod obj;
 mod obj_check;
 mod punctual;
 mod quad_light;
+mod sky;
 mod stats;
 pub mod tangents;
 mod texture;
@@ -31,12 +33,14 @@ mod warnings;
 
 pub use builtin::BUILTIN_SOURCE;
 pub use camera::{fmt_vec, CORNELL_BOX_CAMERA_NAME, DEFAULT_IMAGE_SIZE};
+pub use dim::DIM_EMISSION_RATIO;
 pub use env::{EnvError, EnvSpec, Environment, Sun};
 pub use error::SceneError;
 pub use gltf::load_gltf;
 pub use obj::{load_obj, load_obj_str};
 pub use punctual::{PunctualKind, PunctualLight};
 pub use quad_light::{parse_vec3, QuadLight, QuadLightError};
+pub use sky::{Preetham, SkySpec};
 pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts};
 pub use texture::srgb_to_linear;
 
