@@ -22,6 +22,7 @@ mod pacing;
 mod pt;
 mod stop;
 mod tonemap;
+pub mod vcm;
 
 pub use bdpt::{Bdpt, Join};
 pub use film::Film;
@@ -47,6 +48,8 @@ pub enum Integrator {
     PtNee,
     /// Bidirectional path tracing (megakernel: light pass, camera pass), MIS-weighted.
     Bdpt(Join),
+    /// Vertex connection and merging over BDPT's light vertex cache (`vcm.rs`).
+    Vcm(vcm::VcmMode),
 }
 
 impl Integrator {
@@ -55,6 +58,11 @@ impl Integrator {
             Integrator::Pt => "pt".into(),
             Integrator::PtNee => "pt-nee".into(),
             Integrator::Bdpt(j) => format!("bdpt:{}", j.name()),
+            Integrator::Vcm(m) => match (m.merge, m.connect) {
+                (true, true) => "vcm".into(),
+                (false, _) => "vcm:no-merge".into(),
+                (true, false) => "vcm:no-connect".into(),
+            },
         }
     }
 }
@@ -67,10 +75,13 @@ impl std::str::FromStr for Integrator {
             "pt-nee" => Ok(Integrator::PtNee),
             // The GPU-native variant won on RMSE against time (docs/integrators.md).
             "bdpt" => Ok(Integrator::Bdpt(Join::Lvc(0))),
+            "vcm" => Ok(Integrator::Vcm(vcm::VcmMode::FULL)),
+            "vcm:no-merge" => Ok(Integrator::Vcm(vcm::VcmMode { merge: false, connect: true })),
+            "vcm:no-connect" => Ok(Integrator::Vcm(vcm::VcmMode { merge: true, connect: false })),
             _ => match s.strip_prefix("bdpt:") {
                 Some(j) => Ok(Integrator::Bdpt(j.parse()?)),
                 None => Err(format!(
-                    "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N)"
+                    "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm)"
                 )),
             },
         }
@@ -140,6 +151,11 @@ pub struct RenderSettings {
     /// Render only this window of the camera's image (`--crop`); the projection, the random
     /// numbers of every pixel and BDPT's light paths stay those of the full image.
     pub crop: Option<Crop>,
+    /// VCM: the first iteration's merge radius (a fraction of the scene's diagonal until the
+    /// renderer resolves it to scene units).
+    pub vcm_radius: vcm::VcmRadius,
+    /// VCM: radius reduction exponent alpha, r_i = r_1 i^((alpha - 1) / 2).
+    pub vcm_alpha: f32,
 }
 
 impl RenderSettings {
@@ -158,6 +174,8 @@ impl RenderSettings {
             bvh: BuildOptions::default(),
             sample_start: 0,
             crop: None,
+            vcm_radius: vcm::VcmRadius::default(),
+            vcm_alpha: 0.75,
         }
     }
 }
@@ -169,7 +187,7 @@ impl RenderSettings {
 pub fn default_rr_depth(integrator: Integrator) -> u32 {
     match integrator {
         Integrator::Pt | Integrator::PtNee => 5,
-        Integrator::Bdpt(_) => 3,
+        Integrator::Bdpt(_) | Integrator::Vcm(_) => 3,
     }
 }
 
@@ -239,7 +257,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
         return 1;
     }
     let mut s = TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64);
-    if let Integrator::Bdpt(_) = settings.integrator {
+    if let Integrator::Bdpt(_) | Integrator::Vcm(_) = settings.integrator {
         let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
         let limit = SLICED_STORE_BYTES.min(ctx.info().max_storage_buffer_range as u64);
@@ -260,7 +278,7 @@ fn window(settings: &RenderSettings, camera: &Camera) -> Result<Crop, RenderErro
 /// invocations are the window's.
 fn slice_pixels(settings: &RenderSettings, full_pixels: u32, window: Crop) -> u32 {
     match settings.integrator {
-        Integrator::Bdpt(_) => full_pixels,
+        Integrator::Bdpt(_) | Integrator::Vcm(_) => full_pixels,
         _ => window.pixels() as u32,
     }
 }
@@ -277,7 +295,11 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => Kernels::Pt(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
-        Integrator::Bdpt(join) => Kernels::Bdpt(Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices)?)),
+        Integrator::Bdpt(join) => Kernels::Bdpt(Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?)),
+        Integrator::Vcm(mode) => {
+            let config = bdpt::VcmConfig { mode, radius: settings.vcm_radius.resolve(0.0), alpha: settings.vcm_alpha };
+            Kernels::Bdpt(Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::Lvc(0), slices, Some(config))?))
+        }
     })
 }
 
@@ -289,11 +311,13 @@ pub struct Progress {
 }
 
 impl Renderer {
-    pub fn new(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings) -> Result<Renderer, RenderError> {
+    pub fn new(ctx: &Context, scene: &Scene, camera: &Camera, mut settings: RenderSettings) -> Result<Renderer, RenderError> {
         if camera.width == 0 || camera.height == 0 {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
         check_layout(settings.bvh.layout)?;
+        // VCM's relative radius becomes scene units once, so integrator switches keep it.
+        settings.vcm_radius = vcm::VcmRadius::Absolute(settings.vcm_radius.resolve(scene.bounds().diagonal().length()));
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &settings.bvh)?;
         let mut gscene = GpuScene::upload(ctx, scene, &bvh)?;
         if settings.all_material_code {
