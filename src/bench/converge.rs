@@ -188,8 +188,8 @@ pub fn run(
             if stop_requested() && !runs.is_empty() {
                 break;
             }
-            let seed = opts.settings.seed.wrapping_add(k);
-            let c = curve(ctx, scene, camera, reference, opts, integrator, seed, &mut on_point)
+            let settings = RenderSettings { integrator, seed: opts.settings.seed.wrapping_add(k), ..opts.settings.clone() };
+            let c = curve(ctx, scene, camera, reference, &opts.schedule, settings, &mut on_point)
                 .map_err(|source| ConvergeError::Render { integrator: integrator.name(), source })?;
             runs.push(c);
         }
@@ -203,12 +203,11 @@ fn curve(
     scene: &Scene,
     camera: &Camera,
     reference: &RgbImage,
-    opts: &Options,
-    integrator: Integrator,
-    seed: u32,
+    schedule: &Schedule,
+    settings: RenderSettings,
     on_point: &mut impl FnMut(Integrator, &Point),
 ) -> Result<Curve, RenderError> {
-    let settings = RenderSettings { integrator, seed, ..opts.settings.clone() };
+    let integrator = settings.integrator;
     let start = Instant::now();
     let mut r = Renderer::new(ctx, scene, camera, settings)?;
     let setup_s = start.elapsed().as_secs_f64();
@@ -227,7 +226,7 @@ fn curve(
         image = Some(img);
         Ok(())
     };
-    match &opts.schedule {
+    match schedule {
         Schedule::Time { budget_s, points } => {
             for target in log_spaced_times(*budget_s, *points) {
                 let left = target - rendered;
