@@ -131,8 +131,17 @@ const BLOCK: u32 = 16;
 /// same random numbers, so the difference has a small fraction of either's variance (0.014 %
 /// against 0.85 % of the mean measured here) and is the bias of `integrator` relative to an
 /// unbiased estimator that `tests/render_cornell.rs` checks against the references.
-fn paired(integrator: Integrator, settings: impl Fn(&mut RenderSettings), spp: u32, replicates: u32) -> (Stats, Stats) {
-    let scene = small_cornell(SIZE);
+fn paired(
+    integrator: Integrator,
+    settings: impl Fn(&mut RenderSettings),
+    spp: u32,
+    replicates: u32,
+    scene_change: Option<&dyn Fn(&mut Scene)>,
+) -> (Stats, Stats) {
+    let mut scene = small_cornell(SIZE);
+    if let Some(change) = scene_change {
+        change(&mut scene);
+    }
     let mut s = RenderSettings::new(Integrator::Bdpt(Join::Lvc(0)));
     settings(&mut s);
     let base = render(&scene, s.clone(), spp, 1..=replicates);
@@ -152,7 +161,7 @@ fn paired(integrator: Integrator, settings: impl Fn(&mut RenderSettings), spp: u
 fn cornell(integrator: Integrator, settings: impl Fn(&mut RenderSettings), spp: u32, tolerance: f64, unbiased_blocks: bool) {
     let Some(reference) = reference(SIZE, BLOCK) else { return };
     let name = integrator.name();
-    let (diff, est) = paired(integrator, settings, spp, REPLICATES);
+    let (diff, est) = paired(integrator, settings, spp, REPLICATES, None);
     let mut worst_t = 0.0f64;
     for (i, (((d, se_d), (m, se)), r)) in diff.iter().zip(&est).zip(&reference).enumerate() {
         let (t_d, t_ref) = (d / se_d, (m - r) / se);
@@ -182,6 +191,46 @@ fn cornell(integrator: Integrator, settings: impl Fn(&mut RenderSettings), spp: 
 #[test]
 fn cornell_vcm_matches_reference() {
     cornell(VCM, |_| {}, 1, 0.005, true);
+}
+
+/// The other kinds of light (a uniform environment through the open front, a point light, a
+/// directional light) weigh merging through their own start and light-sampling terms: VCM
+/// paired with BDPT on the Cornell box lit by all of them at once.
+#[test]
+fn other_lights_paired_with_bdpt() {
+    use bidir::scene::{Environment, PunctualKind, PunctualLight};
+    let light = |kind, position: glam::Vec3, direction: glam::Vec3, intensity: glam::Vec3| PunctualLight {
+        name: "test".into(),
+        kind,
+        position,
+        direction: direction.normalize(),
+        intensity,
+    };
+    let lights = vec![
+        light(PunctualKind::Point, glam::Vec3::new(150.0, 400.0, 250.0), glam::Vec3::Y, glam::Vec3::splat(2.0e4)),
+        light(PunctualKind::Directional, glam::Vec3::ZERO, glam::Vec3::new(0.3, -0.3, 1.0), glam::Vec3::splat(0.5)),
+    ];
+    let (diff, est) = paired(
+        VCM,
+        |_| {},
+        1,
+        REPLICATES,
+        Some(&|scene: &mut Scene| {
+            scene.environment = Some(Environment::uniform(glam::Vec3::splat(0.5)));
+            scene.punctual_lights = lights.clone();
+        }),
+    );
+    let mut worst = 0.0f64;
+    for (i, ((d, se_d), (m, _))) in diff.iter().zip(&est).enumerate() {
+        let t = d / se_d;
+        worst = worst.max(t.abs());
+        if i < 3 {
+            eprintln!("vcm, all lights: channel {i}: minus bdpt {:+.3} % (se {:.3} %, t {t:.2})", 100.0 * d / m, 100.0 * se_d / m);
+            assert!(3.0 * se_d / m < 0.005 && (d / m).abs() < 0.005, "channel {i} differs from bdpt by {:+.3} %", 100.0 * d / m);
+        }
+        assert!(t.abs() < T_MAX, "statistic {i} (channels, then blocks) differs from bdpt by {d:.2e}, t {t:.2}");
+    }
+    eprintln!("vcm, all lights: worst |t| {worst:.2}");
 }
 
 /// Progressive photon mapping (merging alone, unweighted; 8 light paths per pixel, since it
@@ -221,6 +270,7 @@ fn cornell_bias_shrinks() {
             },
             1,
             6,
+            None,
         );
         let mean: f64 = diff[..3].iter().map(|(d, _)| d).sum::<f64>() / 3.0;
         let mean_se = (diff[..3].iter().map(|(_, se)| se * se).sum::<f64>()).sqrt() / 3.0;

@@ -92,7 +92,11 @@ impl Bdpt {
     /// The kernels an iteration runs (the light-vertex cache's scan kernels are shared
     /// utilities, `compute::Scan`).
     pub fn kernels(&self) -> Vec<&Kernel> {
-        vec![&self.light, &self.camera]
+        let mut k = vec![&self.light, &self.camera];
+        if let Some(g) = &self.grid {
+            k.extend(g.kernels());
+        }
+        k
     }
 
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.

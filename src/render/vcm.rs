@@ -125,6 +125,11 @@ impl MergeGrid {
         })
     }
 
+    /// The grid's kernels (for their compile statistics).
+    pub fn kernels(&self) -> [&Kernel; 2] {
+        [&self.count, &self.scatter]
+    }
+
     /// The grid's buffers for the camera kernel.
     pub fn binds(&self) -> [Bind<'_>; 2] {
         [Bind::buffer(abi::BIND_MERGE_CELLS, &self.cells), Bind::buffer(abi::BIND_MERGE_ITEMS, &self.items)]
