@@ -6,6 +6,8 @@
 // contribution is divided by the probability that it was evaluated (the reservoir's L / n,
 // k-step's k / stored, the cache's k / total), so with the fixed full-BDPT MIS weights the
 // estimator stays unbiased whichever join runs (docs/integrators.md).
+// With SPEC_VCM (`--integrator vcm`, vcm.glsl) the same pass also carries dVM, adds the
+// merging terms to every weight and merges at each continuous vertex (vcm_merge.glsl).
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require

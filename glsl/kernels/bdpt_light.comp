@@ -5,6 +5,8 @@
 // reservoir of `light_path_len` slots (Vitter's algorithm R), so each vertex is kept with
 // probability min(1, L / n) — the camera pass divides by it — and (b) is joined to the camera
 // (strategy t = 1) and splatted into the pixel it projects to.
+// With SPEC_VCM (`--integrator vcm`, vcm.glsl) it also carries dVM and stores each vertex
+// for merging; without connections (photon mapping) it does not splat.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
