@@ -109,6 +109,7 @@ fn a_small_run_writes_every_file_and_converges() {
         "pt-nee.exr",
         "pt-nee.png",
         "side_by_side.png",
+        "stability.csv",
     ];
     assert_eq!(names, want, "no temporary files may remain");
     let csv = std::fs::read_to_string(out.join("convergence.csv")).unwrap();
@@ -124,6 +125,14 @@ fn a_small_run_writes_every_file_and_converges() {
         assert!(t1 > 0.0 && t16 > t1, "{}: times {t1} {t16}", pair[0][0]);
         // 16x the samples: about a quarter of the error (the reference has 256 spp of its own).
         assert!(e16 < 0.5 * e1, "{}: RMSE {e1} at 1 spp, {e16} at 16 spp", pair[0][0]);
+    }
+    // Stability: the ratio of the two snapshots' RMSEs per integrator.
+    let stability = std::fs::read_to_string(out.join("stability.csv")).unwrap();
+    let srows: Vec<Vec<&str>> = stability.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    assert_eq!(srows.len(), 2, "{stability}");
+    for (pair, s) in rows.chunks(2).zip(&srows) {
+        let want = pair[1][3].parse::<f64>().unwrap() / pair[0][3].parse::<f64>().unwrap();
+        assert!(s[0] == pair[0][0] && (s[1].parse::<f64>().unwrap() - want).abs() < 1e-3, "{stability}");
     }
     // The final image written is the one the last row measured.
     let img = read_exr(&out.join("pt-nee.exr")).unwrap();
@@ -145,6 +154,7 @@ fn time_snapshots_follow_render_time() {
         integrators: vec![Integrator::Bdpt(Join::K(2))],
         schedule: Schedule::Time { budget_s: 0.6, points: 4 },
         settings: RenderSettings::new(Integrator::Pt),
+        seeds: 1,
     };
     let mut heard = 0;
     let curves = converge::run(&ctx, &scene, &camera, &reference, &opts, |_, _| heard += 1).unwrap();

@@ -6,6 +6,8 @@
 // contribution is divided by the probability that it was evaluated (the reservoir's L / n,
 // k-step's k / stored, the cache's k / total), so with the fixed full-BDPT MIS weights the
 // estimator stays unbiased whichever join runs (docs/integrators.md).
+// With SPEC_VCM (`--integrator vcm`, vcm.glsl) the same pass also carries dVM, adds the
+// merging terms to every weight and merges at each continuous vertex (vcm_merge.glsl).
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -19,6 +21,7 @@
 #include "env.glsl"
 #include "punctual.glsl"
 #include "bdpt.glsl"
+#include "vcm.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
@@ -28,11 +31,12 @@ layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[
 // The light vertex cache (JOIN_LVC): stored slots of every light path, densely listed.
 layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
+#include "vcm_merge.glsl"
 
 // The BSDF of light vertex y toward direction w and its pdfs (forward: sampling w from y.wi;
 // reverse: y.wi from w). Without GGX lobes y stores beta f and its lobe probability.
 vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_rev_w) {
-    if (HAS_GLOSSY != 0u) {
+    if (HAS_GLOSSY != 0u || VCM_MERGES) {
         Continuous c = continuous_at(materials[y.material], y.uv);
         return y.beta_f.rgb * continuous_eval(c, y.ns.xyz, y.wi.xyz, w, pdf_fwd_w, pdf_rev_w);
     }
@@ -43,7 +47,7 @@ vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_re
 
 // Connection of camera vertex (p, ns_f, ng_f, continuous BSDF c, wo toward the previous
 // camera vertex, d_vcm, d_vc) to light vertex y.
-vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, float d_vc, LightVertex y, inout uvec2 stats) {
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, float d_vc, float vm, LightVertex y, inout uvec2 stats) {
     vec3 v = y.pos.xyz - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
@@ -57,8 +61,8 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, f
     vec3 beta_f_y = light_vertex_f(y, -dir, light_dir_pdf_w, light_rev_pdf_w);
     float cam_dir_pdf_a = cam_dir_pdf_w * cos_y / dist2;
     float light_dir_pdf_a = light_dir_pdf_w * cos_c / dist2;
-    float w_light = mis(cam_dir_pdf_a) * (y.pos.w + y.ns.w * mis(light_rev_pdf_w));
-    float w_camera = mis(light_dir_pdf_a) * (d_vcm + d_vc * mis(cam_rev_pdf_w));
+    float w_light = mis(cam_dir_pdf_a) * (vm + y.pos.w + y.ns.w * mis(light_rev_pdf_w));
+    float w_camera = mis(light_dir_pdf_a) * (vm + d_vcm + d_vc * mis(cam_rev_pdf_w));
     float g = cos_c * cos_y / dist2;
     if (HAS_NORMALS != 0u) {
         g *= shading_normal_adjoint(y.wi.xyz, -dir, y.ns.xyz, y.ng.xyz);
@@ -82,6 +86,8 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     vec3 radiance = vec3(0.0);
     float d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
     float d_vc = 0.0;
+    float d_vm = 0.0;
+    VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
     uvec2 lc = light_counts[path];   // (stored, seen) of this sample's light path
     uint base = path * pc.light_path_len;
 
@@ -94,8 +100,8 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             // path emits it with that over the disk area.
             if (HAS_ENV != 0u) {
                 EnvSample e = env_lookup(d);
-                if (depth == 1u) {
-                    radiance += beta * e.le;
+                if (depth == 1u || VCM_PHOTON_MAPPING) {
+                    radiance += beta * e.le; // the eye, or (photon mapping) only delta bounces before
                 } else {
                     float direct_pdf_w = env.pick * e.pdf_w;
                     float emission_pdf_w = direct_pdf_w / env.disk_area;
@@ -116,10 +122,15 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         d_vcm *= mis(h.t * h.t);
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
+        if (VCM != 0u) {
+            d_vm /= mis(cos_in);
+        }
 
         // s = 0: the camera subpath found an emitter (front faces emit).
         if (m.emission.w > 0.0 && s.front) {
-            if (depth == 1u) {
+            if (depth == 1u || VCM_PHOTON_MAPPING) {
+                // Seen from the eye, or (progressive photon mapping, which stops at the first
+                // merge) after delta bounces only: no other strategy has this path.
                 radiance += beta * material_emission(m, s.uv);
             } else {
                 float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * m.emission.w / pc.emitter_weight;
@@ -145,7 +156,12 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             bsdf.pick = 0.0;
         }
         vec3 wo = -d;
-        if (bsdf.pick > 0.0) {
+        if (VCM_MERGES && bsdf.pick > 0.0) {
+            float r = vcm_radius(pc.sample_base);
+            vec3 merged = vcm_merge(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vm, depth, r, k);
+            radiance += beta * merged / (PI * r * r * float(pc.light_path_total));
+        }
+        if (VCM_CONNECTS && bsdf.pick > 0.0) {
             // s = 1: the environment (probability env.pick; its "point" is a direction, the
             // cosine there is 1), a punctual light, or a fresh point on an emitter.
             float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
@@ -159,7 +175,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 if (cos_s > 0.0 && dot(ng_f, ps.w) > 0.0 && max3(ps.li) > 0.0) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, ps.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
-                    float w_camera = mis(ps.emission_over_direct * cos_s) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    float w_camera = mis(ps.emission_over_direct * cos_s) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
                     if (max3(c) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
                         radiance += c;
@@ -174,7 +190,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, es.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / direct_pdf_w);
-                    float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * f * es.le * (cos_s / (direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
                         radiance += c;
@@ -194,7 +210,9 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, wi, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
-                    float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    // With merging, k.vm counts merging at this vertex (a light path's first
+                    // vertex found here).
+                    float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
                         radiance += c;
@@ -221,7 +239,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                             continue;
                         }
                         float inv_q = scale * float(c.y) / float(c.x);
-                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, y, stats);
+                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, k.vm, y, stats);
                     }
                 }
             } else if (lc.x > 0u) {
@@ -236,13 +254,16 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     if (pc.max_depth != 0u && uint(y.wi.w) + 1u + depth > pc.max_depth) {
                         continue;
                     }
-                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, y, stats);
+                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, k.vm, y, stats);
                 }
             }
         }
 
         // Continue by sampling the BSDF (radiance transport).
         uint lobe = choose_lobe_drawn(m, rng);
+        if (lobe == LOBE_DIFFUSE && VCM_PHOTON_MAPPING) {
+            break; // progressive photon mapping: the merge above estimated the rest
+        }
         if (lobe == LOBE_DIFFUSE) {
             if (!continuous_ok) {
                 break;
@@ -261,7 +282,10 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             }
             float cos_out = dot(dn, ns_f);
             beta *= f * (cos_out / pdf_fwd_w);
-            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
+            if (VCM != 0u) {
+                d_vm = mis(cos_out / pdf_fwd_w) * (d_vm * mis(pdf_rev_w) + d_vcm * k.vc + 1.0);
+            }
+            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + k.vm);
             d_vcm = mis(1.0 / pdf_fwd_w);
             d = dn;
         } else {
@@ -277,6 +301,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             }
             d_vcm = 0.0;
             d_vc *= mis(abs(dot(dn, ns_f)));
+            d_vm *= mis(abs(dot(dn, ns_f)));
             d = dn;
         }
         o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);

@@ -5,6 +5,8 @@
 // reservoir of `light_path_len` slots (Vitter's algorithm R), so each vertex is kept with
 // probability min(1, L / n) — the camera pass divides by it — and (b) is joined to the camera
 // (strategy t = 1) and splatted into the pixel it projects to.
+// With SPEC_VCM (`--integrator vcm`, vcm.glsl) it also carries dVM and stores each vertex
+// for merging; without connections (photon mapping) it does not splat.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -19,6 +21,7 @@
 #include "env.glsl"
 #include "punctual.glsl"
 #include "bdpt.glsl"
+#include "vcm.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_SPLAT) buffer Splat { float splat[]; };
@@ -29,7 +32,7 @@ layout(std430, binding = BIND_LVC_OFFSETS) writeonly buffer LvcOffsets { uint lv
 
 // Strategy t = 1: joins the light vertex at `p` to the eye and splats its contribution.
 // `c` is the vertex's continuous BSDF, `beta` the throughput arriving along wi.
-void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3 beta, float d_vcm, float d_vc, inout uvec2 stats) {
+void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3 beta, float d_vcm, float d_vc, float vm, inout uvec2 stats) {
     vec3 to_eye = pc.camera.eye.xyz - p;
     float dist2 = dot(to_eye, to_eye);
     float dist = sqrt(dist2);
@@ -49,7 +52,7 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
     // The BSDF toward the camera; its reverse pdf samples wi from w.
     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
     vec3 f = continuous_eval(c, ns_f, wi, w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
-    float w_light = mis(image_to_surface / float(pc.light_paths)) * (d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+    float w_light = mis(image_to_surface / float(pc.light_paths)) * (vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
     float adjoint = HAS_NORMALS != 0u ? shading_normal_adjoint(wi, w, ns_f, ng_f) : 1.0;
     vec3 contrib = beta * f * (adjoint * image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
     if (max3(contrib) <= 0.0) {
@@ -98,6 +101,7 @@ void main() {
 
     vec3 beta, o, d;
     float d_vcm, d_vc;
+    VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
     float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
     bool from_env = HAS_ENV != 0u && u_kind < env.pick;
     bool from_punctual = HAS_PUNCTUAL != 0u && !from_env && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
@@ -164,6 +168,7 @@ void main() {
         o = offset_ray_origin(ls.p, ls.n);
     }
     float beta0 = max3(beta);
+    float d_vm = d_vc * k.vc; // dVM starts as dVC / eta (0 for a delta light)
 
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
@@ -182,6 +187,9 @@ void main() {
         }
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
+        if (VCM != 0u) {
+            d_vm /= mis(cos_in);
+        }
 
         // The continuous part (diffuse, GGX) is zero unless light arrives from above the
         // shading normal too (the camera paths' BSDF, made reciprocal).
@@ -192,16 +200,16 @@ void main() {
         }
         if (c.pick > 0.0) {
             // Without GGX lobes f does not depend on the outgoing direction: store beta f.
-            vec3 beta_f = HAS_GLOSSY != 0u ? beta : beta * c.diffuse / PI;
+            vec3 beta_f = HAS_GLOSSY != 0u || VCM_MERGES ? beta : beta * c.diffuse / PI;
             // Reservoir: keep the seen-th vertex with probability L / seen.
             seen++;
             uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
             if (slot < pc.light_path_len) {
-                light_vertices[base + slot] = LightVertex(vec4(s.p, d_vcm), vec4(ns_f, d_vc), vec4(ng_f, c.pick), vec4(wi, float(depth)), vec4(beta_f, 0.0), s.uv, s.material, 0u);
+                light_vertices[base + slot] = LightVertex(vec4(s.p, d_vcm), vec4(ns_f, d_vc), vec4(ng_f, c.pick), vec4(wi, float(depth)), vec4(beta_f, 0.0), s.uv, s.material, d_vm);
                 stored = min(seen, pc.light_path_len);
             }
-            if (pc.max_depth == 0u || depth + 1u <= pc.max_depth) {
-                connect_to_camera(s.p, ns_f, ng_f, wi, c, beta, d_vcm, d_vc, stats);
+            if (VCM_CONNECTS && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
+                connect_to_camera(s.p, ns_f, ng_f, wi, c, beta, d_vcm, d_vc, k.vm, stats);
             }
         }
         if (pc.max_depth != 0u && depth + 1u >= pc.max_depth) {
@@ -230,7 +238,10 @@ void main() {
             }
             float cos_out = dot(dn, ns_f);
             beta *= f * (cos_out / pdf_fwd_w);
-            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm);
+            if (VCM != 0u) {
+                d_vm = mis(cos_out / pdf_fwd_w) * (d_vm * mis(pdf_rev_w) + d_vcm * k.vc + 1.0);
+            }
+            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + k.vm);
             d_vcm = mis(1.0 / pdf_fwd_w);
             d = dn;
         } else {
@@ -246,6 +257,7 @@ void main() {
             // Delta lobe: no connection is possible here; the pdf ratio cancels.
             d_vcm = 0.0;
             d_vc *= mis(abs(dot(dn, ns_f)));
+            d_vm *= mis(abs(dot(dn, ns_f)));
             d = dn;
         }
         if (HAS_NORMALS != 0u) {

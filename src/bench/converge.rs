@@ -36,6 +36,9 @@ pub struct Options {
     pub schedule: Schedule,
     /// Settings shared by every integrator (seed, depth, BDPT store); its integrator is ignored.
     pub settings: RenderSettings,
+    /// Independent runs per integrator, with seeds `settings.seed`, `settings.seed + 1`, ...:
+    /// their curves are averaged and their stability figures' worst is reported.
+    pub seeds: u32,
 }
 
 /// One snapshot.
@@ -57,6 +60,40 @@ pub struct Curve {
     /// Seconds spent creating the renderer (not render time).
     pub setup_s: f64,
     pub nan_samples: u32,
+    /// How the curve behaves: the largest ratio RMSE(t_{i+1}) / RMSE(t_i) between consecutive
+    /// snapshots (1 or below for a curve that only descends; a firefly landing makes it
+    /// jump), the worst over the seeds.
+    pub stability: f64,
+}
+
+/// The largest ratio of consecutive RMSEs of `points` (0 with fewer than two snapshots).
+pub fn stability(points: &[Point]) -> f64 {
+    points.windows(2).map(|w| w[1].rmse / w[0].rmse).fold(0.0, f64::max)
+}
+
+/// One curve from several seeds' curves of the same schedule: per snapshot the mean time and
+/// samples and the root mean square of the RMSEs (so the square root of the mean MSE; relMSE
+/// averaged), over the snapshots every seed took; the stability figure is the worst seed's.
+/// The image is the last seed's.
+pub fn average(mut curves: Vec<Curve>) -> Curve {
+    let n = curves.len() as f64;
+    let len = curves.iter().map(|c| c.points.len()).min().unwrap_or(0);
+    let points = (0..len)
+        .map(|i| {
+            let mean = |f: &dyn Fn(&Point) -> f64| curves.iter().map(|c| f(&c.points[i])).sum::<f64>() / n;
+            Point {
+                seconds: mean(&|p| p.seconds),
+                spp: mean(&|p| p.spp as f64).round() as u32,
+                rmse: mean(&|p| p.rmse * p.rmse).sqrt(),
+                rel_mse: mean(&|p| p.rel_mse),
+            }
+        })
+        .collect();
+    let stability = curves.iter().map(|c| c.stability).fold(0.0, f64::max);
+    let setup_s = curves.iter().map(|c| c.setup_s).sum::<f64>() / n;
+    let nan_samples = curves.iter().map(|c| c.nan_samples).sum();
+    let last = curves.pop().expect("at least one seed");
+    Curve { integrator: last.integrator, points, image: last.image, setup_s, nan_samples, stability }
 }
 
 /// Why a convergence run cannot start or failed.
@@ -72,6 +109,8 @@ pub enum ConvergeError {
     Points(usize),
     #[error("sample counts (--spp-points) must be positive and ascending, got {0:?}")]
     Spp(Vec<u32>),
+    #[error("the number of seeds (--seeds) must be 1 to 1000, got {0}")]
+    Seeds(u32),
     #[error("the reference is {rw}x{rh} pixels but the camera renders {cw}x{ch} (match them with --width/--height)")]
     Size { rw: u32, rh: u32, cw: u32, ch: u32 },
     #[error("{integrator}: {source}")]
@@ -117,13 +156,17 @@ pub fn check(opts: &Options, camera: &Camera, reference: &RgbImage) -> Result<()
             }
         }
     }
+    if opts.seeds == 0 || opts.seeds > 1000 {
+        return Err(ConvergeError::Seeds(opts.seeds));
+    }
     if (reference.width, reference.height) != (camera.width, camera.height) {
         return Err(ConvergeError::Size { rw: reference.width, rh: reference.height, cw: camera.width, ch: camera.height });
     }
     Ok(())
 }
 
-/// Renders every integrator in turn; `on_point` hears of each snapshot as it is taken. After
+/// Renders every integrator in turn, `opts.seeds` times each (curves averaged, see
+/// [`average`]); `on_point` hears of each snapshot as it is taken. After
 /// [`request_stop`](crate::render::request_stop) the integrator in flight ends with a last
 /// snapshot after its current pass and the rest are skipped.
 pub fn run(
@@ -140,9 +183,17 @@ pub fn run(
         if stop_requested() && !curves.is_empty() {
             break;
         }
-        let c = curve(ctx, scene, camera, reference, opts, integrator, &mut on_point)
-            .map_err(|source| ConvergeError::Render { integrator: integrator.name(), source })?;
-        curves.push(c);
+        let mut runs = Vec::new();
+        for k in 0..opts.seeds {
+            if stop_requested() && !runs.is_empty() {
+                break;
+            }
+            let settings = RenderSettings { integrator, seed: opts.settings.seed.wrapping_add(k), ..opts.settings.clone() };
+            let c = curve(ctx, scene, camera, reference, &opts.schedule, settings, &mut on_point)
+                .map_err(|source| ConvergeError::Render { integrator: integrator.name(), source })?;
+            runs.push(c);
+        }
+        curves.push(average(runs));
     }
     Ok(curves)
 }
@@ -152,11 +203,11 @@ fn curve(
     scene: &Scene,
     camera: &Camera,
     reference: &RgbImage,
-    opts: &Options,
-    integrator: Integrator,
+    schedule: &Schedule,
+    settings: RenderSettings,
     on_point: &mut impl FnMut(Integrator, &Point),
 ) -> Result<Curve, RenderError> {
-    let settings = RenderSettings { integrator, ..opts.settings.clone() };
+    let integrator = settings.integrator;
     let start = Instant::now();
     let mut r = Renderer::new(ctx, scene, camera, settings)?;
     let setup_s = start.elapsed().as_secs_f64();
@@ -175,7 +226,7 @@ fn curve(
         image = Some(img);
         Ok(())
     };
-    match &opts.schedule {
+    match schedule {
         Schedule::Time { budget_s, points } => {
             for target in log_spaced_times(*budget_s, *points) {
                 let left = target - rendered;
@@ -206,7 +257,8 @@ fn curve(
         Some(i) => i,
         None => r.image()?,
     };
-    Ok(Curve { integrator, points, image, setup_s, nan_samples: r.nan_samples()? })
+    let stability = stability(&points);
+    Ok(Curve { integrator, points, image, setup_s, nan_samples: r.nan_samples()?, stability })
 }
 
 /// `integrator,seconds,spp,rmse,relmse`, one row per snapshot.
@@ -216,6 +268,15 @@ pub fn csv(curves: &[Curve]) -> String {
         for p in &c.points {
             out += &format!("{},{:.6},{},{:.7},{:.7}\n", c.integrator.name(), p.seconds, p.spp, p.rmse, p.rel_mse);
         }
+    }
+    out
+}
+
+/// `integrator,stability`: the worst ratio of consecutive RMSEs per integrator.
+pub fn stability_csv(curves: &[Curve]) -> String {
+    let mut out = String::from("integrator,stability\n");
+    for c in curves {
+        out += &format!("{},{:.4}\n", c.integrator.name(), c.stability);
     }
     out
 }
@@ -270,6 +331,7 @@ pub fn write_outputs(dir: &Path, curves: &[Curve], reference: &RgbImage, how: &P
         Ok(())
     };
     text_file("convergence.csv", &csv(curves))?;
+    text_file("stability.csv", &stability_csv(curves))?;
     text_file("convergence.svg", &svg)?;
     let mut png_file = |name: &str, rgb: &[u8], (w, h): (u32, u32)| -> Result<(), ConvergeError> {
         let path = dir.join(name);
@@ -311,7 +373,7 @@ mod tests {
     use crate::render::Join;
 
     fn opts(integrators: Vec<Integrator>, schedule: Schedule) -> Options {
-        Options { integrators, schedule, settings: RenderSettings::new(Integrator::Pt) }
+        Options { integrators, schedule, settings: RenderSettings::new(Integrator::Pt), seeds: 1 }
     }
 
     #[test]
@@ -365,6 +427,7 @@ mod tests {
                 image: RgbImage::new(1, 1),
                 setup_s: 0.0,
                 nan_samples: 0,
+                stability: 0.25,
             },
             Curve {
                 integrator: Integrator::Bdpt(Join::K(4)),
@@ -372,6 +435,7 @@ mod tests {
                 image: RgbImage::new(1, 1),
                 setup_s: 0.0,
                 nan_samples: 0,
+                stability: 0.25,
             },
         ];
         assert_eq!(
@@ -383,5 +447,38 @@ mod tests {
                 .map(file_stem)
                 .into();
         assert_eq!(stems, ["pt", "pt-nee", "bdpt_full", "bdpt_single", "bdpt_k4"]);
+        assert_eq!(stability_csv(&curves), "integrator,stability\npt-nee,0.2500\nbdpt:k=4,0.2500\n");
+    }
+
+    #[test]
+    fn seeds_average_and_worst_stability() {
+        let p = |s: f64, n: u32, e: f64| Point { seconds: s, spp: n, rmse: e, rel_mse: e };
+        // A curve that only descends, and one that jumps up 1.5x at its third snapshot.
+        let a = vec![p(1.0, 1, 0.4), p(2.0, 2, 0.2), p(4.0, 4, 0.1)];
+        let b = vec![p(3.0, 1, 0.3), p(4.0, 2, 0.2), p(6.0, 4, 0.3), p(8.0, 8, 0.1)];
+        assert_eq!(stability(&a), 0.5);
+        assert!((stability(&b) - 1.5).abs() < 1e-12);
+        let curve = |points: Vec<Point>| Curve {
+            integrator: Integrator::Vcm(crate::render::vcm::VcmMode::FULL),
+            stability: stability(&points),
+            points,
+            image: RgbImage::new(1, 1),
+            setup_s: 1.0,
+            nan_samples: 1,
+        };
+        let avg = average(vec![curve(a), curve(b)]);
+        assert_eq!(avg.points.len(), 3, "only the snapshots every seed took");
+        assert_eq!((avg.points[0].seconds, avg.points[0].spp), (2.0, 1));
+        assert!((avg.points[0].rmse - (0.125f64).sqrt()).abs() < 1e-12, "root mean square of 0.4 and 0.3");
+        assert!((avg.stability - 1.5).abs() < 1e-12, "the worst seed's figure");
+        assert_eq!(avg.nan_samples, 2);
+        assert!(check(
+            &Options { seeds: 0, ..opts(vec![Integrator::Pt], Schedule::Spp(vec![1])) },
+            &Camera::cornell_box(),
+            &RgbImage::new(256, 256)
+        )
+        .unwrap_err()
+        .to_string()
+        .contains("--seeds"));
     }
 }

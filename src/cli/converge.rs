@@ -11,7 +11,8 @@ use bidir::vk::{Context, ContextOptions};
 use std::path::PathBuf;
 
 #[derive(clap::Args, Debug)]
-#[command(after_help = "Writes into DIR: convergence.csv (integrator,seconds,spp,rmse,relmse), convergence.png and \
+#[command(after_help = "Writes into DIR: convergence.csv (integrator,seconds,spp,rmse,relmse; with --seeds N the \
+seeds' average), stability.csv (integrator,stability: the worst ratio of consecutive RMSEs), convergence.png and \
 convergence.svg (log-log RMSE chart), INTEGRATOR.exr/.png (final images, ':' -> '_', '=' dropped: bdpt_k4) and \
 side_by_side.png (final images beside the reference). Nothing is written when the input is bad; each file appears \
 whole or not at all.
@@ -24,7 +25,7 @@ pub struct ConvergeArgs {
     #[arg(long, value_name = "REF.exr")]
     pub reference: PathBuf,
     /// Integrators, rendered one after the other: pt | pt-nee | bdpt:full | bdpt:single |
-    /// bdpt:k=N | bdpt:lvc | bdpt:lvc=N
+    /// bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm | vcm:no-merge | vcm:no-connect
     #[arg(long, value_delimiter = ',', default_value = "pt,pt-nee,bdpt:lvc,bdpt:full,bdpt:single,bdpt:k=4")]
     pub integrators: Vec<Integrator>,
     /// Render-time budget per integrator, in seconds. Render time is the sum of the
@@ -41,6 +42,12 @@ pub struct ConvergeArgs {
     /// (the CSV still records render time)
     #[arg(long, value_name = "SPP,...", value_delimiter = ',')]
     pub spp_points: Option<Vec<u32>>,
+    /// Independent runs per integrator (seeds --seed, --seed + 1, ...): curves averaged (root
+    /// mean square of the RMSEs), and per integrator the worst stability figure, the largest
+    /// ratio RMSE(t_{i+1}) / RMSE(t_i) between consecutive snapshots (1 or below: the curve
+    /// only descends)
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub seeds: u32,
     /// Output directory (created if missing)
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
@@ -70,7 +77,7 @@ pub fn run(args: &ConvergeArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         None => Schedule::Time { budget_s: args.time.unwrap_or(0.0), points: args.points },
     };
     let settings = args.settings.settings(Integrator::Pt)?;
-    let options = Options { integrators: args.integrators.clone(), schedule, settings };
+    let options = Options { integrators: args.integrators.clone(), schedule, settings, seeds: args.seeds };
     converge::check(&options, &loaded.camera, &reference)?;
 
     super::signals::on_interrupt(super::signals::FirstInterrupt::FinishPass)?;
@@ -112,10 +119,21 @@ fn render_and_write(
         exposure: args.exposure,
     };
     let written = converge::write_outputs(&args.out, &curves, reference, &how)?;
-    println!("final: integrator, spp, seconds, RMSE (set-up excluded)");
+    println!(
+        "final: integrator, spp, seconds, RMSE (set-up excluded), stability (worst RMSE(t_i+1) / RMSE(t_i) over {} seed(s))",
+        args.seeds
+    );
     for c in &curves {
         if let Some(p) = c.points.last() {
-            println!("{:<12} {:>8} {:>10.3} {:>10.6}   (set-up {:.2} s)", c.integrator.name(), p.spp, p.seconds, p.rmse, c.setup_s);
+            println!(
+                "{:<12} {:>8} {:>10.3} {:>10.6}   stability {:.3}   (set-up {:.2} s)",
+                c.integrator.name(),
+                p.spp,
+                p.seconds,
+                p.rmse,
+                c.stability,
+                c.setup_s
+            );
         }
     }
     for p in written {

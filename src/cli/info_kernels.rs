@@ -17,7 +17,13 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
         return Ok(());
     }
     // One scene upload and BVH; only the kernels change between integrators.
-    let integrators = [Integrator::Pt, Integrator::PtNee, Integrator::Bdpt(Join::Lvc(0)), Integrator::Bdpt(Join::Full)];
+    let integrators = [
+        Integrator::Pt,
+        Integrator::PtNee,
+        Integrator::Bdpt(Join::Lvc(0)),
+        Integrator::Bdpt(Join::Full),
+        Integrator::Vcm(bidir::render::vcm::VcmMode::FULL),
+    ];
     let mut r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrators[0]))?;
     for integrator in integrators {
         r.set_integrator(integrator)?;

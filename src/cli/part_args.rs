@@ -77,8 +77,11 @@ pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: Sam
     info.set(keys::CROP, s.crop.unwrap_or(Crop::full(c.width, c.height)).to_string());
     info.set(keys::INTEGRATOR, s.integrator.name());
     let mut set = format!("sampler {:?} max_depth {} rr_depth {} tri_test {:?}", s.sampler, s.max_depth, s.rr_depth, s.bvh.tri_test);
-    if let bidir::render::Integrator::Bdpt(_) = s.integrator {
+    if let bidir::render::Integrator::Bdpt(_) | bidir::render::Integrator::Vcm(_) = s.integrator {
         set += &format!(" light_path_len {} light_paths {}", s.light_path_len, s.light_path_ratio);
+    }
+    if let bidir::render::Integrator::Vcm(_) = s.integrator {
+        set += &format!(" vcm_radius {:?} vcm_alpha {}", s.vcm_radius, s.vcm_alpha);
     }
     info.set(keys::SETTINGS, set);
     info.set(keys::SEED, s.seed.to_string());
@@ -111,7 +114,7 @@ pub fn write_outputs(
 /// BDPT iterations hold `slices` samples, starting at multiples of it: a range that starts or
 /// ends elsewhere is still an unbiased part, but not the whole render's iterations exactly.
 pub fn warn_unaligned(args: &PartArgs, settings: &RenderSettings, slices: u32) {
-    if let (Some(r), bidir::render::Integrator::Bdpt(_)) = (args.sample_range, settings.integrator) {
+    if let (Some(r), bidir::render::Integrator::Bdpt(_) | bidir::render::Integrator::Vcm(_)) = (args.sample_range, settings.integrator) {
         if slices > 1 && (r.start % slices != 0 || r.end % slices != 0) {
             eprintln!("warning: BDPT renders {slices} samples per iteration here: sample range {r} does not start and end at multiples of {slices}, so merged parts will equal a whole render in expectation, not pixel for pixel (give --sample-slices, or align the ranges)");
         }

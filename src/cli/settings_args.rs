@@ -9,20 +9,36 @@ use bidir::render::{Integrator, Join, RenderSettings, Sampler};
 #[derive(clap::Args, Debug)]
 pub struct IntegratorArgs {
     /// pt | pt-nee | bdpt (= bdpt:lvc) | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N
+    /// | vcm (vertex connection and merging)
     #[arg(long, default_value = "pt-nee")]
     pub integrator: Integrator,
     /// BDPT join (overrides the one in --integrator): full | single | k=N | lvc | lvc=N.
     #[arg(long)]
     pub join: Option<Join>,
+    /// VCM without vertex merging (its connections alone: equals bdpt:lvc).
+    #[arg(long)]
+    pub no_merge: bool,
+    /// VCM without vertex connection: progressive photon mapping (merging alone, unweighted).
+    #[arg(long, conflicts_with = "no_merge")]
+    pub no_connect: bool,
 }
 
 impl IntegratorArgs {
     /// The integrator with `--join` applied.
     pub fn integrator(&self) -> anyhow::Result<Integrator> {
-        match (self.join, self.integrator) {
-            (Some(j), Integrator::Bdpt(_)) => Ok(Integrator::Bdpt(j)),
+        let integrator = match (self.join, self.integrator) {
+            (Some(j), Integrator::Bdpt(_)) => Integrator::Bdpt(j),
             (Some(_), _) => bail!("--join applies to --integrator bdpt only"),
-            (None, i) => Ok(i),
+            (None, i) => i,
+        };
+        match (integrator, self.no_merge || self.no_connect) {
+            (Integrator::Vcm(mut m), true) => {
+                m.merge &= !self.no_merge;
+                m.connect &= !self.no_connect;
+                Ok(Integrator::Vcm(m))
+            }
+            (_, true) => bail!("--no-merge and --no-connect apply to --integrator vcm only"),
+            (i, false) => Ok(i),
         }
     }
 }
@@ -63,6 +79,13 @@ pub struct SettingsArgs {
     /// what kernel specialisation buys).
     #[arg(long)]
     pub all_features: bool,
+    /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
+    /// diagonal (0.005), or a length in scene units with the suffix u (0.02u).
+    #[arg(long, default_value = "0.005", value_name = "R")]
+    pub vcm_radius: bidir::render::vcm::VcmRadius,
+    /// VCM: radius reduction, r_i = r_1 i^((alpha - 1) / 2) at iteration i (1: fixed radius).
+    #[arg(long, default_value_t = 0.75, value_name = "ALPHA")]
+    pub vcm_alpha: f32,
 }
 
 impl SettingsArgs {
@@ -86,6 +109,8 @@ impl SettingsArgs {
         s.sample_slices = self.sample_slices;
         s.bvh.tri_test = self.tri_test;
         s.all_material_code = self.all_features;
+        s.vcm_radius = self.vcm_radius;
+        s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;
         Ok(s)
     }
 }

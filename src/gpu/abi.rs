@@ -214,6 +214,24 @@ gpu_consts! {
     pub const SPEC_HAS_ENV: u32 = 18;
     /// 1: the scene has punctual lights (point, spot, directional).
     pub const SPEC_HAS_PUNCTUAL: u32 = 19;
+
+    // ---- Vertex connection and merging (docs/integrators.md, src/render/vcm.rs) ------------
+    /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT (the BDPT kernels
+    /// carry dVM and merge only then).
+    pub const SPEC_VCM: u32 = 40;
+    /// First iteration's merge radius r_1 (f32 bits, scene units).
+    pub const SPEC_VCM_RADIUS: u32 = 41;
+    /// Radius reduction exponent alpha (f32 bits): r_i = r_1 i^((alpha - 1) / 2).
+    pub const SPEC_VCM_ALPHA: u32 = 42;
+    /// log2 of the merge grid's hash-table size (cells).
+    pub const SPEC_MERGE_GRID_BITS: u32 = 43;
+    pub const VCM_MERGE: u32 = 1;
+    pub const VCM_CONNECT: u32 = 2;
+    /// Merge grid: per hash cell, after the scatter, the end of its entries in
+    /// BIND_MERGE_ITEMS (its start is the previous cell's end).
+    pub const BIND_MERGE_CELLS: u32 = 40;
+    /// Merge grid: light-vertex slots sorted by hash cell.
+    pub const BIND_MERGE_ITEMS: u32 = 41;
 }
 
 gpu_structs! {
@@ -493,14 +511,15 @@ gpu_structs! {
         /// Unit direction toward the previous vertex (xyz), light subpath segments (w).
         pub wi: Vec4,
         /// Throughput times the diffuse BSDF value, beta * P_d * albedo / pi (rgb); in
-        /// scenes with GGX lobes (SPEC_HAS_GLOSSY) the throughput alone, the BSDF being
+        /// scenes with GGX lobes (SPEC_HAS_GLOSSY), and where VCM merges, the throughput alone, the BSDF being
         /// evaluated per connection from `material` at `uv`.
         pub beta_f: Vec4,
         /// Texture coordinates of the vertex (SPEC_HAS_GLOSSY).
         pub uv: Vec2,
         /// Material index of the vertex (SPEC_HAS_GLOSSY).
         pub material: u32,
-        pub pad0: u32,
+        /// dVM of the VCM technical report (SPEC_VCM; 0 for BDPT).
+        pub d_vm: f32,
     }
 
     /// Push constants of the BDPT kernels.

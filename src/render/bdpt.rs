@@ -66,20 +66,34 @@ pub struct Bdpt {
     lvc_offsets: Buffer,
     /// The light vertex cache's scan, list and length (only for `Join::Lvc`).
     lvc: Option<Lvc>,
+    /// VCM's merge grid (only for `--integrator vcm` with merging).
+    grid: Option<super::vcm::MergeGrid>,
     pub join: Join,
     pub light_path_len: u32,
     /// Light paths per camera sample.
     pub light_paths: u32,
     /// Most camera samples per pixel in one iteration (the store holds light_paths x this).
     pub max_camera_samples: u32,
-    /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list).
+    /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list, VCM's
+    /// merge grid).
     pub vertex_bytes: u64,
+}
+
+/// What `--integrator vcm` adds to BDPT with the light vertex cache.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VcmConfig {
+    pub mode: super::vcm::VcmMode,
+    /// First iteration's merge radius in scene units.
+    pub radius: f32,
+    /// Radius reduction exponent.
+    pub alpha: f32,
 }
 
 impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
-    /// paths are traced together).
+    /// paths are traced together). `vcm`: vertex connection and merging (the light vertex
+    /// cache's join).
     pub fn new(
         ctx: &Context,
         scene: &GpuScene,
@@ -87,6 +101,7 @@ impl Bdpt {
         settings: &super::RenderSettings,
         join: Join,
         camera_samples: u32,
+        vcm: Option<VcmConfig>,
     ) -> Result<Bdpt, RenderError> {
         let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
         let ratio = settings.light_path_ratio;
@@ -122,6 +137,17 @@ impl Bdpt {
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
         specs.push(sampler.spec());
+        let capacity = paths.saturating_mul(light_path_len);
+        if let Some(v) = vcm {
+            if !matches!(join, Join::Lvc(_)) {
+                return Err(RenderError::Unsupported("VCM merges over the light vertex cache (join lvc)".into()));
+            }
+            if !(v.radius > 0.0 && v.radius.is_finite()) {
+                return Err(RenderError::Unsupported(format!("the VCM merge radius must be positive, not {}", v.radius)));
+            }
+            super::vcm::check_alpha(v.alpha).map_err(RenderError::Unsupported)?;
+            specs.extend(super::vcm::specs(v.mode, v.radius, v.alpha, super::vcm::grid_bits(capacity)));
+        }
         let vertices = ctx.create_buffer("bdpt.light_vertices", bytes, Memory::Device).map_err(|e| match e {
             VkError::Alloc { bytes, .. } => {
                 RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len"))
@@ -138,10 +164,15 @@ impl Bdpt {
             }),
             _ => None,
         };
-        let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4);
+        let grid = match vcm {
+            Some(v) if v.mode.merge => Some(super::vcm::MergeGrid::new(ctx, &specs, capacity, super::vcm::grid_bits(capacity))?),
+            _ => None,
+        };
+        let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4) + grid.as_ref().map_or(0, |g| g.bytes);
         Ok(Bdpt {
             lvc_offsets: ctx.create_buffer("bdpt.lvc_offsets", paths as u64 * 4, Memory::Device)?,
             lvc,
+            grid,
             light: ctx.create_kernel(&kernels::BDPT_LIGHT, &specs)?,
             camera: ctx.create_kernel(&kernels::BDPT_CAMERA, &specs)?,
             vertices,
@@ -172,12 +203,23 @@ impl Bdpt {
             binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &self.lvc_offsets));
             binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &self.lvc_offsets));
         }
+        match &self.grid {
+            Some(g) => binds.extend(g.binds()),
+            None => {
+                // The camera kernel declares the merge grid; BDPT never reads it.
+                binds.push(Bind::buffer(abi::BIND_MERGE_CELLS, &self.lvc_offsets));
+                binds.push(Bind::buffer(abi::BIND_MERGE_ITEMS, &self.lvc_offsets));
+            }
+        }
         let total = push.light_path_total;
         assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
         rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
         if let Some(lvc) = &self.lvc {
             lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;
             rec.dispatch(&lvc.compact, &binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
+        }
+        if let Some(grid) = &self.grid {
+            grid.record(rec, &binds, push)?;
         }
         let samples = push.camera_samples.max(1);
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
@@ -190,7 +232,11 @@ impl IntegratorKernels for Bdpt {
     /// The kernels an iteration runs (the light-vertex cache's scan kernels are shared
     /// utilities, `compute::Scan`).
     fn kernels(&self) -> Vec<&Kernel> {
-        vec![&self.light, &self.camera]
+        let mut k = vec![&self.light, &self.camera];
+        if let Some(g) = &self.grid {
+            k.extend(g.kernels());
+        }
+        k
     }
 
     fn storage_bytes(&self) -> u64 {

@@ -24,6 +24,7 @@ mod pacing;
 mod pt;
 mod stop;
 mod tonemap;
+pub mod vcm;
 
 pub use bdpt::{Bdpt, Join};
 pub use film::Film;
@@ -50,6 +51,8 @@ pub enum Integrator {
     PtNee,
     /// Bidirectional path tracing (megakernel: light pass, camera pass), MIS-weighted.
     Bdpt(Join),
+    /// Vertex connection and merging over BDPT's light vertex cache (`vcm.rs`).
+    Vcm(vcm::VcmMode),
 }
 
 impl Integrator {
@@ -58,13 +61,18 @@ impl Integrator {
             Integrator::Pt => "pt".into(),
             Integrator::PtNee => "pt-nee".into(),
             Integrator::Bdpt(j) => format!("bdpt:{}", j.name()),
+            Integrator::Vcm(m) => match (m.merge, m.connect) {
+                (true, true) => "vcm".into(),
+                (false, _) => "vcm:no-merge".into(),
+                (true, false) => "vcm:no-connect".into(),
+            },
         }
     }
 
     /// Whether it traces light paths into a store sized by the full image's pixel count
     /// (whatever the crop), which bounds its sample slices.
     pub fn stores_light_vertices(self) -> bool {
-        matches!(self, Integrator::Bdpt(_))
+        matches!(self, Integrator::Bdpt(_) | Integrator::Vcm(_))
     }
 }
 
@@ -76,10 +84,13 @@ impl std::str::FromStr for Integrator {
             "pt-nee" => Ok(Integrator::PtNee),
             // The GPU-native variant won on RMSE against time (docs/integrators.md).
             "bdpt" => Ok(Integrator::Bdpt(Join::Lvc(0))),
+            "vcm" => Ok(Integrator::Vcm(vcm::VcmMode::FULL)),
+            "vcm:no-merge" => Ok(Integrator::Vcm(vcm::VcmMode { merge: false, connect: true })),
+            "vcm:no-connect" => Ok(Integrator::Vcm(vcm::VcmMode { merge: true, connect: false })),
             _ => match s.strip_prefix("bdpt:") {
                 Some(j) => Ok(Integrator::Bdpt(j.parse()?)),
                 None => Err(format!(
-                    "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N)"
+                    "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm)"
                 )),
             },
         }
@@ -181,6 +192,11 @@ pub struct RenderSettings {
     pub crop: Option<Crop>,
     /// Run the first-hit pass for alpha and these AOV layers (`None`: no alpha, no cost).
     pub first_hit: Option<crate::imaging::aov::Aovs>,
+    /// VCM: the first iteration's merge radius (a fraction of the scene's diagonal until the
+    /// renderer resolves it to scene units).
+    pub vcm_radius: vcm::VcmRadius,
+    /// VCM: radius reduction exponent alpha, r_i = r_1 i^((alpha - 1) / 2).
+    pub vcm_alpha: f32,
 }
 
 impl RenderSettings {
@@ -200,6 +216,8 @@ impl RenderSettings {
             sample_start: 0,
             crop: None,
             first_hit: None,
+            vcm_radius: vcm::VcmRadius::default(),
+            vcm_alpha: 0.75,
         }
     }
 }
@@ -211,7 +229,7 @@ impl RenderSettings {
 pub fn default_rr_depth(integrator: Integrator) -> u32 {
     match integrator {
         Integrator::Pt | Integrator::PtNee => 5,
-        Integrator::Bdpt(_) => 3,
+        Integrator::Bdpt(_) | Integrator::Vcm(_) => 3,
     }
 }
 
@@ -319,7 +337,11 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
-        Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices)?),
+        Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
+        Integrator::Vcm(mode) => {
+            let config = bdpt::VcmConfig { mode, radius: settings.vcm_radius.resolve(0.0), alpha: settings.vcm_alpha };
+            Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::Lvc(0), slices, Some(config))?)
+        }
     })
 }
 
@@ -331,11 +353,13 @@ pub struct Progress {
 }
 
 impl Renderer {
-    pub fn new(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings) -> Result<Renderer, RenderError> {
+    pub fn new(ctx: &Context, scene: &Scene, camera: &Camera, mut settings: RenderSettings) -> Result<Renderer, RenderError> {
         if camera.width == 0 || camera.height == 0 {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
         check_layout(settings.bvh.layout)?;
+        // VCM's relative radius becomes scene units once, so integrator switches keep it.
+        settings.vcm_radius = vcm::VcmRadius::Absolute(settings.vcm_radius.resolve(scene.bounds().diagonal().length()));
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &settings.bvh)?;
         let mut gscene = GpuScene::upload(ctx, scene, &bvh)?;
         if settings.all_material_code {

@@ -332,7 +332,7 @@ impl State {
     /// window: where a bigger one does not fit, the viewer falls back to pt-nee rather than quit.
     fn apply_camera(&mut self) -> Result<(), ViewerError> {
         match self.renderer.set_camera(&self.fly.camera) {
-            Err(RenderError::Memory(msg)) if matches!(self.integrator, Integrator::Bdpt(_)) => {
+            Err(RenderError::Memory(msg)) if matches!(self.integrator, Integrator::Bdpt(_) | Integrator::Vcm(_)) => {
                 eprintln!("view: {msg}; switching to pt-nee");
                 self.renderer.set_integrator(Integrator::PtNee)?;
                 self.integrator = Integrator::PtNee;

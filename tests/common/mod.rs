@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod geometry;
+pub mod scenes;
 pub mod stats;
 
 use bidir::vk::{Context, ContextOptions};

@@ -1,0 +1,43 @@
+// Vertex connection and merging's MIS: Georgiev, Krivanek, Davidovic and Slusallek 2012,
+// "Light Transport Simulation with Vertex Connection and Merging" (SIGGRAPH Asia), in the
+// recursive form of Georgiev's technical report "Implementing Vertex Connection and Merging"
+// (2012). BDPT carries dVCM and dVC (bdpt.glsl); VCM adds dVM and the merging weight
+// eta_VCM = pi r^2 N (N light paths merged per camera sample: the ratio of a merging pdf to
+// a connection pdf). Everything here compiles to BDPT's
+// arithmetic when VCM (a specialisation constant) is 0: both factors are then constant 0 and
+// dVM is never read.
+#ifndef BIDIR_VCM_GLSL
+#define BIDIR_VCM_GLSL
+
+#include "merge_grid.glsl"
+
+// Merging / connecting are in use (BDPT connects and never merges).
+#define VCM_MERGES ((VCM & VCM_MERGE) != 0u)
+#define VCM_CONNECTS (VCM == 0u || (VCM & VCM_CONNECT) != 0u)
+// Merging alone (progressive photon mapping). Spelled out rather than !VCM_CONNECTS: shaderc's
+// optimiser loses a LogicalNot of a specialisation-constant expression.
+#define VCM_PHOTON_MAPPING (VCM != 0u && (VCM & VCM_CONNECT) == 0u)
+
+// The report's "misVmWeightFactor" (mis(eta_VCM), 0 without merging) and
+// "misVcWeightFactor" (mis(1 / eta_VCM), 0 without connections).
+struct VcmFactors {
+    float vm;
+    float vc;
+};
+
+float vcm_eta(uint sample_base, uint light_path_total) {
+    float r = vcm_radius(sample_base);
+    return PI * r * r * float(light_path_total);
+}
+
+VcmFactors vcm_factors(uint sample_base, uint light_path_total) {
+    VcmFactors k = VcmFactors(0.0, 0.0);
+    if (VCM_MERGES) {
+        float eta = vcm_eta(sample_base, light_path_total);
+        k.vm = mis(eta);
+        k.vc = VCM_CONNECTS ? mis(1.0 / eta) : 0.0;
+    }
+    return k;
+}
+
+#endif

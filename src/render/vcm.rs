@@ -1,0 +1,164 @@
+//! Vertex connection and merging (`--integrator vcm`; Georgiev, Křivánek, Davidovič and
+//! Slusallek 2012): BDPT with the light vertex cache plus vertex merging, both weighted
+//! together by the recursive dVCM/dVC/dVM quantities of Georgiev's technical report. The
+//! kernels are BDPT's, specialised (`SPEC_VCM`); this module holds the options and the merge
+//! grid, a hash grid over the cached light vertices rebuilt on the GPU every iteration.
+
+use crate::gpu::{abi, abi::BdptPush, kernels};
+use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
+
+/// Which VCM strategies run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VcmMode {
+    /// Vertex merging (density estimation at camera vertices).
+    pub merge: bool,
+    /// Vertex connection: BDPT's strategies (light sampling, connections, light tracing).
+    pub connect: bool,
+}
+
+impl VcmMode {
+    pub const FULL: VcmMode = VcmMode { merge: true, connect: true };
+
+    /// The value of `SPEC_VCM`.
+    pub fn spec_value(self) -> u32 {
+        (if self.merge { abi::VCM_MERGE } else { 0 }) | (if self.connect { abi::VCM_CONNECT } else { 0 })
+    }
+}
+
+/// The first iteration's merge radius.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum VcmRadius {
+    /// A fraction of the scene's bounding-box diagonal (`--vcm-radius 0.005`).
+    Relative(f32),
+    /// In scene units (`--vcm-radius 0.02u`).
+    Absolute(f32),
+}
+
+impl Default for VcmRadius {
+    fn default() -> Self {
+        VcmRadius::Relative(0.005)
+    }
+}
+
+impl VcmRadius {
+    /// The radius in scene units for a scene whose bounding box has diagonal `diagonal`.
+    pub fn resolve(self, diagonal: f32) -> f32 {
+        match self {
+            VcmRadius::Relative(f) => f * diagonal,
+            VcmRadius::Absolute(r) => r,
+        }
+    }
+}
+
+impl std::str::FromStr for VcmRadius {
+    type Err = String;
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        let (num, absolute) = match s.strip_suffix('u') {
+            Some(n) => (n, true),
+            None => (s, false),
+        };
+        match num.parse::<f32>() {
+            Ok(v) if v > 0.0 && v.is_finite() => Ok(if absolute { VcmRadius::Absolute(v) } else { VcmRadius::Relative(v) }),
+            _ => Err(format!(
+                "bad merge radius '{s}': a positive fraction of the scene's diagonal (0.005) or a length in scene units with the suffix u (0.02u)"
+            )),
+        }
+    }
+}
+
+/// Checks the radius-reduction exponent (0 < alpha <= 1; 1 keeps the radius fixed).
+pub fn check_alpha(alpha: f32) -> std::result::Result<f32, String> {
+    if alpha > 0.0 && alpha <= 1.0 {
+        Ok(alpha)
+    } else {
+        Err(format!("--vcm-alpha must lie in (0, 1], not {alpha}"))
+    }
+}
+
+/// The specialisation constants of the BDPT kernels for VCM (`radius`: r_1 in scene units).
+pub fn specs(mode: VcmMode, radius: f32, alpha: f32, grid_bits: u32) -> [Spec; 4] {
+    [
+        Spec { id: abi::SPEC_VCM, value: mode.spec_value() },
+        Spec { id: abi::SPEC_VCM_RADIUS, value: radius.to_bits() },
+        Spec { id: abi::SPEC_VCM_ALPHA, value: alpha.to_bits() },
+        Spec { id: abi::SPEC_MERGE_GRID_BITS, value: grid_bits },
+    ]
+}
+
+/// log2 of the hash table's size for `capacity` light vertices: at least as many cells as
+/// vertices (few collisions), between 2^10 and 2^24.
+pub fn grid_bits(capacity: u32) -> u32 {
+    capacity.max(1).next_power_of_two().trailing_zeros().clamp(10, 24)
+}
+
+/// The merge grid: per hash cell its entries' end (`cells`), the light-vertex slots sorted by
+/// cell (`items`), and the kernels that build them from the light vertex cache.
+pub struct MergeGrid {
+    count: Kernel,
+    scatter: Kernel,
+    scan: crate::compute::Scan,
+    plan: crate::compute::ScanPlan,
+    cells: Buffer,
+    items: Buffer,
+    capacity: u32,
+    /// GPU bytes of the grid (cells, items, scan sums).
+    pub bytes: u64,
+}
+
+impl MergeGrid {
+    /// A grid for up to `capacity` cached light vertices (`specs`: the BDPT kernels' constants).
+    pub fn new(ctx: &Context, specs: &[Spec], capacity: u32, grid_bits: u32) -> Result<MergeGrid> {
+        let cells_n = 1u32 << grid_bits;
+        let cells = ctx.create_buffer("vcm.merge_cells", cells_n as u64 * 4, Memory::Device)?;
+        let items = ctx.create_buffer("vcm.merge_items", capacity.max(1) as u64 * 4, Memory::Device)?;
+        let plan = crate::compute::ScanPlan::new(ctx, cells_n)?;
+        let scan_sums = (cells_n as u64).div_ceil(abi::SCAN_WG_SIZE as u64) * 4;
+        Ok(MergeGrid {
+            count: ctx.create_kernel(&kernels::MERGE_GRID_COUNT, specs)?,
+            scatter: ctx.create_kernel(&kernels::MERGE_GRID_SCATTER, specs)?,
+            scan: crate::compute::Scan::new(ctx)?,
+            plan,
+            bytes: cells.size() + items.size() + scan_sums,
+            cells,
+            items,
+            capacity,
+        })
+    }
+
+    /// The grid's kernels (for their compile statistics).
+    pub fn kernels(&self) -> [&Kernel; 2] {
+        [&self.count, &self.scatter]
+    }
+
+    /// The grid's buffers for the camera kernel.
+    pub fn binds(&self) -> [Bind<'_>; 2] {
+        [Bind::buffer(abi::BIND_MERGE_CELLS, &self.cells), Bind::buffer(abi::BIND_MERGE_ITEMS, &self.items)]
+    }
+
+    /// Records the grid's build over the listed light vertex cache (`binds` hold the light
+    /// vertices, the cache and [`MergeGrid::binds`]): clear, count per cell, exclusive scan,
+    /// scatter.
+    pub fn record(&self, rec: &mut Recorder, binds: &[Bind], push: &BdptPush) -> Result<()> {
+        rec.fill_buffer(&self.cells, 0);
+        rec.dispatch(&self.count, binds, bytemuck::bytes_of(push), [self.count.groups_for(self.capacity), 1, 1])?;
+        self.scan.record(rec, &self.plan, &self.cells, self.plan.count())?;
+        rec.dispatch(&self.scatter, binds, bytemuck::bytes_of(push), [self.scatter.groups_for(self.capacity), 1, 1])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn radius_parses() {
+        assert_eq!("0.005".parse::<VcmRadius>().unwrap(), VcmRadius::Relative(0.005));
+        assert_eq!("0.02u".parse::<VcmRadius>().unwrap(), VcmRadius::Absolute(0.02));
+        for bad in ["", "u", "0", "-1", "x", "nanu", "inf"] {
+            assert!(bad.parse::<VcmRadius>().is_err(), "{bad}");
+        }
+        assert_eq!(VcmRadius::Relative(0.5).resolve(4.0), 2.0);
+        assert!(check_alpha(0.0).is_err() && check_alpha(1.5).is_err() && check_alpha(0.75).is_ok());
+        assert_eq!(grid_bits(1), 10);
+        assert_eq!(grid_bits(5000), 13);
+    }
+}
