@@ -3,7 +3,7 @@
 
 mod common;
 
-use bidir::bvh::{BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
+use bidir::bvh::{intersect::TriHit, BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
 use bidir::gpu_data::GpuBvh;
 use bidir::trace::{TraceOptions, Tracer};
@@ -28,6 +28,8 @@ fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOpt
     ];
     match layout {
         BvhLayout::Bvh2 => v.push(("not speculative", TraceOptions { speculative: false, ..base })),
+        // The binary loop on decoded nodes: its variants are the exact layout's.
+        BvhLayout::Bvh2q => v.truncate(1),
         BvhLayout::Cwbvh => {
             v.push(("postponing", TraceOptions { postpone: true, ..base }));
             v.push(("postponing, persistent 3 groups", TraceOptions { postpone: true, persistent: Some(3), ..base }));
@@ -36,21 +38,44 @@ fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOpt
     v
 }
 
-/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for both node
-/// layouts and every trace variant; returns (hits, misses) of the closest-hit pass.
+/// The CPU's closest hit (original triangle, hit) and any-hit verdict for every ray.
+type Reference = (Vec<Option<(u32, TriHit)>>, Vec<bool>);
+
+/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for every node
+/// layout and trace variant; returns (hits, misses) of the closest-hit pass. The quantised
+/// binary layout (same tree as the exact one, same kernel loop: only the node fetch differs)
+/// is checked with the watertight test, one invocation per ray, against the binary layout's
+/// reference (the CPU time and the variants of the loop are not spent twice).
 fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
-    let a = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2, ..opts });
-    let b = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Cwbvh, ..opts });
-    assert_eq!(a, b, "{name}: the two layouts' CPU references disagree on hits");
+    let (a, reference) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2, ..opts }, None);
+    let (b, _) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Cwbvh, ..opts }, None);
+    assert_eq!(a, b, "{name}: the binary and wide layouts' CPU references disagree on hits");
+    if opts.tri_test == TriTest::Watertight {
+        check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2q, ..opts }, Some(reference));
+    }
     a
 }
 
-fn check_layout(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
+/// As `check_scene` for one layout, against `reference` if given (else the CPU traverses this
+/// build's tree); returns (hits, misses) and the reference.
+fn check_layout(
+    ctx: &Context,
+    name: &str,
+    positions: &[Vec3],
+    tris: &[[u32; 3]],
+    rays: &[GpuRay],
+    opts: BuildOptions,
+    reference: Option<Reference>,
+) -> ((usize, usize), Reference) {
     let bvh = Bvh::build(positions, tris, &opts).unwrap();
-    let cpu = CpuTracer::new(&bvh, positions, tris);
     let scale = positions.iter().fold(0f32, |m, p| m.max(p.abs().max_element()));
-    let want: Vec<_> = rays.iter().map(|r| cpu.closest(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
-    let want_any: Vec<bool> = rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
+    let (want, want_any) = reference.unwrap_or_else(|| {
+        let cpu = CpuTracer::new(&bvh, positions, tris);
+        (
+            rays.iter().map(|r| cpu.closest(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect(),
+            rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect(),
+        )
+    });
     let gbvh = GpuBvh::upload(ctx, &bvh).unwrap();
     let (mut hits, mut misses) = (0, 0);
     for (variant, trace_opts) in variants(opts.tri_test, opts.layout) {
@@ -111,7 +136,7 @@ fn check_layout(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]]
         );
     }
     drop(gbvh);
-    (hits, misses)
+    ((hits, misses), (want, want_any))
 }
 
 /// Rays of three kinds: from outside toward the scene, random directions from inside, and
@@ -187,9 +212,12 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     let (p, t) = geometry::icosphere(5, Vec3::ZERO, 1.0);
     let rays = edge_rays(&mut rng, &p, &t, 1_000_000);
     let mut leaks = Vec::new();
-    for (test, layout) in
-        [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)]
-    {
+    for (test, layout) in [
+        (TriTest::Watertight, BvhLayout::Bvh2),
+        (TriTest::Woop, BvhLayout::Bvh2),
+        (TriTest::Watertight, BvhLayout::Cwbvh),
+        (TriTest::Watertight, BvhLayout::Bvh2q),
+    ] {
         let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, layout, ..Default::default() }).unwrap();
         let g = GpuBvh::upload(&ctx, &bvh).unwrap();
         let tracer = Tracer::with_options(&ctx, &TraceOptions { layout, ..TraceOptions::new(test) }).unwrap();
@@ -206,6 +234,7 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     }
     assert_eq!(leaks[0], 0, "watertight test leaked rays through shared edges");
     assert_eq!(leaks[2], 0, "watertight test leaked rays through shared edges (compressed wide BVH)");
+    assert_eq!(leaks[3], 0, "watertight test leaked rays through shared edges (quantised binary BVH)");
     finish(ctx);
 }
 
@@ -374,9 +403,12 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         rays.push(ray(o, d, if stop { (target - o).length() } else { 3.0e38 }));
     }
     let ctx = gpu();
-    for (tri_test, layout) in
-        [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)]
-    {
+    for (tri_test, layout) in [
+        (TriTest::Watertight, BvhLayout::Bvh2),
+        (TriTest::Woop, BvhLayout::Bvh2),
+        (TriTest::Watertight, BvhLayout::Cwbvh),
+        (TriTest::Watertight, BvhLayout::Bvh2q),
+    ] {
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, layout, ..Default::default() }).unwrap();
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();

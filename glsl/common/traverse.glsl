@@ -6,7 +6,8 @@
 //
 // Needs GL_KHR_shader_subgroup_vote and the ABI header. Declares the node and triangle
 // buffers at BIND_NODES / BIND_TRIS. With TRAVERSE_CWBVH defined before inclusion, the nodes
-// are compressed 8-wide ones and trace_ray is the one of traverse_cwbvh.glsl.
+// are compressed 8-wide ones and trace_ray is the one of traverse_cwbvh.glsl; with
+// TRAVERSE_BVH2Q, they are quantised binary ones, decoded by traverse_bvh2q.glsl's fetch_node.
 #ifndef BIDIR_TRAVERSE_GLSL
 #define BIDIR_TRAVERSE_GLSL
 
@@ -57,7 +58,14 @@ bool test_leaf_triangle(PreparedRay pr, uint i, inout TraceHit hit, inout uvec2 
 #include "traverse_cwbvh.glsl"
 #else
 
+#ifdef TRAVERSE_BVH2Q
+#include "traverse_bvh2q.glsl"
+#else
 layout(std430, binding = BIND_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
+BvhNode fetch_node(int node) {
+    return bvh_nodes[node];
+}
+#endif
 layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
 
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
@@ -81,7 +89,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     while (node != int(TRAVERSAL_SENTINEL)) {
         // Inner nodes: descend until this lane holds a leaf and every active lane does.
         while (uint(node) < TRAVERSAL_SENTINEL) {
-            BvhNode n = bvh_nodes[node];
+            BvhNode n = fetch_node(node);
             if (TRAVERSAL_STATS != 0u) {
                 stats.x++;
             }

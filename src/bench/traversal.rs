@@ -80,6 +80,8 @@ pub struct KindResult {
     pub median_ms: f64,
     pub mrays_per_s: f64,
     pub nodes_per_ray: f64,
+    /// Bytes of node data fetched per ray (nodes visited × the layout's node size).
+    pub node_bytes_per_ray: f64,
     pub tris_per_ray: f64,
     pub hit_fraction: f64,
 }
@@ -214,6 +216,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
             mrays_per_s: real as f64 / (med * 1e-3) / 1e6,
             times_ms: times,
             nodes_per_ray: s[0] as f64 / real as f64,
+            node_bytes_per_ray: s[0] as f64 * opts.build.layout.node_size() as f64 / real as f64,
             tris_per_ray: s[1] as f64 / real as f64,
             hit_fraction: hit_count as f64 / real as f64,
         });
@@ -226,7 +229,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         alpha: opts.alpha,
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
         persistent_groups: timing.persistent_groups(),
-        speculative: opts.speculative && opts.build.layout == BvhLayout::Bvh2,
+        speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.node_count(),
@@ -279,6 +282,7 @@ impl Report {
                                 ("median_ms", Json::Num(r.median_ms)),
                                 ("mrays_per_s", Json::Num(r.mrays_per_s)),
                                 ("nodes_per_ray", Json::Num(r.nodes_per_ray)),
+                                ("node_bytes_per_ray", Json::Num(r.node_bytes_per_ray)),
                                 ("tris_per_ray", Json::Num(r.tris_per_ray)),
                                 ("hit_fraction", Json::Num(r.hit_fraction)),
                                 ("times_ms", Json::Arr(r.times_ms.iter().map(|&t| Json::Num(t)).collect())),
@@ -292,35 +296,37 @@ impl Report {
 
     pub fn print(&self) {
         println!(
-            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build, {} nodes, {} leaves, depth {}, {:.1} MiB",
+            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build, {} nodes of {} B, {} leaves, depth {}, {:.1} MiB",
             self.device,
             self.triangles,
             self.tri_test.name(),
             if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
                 + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
-                + if self.layout == BvhLayout::Bvh2 && !self.speculative { ", not speculative" } else { "" }
+                + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
                 + if self.postpone { ", triangle postponing" } else { "" },
             self.width,
             self.height,
             self.layout.name(),
             self.bvh_build_ms,
             self.bvh_nodes,
+            self.layout.node_size(),
             self.bvh_leaves,
             self.bvh_depth,
             self.bvh_bytes as f64 / (1 << 20) as f64
         );
         println!(
-            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>10} {:>6}",
-            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "tris/ray", "hit %"
+            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>12} {:>10} {:>6}",
+            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "node B/ray", "tris/ray", "hit %"
         );
         for r in &self.results {
             println!(
-                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>10.1} {:>6.1}",
+                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>12.0} {:>10.1} {:>6.1}",
                 r.kind.name(),
                 r.rays,
                 r.median_ms,
                 r.mrays_per_s,
                 r.nodes_per_ray,
+                r.node_bytes_per_ray,
                 r.tris_per_ray,
                 100.0 * r.hit_fraction
             );

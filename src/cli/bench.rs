@@ -32,7 +32,7 @@ pub struct TraversalArgs {
     #[arg(long, default_value_t = 2)]
     pub quality: u32,
     /// BVH node layout: bvh2 (binary, Aila & Laine) | cwbvh (compressed 8-wide, Ylitie et al.
-    /// 2017; leaves of at most 3 triangles).
+    /// 2017; leaves of at most 3 triangles) | bvh2q (binary, 32-byte quantised nodes).
     #[arg(long, default_value = "bvh2")]
     pub bvh: bidir::bvh::BvhLayout,
     /// Most triangles per leaf (1..=16; 1..=3 with --bvh cwbvh) [default: 4; 3 with cwbvh].
@@ -83,8 +83,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     let (most, default) = if a.bvh == bidir::bvh::BvhLayout::Cwbvh { (3, 3) } else { (16, 4) };
     let leaf_size = a.leaf_size.unwrap_or(default);
     if !(1..=most).contains(&leaf_size) {
-        let layout = if most == 3 { "cwbvh" } else { "bvh2" };
-        anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {layout})");
+        anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {})", a.bvh.name());
     }
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;

@@ -59,6 +59,11 @@ gpu_consts! {
     /// (`BvhNode`) or the compressed 8-wide BVH (`CwbvhNode`).
     pub const BVH_LAYOUT_BVH2: u32 = 0;
     pub const BVH_LAYOUT_CWBVH: u32 = 1;
+    /// The binary layout with 32-byte quantised nodes (`QuantNode`).
+    pub const BVH_LAYOUT_BVH2Q: u32 = 2;
+    /// `QuantNode::exps_left` bits 24..32: 0 when child 0 is the inner node after this one,
+    /// else child 0 is a leaf of that many triangles ending where child 1's leaf begins.
+    pub const QUANT_LEFT_SHIFT: u32 = 24;
     /// Stack bottom marker (never a node index).
     pub const TRAVERSAL_SENTINEL: u32 = 0x7fff_ffff;
     /// A leaf child pointer has bit 31 set; bits 0..27 hold its first triangle and bits 27..31
@@ -255,6 +260,26 @@ gpu_structs! {
         pub qx: UVec4,
         pub qy: UVec4,
         pub qz: UVec4,
+    }
+
+    /// A binary BVH node quantised to 32 bytes (half a `BvhNode`): both children's boxes on
+    /// a grid of origin `origin` (the node's own box, lower corner) and power-of-two cell size
+    /// 2^(e - 127) per axis, 8 bits per plane, rounded outwards when built so that the
+    /// decoded planes `origin + q 2^(e - 127)` (exact product, one rounding) always enclose
+    /// the child (`bvh::layout::quantize`). Inner nodes are in depth-first order: child 0, if
+    /// inner, is the next node; child 1 is a pointer like `BvhNode::children` (the builder
+    /// puts a lone leaf child there).
+    pub struct QuantNode (32 bytes) {
+        pub origin: Vec3,
+        /// e.x | e.y << 8 | e.z << 16 (biased exponents of the cell sizes) | child 0's leaf
+        /// triangle count << QUANT_LEFT_SHIFT (0: child 0 is the inner node index + 1).
+        pub exps_left: u32,
+        /// Per axis, one byte each: (child 0 lo, child 0 hi, child 1 lo, child 1 hi).
+        pub qx: u32,
+        pub qy: u32,
+        pub qz: u32,
+        /// Child 1: >= 0 an inner node index, < 0 a leaf pointer (see LEAF_FIRST_BITS).
+        pub child1: i32,
     }
 
     /// A triangle in leaf order, encoded for the chosen test: watertight stores the three

@@ -118,21 +118,22 @@ impl Tracer {
         let mut trace_specs = base.to_vec();
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
         match opts.layout {
-            BvhLayout::Bvh2 => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
             BvhLayout::Cwbvh => trace_specs.push(Spec { id: abi::SPEC_CWBVH_POSTPONE, value: opts.postpone as u32 }),
         }
         let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
         let source = match (&opts.alpha, opts.layout) {
             (Some(features), layout) => {
                 trace_specs.extend(features.specs());
-                if layout == BvhLayout::Cwbvh {
-                    &kernels::TRACE_ALPHA_CWBVH
-                } else {
-                    &kernels::TRACE_ALPHA
+                match layout {
+                    BvhLayout::Bvh2 => &kernels::TRACE_ALPHA,
+                    BvhLayout::Cwbvh => &kernels::TRACE_ALPHA_CWBVH,
+                    BvhLayout::Bvh2q => &kernels::TRACE_ALPHA_BVH2Q,
                 }
             }
             (None, BvhLayout::Bvh2) => &kernels::TRACE,
             (None, BvhLayout::Cwbvh) => &kernels::TRACE_CWBVH,
+            (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
         };
         let with = |id, value| {
             let mut s = trace_specs.clone();
