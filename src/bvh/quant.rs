@@ -171,7 +171,9 @@ mod tests {
             let (o, e) = grid(lo, hi).unwrap();
             for (a, b) in [(lo, hi), (lo, lo), (hi, hi), (lo + (hi - lo) * 0.37, lo + (hi - lo) * 0.41)] {
                 let (qa, qb) = quantize(o, e, a, b);
-                assert!(qa <= qb && qb <= 255, "[{a}, {b}] on ({o}, {e}): codes {qa} {qb}");
+                // Codes can cross where the grid is finer than the floats (a, b one ulp apart):
+                // the planes never do.
+                assert!(qa.max(qb) <= 255 && decoded(o, qa, e)[0] <= decoded(o, qb, e)[0], "[{a}, {b}] on ({o}, {e}): codes {qa} {qb}");
                 assert!(decoded(o, qa, e).iter().all(|&v| v <= a), "[{a}, {b}]: lower plane {:?}", decoded(o, qa, e));
                 assert!(decoded(o, qb, e).iter().all(|&v| v >= b), "[{a}, {b}]: upper plane {:?}", decoded(o, qb, e));
             }
