@@ -10,7 +10,7 @@ use crate::gpu::abi::GpuCamera;
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::render::GpuScene;
 use crate::scene::Scene;
-use crate::trace::{Secondary, TraceOptions, Tracer};
+use crate::trace::{RaySorter, Secondary, TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Memory, VkError};
 use glam::Vec3;
 use std::time::Instant;
@@ -53,6 +53,13 @@ pub struct Options {
     pub speculative: bool,
     /// Compressed wide layout: triangle postponing.
     pub postpone: bool,
+    /// Binary layouts: the stack's top in registers, the rest in shared memory.
+    pub short_stack: bool,
+    /// Rays each invocation traces (one-invocation-per-ray kernels; default 1).
+    pub rays_per_invocation: u32,
+    /// Sort shadow and diffuse rays by direction octant and origin cell before tracing
+    /// (`trace::RaySorter`); the sort is timed apart.
+    pub sort: bool,
 }
 
 impl Default for Options {
@@ -67,6 +74,9 @@ impl Default for Options {
             persistent: None,
             speculative: true,
             postpone: false,
+            short_stack: false,
+            rays_per_invocation: 1,
+            sort: false,
         }
     }
 }
@@ -78,6 +88,8 @@ pub struct KindResult {
     pub rays: u32,
     pub times_ms: Vec<f64>,
     pub median_ms: f64,
+    /// Median time of the ray sort before the trace (secondary rays with `Options::sort`).
+    pub sort_median_ms: Option<f64>,
     pub mrays_per_s: f64,
     pub nodes_per_ray: f64,
     /// Bytes of node data fetched per ray (nodes visited × the layout's node size).
@@ -100,6 +112,12 @@ pub struct Report {
     pub persistent_groups: Option<u32>,
     pub speculative: bool,
     pub postpone: bool,
+    pub short_stack: bool,
+    pub rays_per_invocation: u32,
+    pub sort: bool,
+    /// The driver's compile statistics of the timed closest- and any-hit kernels ("name
+    /// value; ..."), where it reports them (VK_KHR_pipeline_executable_properties).
+    pub kernel_stats: Vec<(String, String)>,
     pub bvh_build_ms: f64,
     pub bvh_nodes: usize,
     pub bvh_leaves: usize,
@@ -140,10 +158,19 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     trace_opts.layout = opts.build.layout;
     trace_opts.speculative = opts.speculative;
     trace_opts.postpone = opts.postpone;
+    trace_opts.short_stack = opts.short_stack;
+    trace_opts.rays_per_invocation = opts.rays_per_invocation;
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
     trace_opts.persistent = opts.persistent;
     let timing = Tracer::with_options(ctx, &trace_opts)?;
     let counting = Tracer::with_options(ctx, &TraceOptions { stats: true, ..trace_opts })?;
+    let mut kernel_stats = Vec::new();
+    for k in timing.trace_kernels() {
+        let line: Vec<String> = k.statistics()?.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
+        if !line.is_empty() {
+            kernel_stats.push((k.name().to_string(), line.join("; ")));
+        }
+    }
 
     let (lo, hi) = positions.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
     let light = opts.light.unwrap_or(Vec3::new((lo.x + hi.x) * 0.5, hi.y + (hi.y - lo.y), (lo.z + hi.z) * 0.5));
@@ -158,7 +185,10 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let flags = ctx.create_buffer("bench.flags", (n as u64 + 1) * 4, Memory::Device)?;
     let hits = ctx.create_buffer("bench.hits", n as u64 * 16, Memory::Device)?;
     let stats = ctx.create_buffer("bench.stats", 8, Memory::Device)?;
-    let timer = ctx.create_timer("bench.timer", 2)?;
+    let timer = ctx.create_timer("bench.timer", 3)?;
+    let sorter = if opts.sort { Some(RaySorter::new(ctx, n)?) } else { None };
+    let sorted = ctx.create_buffer("bench.sorted_rays", if opts.sort { ray_bytes } else { 32 }, Memory::Device)?;
+    let order = ctx.create_buffer("bench.sort_order", if opts.sort { n as u64 * 4 } else { 4 }, Memory::Device)?;
 
     // Primary rays and their hits (the origin of the secondary rays).
     ctx.submit("bench primary", |rec| {
@@ -185,17 +215,25 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         if count == 0 {
             return Err(BenchError::NoRays(kind.name()));
         }
-        let mut times = Vec::new();
+        // Secondary rays sorted first (timed apart) where asked.
+        let sort = sorter.as_ref().filter(|_| kind != RayKind::Primary);
+        let rays = if sort.is_some() { &sorted } else { rays };
+        let (mut times, mut sort_times) = (Vec::new(), Vec::new());
         for rep in 0..opts.warmup + opts.repetitions {
             ctx.submit("bench trace", |rec| {
                 rec.reset_timer(&timer);
                 rec.timestamp(&timer, 0);
-                timing.record_trace(rec, &geometry, rays, &hits, &stats, count, any_hit)?;
+                if let Some(sorter) = sort {
+                    sorter.record(rec, &secondary, &sorted, &order, count, lo, hi)?;
+                }
                 rec.timestamp(&timer, 1);
+                timing.record_trace(rec, &geometry, rays, &hits, &stats, count, any_hit)?;
+                rec.timestamp(&timer, 2);
                 Ok(())
             })?;
             if rep >= opts.warmup {
-                times.push(timer.elapsed_ns(0, 1)? * 1e-6);
+                sort_times.push(timer.elapsed_ns(0, 1)? * 1e-6);
+                times.push(timer.elapsed_ns(1, 2)? * 1e-6);
             }
         }
         // One more pass with counters for node/triangle tests per ray.
@@ -213,6 +251,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
             kind,
             rays: real,
             median_ms: med,
+            sort_median_ms: sort.map(|_| median(&sort_times)),
             mrays_per_s: real as f64 / (med * 1e-3) / 1e6,
             times_ms: times,
             nodes_per_ray: s[0] as f64 / real as f64,
@@ -231,6 +270,10 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         persistent_groups: timing.persistent_groups(),
         speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
+        short_stack: opts.short_stack,
+        rays_per_invocation: opts.rays_per_invocation,
+        sort: opts.sort,
+        kernel_stats,
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.node_count(),
         bvh_leaves: bvh.leaves,
@@ -257,6 +300,10 @@ impl Report {
             ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
             ("speculative", Json::Bool(self.speculative)),
             ("postpone", Json::Bool(self.postpone)),
+            ("short_stack", Json::Bool(self.short_stack)),
+            ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
+            ("sort", Json::Bool(self.sort)),
+            ("kernel_statistics", Json::obj(self.kernel_stats.iter().map(|(k, v)| (k.as_str(), Json::Str(v.clone()))).collect())),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
             ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
@@ -280,6 +327,7 @@ impl Report {
                                 ("rays", Json::Str(r.kind.name().into())),
                                 ("count", Json::Int(r.rays as i64)),
                                 ("median_ms", Json::Num(r.median_ms)),
+                                ("sort_median_ms", Json::Num(r.sort_median_ms.unwrap_or(f64::NAN))),
                                 ("mrays_per_s", Json::Num(r.mrays_per_s)),
                                 ("nodes_per_ray", Json::Num(r.nodes_per_ray)),
                                 ("node_bytes_per_ray", Json::Num(r.node_bytes_per_ray)),
@@ -303,7 +351,10 @@ impl Report {
             if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
                 + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
                 + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
-                + if self.postpone { ", triangle postponing" } else { "" },
+                + if self.postpone { ", triangle postponing" } else { "" }
+                + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
+                + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
+                + if self.sort { ", secondary rays sorted (octant, origin cell)" } else { "" },
             self.width,
             self.height,
             self.layout.name(),
@@ -315,12 +366,12 @@ impl Report {
             self.bvh_bytes as f64 / (1 << 20) as f64
         );
         println!(
-            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>12} {:>10} {:>6}",
-            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "node B/ray", "tris/ray", "hit %"
+            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>12} {:>10} {:>6} {:>8}",
+            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "node B/ray", "tris/ray", "hit %", "sort ms"
         );
         for r in &self.results {
             println!(
-                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>12.0} {:>10.1} {:>6.1}",
+                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>12.0} {:>10.1} {:>6.1} {:>8}",
                 r.kind.name(),
                 r.rays,
                 r.median_ms,
@@ -328,8 +379,12 @@ impl Report {
                 r.nodes_per_ray,
                 r.node_bytes_per_ray,
                 r.tris_per_ray,
-                100.0 * r.hit_fraction
+                100.0 * r.hit_fraction,
+                r.sort_median_ms.map_or("-".to_string(), |t| format!("{t:.3}"))
             );
+        }
+        for (kernel, stats) in &self.kernel_stats {
+            println!("{kernel}: {stats}");
         }
     }
 }

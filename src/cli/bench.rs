@@ -61,6 +61,17 @@ pub struct TraversalArgs {
     /// 2017, section 4).
     #[arg(long)]
     pub postpone: bool,
+    /// Binary layouts: keep the traversal stack's top four entries in registers and the rest
+    /// in workgroup shared memory instead of local memory.
+    #[arg(long)]
+    pub short_stack: bool,
+    /// Rays each invocation traces, strided by the launch size (not with --persistent).
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub rays_per_invocation: u32,
+    /// Sort shadow and diffuse rays by direction octant and origin cell (a counting sort on
+    /// the GPU) before tracing; the sort's time is reported beside the trace's.
+    #[arg(long)]
+    pub sort: bool,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -90,7 +101,10 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     }
     super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
-    let ctx = Context::new(opts).context("cannot start Vulkan")?;
+    // The driver's registers, spills and shared memory of the timed kernels, where it reports
+    // them (printed with the timings).
+    let opts = ContextOptions { kernel_statistics: true, ..opts.clone() };
+    let ctx = Context::new(&opts).context("cannot start Vulkan")?;
     let mut o = traversal::Options { kinds, warmup: a.warmup, repetitions: a.reps.max(5), ..Default::default() };
     o.build.tri_test = a.tri_test;
     o.build.quality = a.quality;
@@ -100,6 +114,15 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.alpha = a.alpha;
     o.speculative = !a.no_speculative;
     o.postpone = a.postpone;
+    o.short_stack = a.short_stack;
+    o.rays_per_invocation = a.rays_per_invocation;
+    o.sort = a.sort;
+    if !(1..=64).contains(&a.rays_per_invocation) || (a.rays_per_invocation > 1 && (a.persistent || a.persistent_groups.is_some())) {
+        anyhow::bail!("--rays-per-invocation {}: must be in 1..=64, and 1 with --persistent", a.rays_per_invocation);
+    }
+    if a.short_stack && (a.alpha || a.bvh == bidir::bvh::BvhLayout::Cwbvh) {
+        anyhow::bail!("--short-stack: only with the binary layouts (--bvh bvh2 | bvh2q) and without --alpha");
+    }
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),

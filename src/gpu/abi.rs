@@ -86,6 +86,23 @@ gpu_consts! {
     /// Persistent trace kernels: the next ray to fetch (one u32, zeroed before each launch).
     pub const BIND_RAY_COUNTER: u32 = 26;
 
+    // ---- Bindings: ray_sort_keys.comp / ray_sort_scatter.comp (trace::RaySorter) -----------
+    /// Rays to sort (`GpuRay`).
+    pub const RAY_SORT_BIND_RAYS: u32 = 0;
+    /// Per ray: (key, rank among the rays of its key) (uvec2).
+    pub const RAY_SORT_BIND_KEYS: u32 = 1;
+    /// Per key: its ray count, then (scanned) its first slot in the sorted order.
+    pub const RAY_SORT_BIND_BINS: u32 = 2;
+    /// The sorted rays.
+    pub const RAY_SORT_BIND_OUT: u32 = 3;
+    /// Per sorted slot: the index of its ray in the input.
+    pub const RAY_SORT_BIND_ORDER: u32 = 4;
+    /// Origin cells per axis of the sort key's grid over the scene bounds are
+    /// 2^RAY_SORT_CELL_BITS; the key is the direction octant (3 high bits) above the cell's
+    /// Morton code (3 x RAY_SORT_CELL_BITS bits).
+    pub const RAY_SORT_CELL_BITS: u32 = 4;
+    pub const RAY_SORT_KEYS: u32 = 32768;
+
     // ---- Scene and integrator bindings (glsl/common/scene.glsl) ----------------------------
     pub const BIND_PRIM_INFO: u32 = 8;
     pub const BIND_MATERIALS: u32 = 9;
@@ -212,6 +229,9 @@ gpu_consts! {
     pub const SPEC_HAS_ENV: u32 = 18;
     /// 1: the scene has punctual lights (point, spot, directional).
     pub const SPEC_HAS_PUNCTUAL: u32 = 19;
+    /// Trace kernels (not persistent): rays each invocation traces, strided by the launch's
+    /// invocation count (default 1). Numbered apart from the scene features' ids.
+    pub const SPEC_RAYS_PER_INVOCATION: u32 = 32;
 }
 
 gpu_structs! {
@@ -280,6 +300,15 @@ gpu_structs! {
         pub qz: u32,
         /// Child 1: >= 0 an inner node index, < 0 a leaf pointer (see LEAF_FIRST_BITS).
         pub child1: i32,
+    }
+
+    /// Push constants of the ray sort kernels: the grid of origin cells over the scene bounds.
+    pub struct RaySortPush (32 bytes) {
+        pub bounds_lo: Vec3,
+        pub count: u32,
+        /// Cells per unit length on each axis (2^RAY_SORT_CELL_BITS / extent).
+        pub cells_per_unit: Vec3,
+        pub pad0: u32,
     }
 
     /// A triangle in leaf order, encoded for the chosen test: watertight stores the three
