@@ -96,6 +96,12 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     if !(1..=most).contains(&leaf_size) {
         anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {})", a.bvh.name());
     }
+    if a.short_stack && (a.alpha || a.bvh == bidir::bvh::BvhLayout::Cwbvh) {
+        anyhow::bail!("--short-stack: only with the binary layouts (--bvh bvh2 | bvh2q) and without --alpha");
+    }
+    if !(1..=64).contains(&a.rays_per_invocation) || (a.rays_per_invocation > 1 && (a.persistent || a.persistent_groups.is_some())) {
+        anyhow::bail!("--rays-per-invocation {}: must be in 1..=64, and 1 with --persistent", a.rays_per_invocation);
+    }
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;
     }
@@ -117,12 +123,6 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.short_stack = a.short_stack;
     o.rays_per_invocation = a.rays_per_invocation;
     o.sort = a.sort;
-    if !(1..=64).contains(&a.rays_per_invocation) || (a.rays_per_invocation > 1 && (a.persistent || a.persistent_groups.is_some())) {
-        anyhow::bail!("--rays-per-invocation {}: must be in 1..=64, and 1 with --persistent", a.rays_per_invocation);
-    }
-    if a.short_stack && (a.alpha || a.bvh == bidir::bvh::BvhLayout::Cwbvh) {
-        anyhow::bail!("--short-stack: only with the binary layouts (--bvh bvh2 | bvh2q) and without --alpha");
-    }
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),
