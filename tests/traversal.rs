@@ -20,9 +20,10 @@ fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
 /// with a handful of workgroups (so every subgroup fetches many batches; more on llvmpipe,
 /// see `persistent_batch_cap`) and with the device's default count, and for the binary
 /// layout the plain (not speculative) while-while loop and the short stack (registers and
-/// shared memory) with three rays per invocation, for the wide one triangle postponing; the quantised binary layout runs the
-/// binary loop on decoded nodes, one invocation per ray. Alpha masks take those without the
-/// short stack (the integrators' stack).
+/// shared memory) with three rays per invocation and workgroups of 256 with two, for the
+/// wide one triangle postponing; the quantised binary layout runs the binary loop on decoded
+/// nodes, one invocation per ray. Alpha masks take those of the integrators' stack and
+/// workgroup size.
 fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
     let (tri_test, layout) = (opts.tri_test, opts.layout);
     let base = TraceOptions { layout, ..TraceOptions::new(tri_test) };
@@ -39,6 +40,8 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
             if tri_test == TriTest::Watertight && opts.pre_split {
                 let ss = TraceOptions { short_stack: true, rays_per_invocation: 3, ..base };
                 v.push(("short stack, 3 rays per invocation", ss));
+                let wg = TraceOptions { workgroup_size: 256, rays_per_invocation: 2, ..base };
+                v.push(("workgroups of 256, 2 rays per invocation", wg));
             }
         }
         // The binary loop on decoded nodes: its variants are the exact layout's.
@@ -434,7 +437,8 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
         let build = BuildOptions { tri_test, layout, ..Default::default() };
-        for (variant, mut opts) in variants(&build).into_iter().filter(|(_, o)| !o.short_stack) {
+        let alpha_ok = |o: &TraceOptions| !o.short_stack && o.workgroup_size == bidir::gpu::abi::TRACE_WG_SIZE;
+        for (variant, mut opts) in variants(&build).into_iter().filter(|(_, o)| alpha_ok(o)) {
             opts.alpha = Some(gscene.features);
             let tracer = Tracer::with_options(&ctx, &opts).unwrap();
             let closest = tracer.trace_with(&ctx, &gscene.binds(), &rays, false).unwrap();

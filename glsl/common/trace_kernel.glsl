@@ -6,7 +6,12 @@
 #ifndef BIDIR_TRACE_KERNEL_GLSL
 #define BIDIR_TRACE_KERNEL_GLSL
 
-layout(local_size_x = TRACE_WG_SIZE) in;
+// A kernel may pick another workgroup size (trace_wg*.comp: `bench traversal
+// --workgroup-size`) by defining TRACE_KERNEL_WG_SIZE first.
+#ifndef TRACE_KERNEL_WG_SIZE
+#define TRACE_KERNEL_WG_SIZE TRACE_WG_SIZE
+#endif
+layout(local_size_x = TRACE_KERNEL_WG_SIZE) in;
 layout(constant_id = SPEC_ANY_HIT) const uint ANY_HIT = 0u;
 layout(constant_id = SPEC_PERSISTENT) const uint PERSISTENT = 0u;
 layout(constant_id = SPEC_RAYS_PER_INVOCATION) const uint RAYS_PER_INVOCATION = 1u;
@@ -57,7 +62,7 @@ void main() {
         // RAYS_PER_INVOCATION rays, strided by the launch's invocations so that neighbouring
         // lanes keep tracing neighbouring (coherent) rays; the host launches
         // ceil(count / RAYS_PER_INVOCATION) invocations.
-        uint stride = gl_NumWorkGroups.x * TRACE_WG_SIZE;
+        uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
         for (uint k = 0u; k < RAYS_PER_INVOCATION; k++) {
             uint i = gl_GlobalInvocationID.x + k * stride;
             if (i < pc.count) {

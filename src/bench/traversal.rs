@@ -60,6 +60,8 @@ pub struct Options {
     /// Sort shadow and diffuse rays by direction octant and origin cell before tracing
     /// (`trace::RaySorter`); the sort is timed apart.
     pub sort: bool,
+    /// Invocations per workgroup of the trace kernel (see `TraceOptions::workgroup_size`).
+    pub workgroup_size: u32,
 }
 
 impl Default for Options {
@@ -77,6 +79,7 @@ impl Default for Options {
             short_stack: false,
             rays_per_invocation: 1,
             sort: false,
+            workgroup_size: crate::gpu::abi::TRACE_WG_SIZE,
         }
     }
 }
@@ -115,6 +118,7 @@ pub struct Report {
     pub short_stack: bool,
     pub rays_per_invocation: u32,
     pub sort: bool,
+    pub workgroup_size: u32,
     /// The driver's compile statistics of the timed closest- and any-hit kernels ("name
     /// value; ..."), where it reports them (VK_KHR_pipeline_executable_properties).
     pub kernel_stats: Vec<(String, String)>,
@@ -160,6 +164,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     trace_opts.postpone = opts.postpone;
     trace_opts.short_stack = opts.short_stack;
     trace_opts.rays_per_invocation = opts.rays_per_invocation;
+    trace_opts.workgroup_size = opts.workgroup_size;
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
     trace_opts.persistent = opts.persistent;
     let timing = Tracer::with_options(ctx, &trace_opts)?;
@@ -273,6 +278,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         short_stack: opts.short_stack,
         rays_per_invocation: opts.rays_per_invocation,
         sort: opts.sort,
+        workgroup_size: opts.workgroup_size,
         kernel_stats,
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.node_count(),
@@ -303,6 +309,7 @@ impl Report {
             ("short_stack", Json::Bool(self.short_stack)),
             ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
             ("sort", Json::Bool(self.sort)),
+            ("workgroup_size", Json::Int(self.workgroup_size as i64)),
             ("kernel_statistics", Json::obj(self.kernel_stats.iter().map(|(k, v)| (k.as_str(), Json::Str(v.clone()))).collect())),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
@@ -354,7 +361,8 @@ impl Report {
                 + if self.postpone { ", triangle postponing" } else { "" }
                 + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
                 + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
-                + if self.sort { ", secondary rays sorted (octant, origin cell)" } else { "" },
+                + if self.sort { ", secondary rays sorted (octant, origin cell)" } else { "" }
+                + &format!(", workgroups of {}", self.workgroup_size),
             self.width,
             self.height,
             self.layout.name(),

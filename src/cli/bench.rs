@@ -72,6 +72,10 @@ pub struct TraversalArgs {
     /// the GPU) before tracing; the sort's time is reported beside the trace's.
     #[arg(long)]
     pub sort: bool,
+    /// Invocations per workgroup of the trace kernel: 64 (default; every variant), or 32, 128,
+    /// 256 (bvh2 without --alpha, --short-stack or --persistent).
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub workgroup_size: u32,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -102,6 +106,16 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     if !(1..=64).contains(&a.rays_per_invocation) || (a.rays_per_invocation > 1 && (a.persistent || a.persistent_groups.is_some())) {
         anyhow::bail!("--rays-per-invocation {}: must be in 1..=64, and 1 with --persistent", a.rays_per_invocation);
     }
+    if a.workgroup_size != 64
+        && (![32, 128, 256].contains(&a.workgroup_size)
+            || a.bvh != bidir::bvh::BvhLayout::Bvh2
+            || a.alpha
+            || a.short_stack
+            || a.persistent
+            || a.persistent_groups.is_some())
+    {
+        anyhow::bail!("--workgroup-size {}: 64 with every variant; 32, 128 or 256 only with --bvh bvh2 and without --alpha, --short-stack, --persistent", a.workgroup_size);
+    }
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;
     }
@@ -123,6 +137,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.short_stack = a.short_stack;
     o.rays_per_invocation = a.rays_per_invocation;
     o.sort = a.sort;
+    o.workgroup_size = a.workgroup_size;
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),

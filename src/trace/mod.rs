@@ -49,6 +49,9 @@ pub struct TraceOptions {
     pub short_stack: bool,
     /// Rays each invocation traces (not persistent; 1 by default): SPEC_RAYS_PER_INVOCATION.
     pub rays_per_invocation: u32,
+    /// Invocations per workgroup: TRACE_WG_SIZE (default), or 32, 128, 256 for the plain
+    /// binary kernel (trace_wg*.comp: bvh2, geometry only, not persistent, local stack).
+    pub workgroup_size: u32,
 }
 
 impl TraceOptions {
@@ -63,6 +66,7 @@ impl TraceOptions {
             postpone: false,
             short_stack: false,
             rays_per_invocation: 1,
+            workgroup_size: abi::TRACE_WG_SIZE,
         }
     }
 }
@@ -147,7 +151,20 @@ impl Tracer {
             trace_specs.push(Spec { id: abi::SPEC_RAYS_PER_INVOCATION, value: opts.rays_per_invocation });
         }
         let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
+        let plain = opts.alpha.is_none() && opts.layout == BvhLayout::Bvh2 && !opts.short_stack && opts.persistent.is_none();
         let source = match (&opts.alpha, opts.layout) {
+            _ if opts.workgroup_size != abi::TRACE_WG_SIZE => match opts.workgroup_size {
+                32 if plain => &kernels::TRACE_WG32,
+                128 if plain => &kernels::TRACE_WG128,
+                256 if plain => &kernels::TRACE_WG256,
+                size => {
+                    let msg = format!(
+                        "workgroups of {size}: {} (default) for every kernel; 32, 128 or 256 for bvh2 without alpha masks, short stack or persistent threads",
+                        abi::TRACE_WG_SIZE
+                    );
+                    return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
+                }
+            },
             _ if opts.short_stack => match (&opts.alpha, opts.layout) {
                 (None, BvhLayout::Bvh2) => &kernels::TRACE_SHORT_STACK,
                 (None, BvhLayout::Bvh2q) => &kernels::TRACE_SHORT_STACK_BVH2Q,
