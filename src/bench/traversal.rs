@@ -144,6 +144,20 @@ pub enum BenchError {
     NoRays(&'static str),
 }
 
+/// Warps of a kernel an NVIDIA Hopper SM (H100, H200) keeps resident, in whole workgroups of
+/// `wg` invocations: `registers` per invocation from a register file of 65,536 allocated per
+/// warp in units of 256, `shared` bytes per workgroup from 228 KiB (plus 1 KiB the driver
+/// reserves per workgroup), at most `max_warps` (64). An estimate from the CUDA occupancy
+/// rules (the driver's own limits may differ), for reading `bench traversal`'s statistics.
+pub fn hopper_resident_warps(registers: u64, shared: u64, wg: u64, max_warps: u64) -> u64 {
+    let warps_per_group = wg.div_ceil(32).max(1);
+    let per_warp = (registers * 32).div_ceil(256) * 256;
+    let by_registers = if per_warp == 0 { u64::MAX } else { 65_536 / per_warp / warps_per_group };
+    let by_shared = if shared == 0 { u64::MAX } else { (228 * 1024) / (shared + 1024) };
+    let by_warps = max_warps / warps_per_group;
+    by_registers.min(by_shared).min(by_warps) * warps_per_group
+}
+
 /// Runs the benchmark on a scene seen through `camera` (only its triangles, unless
 /// `opts.alpha`).
 pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> Result<Report, BenchError> {
@@ -171,7 +185,15 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let counting = Tracer::with_options(ctx, &TraceOptions { stats: true, ..trace_opts })?;
     let mut kernel_stats = Vec::new();
     for k in timing.trace_kernels() {
-        let line: Vec<String> = k.statistics()?.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
+        let stats = k.statistics()?;
+        let mut line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
+        let number = |pred: &dyn Fn(&str) -> bool| stats.iter().find(|s| pred(&s.name)).and_then(|s| s.value.trim().parse::<u64>().ok());
+        let warps_per_sm = ctx.info().warps_per_sm;
+        if let (Some(registers), true) = (number(&|n| n == "Register Count"), warps_per_sm > 0) {
+            let shared = number(&|n| n.contains("Shared Memory")).unwrap_or(0);
+            let resident = hopper_resident_warps(registers, shared, k.local_size()[0] as u64, warps_per_sm as u64);
+            line.push(format!("resident warps per SM (Hopper estimate) {resident} of {warps_per_sm}"));
+        }
         if !line.is_empty() {
             kernel_stats.push((k.name().to_string(), line.join("; ")));
         }
@@ -394,5 +416,21 @@ impl Report {
         for (kernel, stats) in &self.kernel_stats {
             println!("{kernel}: {stats}");
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::hopper_resident_warps;
+
+    #[test]
+    fn hopper_occupancy_follows_the_cuda_rules() {
+        // docs/results.md: 72 registers leave 28 of 64 warps, 96 registers 21 (here in whole
+        // workgroups of two warps: 20).
+        assert_eq!(hopper_resident_warps(72, 0, 64, 64), 28);
+        assert_eq!(hopper_resident_warps(96, 0, 64, 64), 20);
+        assert_eq!(hopper_resident_warps(32, 0, 64, 64), 64);
+        // The short stack's 15 KiB per 64 invocations: 14 workgroups of 16 KiB fit 228 KiB.
+        assert_eq!(hopper_resident_warps(32, 15 * 1024, 64, 64), 28);
     }
 }
