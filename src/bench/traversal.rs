@@ -152,7 +152,7 @@ pub enum BenchError {
 pub fn hopper_resident_warps(registers: u64, shared: u64, wg: u64, max_warps: u64) -> u64 {
     let warps_per_group = wg.div_ceil(32).max(1);
     let per_warp = (registers * 32).div_ceil(256) * 256;
-    let by_registers = if per_warp == 0 { u64::MAX } else { 65_536 / per_warp / warps_per_group };
+    let by_registers = 65_536u64.checked_div(per_warp).map_or(u64::MAX, |warps| warps / warps_per_group);
     let by_shared = if shared == 0 { u64::MAX } else { (228 * 1024) / (shared + 1024) };
     let by_warps = max_warps / warps_per_group;
     by_registers.min(by_shared).min(by_warps) * warps_per_group
