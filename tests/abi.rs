@@ -42,3 +42,26 @@ fn generated_header_carries_every_constant() {
     assert!(h.contains(&format!("#define SCAN_WG_SIZE {}u", abi::SCAN_WG_SIZE)));
     assert!(h.contains("struct ImageAffinePush {"));
 }
+
+/// The integrator kernels share one binding space and one specialisation-constant space:
+/// two `BIND_*` (or two `SPEC_*`) constants with the same number would bind one resource in
+/// the place of another. (Bindings of standalone kernels carry their own prefix, such as
+/// `REDUCE_BIND_*`.)
+#[test]
+fn binding_and_spec_ids_are_unique() {
+    let glsl = abi::consts_glsl();
+    for prefix in ["BIND_", "SPEC_"] {
+        let mut seen = std::collections::BTreeMap::new();
+        for line in glsl.lines() {
+            let mut parts = line.split_whitespace().skip(1);
+            let (Some(name), Some(value)) = (parts.next(), parts.next()) else { continue };
+            if !name.starts_with(prefix) {
+                continue;
+            }
+            if let Some(other) = seen.insert(value.to_string(), name.to_string()) {
+                panic!("{name} and {other} are both {value}");
+            }
+        }
+        assert!(seen.len() > 5, "{prefix}: too few constants found: {seen:?}");
+    }
+}

@@ -177,6 +177,11 @@ fn numbers_out_of_range_are_rejected_with_the_flag() {
     fails(&["render", "--time", "-1"], &["--time -1: must be a positive number of seconds"]);
     fails(&["bench", "traversal", "--leaf-size", "99"], &["--leaf-size 99: must be in 1..=16"]);
     fails(&["bench", "traversal", "--bvh", "cwbvh", "--leaf-size", "4"], &["--leaf-size 4: must be in 1..=3"]);
+    fails(&["bench", "traversal", "--bvh", "cwbvh", "--short-stack"], &["--short-stack: only with the binary layouts"]);
+    fails(&["bench", "traversal", "--rays-per-invocation", "0"], &["--rays-per-invocation 0: must be in 1..=64"]);
+    fails(&["bench", "traversal", "--workgroup-size", "96"], &["--workgroup-size 96"]);
+    fails(&["bench", "traversal", "--workgroup-size", "128", "--bvh", "bvh2q"], &["--workgroup-size 128", "only with --bvh bvh2"]);
+    fails(&["bench", "traversal", "--rays-per-invocation", "2", "--persistent"], &["--rays-per-invocation 2", "1 with --persistent"]);
     fails(
         &["info", "--builtin", "--width", "100000", "--height", "100000"],
         &["100000x100000", "limit of 134,217,728 pixels", "--width/--height"],

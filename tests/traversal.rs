@@ -3,10 +3,11 @@
 
 mod common;
 
-use bidir::bvh::{BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
+use bidir::bvh::{intersect::TriHit, BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
 use bidir::gpu_data::GpuBvh;
-use bidir::trace::{TraceOptions, Tracer};
+use bidir::trace::sort::{sort_key, sort_push};
+use bidir::trace::{RaySorter, TraceOptions, Tracer};
 use bidir::vk::Context;
 use common::{finish, geometry, gpu, Pcg};
 use glam::Vec3;
@@ -18,8 +19,13 @@ fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
 /// The trace kernels every scene is checked with: one invocation per ray, persistent threads
 /// with a handful of workgroups (so every subgroup fetches many batches; more on llvmpipe,
 /// see `persistent_batch_cap`) and with the device's default count, and for the binary
-/// layout the plain (not speculative) while-while loop, for the wide one triangle postponing.
-fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOptions)> {
+/// layout the plain (not speculative) while-while loop and the short stack (registers and
+/// shared memory) with three rays per invocation and workgroups of 256 with two, for the
+/// wide one triangle postponing; the quantised binary layout runs the binary loop on decoded
+/// nodes, one invocation per ray. Alpha masks take those of the integrators' stack and
+/// workgroup size.
+fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
+    let (tri_test, layout) = (opts.tri_test, opts.layout);
     let base = TraceOptions { layout, ..TraceOptions::new(tri_test) };
     let mut v = vec![
         ("per-ray", base),
@@ -27,7 +33,19 @@ fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOpt
         ("persistent default", TraceOptions { persistent: Some(0), ..base }),
     ];
     match layout {
-        BvhLayout::Bvh2 => v.push(("not speculative", TraceOptions { speculative: false, ..base })),
+        BvhLayout::Bvh2 => {
+            v.push(("not speculative", TraceOptions { speculative: false, ..base }));
+            // The stack is independent of the triangle test and of pre-splits (which make the
+            // deeper trees): one build per scene is enough.
+            if tri_test == TriTest::Watertight && opts.pre_split {
+                let ss = TraceOptions { short_stack: true, rays_per_invocation: 3, ..base };
+                v.push(("short stack, 3 rays per invocation", ss));
+                let wg = TraceOptions { workgroup_size: 256, rays_per_invocation: 2, ..base };
+                v.push(("workgroups of 256, 2 rays per invocation", wg));
+            }
+        }
+        // The binary loop on decoded nodes: its variants are the exact layout's.
+        BvhLayout::Bvh2q => v.truncate(1),
         BvhLayout::Cwbvh => {
             v.push(("postponing", TraceOptions { postpone: true, ..base }));
             v.push(("postponing, persistent 3 groups", TraceOptions { postpone: true, persistent: Some(3), ..base }));
@@ -36,24 +54,47 @@ fn variants(tri_test: TriTest, layout: BvhLayout) -> Vec<(&'static str, TraceOpt
     v
 }
 
-/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for both node
-/// layouts and every trace variant; returns (hits, misses) of the closest-hit pass.
+/// The CPU's closest hit (original triangle, hit) and any-hit verdict for every ray.
+type Reference = (Vec<Option<(u32, TriHit)>>, Vec<bool>);
+
+/// Compares GPU closest hits and any-hit verdicts with the CPU for every ray, for every node
+/// layout and trace variant; returns (hits, misses) of the closest-hit pass. The quantised
+/// binary layout (same tree as the exact one, same kernel loop: only the node fetch differs)
+/// is checked once per scene (watertight test, pre-splits: the deeper tree), against the
+/// binary layout's reference (the CPU time and the variants of the loop are not spent twice).
 fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
-    let a = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2, ..opts });
-    let b = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Cwbvh, ..opts });
-    assert_eq!(a, b, "{name}: the two layouts' CPU references disagree on hits");
+    let (a, reference) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2, ..opts }, None);
+    let (b, _) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Cwbvh, ..opts }, None);
+    assert_eq!(a, b, "{name}: the binary and wide layouts' CPU references disagree on hits");
+    if opts.tri_test == TriTest::Watertight && opts.pre_split {
+        check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2q, ..opts }, Some(reference));
+    }
     a
 }
 
-fn check_layout(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
+/// As `check_scene` for one layout, against `reference` if given (else the CPU traverses this
+/// build's tree); returns (hits, misses) and the reference.
+fn check_layout(
+    ctx: &Context,
+    name: &str,
+    positions: &[Vec3],
+    tris: &[[u32; 3]],
+    rays: &[GpuRay],
+    opts: BuildOptions,
+    reference: Option<Reference>,
+) -> ((usize, usize), Reference) {
     let bvh = Bvh::build(positions, tris, &opts).unwrap();
-    let cpu = CpuTracer::new(&bvh, positions, tris);
     let scale = positions.iter().fold(0f32, |m, p| m.max(p.abs().max_element()));
-    let want: Vec<_> = rays.iter().map(|r| cpu.closest(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
-    let want_any: Vec<bool> = rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect();
+    let (want, want_any) = reference.unwrap_or_else(|| {
+        let cpu = CpuTracer::new(&bvh, positions, tris);
+        (
+            rays.iter().map(|r| cpu.closest(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect(),
+            rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect(),
+        )
+    });
     let gbvh = GpuBvh::upload(ctx, &bvh).unwrap();
     let (mut hits, mut misses) = (0, 0);
-    for (variant, trace_opts) in variants(opts.tri_test, opts.layout) {
+    for (variant, trace_opts) in variants(&opts) {
         let tracer = Tracer::with_options(ctx, &trace_opts).unwrap();
         let closest: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, false).unwrap();
         let any: Vec<GpuHit> = tracer.trace(ctx, &gbvh, rays, true).unwrap();
@@ -111,7 +152,7 @@ fn check_layout(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]]
         );
     }
     drop(gbvh);
-    (hits, misses)
+    ((hits, misses), (want, want_any))
 }
 
 /// Rays of three kinds: from outside toward the scene, random directions from inside, and
@@ -187,25 +228,37 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     let (p, t) = geometry::icosphere(5, Vec3::ZERO, 1.0);
     let rays = edge_rays(&mut rng, &p, &t, 1_000_000);
     let mut leaks = Vec::new();
-    for (test, layout) in
-        [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)]
-    {
+    for (test, layout) in [
+        (TriTest::Watertight, BvhLayout::Bvh2),
+        (TriTest::Woop, BvhLayout::Bvh2),
+        (TriTest::Watertight, BvhLayout::Cwbvh),
+        (TriTest::Watertight, BvhLayout::Bvh2q),
+    ] {
         let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, layout, ..Default::default() }).unwrap();
         let g = GpuBvh::upload(&ctx, &bvh).unwrap();
         let tracer = Tracer::with_options(&ctx, &TraceOptions { layout, ..TraceOptions::new(test) }).unwrap();
-        let hits = tracer.trace(&ctx, &g, &rays, false).unwrap();
+        // The quantised layout changes boxes only (vertex rays aim at box corners): a tenth of
+        // the rays suffices.
+        let rays = if layout == BvhLayout::Bvh2q { &rays[..rays.len() / 10] } else { &rays[..] };
+        let hits = tracer.trace(&ctx, &g, rays, false).unwrap();
         let missed = hits.iter().filter(|h| h.tri == NO_HIT).count();
+        // Every fourth ray aims at a vertex (see edge_rays), the others at edge points.
+        let at_vertices = hits.iter().step_by(4).filter(|h| h.tri == NO_HIT).count();
         eprintln!(
-            "{} [{}]: {missed} of {} edge/vertex rays leaked ({:.4} %)",
+            "{} [{}]: {missed} of {} edge/vertex rays leaked ({:.4} %; {at_vertices} of {} vertex rays, {} of {} edge rays)",
             test.name(),
             layout.name(),
             rays.len(),
-            100.0 * missed as f64 / rays.len() as f64
+            100.0 * missed as f64 / rays.len() as f64,
+            rays.len().div_ceil(4),
+            missed - at_vertices,
+            rays.len() - rays.len().div_ceil(4)
         );
         leaks.push(missed);
     }
     assert_eq!(leaks[0], 0, "watertight test leaked rays through shared edges");
     assert_eq!(leaks[2], 0, "watertight test leaked rays through shared edges (compressed wide BVH)");
+    assert_eq!(leaks[3], 0, "watertight test leaked rays through shared edges (quantised binary BVH)");
     finish(ctx);
 }
 
@@ -374,13 +427,18 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         rays.push(ray(o, d, if stop { (target - o).length() } else { 3.0e38 }));
     }
     let ctx = gpu();
-    for (tri_test, layout) in
-        [(TriTest::Watertight, BvhLayout::Bvh2), (TriTest::Woop, BvhLayout::Bvh2), (TriTest::Watertight, BvhLayout::Cwbvh)]
-    {
+    for (tri_test, layout) in [
+        (TriTest::Watertight, BvhLayout::Bvh2),
+        (TriTest::Woop, BvhLayout::Bvh2),
+        (TriTest::Watertight, BvhLayout::Cwbvh),
+        (TriTest::Watertight, BvhLayout::Bvh2q),
+    ] {
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, layout, ..Default::default() }).unwrap();
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
-        for (variant, mut opts) in variants(tri_test, layout) {
+        let build = BuildOptions { tri_test, layout, ..Default::default() };
+        let alpha_ok = |o: &TraceOptions| !o.short_stack && o.workgroup_size == bidir::gpu::abi::TRACE_WG_SIZE;
+        for (variant, mut opts) in variants(&build).into_iter().filter(|(_, o)| alpha_ok(o)) {
             opts.alpha = Some(gscene.features);
             let tracer = Tracer::with_options(&ctx, &opts).unwrap();
             let closest = tracer.trace_with(&ctx, &gscene.binds(), &rays, false).unwrap();
@@ -451,5 +509,46 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         }
         drop(gscene);
     }
+    finish(ctx);
+}
+
+/// Ray reordering (`bench traversal --sort`): the GPU's counting sort returns a permutation of
+/// the rays in the order of the key the CPU computes with the same operations (direction
+/// octant, then origin cell's Morton code), and tracing the sorted rays gives every ray
+/// exactly the hit (and any-hit verdict) it gets unsorted.
+#[test]
+fn sorted_rays_are_a_permutation_in_key_order_with_the_same_hits() {
+    let ctx = gpu();
+    let scene = bidir::scene::Scene::builtin_cornell_box();
+    let mut rng = Pcg::new(16);
+    let (lo, hi) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(556.0, 548.8, 559.2));
+    let rays = mixed_rays(&mut rng, lo, hi, 30_000);
+    let sorter = RaySorter::new(&ctx, rays.len() as u32).unwrap();
+    let (sorted, order) = sorter.sort(&ctx, &rays, lo, hi).unwrap();
+    let push = sort_push(lo, hi, rays.len() as u32);
+    let mut seen = vec![false; rays.len()];
+    let (mut prev, mut distinct) = (0, 0);
+    for (j, (&i, r)) in order.iter().zip(&sorted).enumerate() {
+        assert!(!std::mem::replace(&mut seen[i as usize], true), "ray {i} placed twice");
+        assert!(r.origin == rays[i as usize].origin && r.dir == rays[i as usize].dir, "slot {j} holds a different ray than {i}");
+        let key = sort_key(&push, r.origin.truncate(), r.dir.truncate());
+        assert!(key >= prev, "slot {j}: key {key} after {prev}");
+        distinct += (j == 0 || key != prev) as usize;
+        prev = key;
+    }
+    assert!(distinct > 500, "the rays must spread over many keys ({distinct})");
+    let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions::default()).unwrap();
+    let gbvh = GpuBvh::upload(&ctx, &bvh).unwrap();
+    let tracer = Tracer::new(&ctx, TriTest::Watertight, false).unwrap();
+    for any_hit in [false, true] {
+        let unsorted = tracer.trace(&ctx, &gbvh, &rays, any_hit).unwrap();
+        let hits = tracer.trace(&ctx, &gbvh, &sorted, any_hit).unwrap();
+        for (j, &i) in order.iter().enumerate() {
+            let (a, b) = (unsorted[i as usize], hits[j]);
+            assert!(a.tri == b.tri && a.t.to_bits() == b.t.to_bits(), "ray {i} (any hit: {any_hit}): {a:?} unsorted, {b:?} sorted");
+        }
+    }
+    drop((gbvh, tracer, sorter));
+    eprintln!("sort: {} rays over {distinct} keys, hits identical", rays.len());
     finish(ctx);
 }

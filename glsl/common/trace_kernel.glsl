@@ -6,9 +6,15 @@
 #ifndef BIDIR_TRACE_KERNEL_GLSL
 #define BIDIR_TRACE_KERNEL_GLSL
 
-layout(local_size_x = TRACE_WG_SIZE) in;
+// A kernel may pick another workgroup size (trace_wg*.comp: `bench traversal
+// --workgroup-size`) by defining TRACE_KERNEL_WG_SIZE first.
+#ifndef TRACE_KERNEL_WG_SIZE
+#define TRACE_KERNEL_WG_SIZE TRACE_WG_SIZE
+#endif
+layout(local_size_x = TRACE_KERNEL_WG_SIZE) in;
 layout(constant_id = SPEC_ANY_HIT) const uint ANY_HIT = 0u;
 layout(constant_id = SPEC_PERSISTENT) const uint PERSISTENT = 0u;
+layout(constant_id = SPEC_RAYS_PER_INVOCATION) const uint RAYS_PER_INVOCATION = 1u;
 layout(std430, binding = BIND_RAYS) readonly buffer Rays { GpuRay rays[]; };
 layout(std430, binding = BIND_HITS) writeonly buffer Hits { GpuHit hits[]; };
 layout(std430, binding = BIND_STATS) buffer Stats { uint stat_nodes; uint stat_tris; };
@@ -53,9 +59,15 @@ void main() {
             }
         }
     } else {
-        uint i = gl_GlobalInvocationID.x;
-        if (i < pc.count) {
-            trace_one(i, stats);
+        // RAYS_PER_INVOCATION rays, strided by the launch's invocations so that neighbouring
+        // lanes keep tracing neighbouring (coherent) rays; the host launches
+        // ceil(count / RAYS_PER_INVOCATION) invocations.
+        uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+        for (uint k = 0u; k < RAYS_PER_INVOCATION; k++) {
+            uint i = gl_GlobalInvocationID.x + k * stride;
+            if (i < pc.count) {
+                trace_one(i, stats);
+            }
         }
     }
     if (TRAVERSAL_STATS != 0u) {

@@ -6,7 +6,10 @@
 //
 // Needs GL_KHR_shader_subgroup_vote and the ABI header. Declares the node and triangle
 // buffers at BIND_NODES / BIND_TRIS. With TRAVERSE_CWBVH defined before inclusion, the nodes
-// are compressed 8-wide ones and trace_ray is the one of traverse_cwbvh.glsl.
+// are compressed 8-wide ones and trace_ray is the one of traverse_cwbvh.glsl; with
+// TRAVERSE_BVH2Q, they are quantised binary ones, decoded by traverse_bvh2q.glsl's fetch_node.
+// With TRAVERSE_SHORT_STACK (trace kernels only: it declares workgroup shared memory), the
+// binary traversal's stack is traverse_short_stack.glsl's.
 #ifndef BIDIR_TRAVERSE_GLSL
 #define BIDIR_TRAVERSE_GLSL
 
@@ -57,8 +60,28 @@ bool test_leaf_triangle(PreparedRay pr, uint i, inout TraceHit hit, inout uvec2 
 #include "traverse_cwbvh.glsl"
 #else
 
+#ifdef TRAVERSE_BVH2Q
+#include "traverse_bvh2q.glsl"
+#else
 layout(std430, binding = BIND_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
+BvhNode fetch_node(int node) {
+    return bvh_nodes[node];
+}
+#endif
 layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
+
+#ifdef TRAVERSE_SHORT_STACK
+#include "traverse_short_stack.glsl"
+#else
+// The traversal stack: TRAVERSAL_STACK_SIZE entries per ray in local memory, the sentinel at
+// the bottom.
+#define TRAVERSAL_STACK_INIT()                                                                     \
+    int stack[TRAVERSAL_STACK_SIZE];                                                               \
+    int sp = 0;                                                                                    \
+    stack[0] = int(TRAVERSAL_SENTINEL)
+#define TRAVERSAL_STACK_PUSH(x) stack[++sp] = (x)
+#define TRAVERSAL_STACK_POP() stack[sp--]
+#endif
 
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
@@ -72,16 +95,14 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     vec3 ood = o * idir;
 
     TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
-    int stack[TRAVERSAL_STACK_SIZE];
-    int sp = 0;
-    stack[0] = int(TRAVERSAL_SENTINEL);
+    TRAVERSAL_STACK_INIT();
     int node = 0;   // root
     int leaf = 0;   // postponed leaf (< 0), none if >= 0
 
     while (node != int(TRAVERSAL_SENTINEL)) {
         // Inner nodes: descend until this lane holds a leaf and every active lane does.
         while (uint(node) < TRAVERSAL_SENTINEL) {
-            BvhNode n = bvh_nodes[node];
+            BvhNode n = fetch_node(node);
             if (TRAVERSAL_STATS != 0u) {
                 stats.x++;
             }
@@ -95,7 +116,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             bool hit0 = c0min <= c0max * BOX_EXIT_SCALE;
             bool hit1 = c1min <= c1max * BOX_EXIT_SCALE;
             if (!hit0 && !hit1) {
-                node = stack[sp--];
+                node = TRAVERSAL_STACK_POP();
             } else {
                 node = hit0 ? n.children.x : n.children.y;
                 if (hit0 && hit1) {
@@ -104,13 +125,13 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                         far_child = n.children.x;
                         node = n.children.y;
                     }
-                    stack[++sp] = far_child;
+                    TRAVERSAL_STACK_PUSH(far_child);
                 }
             }
             // Postpone a leaf and keep descending (speculative traversal).
             if (node < 0 && leaf >= 0) {
                 leaf = node;
-                node = stack[sp--];
+                node = TRAVERSAL_STACK_POP();
             }
             if (SPECULATIVE != 0u ? subgroupAll(leaf < 0) : leaf < 0) {
                 break;
@@ -127,7 +148,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             }
             leaf = node;
             if (node < 0) {
-                node = stack[sp--];
+                node = TRAVERSAL_STACK_POP();
             }
         }
     }

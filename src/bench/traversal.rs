@@ -10,7 +10,7 @@ use crate::gpu::abi::GpuCamera;
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::render::GpuScene;
 use crate::scene::Scene;
-use crate::trace::{Secondary, TraceOptions, Tracer};
+use crate::trace::{RaySorter, Secondary, TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Memory, VkError};
 use glam::Vec3;
 use std::time::Instant;
@@ -53,6 +53,15 @@ pub struct Options {
     pub speculative: bool,
     /// Compressed wide layout: triangle postponing.
     pub postpone: bool,
+    /// Binary layouts: the stack's top in registers, the rest in shared memory.
+    pub short_stack: bool,
+    /// Rays each invocation traces (one-invocation-per-ray kernels; default 1).
+    pub rays_per_invocation: u32,
+    /// Sort shadow and diffuse rays by direction octant and origin cell before tracing
+    /// (`trace::RaySorter`); the sort is timed apart.
+    pub sort: bool,
+    /// Invocations per workgroup of the trace kernel (see `TraceOptions::workgroup_size`).
+    pub workgroup_size: u32,
 }
 
 impl Default for Options {
@@ -67,6 +76,10 @@ impl Default for Options {
             persistent: None,
             speculative: true,
             postpone: false,
+            short_stack: false,
+            rays_per_invocation: 1,
+            sort: false,
+            workgroup_size: crate::gpu::abi::TRACE_WG_SIZE,
         }
     }
 }
@@ -78,8 +91,12 @@ pub struct KindResult {
     pub rays: u32,
     pub times_ms: Vec<f64>,
     pub median_ms: f64,
+    /// Median time of the ray sort before the trace (secondary rays with `Options::sort`).
+    pub sort_median_ms: Option<f64>,
     pub mrays_per_s: f64,
     pub nodes_per_ray: f64,
+    /// Bytes of node data fetched per ray (nodes visited × the layout's node size).
+    pub node_bytes_per_ray: f64,
     pub tris_per_ray: f64,
     pub hit_fraction: f64,
 }
@@ -98,6 +115,13 @@ pub struct Report {
     pub persistent_groups: Option<u32>,
     pub speculative: bool,
     pub postpone: bool,
+    pub short_stack: bool,
+    pub rays_per_invocation: u32,
+    pub sort: bool,
+    pub workgroup_size: u32,
+    /// The driver's compile statistics of the timed closest- and any-hit kernels ("name
+    /// value; ..."), where it reports them (VK_KHR_pipeline_executable_properties).
+    pub kernel_stats: Vec<(String, String)>,
     pub bvh_build_ms: f64,
     pub bvh_nodes: usize,
     pub bvh_leaves: usize,
@@ -120,6 +144,20 @@ pub enum BenchError {
     NoRays(&'static str),
 }
 
+/// Warps of a kernel an NVIDIA Hopper SM (H100, H200) keeps resident, in whole workgroups of
+/// `wg` invocations: `registers` per invocation from a register file of 65,536 allocated per
+/// warp in units of 256, `shared` bytes per workgroup from 228 KiB (plus 1 KiB the driver
+/// reserves per workgroup), at most `max_warps` (64). An estimate from the CUDA occupancy
+/// rules (the driver's own limits may differ), for reading `bench traversal`'s statistics.
+pub fn hopper_resident_warps(registers: u64, shared: u64, wg: u64, max_warps: u64) -> u64 {
+    let warps_per_group = wg.div_ceil(32).max(1);
+    let per_warp = (registers * 32).div_ceil(256) * 256;
+    let by_registers = 65_536u64.checked_div(per_warp).map_or(u64::MAX, |warps| warps / warps_per_group);
+    let by_shared = if shared == 0 { u64::MAX } else { (228 * 1024) / (shared + 1024) };
+    let by_warps = max_warps / warps_per_group;
+    by_registers.min(by_shared).min(by_warps) * warps_per_group
+}
+
 /// Runs the benchmark on a scene seen through `camera` (only its triangles, unless
 /// `opts.alpha`).
 pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> Result<Report, BenchError> {
@@ -138,10 +176,28 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     trace_opts.layout = opts.build.layout;
     trace_opts.speculative = opts.speculative;
     trace_opts.postpone = opts.postpone;
+    trace_opts.short_stack = opts.short_stack;
+    trace_opts.rays_per_invocation = opts.rays_per_invocation;
+    trace_opts.workgroup_size = opts.workgroup_size;
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
     trace_opts.persistent = opts.persistent;
     let timing = Tracer::with_options(ctx, &trace_opts)?;
     let counting = Tracer::with_options(ctx, &TraceOptions { stats: true, ..trace_opts })?;
+    let mut kernel_stats = Vec::new();
+    for k in timing.trace_kernels() {
+        let stats = k.statistics()?;
+        let mut line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
+        let number = |pred: &dyn Fn(&str) -> bool| stats.iter().find(|s| pred(&s.name)).and_then(|s| s.value.trim().parse::<u64>().ok());
+        let warps_per_sm = ctx.info().warps_per_sm;
+        if let (Some(registers), true) = (number(&|n| n == "Register Count"), warps_per_sm > 0) {
+            let shared = number(&|n| n.contains("Shared Memory")).unwrap_or(0);
+            let resident = hopper_resident_warps(registers, shared, k.local_size()[0] as u64, warps_per_sm as u64);
+            line.push(format!("resident warps per SM (Hopper estimate) {resident} of {warps_per_sm}"));
+        }
+        if !line.is_empty() {
+            kernel_stats.push((k.name().to_string(), line.join("; ")));
+        }
+    }
 
     let (lo, hi) = positions.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
     let light = opts.light.unwrap_or(Vec3::new((lo.x + hi.x) * 0.5, hi.y + (hi.y - lo.y), (lo.z + hi.z) * 0.5));
@@ -156,7 +212,10 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let flags = ctx.create_buffer("bench.flags", (n as u64 + 1) * 4, Memory::Device)?;
     let hits = ctx.create_buffer("bench.hits", n as u64 * 16, Memory::Device)?;
     let stats = ctx.create_buffer("bench.stats", 8, Memory::Device)?;
-    let timer = ctx.create_timer("bench.timer", 2)?;
+    let timer = ctx.create_timer("bench.timer", 3)?;
+    let sorter = if opts.sort { Some(RaySorter::new(ctx, n)?) } else { None };
+    let sorted = ctx.create_buffer("bench.sorted_rays", if opts.sort { ray_bytes } else { 32 }, Memory::Device)?;
+    let order = ctx.create_buffer("bench.sort_order", if opts.sort { n as u64 * 4 } else { 4 }, Memory::Device)?;
 
     // Primary rays and their hits (the origin of the secondary rays).
     ctx.submit("bench primary", |rec| {
@@ -183,17 +242,25 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         if count == 0 {
             return Err(BenchError::NoRays(kind.name()));
         }
-        let mut times = Vec::new();
+        // Secondary rays sorted first (timed apart) where asked.
+        let sort = sorter.as_ref().filter(|_| kind != RayKind::Primary);
+        let rays = if sort.is_some() { &sorted } else { rays };
+        let (mut times, mut sort_times) = (Vec::new(), Vec::new());
         for rep in 0..opts.warmup + opts.repetitions {
             ctx.submit("bench trace", |rec| {
                 rec.reset_timer(&timer);
                 rec.timestamp(&timer, 0);
-                timing.record_trace(rec, &geometry, rays, &hits, &stats, count, any_hit)?;
+                if let Some(sorter) = sort {
+                    sorter.record(rec, &secondary, &sorted, &order, count, lo, hi)?;
+                }
                 rec.timestamp(&timer, 1);
+                timing.record_trace(rec, &geometry, rays, &hits, &stats, count, any_hit)?;
+                rec.timestamp(&timer, 2);
                 Ok(())
             })?;
             if rep >= opts.warmup {
-                times.push(timer.elapsed_ns(0, 1)? * 1e-6);
+                sort_times.push(timer.elapsed_ns(0, 1)? * 1e-6);
+                times.push(timer.elapsed_ns(1, 2)? * 1e-6);
             }
         }
         // One more pass with counters for node/triangle tests per ray.
@@ -211,9 +278,11 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
             kind,
             rays: real,
             median_ms: med,
+            sort_median_ms: sort.map(|_| median(&sort_times)),
             mrays_per_s: real as f64 / (med * 1e-3) / 1e6,
             times_ms: times,
             nodes_per_ray: s[0] as f64 / real as f64,
+            node_bytes_per_ray: s[0] as f64 * opts.build.layout.node_size() as f64 / real as f64,
             tris_per_ray: s[1] as f64 / real as f64,
             hit_fraction: hit_count as f64 / real as f64,
         });
@@ -226,8 +295,13 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         alpha: opts.alpha,
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
         persistent_groups: timing.persistent_groups(),
-        speculative: opts.speculative && opts.build.layout == BvhLayout::Bvh2,
+        speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
+        short_stack: opts.short_stack,
+        rays_per_invocation: opts.rays_per_invocation,
+        sort: opts.sort,
+        workgroup_size: opts.workgroup_size,
+        kernel_stats,
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.node_count(),
         bvh_leaves: bvh.leaves,
@@ -254,6 +328,11 @@ impl Report {
             ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
             ("speculative", Json::Bool(self.speculative)),
             ("postpone", Json::Bool(self.postpone)),
+            ("short_stack", Json::Bool(self.short_stack)),
+            ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
+            ("sort", Json::Bool(self.sort)),
+            ("workgroup_size", Json::Int(self.workgroup_size as i64)),
+            ("kernel_statistics", Json::obj(self.kernel_stats.iter().map(|(k, v)| (k.as_str(), Json::Str(v.clone()))).collect())),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
             ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
@@ -277,8 +356,10 @@ impl Report {
                                 ("rays", Json::Str(r.kind.name().into())),
                                 ("count", Json::Int(r.rays as i64)),
                                 ("median_ms", Json::Num(r.median_ms)),
+                                ("sort_median_ms", Json::Num(r.sort_median_ms.unwrap_or(f64::NAN))),
                                 ("mrays_per_s", Json::Num(r.mrays_per_s)),
                                 ("nodes_per_ray", Json::Num(r.nodes_per_ray)),
+                                ("node_bytes_per_ray", Json::Num(r.node_bytes_per_ray)),
                                 ("tris_per_ray", Json::Num(r.tris_per_ray)),
                                 ("hit_fraction", Json::Num(r.hit_fraction)),
                                 ("times_ms", Json::Arr(r.times_ms.iter().map(|&t| Json::Num(t)).collect())),
@@ -292,38 +373,64 @@ impl Report {
 
     pub fn print(&self) {
         println!(
-            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build, {} nodes, {} leaves, depth {}, {:.1} MiB",
+            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build, {} nodes of {} B, {} leaves, depth {}, {:.1} MiB",
             self.device,
             self.triangles,
             self.tri_test.name(),
             if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
                 + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
-                + if self.layout == BvhLayout::Bvh2 && !self.speculative { ", not speculative" } else { "" }
-                + if self.postpone { ", triangle postponing" } else { "" },
+                + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
+                + if self.postpone { ", triangle postponing" } else { "" }
+                + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
+                + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
+                + if self.sort { ", secondary rays sorted (octant, origin cell)" } else { "" }
+                + &format!(", workgroups of {}", self.workgroup_size),
             self.width,
             self.height,
             self.layout.name(),
             self.bvh_build_ms,
             self.bvh_nodes,
+            self.layout.node_size(),
             self.bvh_leaves,
             self.bvh_depth,
             self.bvh_bytes as f64 / (1 << 20) as f64
         );
         println!(
-            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>10} {:>6}",
-            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "tris/ray", "hit %"
+            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>12} {:>10} {:>6} {:>8}",
+            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "node B/ray", "tris/ray", "hit %", "sort ms"
         );
         for r in &self.results {
             println!(
-                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>10.1} {:>6.1}",
+                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>12.0} {:>10.1} {:>6.1} {:>8}",
                 r.kind.name(),
                 r.rays,
                 r.median_ms,
                 r.mrays_per_s,
                 r.nodes_per_ray,
+                r.node_bytes_per_ray,
                 r.tris_per_ray,
-                100.0 * r.hit_fraction
+                100.0 * r.hit_fraction,
+                r.sort_median_ms.map_or("-".to_string(), |t| format!("{t:.3}"))
             );
         }
+        for (kernel, stats) in &self.kernel_stats {
+            println!("{kernel}: {stats}");
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::hopper_resident_warps;
+
+    #[test]
+    fn hopper_occupancy_follows_the_cuda_rules() {
+        // docs/results.md: 72 registers leave 28 of 64 warps, 96 registers 21 (here in whole
+        // workgroups of two warps: 20).
+        assert_eq!(hopper_resident_warps(72, 0, 64, 64), 28);
+        assert_eq!(hopper_resident_warps(96, 0, 64, 64), 20);
+        assert_eq!(hopper_resident_warps(32, 0, 64, 64), 64);
+        // The short stack's 15 KiB per 64 invocations: 14 workgroups of 16 KiB fit 228 KiB.
+        assert_eq!(hopper_resident_warps(32, 15 * 1024, 64, 64), 28);
     }
 }

@@ -15,8 +15,7 @@ pub(crate) fn leaf_pointer(first: usize, count: usize) -> i32 {
 }
 
 /// (first, count) of a leaf pointer.
-#[cfg(test)]
-pub(crate) fn decode_leaf(ptr: i32) -> (usize, usize) {
+pub(crate) fn leaf_range(ptr: i32) -> (usize, usize) {
     let p = ptr as u32;
     ((p & ((1 << abi::LEAF_FIRST_BITS) - 1)) as usize, (((p >> abi::LEAF_FIRST_BITS) & 0xf) + 1) as usize)
 }
@@ -99,6 +98,7 @@ pub(crate) fn convert(src: Bvh2, positions: &[Vec3], triangles: &[[u32; 3]], tes
         layout: BvhLayout::Bvh2,
         nodes,
         wide_nodes: Vec::new(),
+        quant_nodes: Vec::new(),
         tris,
         tri_ids,
         tri_test: test,
@@ -157,6 +157,7 @@ pub(crate) fn convert_wide(
         layout: BvhLayout::Cwbvh,
         nodes: Vec::new(),
         wide_nodes,
+        quant_nodes: Vec::new(),
         tris,
         tri_ids,
         tri_test: test,
@@ -176,7 +177,7 @@ mod tests {
         for (first, count) in [(0, 1), (5, 16), ((1 << 27) - 1, 3)] {
             let p = leaf_pointer(first, count);
             assert!(p < 0);
-            assert_eq!(decode_leaf(p), (first, count));
+            assert_eq!(leaf_range(p), (first, count));
         }
     }
 
@@ -198,7 +199,7 @@ mod tests {
         for n in &bvh.nodes {
             for c in [n.children.x, n.children.y] {
                 if c < 0 {
-                    let (f, k) = decode_leaf(c);
+                    let (f, k) = leaf_range(c);
                     assert!(f + k <= bvh.tris.len());
                 } else {
                     assert!((c as usize) < bvh.nodes.len() && c > 0);

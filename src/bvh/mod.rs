@@ -14,11 +14,12 @@
 mod cpu;
 pub mod intersect;
 mod layout;
+mod quant;
 
 pub use cpu::CpuTracer;
 pub use intersect::TriTest;
 
-use crate::gpu::abi::{self, BvhNode, CwbvhNode, GpuTri};
+use crate::gpu::abi::{self, BvhNode, CwbvhNode, GpuTri, QuantNode};
 
 /// The node layout the GPU traverses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,6 +30,9 @@ pub enum BvhLayout {
     /// Compressed 8-wide (Ylitie, Karras & Laine 2017), built by obvhs from the same binary
     /// tree (with one triangle per leaf); leaves of up to min(`max_leaf_tris`, 3) triangles.
     Cwbvh,
+    /// The binary layout with each node quantised to 32 bytes (`QuantNode`: child boxes in 8
+    /// bits per plane relative to the node's box), same tree and leaves as `Bvh2`.
+    Bvh2q,
 }
 
 impl BvhLayout {
@@ -36,6 +40,16 @@ impl BvhLayout {
         match self {
             BvhLayout::Bvh2 => "bvh2",
             BvhLayout::Cwbvh => "cwbvh",
+            BvhLayout::Bvh2q => "bvh2q",
+        }
+    }
+
+    /// Bytes of one node of the layout (a binary node holds two child boxes, a wide one eight).
+    pub fn node_size(self) -> usize {
+        match self {
+            BvhLayout::Bvh2 => std::mem::size_of::<BvhNode>(),
+            BvhLayout::Cwbvh => std::mem::size_of::<CwbvhNode>(),
+            BvhLayout::Bvh2q => std::mem::size_of::<QuantNode>(),
         }
     }
 }
@@ -46,7 +60,8 @@ impl std::str::FromStr for BvhLayout {
         match s {
             "bvh2" => Ok(BvhLayout::Bvh2),
             "cwbvh" => Ok(BvhLayout::Cwbvh),
-            _ => Err(format!("unknown BVH layout {s:?}: expected bvh2 | cwbvh")),
+            "bvh2q" => Ok(BvhLayout::Bvh2q),
+            _ => Err(format!("unknown BVH layout {s:?}: expected bvh2 | cwbvh | bvh2q")),
         }
     }
 }
@@ -83,6 +98,8 @@ pub enum BvhError {
     BadIndex { tri: usize, index: u32, count: usize },
     #[error("the BVH is {depth} levels deep, the GPU traversal stack holds {max}: the scene is degenerate (many coincident triangles?)")]
     TooDeep { depth: usize, max: u32 },
+    #[error("node {0}'s box cannot be quantised (coordinates not finite?)")]
+    Quantize(usize),
     #[error("{0} triangles exceed what the GPU layout can address (2^27)")]
     TooMany(usize),
 }
@@ -93,8 +110,10 @@ pub struct Bvh {
     pub layout: BvhLayout,
     /// Inner nodes of the binary layout; the root is node 0 (empty for `BvhLayout::Cwbvh`).
     pub nodes: Vec<BvhNode>,
-    /// Nodes of the compressed wide layout; the root is node 0 (empty for `BvhLayout::Bvh2`).
+    /// Nodes of the compressed wide layout; the root is node 0 (empty for other layouts).
     pub wide_nodes: Vec<CwbvhNode>,
+    /// Nodes of the quantised binary layout; the root is node 0 (empty for other layouts).
+    pub quant_nodes: Vec<QuantNode>,
     /// Triangles in leaf order.
     pub tris: Vec<GpuTri>,
     /// Original triangle index of each entry of `tris`.
@@ -140,7 +159,7 @@ impl Bvh {
         };
         params.pre_split = opts.pre_split;
         params.max_prims_per_leaf = match opts.layout {
-            BvhLayout::Bvh2 => opts.max_leaf_tris.clamp(1, abi::LEAF_MAX_TRIS),
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q => opts.max_leaf_tris.clamp(1, abi::LEAF_MAX_TRIS),
             // The wide conversion chooses its own leaves (SAH) from single-triangle ones.
             BvhLayout::Cwbvh => 1,
         };
@@ -149,6 +168,7 @@ impl Bvh {
         let mut bvh = match opts.layout {
             BvhLayout::Bvh2 => layout::convert(bvh2, positions, triangles, opts.tri_test)?,
             BvhLayout::Cwbvh => layout::convert_wide(bvh2, positions, triangles, opts.tri_test, opts.max_leaf_tris.clamp(1, 3))?,
+            BvhLayout::Bvh2q => quant::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
         };
         bvh.build_time = start.elapsed();
         Ok(bvh)
@@ -161,11 +181,13 @@ impl Bvh {
 
     /// Bytes of the node buffer (either layout).
     pub fn node_bytes(&self) -> usize {
-        std::mem::size_of_val(self.nodes.as_slice()) + std::mem::size_of_val(self.wide_nodes.as_slice())
+        std::mem::size_of_val(self.nodes.as_slice())
+            + std::mem::size_of_val(self.wide_nodes.as_slice())
+            + std::mem::size_of_val(self.quant_nodes.as_slice())
     }
 
     /// Nodes of the layout built.
     pub fn node_count(&self) -> usize {
-        self.nodes.len() + self.wide_nodes.len()
+        self.nodes.len() + self.wide_nodes.len() + self.quant_nodes.len()
     }
 }

@@ -56,7 +56,7 @@ pub struct TraversalArgs {
     #[arg(long, default_value_t = 2)]
     pub quality: u32,
     /// BVH node layout: bvh2 (binary, Aila & Laine) | cwbvh (compressed 8-wide, Ylitie et al.
-    /// 2017; leaves of at most 3 triangles).
+    /// 2017; leaves of at most 3 triangles) | bvh2q (binary, 32-byte quantised nodes).
     #[arg(long, default_value = "bvh2")]
     pub bvh: bidir::bvh::BvhLayout,
     /// Most triangles per leaf (1..=16; 1..=3 with --bvh cwbvh) [default: 4; 3 with cwbvh].
@@ -85,6 +85,21 @@ pub struct TraversalArgs {
     /// 2017, section 4).
     #[arg(long)]
     pub postpone: bool,
+    /// Binary layouts: keep the traversal stack's top four entries in registers and the rest
+    /// in workgroup shared memory instead of local memory.
+    #[arg(long)]
+    pub short_stack: bool,
+    /// Rays each invocation traces, strided by the launch size (not with --persistent).
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub rays_per_invocation: u32,
+    /// Sort shadow and diffuse rays by direction octant and origin cell (a counting sort on
+    /// the GPU) before tracing; the sort's time is reported beside the trace's.
+    #[arg(long)]
+    pub sort: bool,
+    /// Invocations per workgroup of the trace kernel: 64 (default; every variant), or 32, 128,
+    /// 256 (bvh2 without --alpha, --short-stack or --persistent).
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub workgroup_size: u32,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -127,15 +142,33 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     let (most, default) = if a.bvh == bidir::bvh::BvhLayout::Cwbvh { (3, 3) } else { (16, 4) };
     let leaf_size = a.leaf_size.unwrap_or(default);
     if !(1..=most).contains(&leaf_size) {
-        let layout = if most == 3 { "cwbvh" } else { "bvh2" };
-        anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {layout})");
+        anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {})", a.bvh.name());
+    }
+    if a.short_stack && (a.alpha || a.bvh == bidir::bvh::BvhLayout::Cwbvh) {
+        anyhow::bail!("--short-stack: only with the binary layouts (--bvh bvh2 | bvh2q) and without --alpha");
+    }
+    if !(1..=64).contains(&a.rays_per_invocation) || (a.rays_per_invocation > 1 && (a.persistent || a.persistent_groups.is_some())) {
+        anyhow::bail!("--rays-per-invocation {}: must be in 1..=64, and 1 with --persistent", a.rays_per_invocation);
+    }
+    if a.workgroup_size != 64
+        && (![32, 128, 256].contains(&a.workgroup_size)
+            || a.bvh != bidir::bvh::BvhLayout::Bvh2
+            || a.alpha
+            || a.short_stack
+            || a.persistent
+            || a.persistent_groups.is_some())
+    {
+        anyhow::bail!("--workgroup-size {}: 64 with every variant; 32, 128 or 256 only with --bvh bvh2 and without --alpha, --short-stack, --persistent", a.workgroup_size);
     }
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;
     }
     super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
-    let ctx = Context::new(opts).context("cannot start Vulkan")?;
+    // The driver's registers, spills and shared memory of the timed kernels, where it reports
+    // them (printed with the timings).
+    let opts = ContextOptions { kernel_statistics: true, ..opts.clone() };
+    let ctx = Context::new(&opts).context("cannot start Vulkan")?;
     let mut o = traversal::Options { kinds, warmup: a.warmup, repetitions: a.reps.max(5), ..Default::default() };
     o.build.tri_test = a.tri_test;
     o.build.quality = a.quality;
@@ -145,6 +178,10 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.alpha = a.alpha;
     o.speculative = !a.no_speculative;
     o.postpone = a.postpone;
+    o.short_stack = a.short_stack;
+    o.rays_per_invocation = a.rays_per_invocation;
+    o.sort = a.sort;
+    o.workgroup_size = a.workgroup_size;
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),

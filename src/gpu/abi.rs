@@ -59,6 +59,11 @@ gpu_consts! {
     /// (`BvhNode`) or the compressed 8-wide BVH (`CwbvhNode`).
     pub const BVH_LAYOUT_BVH2: u32 = 0;
     pub const BVH_LAYOUT_CWBVH: u32 = 1;
+    /// The binary layout with 32-byte quantised nodes (`QuantNode`).
+    pub const BVH_LAYOUT_BVH2Q: u32 = 2;
+    /// `QuantNode::exps_left` bits 24..32: 0 when child 0 is the inner node after this one,
+    /// else child 0 is a leaf of that many triangles ending where child 1's leaf begins.
+    pub const QUANT_LEFT_SHIFT: u32 = 24;
     /// Stack bottom marker (never a node index).
     pub const TRAVERSAL_SENTINEL: u32 = 0x7fff_ffff;
     /// A leaf child pointer has bit 31 set; bits 0..27 hold its first triangle and bits 27..31
@@ -80,6 +85,23 @@ gpu_consts! {
     pub const BIND_FLAGS: u32 = 7;
     /// Persistent trace kernels: the next ray to fetch (one u32, zeroed before each launch).
     pub const BIND_RAY_COUNTER: u32 = 26;
+
+    // ---- Bindings: ray_sort_keys.comp / ray_sort_scatter.comp (trace::RaySorter) -----------
+    /// Rays to sort (`GpuRay`).
+    pub const RAY_SORT_BIND_RAYS: u32 = 0;
+    /// Per ray: (key, rank among the rays of its key) (uvec2).
+    pub const RAY_SORT_BIND_KEYS: u32 = 1;
+    /// Per key: its ray count, then (scanned) its first slot in the sorted order.
+    pub const RAY_SORT_BIND_BINS: u32 = 2;
+    /// The sorted rays.
+    pub const RAY_SORT_BIND_OUT: u32 = 3;
+    /// Per sorted slot: the index of its ray in the input.
+    pub const RAY_SORT_BIND_ORDER: u32 = 4;
+    /// Origin cells per axis of the sort key's grid over the scene bounds are
+    /// 2^RAY_SORT_CELL_BITS; the key is the direction octant (3 high bits) above the cell's
+    /// Morton code (3 x RAY_SORT_CELL_BITS bits).
+    pub const RAY_SORT_CELL_BITS: u32 = 4;
+    pub const RAY_SORT_KEYS: u32 = 32768;
 
     // ---- Scene and integrator bindings (glsl/common/scene.glsl) ----------------------------
     pub const BIND_PRIM_INFO: u32 = 8;
@@ -229,9 +251,12 @@ gpu_consts! {
     pub const VCM_CONNECT: u32 = 2;
     /// Merge grid: per hash cell, after the scatter, the end of its entries in
     /// BIND_MERGE_ITEMS (its start is the previous cell's end).
-    pub const BIND_MERGE_CELLS: u32 = 40;
+    pub const BIND_MERGE_CELLS: u32 = 33;
     /// Merge grid: light-vertex slots sorted by hash cell.
-    pub const BIND_MERGE_ITEMS: u32 = 41;
+    pub const BIND_MERGE_ITEMS: u32 = 34;
+    /// Trace kernels (not persistent): rays each invocation traces, strided by the launch's
+    /// invocation count (default 1). Numbered apart from the scene features' ids.
+    pub const SPEC_RAYS_PER_INVOCATION: u32 = 32;
 }
 
 gpu_structs! {
@@ -280,6 +305,35 @@ gpu_structs! {
         pub qx: UVec4,
         pub qy: UVec4,
         pub qz: UVec4,
+    }
+
+    /// A binary BVH node quantised to 32 bytes (half a `BvhNode`): both children's boxes on
+    /// a grid of origin `origin` (the node's own box, lower corner) and power-of-two cell size
+    /// 2^(e - 127) per axis, 8 bits per plane, rounded outwards when built so that the
+    /// decoded planes `origin + q 2^(e - 127)` (exact product, one rounding) always enclose
+    /// the child (`bvh::layout::quantize`). Inner nodes are in depth-first order: child 0, if
+    /// inner, is the next node; child 1 is a pointer like `BvhNode::children` (the builder
+    /// puts a lone leaf child there).
+    pub struct QuantNode (32 bytes) {
+        pub origin: Vec3,
+        /// e.x | e.y << 8 | e.z << 16 (biased exponents of the cell sizes) | child 0's leaf
+        /// triangle count << QUANT_LEFT_SHIFT (0: child 0 is the inner node index + 1).
+        pub exps_left: u32,
+        /// Per axis, one byte each: (child 0 lo, child 0 hi, child 1 lo, child 1 hi).
+        pub qx: u32,
+        pub qy: u32,
+        pub qz: u32,
+        /// Child 1: >= 0 an inner node index, < 0 a leaf pointer (see LEAF_FIRST_BITS).
+        pub child1: i32,
+    }
+
+    /// Push constants of the ray sort kernels: the grid of origin cells over the scene bounds.
+    pub struct RaySortPush (32 bytes) {
+        pub bounds_lo: Vec3,
+        pub count: u32,
+        /// Cells per unit length on each axis (2^RAY_SORT_CELL_BITS / extent).
+        pub cells_per_unit: Vec3,
+        pub pad0: u32,
     }
 
     /// A triangle in leaf order, encoded for the chosen test: watertight stores the three

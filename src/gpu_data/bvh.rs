@@ -6,7 +6,7 @@ use crate::vk::{Bind, Buffer, Context, Result};
 
 /// A BVH in GPU memory.
 pub struct GpuBvh {
-    /// `BvhNode`s or `CwbvhNode`s, as `layout` says.
+    /// `BvhNode`s, `CwbvhNode`s or `QuantNode`s, as `layout` says.
     pub nodes: Buffer,
     pub tris: Buffer,
     pub tri_test: TriTest,
@@ -19,6 +19,7 @@ impl GpuBvh {
         let nodes = match bvh.layout {
             BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
             BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
+            BvhLayout::Bvh2q => ctx.upload_buffer("bvh.quant_nodes", &bvh.quant_nodes)?,
         };
         Ok(GpuBvh {
             nodes,

@@ -276,13 +276,14 @@ const TARGET_INVOCATIONS: u64 = 1 << 18;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
 const SLICED_STORE_BYTES: u64 = 1 << 30;
 
-/// The integrator kernels include only the binary traversal (glsl/common/traverse.glsl):
-/// wide nodes would be read as binary ones and the image would be quietly wrong.
+/// The integrator kernels include only the binary traversal of 64-byte nodes
+/// (glsl/common/traverse.glsl): wide or quantised nodes would be read as those and the image
+/// would be quietly wrong.
 fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
     match layout {
         BvhLayout::Bvh2 => Ok(()),
         other => Err(RenderError::Unsupported(format!(
-            "the integrators traverse the binary BVH only; the '{}' layout is for `bidir bench traversal --bvh {}`",
+            "the integrators traverse the binary BVH of 64-byte nodes (bvh2) only; the '{}' layout is for `bidir bench traversal --bvh {}`",
             other.name(),
             other.name()
         ))),

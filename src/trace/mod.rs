@@ -2,6 +2,9 @@
 //! buffers, and ray generation (primary, shadow, diffuse) with compaction. Integrators call
 //! the same GLSL traversal inline; this module serves the tests and the benchmark.
 
+pub mod sort;
+pub use sort::RaySorter;
+
 use crate::bvh::{BvhLayout, TriTest};
 use crate::compute::Scan;
 use crate::gpu::{
@@ -41,11 +44,30 @@ pub struct TraceOptions {
     pub speculative: bool,
     /// Compressed wide layout: triangle postponing (see SPEC_CWBVH_POSTPONE).
     pub postpone: bool,
+    /// Binary layouts, geometry only: the stack's top four entries in registers, the rest in
+    /// workgroup shared memory (glsl/common/traverse_short_stack.glsl) instead of local memory.
+    pub short_stack: bool,
+    /// Rays each invocation traces (not persistent; 1 by default): SPEC_RAYS_PER_INVOCATION.
+    pub rays_per_invocation: u32,
+    /// Invocations per workgroup: TRACE_WG_SIZE (default), or 32, 128, 256 for the plain
+    /// binary kernel (trace_wg*.comp: bvh2, geometry only, not persistent, local stack).
+    pub workgroup_size: u32,
 }
 
 impl TraceOptions {
     pub fn new(tri_test: TriTest) -> Self {
-        TraceOptions { tri_test, stats: false, alpha: None, persistent: None, layout: BvhLayout::Bvh2, speculative: true, postpone: false }
+        TraceOptions {
+            tri_test,
+            stats: false,
+            alpha: None,
+            persistent: None,
+            layout: BvhLayout::Bvh2,
+            speculative: true,
+            postpone: false,
+            short_stack: false,
+            rays_per_invocation: 1,
+            workgroup_size: abi::TRACE_WG_SIZE,
+        }
     }
 }
 
@@ -118,21 +140,50 @@ impl Tracer {
         let mut trace_specs = base.to_vec();
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
         match opts.layout {
-            BvhLayout::Bvh2 => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
             BvhLayout::Cwbvh => trace_specs.push(Spec { id: abi::SPEC_CWBVH_POSTPONE, value: opts.postpone as u32 }),
         }
+        if opts.rays_per_invocation != 1 {
+            if opts.persistent.is_some() || opts.rays_per_invocation == 0 {
+                let msg = format!("{} rays per invocation: 1 with persistent threads, at least 1 otherwise", opts.rays_per_invocation);
+                return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
+            }
+            trace_specs.push(Spec { id: abi::SPEC_RAYS_PER_INVOCATION, value: opts.rays_per_invocation });
+        }
         let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
+        let plain = opts.alpha.is_none() && opts.layout == BvhLayout::Bvh2 && !opts.short_stack && opts.persistent.is_none();
         let source = match (&opts.alpha, opts.layout) {
+            _ if opts.workgroup_size != abi::TRACE_WG_SIZE => match opts.workgroup_size {
+                32 if plain => &kernels::TRACE_WG32,
+                128 if plain => &kernels::TRACE_WG128,
+                256 if plain => &kernels::TRACE_WG256,
+                size => {
+                    let msg = format!(
+                        "workgroups of {size}: {} (default) for every kernel; 32, 128 or 256 for bvh2 without alpha masks, short stack or persistent threads",
+                        abi::TRACE_WG_SIZE
+                    );
+                    return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
+                }
+            },
+            _ if opts.short_stack => match (&opts.alpha, opts.layout) {
+                (None, BvhLayout::Bvh2) => &kernels::TRACE_SHORT_STACK,
+                (None, BvhLayout::Bvh2q) => &kernels::TRACE_SHORT_STACK_BVH2Q,
+                _ => {
+                    let msg = format!("the short stack is built for the binary layouts without alpha masks, not {}", opts.layout.name());
+                    return Err(crate::vk::VkError::Kernel { kernel: "trace_short_stack".into(), msg });
+                }
+            },
             (Some(features), layout) => {
                 trace_specs.extend(features.specs());
-                if layout == BvhLayout::Cwbvh {
-                    &kernels::TRACE_ALPHA_CWBVH
-                } else {
-                    &kernels::TRACE_ALPHA
+                match layout {
+                    BvhLayout::Bvh2 => &kernels::TRACE_ALPHA,
+                    BvhLayout::Cwbvh => &kernels::TRACE_ALPHA_CWBVH,
+                    BvhLayout::Bvh2q => &kernels::TRACE_ALPHA_BVH2Q,
                 }
             }
             (None, BvhLayout::Bvh2) => &kernels::TRACE,
             (None, BvhLayout::Cwbvh) => &kernels::TRACE_CWBVH,
+            (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
         };
         let with = |id, value| {
             let mut s = trace_specs.clone();
@@ -152,6 +203,11 @@ impl Tracer {
             counter: ctx.create_buffer("trace.ray_counter", 4, Memory::Device)?,
             max_batches: persistent_batch_cap(ctx.info()),
         })
+    }
+
+    /// The closest-hit and any-hit trace kernels (for their compile statistics).
+    pub fn trace_kernels(&self) -> [&Kernel; 2] {
+        [&self.closest, &self.any]
     }
 
     pub fn tri_test(&self) -> TriTest {
@@ -187,7 +243,7 @@ impl Tracer {
         let mut binds = geometry.to_vec();
         binds.extend([Bind::buffer(abi::BIND_RAYS, rays), Bind::buffer(abi::BIND_HITS, hits), Bind::buffer(abi::BIND_STATS, stats)]);
         binds.push(Bind::buffer(abi::BIND_RAY_COUNTER, &self.counter));
-        let mut groups = k.groups_for(count);
+        let mut groups = k.groups_for(count.div_ceil(self.opts.rays_per_invocation.max(1)));
         if let Some(persistent_groups) = self.persistent {
             rec.fill_buffer(&self.counter, 0);
             (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches);
