@@ -12,6 +12,9 @@
 const uint LOBE_DIFFUSE = 0u;
 const uint LOBE_MIRROR = 1u;
 const uint LOBE_GLASS = 2u;
+// The glass fraction of a material with roughness > 0 (rough_dielectric.glsl): sampled, never
+// connected (no light sampling or BDPT connection at its vertices), with exact pdfs.
+const uint LOBE_ROUGH_GLASS = 3u;
 
 // Fraction of the perfect mirror: the thesis' reflectivity, unless the material is rough
 // (its reflectivity is then a rough conductor, part of the continuous BSDF).
@@ -30,7 +33,7 @@ uint choose_lobe(GpuMaterial m, float u) {
         return LOBE_MIRROR;
     }
     if (u < r + g) {
-        return LOBE_GLASS;
+        return HAS_ROUGH_GLASS != 0u && m.roughness > 0.0 ? LOBE_ROUGH_GLASS : LOBE_GLASS;
     }
     return LOBE_DIFFUSE;
 }
@@ -65,6 +68,8 @@ vec3 sample_dielectric(vec3 d, vec3 n_f, float eta, float u, out float radiance_
     radiance_scale = eta * eta;
     return normalize(eta * d + (eta * cos_i - cos_t) * n_f);
 }
+
+#include "rough_dielectric.glsl"
 
 // The non-delta part of a material at a surface point (its lobes weighted by their
 // fractions): f(wo, wi) = diffuse / pi (1 - coat F(coat_f0, wo.h))

@@ -13,6 +13,7 @@ layout(constant_id = SPEC_HAS_ALPHA) const uint HAS_ALPHA = 0u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 0u;
 layout(constant_id = SPEC_HAS_EMISSION_TEXTURES) const uint HAS_EMISSION_TEXTURES = 0u;
 layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint HAS_NORMAL_MAPS = 0u;
+layout(constant_id = SPEC_HAS_ROUGH_GLASS) const uint HAS_ROUGH_GLASS = 0u;
 
 #define TRAVERSE_WITH_ALPHA
 #include "traverse.glsl"
@@ -210,6 +211,22 @@ vec3 material_emission(GpuMaterial m, vec2 uv) {
         e *= sample_texture(m.emission_texture - 1u, uv).rgb;
     }
     return e;
+}
+
+// Transmission tint of the glass fraction: glTF's baseColor (KHR_materials_transmission:
+// specular_btdf x baseColor); the thesis' glass is untinted.
+vec3 glass_tint(GpuMaterial m, vec2 uv) {
+    return m.model == MATERIAL_METAL_ROUGH ? material_albedo(m, uv) : vec3(1.0);
+}
+
+// GGX alpha of the rough glass (LOBE_ROUGH_GLASS): roughness^2, the roughness times the
+// green channel of the roughness texture.
+float glass_alpha(GpuMaterial m, vec2 uv) {
+    float roughness = m.roughness;
+    if (HAS_TEXTURES != 0u && m.tex.z != 0u) {
+        roughness *= sample_texture(m.tex.z - 1u, uv).g;
+    }
+    return max(roughness * roughness, GGX_MIN_ALPHA);
 }
 
 // The continuous (non-delta) part of material m at texture coordinate uv (bsdf.glsl):

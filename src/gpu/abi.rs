@@ -177,6 +177,14 @@ gpu_consts! {
     pub const SAMPLING_GLOSSY_EVAL: u32 = 5;
     /// Environment sampling: (direction, pdf_w) per sample, then the pdf looked up again.
     pub const SAMPLING_ENV: u32 = 6;
+    /// rough_dielectric_sample_world for wo `a.xyz`, shading normal `b.xyz`, eta `c.x`, alpha
+    /// `c.y`, radiance if `c.z` > 0: out[2i] = (wi, 1 if sampled else 0), out[2i + 1] =
+    /// (weight f |cos| / pdf_fwd_w, pdf_fwd_w, pdf_rev_w, 1 if refracted).
+    pub const SAMPLING_ROUGH_GLASS: u32 = 7;
+    /// The rough dielectric of direction pairs in[2i] = wo, in[2i + 1] = wi (parameters as
+    /// SAMPLING_ROUGH_GLASS, local frame of `b.xyz`): out[2i] = (f radiance, f importance,
+    /// pdf_fwd_w, pdf_rev_w), out[2i + 1] = the same for the pair swapped.
+    pub const SAMPLING_ROUGH_GLASS_EVAL: u32 = 8;
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
@@ -207,6 +215,9 @@ gpu_consts! {
     pub const SPEC_HAS_ENV: u32 = 18;
     /// 1: the scene has punctual lights (point, spot, directional).
     pub const SPEC_HAS_PUNCTUAL: u32 = 19;
+    /// 1: some material's glass fraction is rough (roughness > 0): the rough dielectric of
+    /// glsl/common/rough_dielectric.glsl; 0 compiles it out (smooth glass only).
+    pub const SPEC_HAS_ROUGH_GLASS: u32 = 20;
 }
 
 gpu_structs! {

@@ -210,7 +210,9 @@ impl Material {
         if self.has_mirror() {
             f.push("mirror");
         }
-        if self.refractivity > 0.0 {
+        if self.has_rough_glass() {
+            f.push("rough glass (GGX)");
+        } else if self.refractivity > 0.0 {
             f.push("glass");
         }
         if self.is_emissive() {
@@ -227,6 +229,11 @@ impl Material {
         ];
         f.extend(maps.iter().filter(|(on, _)| *on).map(|(_, name)| *name));
         format!("{kind}: {}", f.join(", "))
+    }
+
+    /// Whether the glass fraction is a rough dielectric (roughness > 0; Walter et al. 2007).
+    pub fn has_rough_glass(&self) -> bool {
+        self.refractivity > 0.0 && self.roughness > 0.0
     }
 
     /// Whether the thesis' perfect mirror (a delta lobe) is used.
