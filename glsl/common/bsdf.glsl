@@ -25,10 +25,11 @@ float mirror_fraction(GpuMaterial m) {
     return m.params.x;
 }
 
-// Picks a lobe with probability equal to its fraction, so the fraction cancels.
-uint choose_lobe(GpuMaterial m, float u) {
+// Picks a lobe with probability equal to its fraction, so the fraction cancels; `glass` is
+// the glass fraction at the surface point (glass_fraction in scene.glsl).
+uint choose_lobe(GpuMaterial m, float glass, float u) {
     float r = mirror_fraction(m);
-    float g = HAS_GLASS != 0u ? m.params.y : 0.0;
+    float g = HAS_GLASS != 0u ? glass : 0.0;
     if (u < r) {
         return LOBE_MIRROR;
     }

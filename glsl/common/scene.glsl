@@ -213,6 +213,19 @@ vec3 material_emission(GpuMaterial m, vec2 uv) {
     return e;
 }
 
+// Fraction of glass at uv: the refractivity times the red channel of the transmission
+// texture (glTF transmissionTexture).
+float glass_fraction(GpuMaterial m, vec2 uv) {
+    if (HAS_GLASS == 0u) {
+        return 0.0;
+    }
+    float g = m.params.y;
+    if (HAS_TEXTURES != 0u && m.transmission_texture != 0u) {
+        g *= sample_texture(m.transmission_texture - 1u, uv).r;
+    }
+    return g;
+}
+
 // Transmission tint of the glass fraction: glTF's baseColor (KHR_materials_transmission:
 // specular_btdf x baseColor); the thesis' glass is untinted.
 vec3 glass_tint(GpuMaterial m, vec2 uv) {
@@ -239,7 +252,7 @@ float glass_alpha(GpuMaterial m, vec2 uv) {
 Continuous continuous_at(GpuMaterial m, vec2 uv) {
     vec3 albedo = material_albedo(m, uv);
     float refl = mirror_fraction(m);
-    float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
+    float refr = glass_fraction(m, uv);
     Continuous c;
     c.pick = max(0.0, 1.0 - refl - refr);
     c.diffuse = c.pick * albedo;

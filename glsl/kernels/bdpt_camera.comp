@@ -242,7 +242,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         }
 
         // Continue by sampling the BSDF (radiance transport).
-        uint lobe = choose_lobe(m, rng_next(rng));
+        uint lobe = choose_lobe(m, glass_fraction(m, s.uv), rng_next(rng));
         if (lobe == LOBE_DIFFUSE) {
             if (!continuous_ok) {
                 break;

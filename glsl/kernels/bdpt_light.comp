@@ -209,7 +209,7 @@ void main() {
         }
 
         // Continue by sampling the BSDF (importance transport: no eta^2 radiance scaling).
-        uint lobe = choose_lobe(m, rng_next(rng));
+        uint lobe = choose_lobe(m, glass_fraction(m, s.uv), rng_next(rng));
         if (lobe == LOBE_DIFFUSE) {
             if (!continuous_ok) {
                 break;

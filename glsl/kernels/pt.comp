@@ -72,7 +72,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
         // Normals facing the side the ray came from.
         vec3 ng_f = s.front ? s.ng : -s.ng;
         vec3 ns_f = s.front ? s.ns : -s.ns;
-        uint lobe = choose_lobe(m, rng_next(rng));
+        uint lobe = choose_lobe(m, glass_fraction(m, s.uv), rng_next(rng));
         if (lobe == LOBE_MIRROR) {
             d = reflect(d, ns_f);
             o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);

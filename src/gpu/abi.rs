@@ -333,7 +333,7 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (96 bytes) {
+    pub struct GpuMaterial (112 bytes) {
         /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested; BLEND: 0, see `opacity`).
         pub albedo: Vec4,
         /// Emitted radiance (rgb), front face only; w: its luminance.
@@ -360,6 +360,11 @@ gpu_structs! {
         /// glTF BLEND: the base opacity (times the alpha texture's alpha, `tex.y`); a hit is
         /// kept with that probability. 1 for other materials.
         pub opacity: f32,
+        /// Transmission texture + 1 (linear; its red channel scales the refractivity), 0 = none.
+        pub transmission_texture: u32,
+        pub pad0: u32,
+        pub pad1: u32,
+        pub pad2: u32,
     }
 
     /// An emissive triangle for light sampling.

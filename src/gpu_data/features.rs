@@ -40,6 +40,7 @@ impl SceneFeatures {
                         || m.alpha.is_some()
                         || m.roughness_texture.is_some()
                         || m.metallic_texture.is_some()
+                        || m.transmission_texture.is_some()
                         || m.emission_texture.is_some()
                         || m.normal_texture.is_some()
                 }),

@@ -150,6 +150,8 @@ pub struct Material {
     pub roughness_texture: Option<u32>,
     /// Linear texture whose blue channel scales the metallic factor (glTF metallicRoughness, `map_Pm`).
     pub metallic_texture: Option<u32>,
+    /// Linear texture whose red channel scales `refractivity` (glTF transmissionTexture).
+    pub transmission_texture: Option<u32>,
 }
 
 impl Default for Material {
@@ -172,6 +174,7 @@ impl Default for Material {
             roughness: 0.0,
             roughness_texture: None,
             metallic_texture: None,
+            transmission_texture: None,
         }
     }
 }
@@ -222,6 +225,7 @@ impl Material {
             (self.albedo_texture.is_some(), "base colour map"),
             (self.roughness_texture.is_some(), "roughness map"),
             (self.metallic_texture.is_some(), "metallic map"),
+            (self.transmission_texture.is_some(), "transmission map"),
             (self.normal_texture.is_some(), "normal map"),
             (self.emission_texture.is_some() && self.is_emissive(), "emission map"),
             (self.alpha.is_some(), "alpha mask"),

@@ -315,6 +315,7 @@ pub(crate) fn to_material(
         roughness,
         roughness_texture,
         metallic_texture: if pbr { metallic_texture } else { None },
+        transmission_texture: None,
     }
 }
 
