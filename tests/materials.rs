@@ -588,3 +588,58 @@ fn gltf_transmission_texture_scales_the_glass_fraction() {
     assert!(m.abs() <= 3.29 * se.max(1e-3 * level), "the texture does not scale the glass fraction as the factor does ({m} ± {se})");
     assert!((full - level).abs() > 10.0 * level_se.max(se), "the glass fraction does not matter here ({full} vs {level} ± {level_se})");
 }
+
+// ---- Texture coordinate sets and KHR_texture_transform --------------------------------------
+
+/// A quad with two UV sets whose material reads set 1 through a texture transform (offset
+/// (0.5, 0.25), a quarter turn, scale (2, 3)); and a second primitive, sharing the accessors,
+/// whose material reads set 0 untransformed. The loaded UVs are the transformed set 1 and the
+/// plain set 0, and nothing is warned about.
+#[test]
+fn gltf_texcoord_sets_and_texture_transform_are_baked_into_the_uvs() {
+    let dir = std::env::temp_dir().join(format!("bidir-materials-uv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    image::save_buffer(dir.join("c.png"), &[200u8, 100, 50, 255].repeat(4), 2, 2, image::ExtendedColorType::Rgba8).unwrap();
+    let positions = [[-1.0f32, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]];
+    let uv0 = [[0.0f32, 1.0], [1.0, 1.0], [1.0, 0.0], [0.0, 0.0]];
+    let uv1 = [[0.1f32, 0.2], [0.7, 0.2], [0.7, 0.9], [0.1, 0.9]];
+    let mut bin: Vec<u8> =
+        positions.iter().flatten().chain(uv0.iter().flatten()).chain(uv1.iter().flatten()).flat_map(|v| v.to_le_bytes()).collect();
+    bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes()));
+    std::fs::write(dir.join("uv.bin"), &bin).unwrap();
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "extensionsUsed": ["KHR_texture_transform"],
+ "scene": 0, "scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
+ "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_1": 2}}, "indices": 3, "material": 0}},
+                            {{"attributes": {{"POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_1": 2}}, "indices": 3, "material": 1}}]}}],
+ "materials": [{{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0, "texCoord": 1,
+                  "extensions": {{"KHR_texture_transform": {{"offset": [0.5, 0.25], "rotation": 1.5707963267948966, "scale": [2, 3]}}}}}}}}}},
+               {{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}}}],
+ "textures": [{{"source": 0}}], "images": [{{"uri": "c.png"}}],
+ "buffers": [{{"uri": "uv.bin", "byteLength": {len}}}],
+ "bufferViews": [{{"buffer": 0, "byteOffset": 0, "byteLength": 48}}, {{"buffer": 0, "byteOffset": 48, "byteLength": 32}},
+   {{"buffer": 0, "byteOffset": 80, "byteLength": 32}}, {{"buffer": 0, "byteOffset": 112, "byteLength": 12}}],
+ "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]}},
+   {{"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"}},
+   {{"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"}},
+   {{"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}}]}}"#,
+        len = bin.len()
+    );
+    let path = dir.join("uv.gltf");
+    std::fs::write(&path, json).unwrap();
+    let loaded = bidir::scene::load(&path, &bidir::scene::LoadOptions { strict: true }).unwrap();
+    assert!(loaded.warnings.is_empty(), "warnings: {:?}", loaded.warnings);
+    let s = loaded.scene;
+    let uvs = s.uvs.as_ref().expect("UVs");
+    // uv' = offset + R(quarter turn) S uv, R = [[cos, sin], [-sin, cos]]: (u, v) -> (3 v, -2 u).
+    let expect = |[u, v]: [f32; 2]| glam::Vec2::new(0.5 + 3.0 * v, 0.25 - 2.0 * u);
+    for (t, &m) in s.triangles.iter().zip(&s.material_ids) {
+        for &i in t {
+            let p = s.positions[i as usize];
+            let k = positions.iter().position(|q| glam::Vec3::from(*q) == p).expect("a quad corner");
+            let want = if m == 0 { expect(uv1[k]) } else { glam::Vec2::from(uv0[k]) };
+            assert!((uvs[i as usize] - want).length() < 1e-5, "material {m}, corner {k}: uv {} instead of {want}", uvs[i as usize]);
+        }
+    }
+    assert_eq!(s.material_ids.iter().filter(|&&m| m == 0).count(), 2);
+}

@@ -15,8 +15,7 @@
 //!   base colour factor alpha × texture alpha), unbiased for every integrator.
 //! - `normalTexture` (linear, tangent space, `scale`) → normal map; tangents are generated
 //!   from the UVs (`scene/tangents.rs`).
-//! - Textures the model cannot use (texture coordinate sets above 0) are read from set 0 with
-//!   one warning each; occlusion is ignored silently (a path tracer computes occlusion).
+//! - Texture coordinate sets and KHR_texture_transform: `uv_map.rs`; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
 
@@ -42,19 +41,11 @@ pub(super) fn convert<'a>(
         let index = m.index().unwrap_or(out.len());
         let name = m.name().map_or_else(|| format!("material {index}"), str::to_owned);
         let element = format!("material {index} \"{name}\"");
-        let unsupported = |w: &mut Warnings, what: &str| {
-            w.warn_once(&format!("gltf-{what}"), || {
-                format!("{}: {element}: {what} is not supported; ignored (further uses not reported)", file.display())
-            })
-        };
         let pbr = m.pbr_metallic_roughness();
         let [r, g, b, a] = pbr.base_color_factor();
         let albedo = Vec3::new(r, g, b);
         let albedo_texture = match pbr.base_color_texture() {
             Some(info) => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
                 image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
             }
             None => None,
@@ -70,9 +61,6 @@ pub(super) fn convert<'a>(
         }
         let metal_rough_texture = match pbr.metallic_roughness_texture() {
             Some(info) => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
                 image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?
             }
             None => None,
@@ -80,9 +68,6 @@ pub(super) fn convert<'a>(
         let transmission = m.transmission();
         let transmission_texture = match transmission.as_ref().and_then(|t| t.transmission_texture()) {
             Some(info) => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
                 image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?
             }
             None => None,
@@ -91,18 +76,12 @@ pub(super) fn convert<'a>(
         let emission = Vec3::from(m.emissive_factor()) * m.emissive_strength().unwrap_or(1.0);
         let emission_texture = match m.emissive_texture() {
             Some(info) if emission.max_element() > 0.0 => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
                 image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
             }
             _ => None,
         };
         let (normal_texture, normal_scale) = match m.normal_texture() {
             Some(info) => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
                 (image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?, info.scale())
             }
             None => (None, 1.0),
