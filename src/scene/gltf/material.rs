@@ -45,9 +45,7 @@ pub(super) fn convert<'a>(
         let [r, g, b, a] = pbr.base_color_factor();
         let albedo = Vec3::new(r, g, b);
         let albedo_texture = match pbr.base_color_texture() {
-            Some(info) => {
-                image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
-            }
+            Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?,
             None => None,
         };
         let metallic = pbr.metallic_factor();
@@ -60,16 +58,12 @@ pub(super) fn convert<'a>(
             });
         }
         let metal_rough_texture = match pbr.metallic_roughness_texture() {
-            Some(info) => {
-                image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?
-            }
+            Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?,
             None => None,
         };
         let transmission = m.transmission();
         let transmission_texture = match transmission.as_ref().and_then(|t| t.transmission_texture()) {
-            Some(info) => {
-                image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?
-            }
+            Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?,
             None => None,
         };
         let refractivity = transmission.map_or(0.0, |t| t.transmission_factor()).clamp(0.0, 1.0) * (1.0 - metallic);
@@ -81,9 +75,7 @@ pub(super) fn convert<'a>(
             _ => None,
         };
         let (normal_texture, normal_scale) = match m.normal_texture() {
-            Some(info) => {
-                (image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?, info.scale())
-            }
+            Some(info) => (image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?, info.scale()),
             None => (None, 1.0),
         };
         let alpha = match m.alpha_mode() {
