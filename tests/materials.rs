@@ -643,3 +643,59 @@ fn gltf_texcoord_sets_and_texture_transform_are_baked_into_the_uvs() {
     }
     assert_eq!(s.material_ids.iter().filter(|&&m| m == 0).count(), 2);
 }
+
+// ---- Tangents from the file -----------------------------------------------------------------
+
+/// A glTF quad with NORMAL, TEXCOORD_0 and TANGENT (+y, handedness -1: not what the UVs would
+/// generate, +x and +1), instanced by a node mirrored in x: the scene keeps the file's tangents,
+/// transformed by the node's matrix, with the handedness flipped by the mirror, and the GPU
+/// upload takes them instead of generated ones.
+#[test]
+fn gltf_tangents_from_the_file_are_used() {
+    let dir = std::env::temp_dir().join(format!("bidir-materials-tangent-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let positions = [[-1.0f32, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]];
+    let normals = [[0.0f32, 0.0, 1.0]; 4];
+    let uvs = [[0.0f32, 1.0], [1.0, 1.0], [1.0, 0.0], [0.0, 0.0]];
+    let tangents = [[0.0f32, 1.0, 0.0, -1.0]; 4];
+    let mut bin: Vec<u8> = positions
+        .iter()
+        .flatten()
+        .chain(normals.iter().flatten())
+        .chain(uvs.iter().flatten())
+        .chain(tangents.iter().flatten())
+        .flat_map(|v| v.to_le_bytes())
+        .collect();
+    bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes()));
+    std::fs::write(dir.join("t.bin"), &bin).unwrap();
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0, "scale": [-2, 1, 1]}}],
+ "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TANGENT": 3}}, "indices": 4}}]}}],
+ "buffers": [{{"uri": "t.bin", "byteLength": {len}}}],
+ "bufferViews": [{{"buffer": 0, "byteOffset": 0, "byteLength": 48}}, {{"buffer": 0, "byteOffset": 48, "byteLength": 48}},
+   {{"buffer": 0, "byteOffset": 96, "byteLength": 32}}, {{"buffer": 0, "byteOffset": 128, "byteLength": 64}},
+   {{"buffer": 0, "byteOffset": 192, "byteLength": 12}}],
+ "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]}},
+   {{"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"}},
+   {{"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"}},
+   {{"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC4"}},
+   {{"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"}}]}}"#,
+        len = bin.len()
+    );
+    let path = dir.join("t.gltf");
+    std::fs::write(&path, json).unwrap();
+    let loaded = bidir::scene::load(&path, &bidir::scene::LoadOptions { strict: true }).unwrap();
+    assert!(loaded.warnings.is_empty(), "warnings: {:?}", loaded.warnings);
+    let s = loaded.scene;
+    let t = s.tangents.as_ref().expect("the file's tangents are kept");
+    assert_eq!(t.len(), s.positions.len());
+    for v in t {
+        // diag(-2, 1, 1) keeps +y; the mirror flips the handedness -1 to +1.
+        assert!((v.truncate() - Vec3::Y).length() < 1e-6 && v.w == 1.0, "{v}");
+    }
+    assert_eq!(bidir::scene::tangents::generate(&s).as_ref(), Some(t), "the upload must take the file's tangents");
+    let mut without = s.clone();
+    without.tangents = None;
+    let generated = bidir::scene::tangents::generate(&without).unwrap();
+    assert!(generated.iter().all(|g| g.truncate().dot(Vec3::Y).abs() < 1e-6), "generated tangents follow u (along x): {generated:?}");
+}

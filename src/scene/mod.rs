@@ -87,6 +87,9 @@ pub struct Scene {
     /// Per-vertex texture coordinates, only where the file has them. (0, 0) is the top-left
     /// corner of a texture (glTF's convention; OBJ's `v` is flipped on load).
     pub uvs: Option<Vec<Vec2>>,
+    /// Per-vertex tangents from the file (glTF TANGENT: xyz, w = handedness), only where
+    /// every part has them; else tangents are generated from the UVs (`tangents.rs`).
+    pub tangents: Option<Vec<glam::Vec4>>,
     /// Vertex indices, counter-clockwise seen from the front.
     pub triangles: Vec<[u32; 3]>,
     /// Index into `materials`, one per triangle.

@@ -30,7 +30,7 @@ use ::gltf::mesh::{Mode, Semantic};
 use ::gltf::{Document, Node};
 use glam::{Mat4, Quat, Vec2, Vec3};
 
-use self::accessor::{read_indices, read_uv, read_vec3, AccessorError};
+use self::accessor::{read_indices, read_uv, read_vec3, read_vec4, AccessorError};
 use super::builder::{Builder, Part, Transform};
 use super::texture::Requests;
 use super::warnings::Warnings;
@@ -95,6 +95,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         positions: b.positions,
         normals: b.normals,
         uvs: b.uvs,
+        tangents: b.tangents,
         triangles: b.triangles,
         material_ids: b.material_ids,
         materials,
@@ -253,6 +254,7 @@ struct Prim {
     positions: Vec<Vec3>,
     normals: Option<Vec<Vec3>>,
     uvs: Option<Vec<Vec2>>,
+    tangents: Option<Vec<glam::Vec4>>,
     triangles: Vec<[u32; 3]>,
     material: u32,
 }
@@ -342,7 +344,12 @@ fn geometry(
     }
     check_size(instances.len() as u64, tris, verts).map_err(|msg| gerr("scene".into(), msg))?;
     let (verts, tris) = (verts as usize, tris as usize);
+    // Tangents from the file where every part has them (else all are generated from the UVs).
+    let with_tangents = instances.iter().all(|&(m, _)| prims_of(m).iter().all(|p| p.tangents.is_some()));
     let mut b = Builder::new(with_normals, with_uvs);
+    if with_tangents && with_uvs {
+        b = b.with_tangents();
+    }
     b.reserve(verts, tris);
     for &(m, world) in &instances {
         let xf = (world != Mat4::IDENTITY).then(|| Transform::new(world));
@@ -351,6 +358,7 @@ fn geometry(
                 positions: &p.positions,
                 normals: p.normals.as_deref(),
                 uvs: p.uvs.as_deref(),
+                tangents: p.tangents.as_deref(),
                 triangles: &p.triangles,
                 material: p.material,
             };
@@ -473,6 +481,13 @@ fn read_mesh(
             }
             None => None,
         };
+        let tangents = match prim.get(&Semantic::Tangents) {
+            Some(acc) if normals.is_some() => {
+                same_count(&acc, "TANGENT")?;
+                Some(read_vec4(&acc, buffers).map_err(|e| read_err(&acc, "TANGENT", e))?)
+            }
+            _ => None,
+        };
         for (semantic, _) in prim.attributes() {
             match semantic {
                 Semantic::Colors(_) => {
@@ -500,7 +515,7 @@ fn read_mesh(
                 indices.len() % 3
             ));
         }
-        out.push(Prim { positions, normals, uvs, triangles, material });
+        out.push(Prim { positions, normals, uvs, tangents, triangles, material });
     }
     Ok(out)
 }
