@@ -8,11 +8,13 @@
 #define BIDIR_BSDF_GLSL
 
 #include "microfacet.glsl"
-#include "rng.glsl"
 
 const uint LOBE_DIFFUSE = 0u;
 const uint LOBE_MIRROR = 1u;
 const uint LOBE_GLASS = 2u;
+// The glass fraction of a material with roughness > 0 (rough_dielectric.glsl): sampled, never
+// connected (no light sampling or BDPT connection at its vertices), with exact pdfs.
+const uint LOBE_ROUGH_GLASS = 3u;
 
 // Fraction of the perfect mirror: the thesis' reflectivity, unless the material is rough
 // (its reflectivity is then a rough conductor, part of the continuous BSDF).
@@ -23,26 +25,18 @@ float mirror_fraction(GpuMaterial m) {
     return m.params.x;
 }
 
-// Picks a lobe with probability equal to its fraction, so the fraction cancels.
-uint choose_lobe(GpuMaterial m, float u) {
+// Picks a lobe with probability equal to its fraction, so the fraction cancels; `glass` is
+// the glass fraction at the surface point (glass_fraction in scene.glsl).
+uint choose_lobe(GpuMaterial m, float glass, float u) {
     float r = mirror_fraction(m);
-    float g = HAS_GLASS != 0u ? m.params.y : 0.0;
+    float g = HAS_GLASS != 0u ? glass : 0.0;
     if (u < r) {
         return LOBE_MIRROR;
     }
     if (u < r + g) {
-        return LOBE_GLASS;
+        return HAS_ROUGH_GLASS != 0u && m.roughness > 0.0 ? LOBE_ROUGH_GLASS : LOBE_GLASS;
     }
     return LOBE_DIFFUSE;
-}
-
-// choose_lobe with a fresh random number, drawn only where the scene has a delta lobe: a
-// scene of continuous materials spends no sample dimension (no scrambled Sobol' number) on it.
-uint choose_lobe_drawn(GpuMaterial m, inout Rng rng) {
-    if (HAS_MIRROR == 0u && HAS_GLASS == 0u) {
-        return LOBE_DIFFUSE;
-    }
-    return choose_lobe(m, rng_next(rng));
 }
 
 // Fresnel reflectance of a smooth dielectric for unpolarised light (exact form, the average
@@ -75,6 +69,8 @@ vec3 sample_dielectric(vec3 d, vec3 n_f, float eta, float u, out float radiance_
     radiance_scale = eta * eta;
     return normalize(eta * d + (eta * cos_i - cos_t) * n_f);
 }
+
+#include "rough_dielectric.glsl"
 
 // The non-delta part of a material at a surface point (its lobes weighted by their
 // fractions): f(wo, wi) = diffuse / pi (1 - coat F(coat_f0, wo.h))

@@ -13,10 +13,12 @@ layout(constant_id = SPEC_HAS_ALPHA) const uint HAS_ALPHA = 0u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 0u;
 layout(constant_id = SPEC_HAS_EMISSION_TEXTURES) const uint HAS_EMISSION_TEXTURES = 0u;
 layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint HAS_NORMAL_MAPS = 0u;
+layout(constant_id = SPEC_HAS_ROUGH_GLASS) const uint HAS_ROUGH_GLASS = 0u;
 
 #define TRAVERSE_WITH_ALPHA
 #include "traverse.glsl"
 #include "bsdf.glsl"
+#include "rng.glsl"
 
 // (vertex 0, vertex 1, vertex 2, material) of each triangle, in leaf order.
 layout(std430, binding = BIND_PRIM_INFO) readonly buffer PrimInfo { uvec4 prim_info[]; };
@@ -212,6 +214,44 @@ vec3 material_emission(GpuMaterial m, vec2 uv) {
     return e;
 }
 
+// Fraction of glass at uv: the refractivity times the red channel of the transmission
+// texture (glTF transmissionTexture).
+float glass_fraction(GpuMaterial m, vec2 uv) {
+    if (HAS_GLASS == 0u) {
+        return 0.0;
+    }
+    float g = m.params.y;
+    if (HAS_TEXTURES != 0u && m.transmission_texture != 0u) {
+        g *= sample_texture(m.transmission_texture - 1u, uv).r;
+    }
+    return g;
+}
+
+// choose_lobe with a fresh random number, drawn only where the scene has a delta lobe: a
+// scene of continuous materials spends no sample dimension (no scrambled Sobol' number) on it.
+uint choose_lobe_drawn(GpuMaterial m, vec2 uv, inout Rng rng) {
+    if (HAS_MIRROR == 0u && HAS_GLASS == 0u) {
+        return LOBE_DIFFUSE;
+    }
+    return choose_lobe(m, glass_fraction(m, uv), rng_next(rng));
+}
+
+// Transmission tint of the glass fraction: glTF's baseColor (KHR_materials_transmission:
+// specular_btdf x baseColor); the thesis' glass is untinted.
+vec3 glass_tint(GpuMaterial m, vec2 uv) {
+    return m.model == MATERIAL_METAL_ROUGH ? material_albedo(m, uv) : vec3(1.0);
+}
+
+// GGX alpha of the rough glass (LOBE_ROUGH_GLASS): roughness^2, the roughness times the
+// green channel of the roughness texture.
+float glass_alpha(GpuMaterial m, vec2 uv) {
+    float roughness = m.roughness;
+    if (HAS_TEXTURES != 0u && m.tex.z != 0u) {
+        roughness *= sample_texture(m.tex.z - 1u, uv).g;
+    }
+    return max(roughness * roughness, GGX_MIN_ALPHA);
+}
+
 // The continuous (non-delta) part of material m at texture coordinate uv (bsdf.glsl):
 // - MATERIAL_THESIS: the Lambertian rest 1 - reflectivity - refractivity times the albedo,
 //   and, where the material is rough, its reflectivity as a GGX conductor with F = 1;
@@ -222,7 +262,7 @@ vec3 material_emission(GpuMaterial m, vec2 uv) {
 Continuous continuous_at(GpuMaterial m, vec2 uv) {
     vec3 albedo = material_albedo(m, uv);
     float refl = mirror_fraction(m);
-    float refr = HAS_GLASS != 0u ? m.params.y : 0.0;
+    float refr = glass_fraction(m, uv);
     Continuous c;
     c.pick = max(0.0, 1.0 - refl - refr);
     c.diffuse = c.pick * albedo;

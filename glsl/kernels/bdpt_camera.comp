@@ -260,7 +260,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         }
 
         // Continue by sampling the BSDF (radiance transport).
-        uint lobe = choose_lobe_drawn(m, rng);
+        uint lobe = choose_lobe_drawn(m, s.uv, rng);
         if (lobe == LOBE_DIFFUSE && VCM_PHOTON_MAPPING) {
             break; // progressive photon mapping: the merge above estimated the rest
         }
@@ -288,6 +288,26 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + k.vm);
             d_vcm = mis(1.0 / pdf_fwd_w);
             d = dn;
+        } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
+            // Rough glass: never connected, so the strategies whose connecting edge touches
+            // this vertex are impossible: dVCM (the edge to the next vertex) is 0 and dVC
+            // keeps only its own term, with the real pdf ratio (a delta lobe's cancels).
+            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float u_sel = rng_next(rng);
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            vec3 dn;
+            float weight, pdf_fwd_w, pdf_rev_w;
+            bool refracted;
+            if (!rough_dielectric_sample_world(ns_f, wo, eta, glass_alpha(m, s.uv), true, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
+                || (dot(dn, ng_f) > 0.0) == refracted) {
+                break;
+            }
+            beta *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
+            d_vcm = 0.0;
+            d_vc *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w);
+            d_vm *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w); // VCM: as dVC (a vertex that is never merged)
+            d = dn;
         } else {
             vec3 dn;
             if (lobe == LOBE_MIRROR) {
@@ -297,7 +317,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 float scale;
                 bool refracted;
                 dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
-                beta *= scale;
+                beta *= refracted ? scale * glass_tint(m, s.uv) : vec3(scale);
             }
             d_vcm = 0.0;
             d_vc *= mis(abs(dot(dn, ns_f)));

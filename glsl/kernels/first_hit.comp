@@ -46,9 +46,16 @@ void first_hit_sample(vec2 pixel, inout Rng rng, inout FirstHitSums sum) {
         Surface s = surface_at(o, d, h);
         GpuMaterial m = materials[s.material];
         vec3 ns_f = s.front ? s.ns : -s.ns;
-        uint lobe = choose_lobe(m, rng_next(rng));
+        uint lobe = choose_lobe_drawn(m, s.uv, rng);
         if (lobe == LOBE_DIFFUSE) {
             sum.albedo += continuous_albedo(continuous_at(m, s.uv));
+            sum.normal += ns_f;
+            return;
+        }
+        if (lobe == LOBE_ROUGH_GLASS) {
+            // A rough dielectric scatters like a glossy surface: it ends the chain, its
+            // albedo the transmission tint.
+            sum.albedo += glass_tint(m, s.uv);
             sum.normal += ns_f;
             return;
         }

@@ -72,7 +72,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
         // Normals facing the side the ray came from.
         vec3 ng_f = s.front ? s.ng : -s.ng;
         vec3 ns_f = s.front ? s.ns : -s.ns;
-        uint lobe = choose_lobe_drawn(m, rng);
+        uint lobe = choose_lobe_drawn(m, s.uv, rng);
         if (lobe == LOBE_MIRROR) {
             d = reflect(d, ns_f);
             o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
@@ -82,7 +82,26 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             float scale;
             bool refracted;
             d = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
-            throughput *= scale;
+            throughput *= refracted ? scale * glass_tint(m, s.uv) : vec3(scale);
+            o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+            specular = true;
+        } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
+            // Rough glass is sampled only (no light sampling here), so emission found next
+            // counts in full, as after a delta lobe; its weight f |cos| / pdf_w is G2 / G1
+            // (times eta^2 and the tint on refraction).
+            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float u_sel = rng_next(rng);
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            vec3 dn;
+            float weight, pdf_fwd_w, pdf_rev_w;
+            bool refracted;
+            if (!rough_dielectric_sample_world(ns_f, -d, eta, glass_alpha(m, s.uv), true, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
+                || (dot(dn, ng_f) > 0.0) == refracted) {
+                break; // masked, or the geometric normal disagrees with the shading normal's side
+            }
+            throughput *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
+            d = dn;
             o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
             specular = true;
         } else {

@@ -11,6 +11,7 @@
 //   and eta pc.a.w, out[i] = (new direction, radiance scale if refracted else 0);
 // - SAMPLING_GLOSSY / SAMPLING_GLOSSY_EVAL: continuous_sample / continuous_eval of the
 //   BSDF given in the push (src/gpu/abi.rs says where each value is).
+// - SAMPLING_ROUGH_GLASS / SAMPLING_ROUGH_GLASS_EVAL: the rough dielectric (rough_dielectric.glsl).
 // - SAMPLING_ENV: env_sample over the bound environment, out[2i] = (direction, its pdf_w),
 //   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
 // Uniform numbers come from rng.glsl (the independent sampler), as in the integrators.
@@ -22,6 +23,7 @@
 layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
 layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 1u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 1u;
+layout(constant_id = SPEC_HAS_ROUGH_GLASS) const uint HAS_ROUGH_GLASS = 1u;
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "env.glsl"
@@ -88,6 +90,29 @@ void main() {
         vec3 f_swapped = continuous_eval(c, pc.b.xyz, wi, wo, fwd_swapped, rev_swapped);
         result[2u * i] = vec4(f, fwd);
         result[2u * i + 1u] = vec4(f_swapped, rev);
+    } else if (pc.mode == SAMPLING_ROUGH_GLASS) {
+        float u_sel = rng_next(rng);
+        float u1 = rng_next(rng);
+        float u2 = rng_next(rng);
+        vec3 wi;
+        float weight, fwd, rev;
+        bool refracted;
+        bool ok = rough_dielectric_sample_world(pc.b.xyz, pc.a.xyz, pc.c.x, pc.c.y, pc.c.z > 0.0, u_sel, u1, u2, wi, weight, fwd, rev, refracted);
+        result[2u * i] = vec4(wi, ok ? 1.0 : 0.0);
+        result[2u * i + 1u] = vec4(weight, fwd, rev, refracted ? 1.0 : 0.0);
+    } else if (pc.mode == SAMPLING_ROUGH_GLASS_EVAL) {
+        vec3 wo = to_local(pc.b.xyz, input_dirs[2u * i].xyz);
+        vec3 wi = to_local(pc.b.xyz, input_dirs[2u * i + 1u].xyz);
+        float eta = pc.c.x, alpha = pc.c.y;
+        result[2u * i] = vec4(rough_dielectric_f(wo, wi, eta, alpha, true), rough_dielectric_f(wo, wi, eta, alpha, false),
+                              rough_dielectric_pdf_w(wo, wi, eta, alpha), rough_dielectric_rev_pdf_w(wo, wi, eta, alpha));
+        // The pair swapped, seen from wi's side (z negated and eta inverted on transmission).
+        bool t = wi.z < 0.0;
+        vec3 a = t ? vec3(wi.xy, -wi.z) : wi;
+        vec3 b = t ? vec3(wo.xy, -wo.z) : wo;
+        float eta_s = t ? 1.0 / eta : eta;
+        result[2u * i + 1u] = vec4(rough_dielectric_f(a, b, eta_s, alpha, true), rough_dielectric_f(a, b, eta_s, alpha, false),
+                                   rough_dielectric_pdf_w(a, b, eta_s, alpha), rough_dielectric_rev_pdf_w(a, b, eta_s, alpha));
     } else if (pc.mode == SAMPLING_ENV) {
         EnvSample e = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
         EnvSample l = env_lookup(e.w);

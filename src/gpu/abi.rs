@@ -206,6 +206,14 @@ gpu_consts! {
     pub const SAMPLING_GLOSSY_EVAL: u32 = 5;
     /// Environment sampling: (direction, pdf_w) per sample, then the pdf looked up again.
     pub const SAMPLING_ENV: u32 = 6;
+    /// rough_dielectric_sample_world for wo `a.xyz`, shading normal `b.xyz`, eta `c.x`, alpha
+    /// `c.y`, radiance if `c.z` > 0: out[2i] = (wi, 1 if sampled else 0), out[2i + 1] =
+    /// (weight f |cos| / pdf_fwd_w, pdf_fwd_w, pdf_rev_w, 1 if refracted).
+    pub const SAMPLING_ROUGH_GLASS: u32 = 7;
+    /// The rough dielectric of direction pairs in[2i] = wo, in[2i + 1] = wi (parameters as
+    /// SAMPLING_ROUGH_GLASS, local frame of `b.xyz`): out[2i] = (f radiance, f importance,
+    /// pdf_fwd_w, pdf_rev_w), out[2i + 1] = the same for the pair swapped.
+    pub const SAMPLING_ROUGH_GLASS_EVAL: u32 = 8;
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.
@@ -236,6 +244,9 @@ gpu_consts! {
     pub const SPEC_HAS_ENV: u32 = 18;
     /// 1: the scene has punctual lights (point, spot, directional).
     pub const SPEC_HAS_PUNCTUAL: u32 = 19;
+    /// 1: some material's glass fraction is rough (roughness > 0): the rough dielectric of
+    /// glsl/common/rough_dielectric.glsl; 0 compiles it out (smooth glass only).
+    pub const SPEC_HAS_ROUGH_GLASS: u32 = 20;
 
     // ---- Vertex connection and merging (docs/integrators.md, src/render/vcm.rs) ------------
     /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT (the BDPT kernels
@@ -401,7 +412,7 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (96 bytes) {
+    pub struct GpuMaterial (112 bytes) {
         /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested; BLEND: 0, see `opacity`).
         pub albedo: Vec4,
         /// Emitted radiance (rgb), front face only; w: its luminance.
@@ -428,6 +439,11 @@ gpu_structs! {
         /// glTF BLEND: the base opacity (times the alpha texture's alpha, `tex.y`); a hit is
         /// kept with that probability. 1 for other materials.
         pub opacity: f32,
+        /// Transmission texture + 1 (linear; its red channel scales the refractivity), 0 = none.
+        pub transmission_texture: u32,
+        pub pad0: u32,
+        pub pad1: u32,
+        pub pad2: u32,
     }
 
     /// An emissive triangle for light sampling.

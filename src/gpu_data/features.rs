@@ -23,6 +23,8 @@ pub struct SceneFeatures {
     pub env: bool,
     /// Punctual lights.
     pub punctual: bool,
+    /// Rough glass (a glass fraction with roughness > 0).
+    pub rough_glass: bool,
 }
 
 impl SceneFeatures {
@@ -35,6 +37,7 @@ impl SceneFeatures {
                     || m.alpha.is_some()
                     || m.roughness_texture.is_some()
                     || m.metallic_texture.is_some()
+                    || m.transmission_texture.is_some()
                     || m.emission_texture.is_some()
                     || m.normal_texture.is_some()
             });
@@ -56,6 +59,7 @@ impl SceneFeatures {
                 && m.iter().any(|m| m.normal_texture.is_some()),
             env: scene.environment.as_ref().is_some_and(|e| !e.is_black()),
             punctual: !scene.punctual_lights.is_empty(),
+            rough_glass: m.iter().any(Material::has_rough_glass),
         }
     }
 
@@ -71,6 +75,7 @@ impl SceneFeatures {
             glossy: true,
             emission_textures: true,
             normal_maps: true,
+            rough_glass: true,
             ..self
         }
     }
@@ -88,6 +93,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_NORMAL_MAPS, value: self.normal_maps as u32 },
             Spec { id: abi::SPEC_HAS_ENV, value: self.env as u32 },
             Spec { id: abi::SPEC_HAS_PUNCTUAL, value: self.punctual as u32 },
+            Spec { id: abi::SPEC_HAS_ROUGH_GLASS, value: self.rough_glass as u32 },
         ]
     }
 }

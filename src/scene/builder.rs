@@ -11,13 +11,15 @@
 //! - A transform with a negative determinant mirrors the geometry, so it swaps the winding to
 //!   keep "counter-clockwise seen from the front".
 
-use glam::{Mat3, Mat4, Vec2, Vec3};
+use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 
 /// Geometry with part-local indices (all `< positions.len()`, checked by the loader).
 pub(crate) struct Part<'a> {
     pub positions: &'a [Vec3],
     pub normals: Option<&'a [Vec3]>,
     pub uvs: Option<&'a [Vec2]>,
+    /// Tangents (xyz, handedness w); used only when the builder keeps tangents.
+    pub tangents: Option<&'a [Vec4]>,
     pub triangles: &'a [[u32; 3]],
     pub material: u32,
 }
@@ -44,6 +46,8 @@ pub(crate) struct Builder {
     pub positions: Vec<Vec3>,
     pub normals: Option<Vec<Vec3>>,
     pub uvs: Option<Vec<Vec2>>,
+    /// Kept only when every part has normals and tangents (`with_tangents`).
+    pub tangents: Option<Vec<Vec4>>,
     pub triangles: Vec<[u32; 3]>,
     pub material_ids: Vec<u32>,
     pub dropped_degenerate: usize,
@@ -52,6 +56,13 @@ pub(crate) struct Builder {
 impl Builder {
     pub fn new(with_normals: bool, with_uvs: bool) -> Self {
         Builder { normals: with_normals.then(Vec::new), uvs: with_uvs.then(Vec::new), ..Default::default() }
+    }
+
+    /// Keeps the parts' tangents (the caller has checked that every part has them and
+    /// normals): transformed by the instance matrix, handedness flipped by a mirror.
+    pub fn with_tangents(mut self) -> Self {
+        self.tangents = self.normals.is_some().then(Vec::new);
+        self
     }
 
     pub fn reserve(&mut self, vertices: usize, triangles: usize) {
@@ -89,6 +100,17 @@ impl Builder {
             }
         }
         let flip = xf.is_some_and(|x| x.flip);
+        if let Some(out) = &mut self.tangents {
+            // A tangent lies in the surface: it transforms by the matrix itself.
+            let one = |t: &Vec4| {
+                let d = xf.map_or(t.truncate(), |xf| Mat3::from_mat4(xf.matrix) * t.truncate()).normalize_or_zero();
+                d.extend(if (t.w < 0.0) != flip { -1.0 } else { 1.0 })
+            };
+            match part.tangents {
+                Some(src) => out.extend(src.iter().map(one)),
+                None => out.resize(out.len() + part.positions.len(), Vec4::ZERO),
+            }
+        }
         for t in part.triangles {
             let t = if flip { [t[0], t[2], t[1]] } else { *t };
             let [a, b, c] = t.map(|i| self.positions[(base + i) as usize]);
@@ -145,7 +167,7 @@ mod tests {
     const TRIS: [[u32; 3]; 2] = [[0, 1, 2], [0, 2, 3]];
 
     fn part<'a>(normals: Option<&'a [Vec3]>, tris: &'a [[u32; 3]]) -> Part<'a> {
-        Part { positions: &QUAD, normals, uvs: None, triangles: tris, material: 7 }
+        Part { positions: &QUAD, normals, uvs: None, tangents: None, triangles: tris, material: 7 }
     }
 
     #[test]
@@ -186,7 +208,7 @@ mod tests {
         let pos = [Vec3::ZERO, Vec3::new(1.0, 1.0, 0.0), Vec3::new(0.0, 0.0, 1.0)];
         let n = Vec3::new(1.0, -1.0, 0.0).normalize();
         let mut b = Builder::new(true, false);
-        let p = Part { positions: &pos, normals: Some(&[n; 3]), uvs: None, triangles: &[[0, 1, 2]], material: 0 };
+        let p = Part { positions: &pos, normals: Some(&[n; 3]), uvs: None, tangents: None, triangles: &[[0, 1, 2]], material: 0 };
         b.push(&p, Some(&Transform::new(Mat4::from_scale(Vec3::new(2.0, 1.0, 1.0)))));
         let got = b.normals.unwrap()[0];
         let want = Vec3::new(1.0, -2.0, 0.0).normalize();

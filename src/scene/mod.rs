@@ -91,6 +91,9 @@ pub struct Scene {
     /// Per-vertex texture coordinates, only where the file has them. (0, 0) is the top-left
     /// corner of a texture (glTF's convention; OBJ's `v` is flipped on load).
     pub uvs: Option<Vec<Vec2>>,
+    /// Per-vertex tangents from the file (glTF TANGENT: xyz, w = handedness), only where
+    /// every part has them; else tangents are generated from the UVs (`tangents.rs`).
+    pub tangents: Option<Vec<glam::Vec4>>,
     /// Vertex indices, counter-clockwise seen from the front.
     pub triangles: Vec<[u32; 3]>,
     /// Index into `materials`, one per triangle.
@@ -154,6 +157,8 @@ pub struct Material {
     pub roughness_texture: Option<u32>,
     /// Linear texture whose blue channel scales the metallic factor (glTF metallicRoughness, `map_Pm`).
     pub metallic_texture: Option<u32>,
+    /// Linear texture whose red channel scales `refractivity` (glTF transmissionTexture).
+    pub transmission_texture: Option<u32>,
 }
 
 impl Default for Material {
@@ -176,6 +181,7 @@ impl Default for Material {
             roughness: 0.0,
             roughness_texture: None,
             metallic_texture: None,
+            transmission_texture: None,
         }
     }
 }
@@ -214,7 +220,9 @@ impl Material {
         if self.has_mirror() {
             f.push("mirror");
         }
-        if self.refractivity > 0.0 {
+        if self.has_rough_glass() {
+            f.push("rough glass (GGX)");
+        } else if self.refractivity > 0.0 {
             f.push("glass");
         }
         if self.is_emissive() {
@@ -224,6 +232,7 @@ impl Material {
             (self.albedo_texture.is_some(), "base colour map"),
             (self.roughness_texture.is_some(), "roughness map"),
             (self.metallic_texture.is_some(), "metallic map"),
+            (self.transmission_texture.is_some(), "transmission map"),
             (self.normal_texture.is_some(), "normal map"),
             (self.emission_texture.is_some() && self.is_emissive(), "emission map"),
             (self.alpha.is_some(), "alpha mask"),
@@ -231,6 +240,11 @@ impl Material {
         ];
         f.extend(maps.iter().filter(|(on, _)| *on).map(|(_, name)| *name));
         format!("{kind}: {}", f.join(", "))
+    }
+
+    /// Whether the glass fraction is a rough dielectric (roughness > 0; Walter et al. 2007).
+    pub fn has_rough_glass(&self) -> bool {
+        self.refractivity > 0.0 && self.roughness > 0.0
     }
 
     /// Whether the thesis' perfect mirror (a delta lobe) is used.

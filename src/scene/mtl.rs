@@ -26,8 +26,9 @@
 //! - `IOR` (thesis) → index of refraction, else `Ni`, else 1.5.
 //! - PBR keys (Blender's exporter): `Pr` roughness and `Pm` metallic (in [0, 1]), `map_Pr` /
 //!   `map_Pm` (linear; grey level). A thesis mirror (`reflectivity`, `illum 3/5`) stays one, made
-//!   a rough GGX conductor with F = 1 (alpha = Pr²) by `Pr > 0` (or `map_Pr`); without a mirror
-//!   any of these keys makes the material glTF's metallic-roughness model with base colour
+//!   a rough GGX conductor with F = 1 (alpha = Pr²) by `Pr > 0` (or `map_Pr`); a thesis glass
+//!   (`refractivity`, `illum 7`, `d < 1`) likewise becomes a rough dielectric (Walter et al.
+//!   2007, the thesis' IOR, exact Fresnel); without a mirror or glass any of these keys makes the material glTF's metallic-roughness model with base colour
 //!   `Kd` (roughness `Pr`, default 1 as in glTF; metallic `Pm`, default 0).
 //! - `norm` → tangent-space normal map (linear; `map_Bump` is a height map: not supported).
 //! - `map_Ke` (sRGB) scales the emission (`Ke`, or 1 when `Ke` is absent).
@@ -284,15 +285,17 @@ pub(crate) fn to_material(
     };
     let roughness_texture = e.map_pr.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
     let metallic_texture = e.map_pm.as_ref().and_then(|(line, name)| texture(name, *line, Role::Linear, w));
-    // A thesis mirror stays one (rough where Pr or map_Pr says so); otherwise the PBR keys
-    // make the metallic-roughness model.
-    let pbr = refl == 0.0 && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some());
+    // A thesis mirror or glass stays one (rough where Pr or map_Pr says so: a GGX conductor
+    // with F = 1, a rough dielectric with the thesis' IOR); otherwise the PBR keys make the
+    // metallic-roughness model.
+    let thesis = refl > 0.0 || refr > 0.0;
+    let pbr = !thesis && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some());
     let (model, roughness, metallic) = if pbr {
         (MaterialModel::MetalRough, e.pr.unwrap_or(1.0), e.pm.unwrap_or(0.0))
-    } else if refl > 0.0 && roughness_texture.is_some() {
+    } else if thesis && roughness_texture.is_some() {
         (MaterialModel::Thesis, e.pr.unwrap_or(1.0), 0.0)
     } else {
-        (MaterialModel::Thesis, if refl > 0.0 { e.pr.unwrap_or(0.0) } else { 0.0 }, 0.0)
+        (MaterialModel::Thesis, if thesis { e.pr.unwrap_or(0.0) } else { 0.0 }, 0.0)
     };
     Material {
         name: e.name.clone(),
@@ -312,6 +315,7 @@ pub(crate) fn to_material(
         roughness,
         roughness_texture,
         metallic_texture: if pbr { metallic_texture } else { None },
+        transmission_texture: None,
     }
 }
 
@@ -340,6 +344,12 @@ mod tests {
         let m = material("newmtl R\nKd 0.5 0.5 0.5\nreflectivity 0.6\nPr 0.3\n");
         assert_eq!((m.model, m.reflectivity, m.roughness, m.metallic), (MaterialModel::Thesis, 0.6, 0.3, 0.0));
         assert!(m.is_glossy() && !m.has_mirror());
+        // Pr on a thesis glass: a rough dielectric with the thesis' IOR.
+        let m = material("newmtl G\nKd 0.5 0.5 0.5\nrefractivity 1\nIOR 1.7\nPr 0.4\n");
+        assert_eq!((m.model, m.refractivity, m.ior, m.roughness), (MaterialModel::Thesis, 1.0, 1.7, 0.4));
+        assert!(m.has_rough_glass() && m.describe().contains("rough glass"), "{}", m.describe());
+        let m = material("newmtl S\nillum 7\n");
+        assert!(!m.has_rough_glass() && m.describe().contains("glass"));
         // Pr 0 keeps the perfect mirror.
         let m = material("newmtl M\nillum 3\nPr 0\n");
         assert!(m.has_mirror() && !m.is_glossy());

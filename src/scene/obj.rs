@@ -179,7 +179,17 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
         let uvs: Option<Vec<Vec2>> = uvs_ok.then(|| mesh.texcoords.chunks_exact(2).map(|t| Vec2::new(t[0], 1.0 - t[1])).collect());
         let triangles: Vec<[u32; 3]> = mesh.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
         let material = material_of(mesh.material_id, &mut materials);
-        b.push(&Part { positions: &positions, normals: normals.as_deref(), uvs: uvs.as_deref(), triangles: &triangles, material }, None);
+        b.push(
+            &Part {
+                positions: &positions,
+                normals: normals.as_deref(),
+                uvs: uvs.as_deref(),
+                tangents: None,
+                triangles: &triangles,
+                material,
+            },
+            None,
+        );
     }
 
     let decoded = requests.decode(opts.strict, &mut w)?;
@@ -192,6 +202,7 @@ fn load_text(file: &Path, text: &str, files: Files, opts: &LoadOptions) -> Resul
         positions: b.positions,
         normals: b.normals,
         uvs: b.uvs,
+        tangents: None,
         triangles: b.triangles,
         material_ids: b.material_ids,
         materials,

@@ -162,6 +162,9 @@ impl Scene {
         if let Some(uv) = &mut self.uvs {
             uv.extend([Vec2::ZERO; 4]);
         }
+        if let Some(t) = &mut self.tangents {
+            t.extend([quad.edge1.normalize_or_zero().extend(1.0); 4]);
+        }
         let material = self.materials.len() as u32;
         self.materials.push(Material { name: name.to_owned(), albedo: Vec3::ZERO, emission: quad.radiance, ..Material::default() });
         self.triangles.extend([[base, base + 1, base + 2], [base, base + 2, base + 3]]);

@@ -15,6 +15,10 @@ use super::Scene;
 pub fn generate(scene: &Scene) -> Option<Vec<Vec4>> {
     let (normals, uvs) = (scene.normals.as_ref()?, scene.uvs.as_ref()?);
     let n = scene.positions.len();
+    // The file's tangents (glTF TANGENT), where the loader kept them for every vertex.
+    if let Some(t) = scene.tangents.as_ref().filter(|t| t.len() == n) {
+        return Some(t.clone());
+    }
     let (mut tan, mut up) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     for tri in &scene.triangles {
         let [a, b, c] = tri.map(|i| i as usize);

@@ -159,6 +159,7 @@ impl Decoded {
             m.emission_texture = m.emission_texture.and_then(|t| self.remap[t as usize]);
             m.normal_texture = m.normal_texture.and_then(|t| self.remap[t as usize]);
             m.metallic_texture = m.metallic_texture.and_then(|t| self.remap[t as usize]);
+            m.transmission_texture = m.transmission_texture.and_then(|t| self.remap[t as usize]);
             m.alpha = m.alpha.and_then(|a| self.remap[a.texture as usize].map(|t| super::AlphaMask { texture: t, ..a }));
         }
     }

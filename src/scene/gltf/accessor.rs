@@ -4,7 +4,7 @@
 //! tight loop per attribute, straight into the output `Vec`.
 
 use ::gltf::accessor::{Accessor, DataType, Dimensions};
-use glam::{Vec2, Vec3};
+use glam::{Vec2, Vec3, Vec4};
 
 /// Why an accessor cannot be read; the caller adds which element it is.
 pub(super) enum AccessorError {
@@ -73,6 +73,21 @@ pub(super) fn read_vec3(acc: &Accessor, buffers: &[Vec<u8>]) -> Result<Vec<Vec3>
     for i in 0..count {
         let o = i * stride;
         let v = Vec3::new(f32_at(d, o), f32_at(d, o + 4), f32_at(d, o + 8));
+        if !v.is_finite() {
+            return bad(format!("element {i} is not finite ({v})"));
+        }
+        out.push(v);
+    }
+    Ok(out)
+}
+
+/// A VEC4 of floats (TANGENT: xyz and the handedness w); NaN or Inf is an error.
+pub(super) fn read_vec4(acc: &Accessor, buffers: &[Vec<u8>]) -> Result<Vec<Vec4>> {
+    let (d, stride, count, _) = view(acc, buffers, Dimensions::Vec4, &[DataType::F32])?;
+    let mut out = Vec::with_capacity(count);
+    for i in 0..count {
+        let o = i * stride;
+        let v = Vec4::new(f32_at(d, o), f32_at(d, o + 4), f32_at(d, o + 8), f32_at(d, o + 12));
         if !v.is_finite() {
             return bad(format!("element {i} is not finite ({v})"));
         }

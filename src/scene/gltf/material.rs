@@ -3,8 +3,10 @@
 //! - `baseColorFactor` (linear) × `baseColorTexture` (sRGB) → albedo (the base colour).
 //! - `metallicFactor`, `roughnessFactor` × `metallicRoughnessTexture` (linear; B metallic,
 //!   G roughness) → metallic, roughness; `KHR_materials_ior` → ior (1.5: F0 = 0.04).
-//! - `KHR_materials_transmission.transmissionFactor` → refractivity (smooth glass) of the
-//!   dielectric part only: `transmission × (1 - metallic)`.
+//! - `KHR_materials_transmission.transmissionFactor` × `transmissionTexture` (linear, R) →
+//!   refractivity of the dielectric part only: `transmission × (1 - metallic)`; a rough
+//!   dielectric (Walter et al. 2007) with the material's roughness, smooth at roughness 0,
+//!   its transmission tinted by the base colour.
 //! - `emissiveFactor × KHR_materials_emissive_strength` → emission, times `emissiveTexture`
 //!   (sRGB) where there is one.
 //! - `alphaMode: MASK` → alpha mask on the base colour texture's alpha, cutoff
@@ -13,8 +15,7 @@
 //!   base colour factor alpha × texture alpha), unbiased for every integrator.
 //! - `normalTexture` (linear, tangent space, `scale`) → normal map; tangents are generated
 //!   from the UVs (`scene/tangents.rs`).
-//! - Textures the model cannot use (transmission) are ignored with one
-//!   warning each; occlusion is ignored silently (a path tracer computes occlusion).
+//! - Texture coordinate sets and KHR_texture_transform: `uv_map.rs`; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
 
@@ -40,21 +41,11 @@ pub(super) fn convert<'a>(
         let index = m.index().unwrap_or(out.len());
         let name = m.name().map_or_else(|| format!("material {index}"), str::to_owned);
         let element = format!("material {index} \"{name}\"");
-        let unsupported = |w: &mut Warnings, what: &str| {
-            w.warn_once(&format!("gltf-{what}"), || {
-                format!("{}: {element}: {what} is not supported; ignored (further uses not reported)", file.display())
-            })
-        };
         let pbr = m.pbr_metallic_roughness();
         let [r, g, b, a] = pbr.base_color_factor();
         let albedo = Vec3::new(r, g, b);
         let albedo_texture = match pbr.base_color_texture() {
-            Some(info) => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
-                image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
-            }
+            Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?,
             None => None,
         };
         let metallic = pbr.metallic_factor();
@@ -67,36 +58,24 @@ pub(super) fn convert<'a>(
             });
         }
         let metal_rough_texture = match pbr.metallic_roughness_texture() {
-            Some(info) => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
-                image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?
-            }
+            Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?,
             None => None,
         };
         let transmission = m.transmission();
-        if transmission.as_ref().is_some_and(|t| t.transmission_texture().is_some()) {
-            unsupported(w, "transmissionTexture");
-        }
+        let transmission_texture = match transmission.as_ref().and_then(|t| t.transmission_texture()) {
+            Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?,
+            None => None,
+        };
         let refractivity = transmission.map_or(0.0, |t| t.transmission_factor()).clamp(0.0, 1.0) * (1.0 - metallic);
         let emission = Vec3::from(m.emissive_factor()) * m.emissive_strength().unwrap_or(1.0);
         let emission_texture = match m.emissive_texture() {
             Some(info) if emission.max_element() > 0.0 => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
                 image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?
             }
             _ => None,
         };
         let (normal_texture, normal_scale) = match m.normal_texture() {
-            Some(info) => {
-                if info.tex_coord() != 0 {
-                    unsupported(w, "a texture on TEXCOORD_1 or higher (TEXCOORD_0 is used)");
-                }
-                (image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?, info.scale())
-            }
+            Some(info) => (image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?, info.scale()),
             None => (None, 1.0),
         };
         let alpha = match m.alpha_mode() {
@@ -131,6 +110,7 @@ pub(super) fn convert<'a>(
             roughness,
             roughness_texture: metal_rough_texture,
             metallic_texture: metal_rough_texture,
+            transmission_texture: if refractivity > 0.0 { transmission_texture } else { None },
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
         if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {

@@ -12,14 +12,17 @@
 //! Errors (geometry that cannot be read): invalid JSON or references, required geometry
 //! encodings (Draco, meshopt, quantization, GPU instancing) or texture formats, sparse
 //! accessors, accessors of the wrong type, out of range or non-finite, unreadable buffers.
-//! Warnings (ignored once, by name): other unsupported extensions (`KHR_texture_transform`,
-//! material extensions, lights; even when required), texture kinds, BLEND, non-triangle
+//! Texture coordinate sets and `KHR_texture_transform` are baked into the UVs per material
+//! (`uv_map.rs`).
+//!
+//! Warnings (ignored once, by name): other unsupported extensions (material extensions, lights; even when required), texture kinds, BLEND, non-triangle
 //! primitives, skins, morph targets, orthographic cameras, extra scenes.
 
 mod accessor;
 mod files;
 mod lights;
 mod material;
+mod uv_map;
 
 use std::path::Path;
 
@@ -27,7 +30,7 @@ use ::gltf::mesh::{Mode, Semantic};
 use ::gltf::{Document, Node};
 use glam::{Mat4, Quat, Vec2, Vec3};
 
-use self::accessor::{read_indices, read_uv, read_vec3, AccessorError};
+use self::accessor::{read_indices, read_uv, read_vec3, read_vec4, AccessorError};
 use super::builder::{Builder, Part, Transform};
 use super::texture::Requests;
 use super::warnings::Warnings;
@@ -36,7 +39,7 @@ use crate::limits::{thousands, MAX_INSTANCES, MAX_TRIANGLES};
 
 /// Material extensions the loader reads.
 const SUPPORTED_EXTENSIONS: &[&str] =
-    &["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength", "KHR_lights_punctual"];
+    &["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform"];
 
 /// Loads a `.gltf` or `.glb` file with its buffers and base colour textures.
 pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {
@@ -65,11 +68,12 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
     let mut requests = Requests::default();
     let mut materials = material::convert(file, &doc, &buffers, base, &mut requests, &mut w)?;
     let default_material = materials.len() as u32;
+    let uv_maps = uv_map::uv_maps(file, &doc, &mut w);
 
     let mut tex_warnings = Warnings::default();
     let (geometry, decoded) = std::thread::scope(|s| {
         let decoder = s.spawn(|| requests.decode(opts.strict, &mut tex_warnings));
-        let geometry = geometry(file, &doc, &buffers, default_material, &mut w);
+        let geometry = geometry(file, &doc, &buffers, default_material, &uv_maps, &mut w);
         let decoded =
             decoder.join().unwrap_or_else(|_| Err(SceneError::Parse { file: file.to_path_buf(), msg: "texture decoding failed".into() }));
         (geometry, decoded)
@@ -91,6 +95,7 @@ pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> 
         positions: b.positions,
         normals: b.normals,
         uvs: b.uvs,
+        tangents: b.tangents,
         triangles: b.triangles,
         material_ids: b.material_ids,
         materials,
@@ -249,6 +254,7 @@ struct Prim {
     positions: Vec<Vec3>,
     normals: Option<Vec<Vec3>>,
     uvs: Option<Vec<Vec2>>,
+    tangents: Option<Vec<glam::Vec4>>,
     triangles: Vec<[u32; 3]>,
     material: u32,
 }
@@ -257,7 +263,14 @@ type Geometry = (Builder, Vec<Camera>, bool);
 
 /// Flattens the scene graph: returns the geometry, the cameras, and whether the default
 /// material (index `default_material`) was used.
-fn geometry(file: &Path, doc: &Document, buffers: &[Vec<u8>], default_material: u32, w: &mut Warnings) -> Result<Geometry, SceneError> {
+fn geometry(
+    file: &Path,
+    doc: &Document,
+    buffers: &[Vec<u8>],
+    default_material: u32,
+    uv_maps: &[uv_map::UvMap],
+    w: &mut Warnings,
+) -> Result<Geometry, SceneError> {
     let gerr = |element: String, msg: String| SceneError::Gltf { file: file.to_path_buf(), element, msg };
     let nodes = doc.nodes().len();
     if let Some(scene) = doc.default_scene().or_else(|| doc.scenes().next()) {
@@ -314,7 +327,7 @@ fn geometry(file: &Path, doc: &Document, buffers: &[Vec<u8>], default_material: 
     for &(m, _) in &instances {
         if meshes[m].is_none() {
             let mesh = doc.meshes().nth(m).ok_or_else(|| gerr(format!("mesh {m}"), "does not exist".into()))?;
-            let prims = read_mesh(file, &mesh, buffers, default_material, w)?;
+            let prims = read_mesh(file, &mesh, buffers, default_material, uv_maps, w)?;
             used_default |= prims.iter().any(|p| p.material == default_material);
             meshes[m] = Some(prims);
         }
@@ -331,7 +344,12 @@ fn geometry(file: &Path, doc: &Document, buffers: &[Vec<u8>], default_material: 
     }
     check_size(instances.len() as u64, tris, verts).map_err(|msg| gerr("scene".into(), msg))?;
     let (verts, tris) = (verts as usize, tris as usize);
+    // Tangents from the file where every part has them (else all are generated from the UVs).
+    let with_tangents = instances.iter().all(|&(m, _)| prims_of(m).iter().all(|p| p.tangents.is_some()));
     let mut b = Builder::new(with_normals, with_uvs);
+    if with_tangents && with_uvs {
+        b = b.with_tangents();
+    }
     b.reserve(verts, tris);
     for &(m, world) in &instances {
         let xf = (world != Mat4::IDENTITY).then(|| Transform::new(world));
@@ -340,6 +358,7 @@ fn geometry(file: &Path, doc: &Document, buffers: &[Vec<u8>], default_material: 
                 positions: &p.positions,
                 normals: p.normals.as_deref(),
                 uvs: p.uvs.as_deref(),
+                tangents: p.tangents.as_deref(),
                 triangles: &p.triangles,
                 material: p.material,
             };
@@ -402,6 +421,7 @@ fn read_mesh(
     mesh: &::gltf::Mesh,
     buffers: &[Vec<u8>],
     default_material: u32,
+    uv_maps: &[uv_map::UvMap],
     w: &mut Warnings,
 ) -> Result<Vec<Prim>, SceneError> {
     let mesh_name = mesh.name().map_or(String::new(), |n| format!(" \"{}\"", crate::text::quote(n)));
@@ -444,12 +464,29 @@ fn read_mesh(
             }
             None => None,
         };
-        let uvs = match prim.get(&Semantic::TexCoords(0)) {
+        // The material's texture coordinate set and transform (uv_map.rs), baked in.
+        let material = prim.material().index().map_or(default_material, |i| i as u32);
+        let map = uv_maps.get(material as usize).copied().unwrap_or_default();
+        let mut set = map.tex_coord;
+        if set != 0 && prim.get(&Semantic::TexCoords(set)).is_none() {
+            w.warn(format!("{}: {element}: its material reads TEXCOORD_{set}, which it lacks; TEXCOORD_0 is used", file.display()));
+            set = 0;
+        }
+        let uvs = match prim.get(&Semantic::TexCoords(set)) {
             Some(acc) => {
-                same_count(&acc, "TEXCOORD_0")?;
-                Some(read_uv(&acc, buffers).map_err(|e| read_err(&acc, "TEXCOORD_0", e))?)
+                let what = format!("TEXCOORD_{set}");
+                same_count(&acc, &what)?;
+                let uvs = read_uv(&acc, buffers).map_err(|e| read_err(&acc, &what, e))?;
+                Some(if map.transform == glam::Mat3::IDENTITY { uvs } else { uvs.into_iter().map(|uv| map.apply(uv)).collect() })
             }
             None => None,
+        };
+        let tangents = match prim.get(&Semantic::Tangents) {
+            Some(acc) if normals.is_some() => {
+                same_count(&acc, "TANGENT")?;
+                Some(read_vec4(&acc, buffers).map_err(|e| read_err(&acc, "TANGENT", e))?)
+            }
+            _ => None,
         };
         for (semantic, _) in prim.attributes() {
             match semantic {
@@ -478,8 +515,7 @@ fn read_mesh(
                 indices.len() % 3
             ));
         }
-        let material = prim.material().index().map_or(default_material, |i| i as u32);
-        out.push(Prim { positions, normals, uvs, triangles, material });
+        out.push(Prim { positions, normals, uvs, tangents, triangles, material });
     }
     Ok(out)
 }

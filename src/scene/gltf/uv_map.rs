@@ -1,0 +1,107 @@
+//! Texture coordinates per material: the set (`texCoord`, `TEXCOORD_0` or `_1`) and the
+//! `KHR_texture_transform` of its texture slots, baked into the UVs of the primitives that use
+//! the material when the mesh is read (one UV set per vertex on the GPU).
+//!
+//! The transform (KHR_texture_transform): uv' = T(offset) R(rotation) S(scale) uv with
+//! R = [[cos, sin], [-sin, cos]]; its `texCoord` overrides the slot's. Slots of one material
+//! that disagree (another set or transform) are warned about once, and the first slot's (in the
+//! order base colour, metallic-roughness, emission, transmission, normal map) is used for all.
+
+use std::path::Path;
+
+use ::gltf::Document;
+use glam::{Mat3, Vec2};
+
+use crate::scene::warnings::Warnings;
+
+/// How a material's primitives get their UVs: from set `tex_coord`, through `transform`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct UvMap {
+    pub tex_coord: u32,
+    pub transform: Mat3,
+}
+
+impl Default for UvMap {
+    fn default() -> Self {
+        UvMap { tex_coord: 0, transform: Mat3::IDENTITY }
+    }
+}
+
+impl UvMap {
+    pub fn apply(&self, uv: Vec2) -> Vec2 {
+        self.transform.transform_point2(uv)
+    }
+}
+
+/// T(offset) R(rotation) S(scale) of KHR_texture_transform, as a 2D affine matrix.
+fn transform_matrix(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> Mat3 {
+    let (s, c) = rotation.sin_cos();
+    let r = Mat3::from_cols(glam::Vec3::new(c, -s, 0.0), glam::Vec3::new(s, c, 0.0), glam::Vec3::Z);
+    Mat3::from_translation(Vec2::from(offset)) * r * Mat3::from_scale(Vec2::from(scale))
+}
+
+fn of_info(info: &::gltf::texture::Info) -> UvMap {
+    match info.texture_transform() {
+        Some(t) => {
+            UvMap { tex_coord: t.tex_coord().unwrap_or(info.tex_coord()), transform: transform_matrix(t.offset(), t.rotation(), t.scale()) }
+        }
+        None => UvMap { tex_coord: info.tex_coord(), transform: Mat3::IDENTITY },
+    }
+}
+
+/// The UV map of each material of `doc`, in order.
+pub(super) fn uv_maps(file: &Path, doc: &Document, w: &mut Warnings) -> Vec<UvMap> {
+    doc.materials()
+        .map(|m| {
+            let pbr = m.pbr_metallic_roughness();
+            let slots: Vec<UvMap> = [
+                pbr.base_color_texture().map(|i| of_info(&i)),
+                pbr.metallic_roughness_texture().map(|i| of_info(&i)),
+                m.emissive_texture().map(|i| of_info(&i)),
+                m.transmission().and_then(|t| t.transmission_texture()).map(|i| of_info(&i)),
+                m.normal_texture().map(|n| UvMap { tex_coord: n.tex_coord(), transform: Mat3::IDENTITY }),
+            ]
+            .into_iter()
+            .flatten()
+            .collect();
+            let mut first = slots.first().copied().unwrap_or_default();
+            if !first.transform.is_finite() {
+                w.warn(format!(
+                    "{}: material {}: a KHR_texture_transform is not finite; ignored",
+                    file.display(),
+                    m.index().unwrap_or(0)
+                ));
+                first.transform = Mat3::IDENTITY;
+            }
+            if slots.iter().any(|s| *s != first) {
+                w.warn_once("gltf-uv-maps", || {
+                    format!(
+                        "{}: material {}: texture slots use different texture coordinate sets or transforms; the first's is used for all (further uses not reported)",
+                        file.display(),
+                        m.index().unwrap_or(0)
+                    )
+                });
+            }
+            first
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn transform_is_offset_rotation_scale() {
+        // The extension's example: rotate a quarter turn, then scale, then offset.
+        let m = transform_matrix([0.5, 0.25], std::f32::consts::FRAC_PI_2, [2.0, 3.0]);
+        // S (1, 0) = (2, 0); R (2, 0) = (cos 2, -sin 2) = (0, -2); + offset.
+        let p = m.transform_point2(Vec2::new(1.0, 0.0));
+        assert!((p - Vec2::new(0.5, -1.75)).length() < 1e-6, "{p}");
+        // S (0, 1) = (0, 3); R (0, 3) = (sin 3, cos 3) = (3, 0); + offset.
+        let p = m.transform_point2(Vec2::new(0.0, 1.0));
+        assert!((p - Vec2::new(3.5, 0.25)).length() < 1e-6, "{p}");
+        let identity = transform_matrix([0.0, 0.0], 0.0, [1.0, 1.0]);
+        assert_eq!(identity, Mat3::IDENTITY);
+    }
+}
