@@ -22,7 +22,7 @@ float mirror_fraction(GpuMaterial m) {
     if (HAS_MIRROR == 0u || (HAS_GLOSSY != 0u && m.roughness > 0.0)) {
         return 0.0;
     }
-    return m.params.x;
+    return m.reflectivity;
 }
 
 // Picks a lobe with probability equal to its fraction, so the fraction cancels; `glass` is

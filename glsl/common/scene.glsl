@@ -101,21 +101,21 @@ float blend_random(uint prim, vec2 bary) {
     return float(h >> 8u) * (1.0 / 16777216.0);
 }
 
-// MASK: kept where the alpha texture reaches the cutoff (m.albedo.w > 0). BLEND: kept with
+// MASK: kept where the alpha texture reaches the cutoff (m.alpha_cutoff > 0). BLEND: kept with
 // probability opacity x texture alpha, so a path passes with probability 1 - alpha and the
 // surface's contribution is weighted by alpha in expectation (stochastic opacity, unbiased).
 bool traverse_alpha_hit(uint prim, vec2 bary) {
     uvec4 info = prim_info[prim];
     GpuMaterial m = materials[info.w];
-    if (m.albedo.w > 0.0) {
-        return m.tex.y == 0u || sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a >= m.albedo.w;
+    if (m.alpha_cutoff > 0.0) {
+        return m.alpha_texture == 0u || sample_texture(m.alpha_texture - 1u, interpolate_uv(info, bary)).a >= m.alpha_cutoff;
     }
-    if (m.opacity >= 1.0 && m.tex.y == 0u) {
+    if (m.opacity >= 1.0 && m.alpha_texture == 0u) {
         return true;
     }
     float alpha = m.opacity;
-    if (HAS_UVS != 0u && m.tex.y != 0u) {
-        alpha *= sample_texture(m.tex.y - 1u, interpolate_uv(info, bary)).a;
+    if (HAS_UVS != 0u && m.alpha_texture != 0u) {
+        alpha *= sample_texture(m.alpha_texture - 1u, interpolate_uv(info, bary)).a;
     }
     return blend_random(prim, bary) < alpha;
 }
@@ -197,17 +197,17 @@ bool visible_between(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
 }
 
 vec3 material_albedo(GpuMaterial m, vec2 uv) {
-    vec3 a = m.albedo.rgb;
-    if (HAS_TEXTURES != 0u && m.tex.x != 0u) {
-        a *= sample_texture(m.tex.x - 1u, uv).rgb;
+    vec3 a = m.albedo;
+    if (HAS_TEXTURES != 0u && m.albedo_texture != 0u) {
+        a *= sample_texture(m.albedo_texture - 1u, uv).rgb;
     }
     return a;
 }
 
 // Emitted radiance of material m at uv (front faces): the emission factor times the
-// emission texture. Its luminance weight for light sampling (m.emission.w) is the factor's.
+// emission texture. Its luminance weight for light sampling (m.emission_luminance) is the factor's.
 vec3 material_emission(GpuMaterial m, vec2 uv) {
-    vec3 e = m.emission.rgb;
+    vec3 e = m.emission;
     if (HAS_EMISSION_TEXTURES != 0u && m.emission_texture != 0u) {
         e *= sample_texture(m.emission_texture - 1u, uv).rgb;
     }
@@ -220,7 +220,7 @@ float glass_fraction(GpuMaterial m, vec2 uv) {
     if (HAS_GLASS == 0u) {
         return 0.0;
     }
-    float g = m.params.y;
+    float g = m.refractivity;
     if (HAS_TEXTURES != 0u && m.transmission_texture != 0u) {
         g *= sample_texture(m.transmission_texture - 1u, uv).r;
     }
@@ -246,8 +246,8 @@ vec3 glass_tint(GpuMaterial m, vec2 uv) {
 // green channel of the roughness texture.
 float glass_alpha(GpuMaterial m, vec2 uv) {
     float roughness = m.roughness;
-    if (HAS_TEXTURES != 0u && m.tex.z != 0u) {
-        roughness *= sample_texture(m.tex.z - 1u, uv).g;
+    if (HAS_TEXTURES != 0u && m.roughness_texture != 0u) {
+        roughness *= sample_texture(m.roughness_texture - 1u, uv).g;
     }
     return max(roughness * roughness, GGX_MIN_ALPHA);
 }
@@ -276,9 +276,9 @@ Continuous continuous_at(GpuMaterial m, vec2 uv) {
     }
     float roughness = m.roughness;
     float metallic = m.metallic;
-    if (HAS_TEXTURES != 0u && (m.tex.z != 0u || m.tex.w != 0u)) {
-        vec4 tr = m.tex.z != 0u ? sample_texture(m.tex.z - 1u, uv) : vec4(1.0);
-        vec4 tm = m.tex.w == m.tex.z ? tr : (m.tex.w != 0u ? sample_texture(m.tex.w - 1u, uv) : vec4(1.0));
+    if (HAS_TEXTURES != 0u && (m.roughness_texture != 0u || m.metallic_texture != 0u)) {
+        vec4 tr = m.roughness_texture != 0u ? sample_texture(m.roughness_texture - 1u, uv) : vec4(1.0);
+        vec4 tm = m.metallic_texture == m.roughness_texture ? tr : (m.metallic_texture != 0u ? sample_texture(m.metallic_texture - 1u, uv) : vec4(1.0));
         roughness *= tr.g;
         metallic *= tm.b;
     }
@@ -290,7 +290,7 @@ Continuous continuous_at(GpuMaterial m, vec2 uv) {
         c.spec = c.pick;
     } else if (m.roughness > 0.0) {
         // The thesis' reflectivity, made rough: a conductor with F = 1.
-        float r = HAS_MIRROR != 0u ? m.params.x : 0.0;
+        float r = HAS_MIRROR != 0u ? m.reflectivity : 0.0;
         c.diffuse = max(0.0, 1.0 - r - refr) * albedo;
         c.spec = r;
     }

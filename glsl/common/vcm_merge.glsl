@@ -41,11 +41,11 @@ vec3 vcm_merge(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm,
         for (uint e = h == 0u ? 0u : merge_cells[h - 1u]; e < end; e++) {
             uint slot = merge_items[e];
             LightVertex y = light_vertices[slot];
-            vec3 v = y.pos.xyz - p;
-            if (dot(v, v) > r * r || (pc.max_depth != 0u && uint(y.wi.w) + depth > pc.max_depth)) {
+            vec3 v = y.pos - p;
+            if (dot(v, v) > r * r || (pc.max_depth != 0u && uint(y.segments) + depth > pc.max_depth)) {
                 continue;
             }
-            vec3 wi = y.wi.xyz;
+            vec3 wi = y.wi;
             float cos_g = dot(ng_f, wi);
             if (cos_g <= 0.0) {
                 continue; // the light arrived on the other side of the surface
@@ -57,14 +57,14 @@ vec3 vcm_merge(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm,
             }
             float weight = 1.0;
             if (VCM_CONNECTS) {
-                float w_light = y.pos.w * k.vc + y.d_vm * mis(cam_dir_pdf_w);
+                float w_light = y.d_vcm * k.vc + y.d_vm * mis(cam_dir_pdf_w);
                 float w_camera = d_vcm * k.vc + d_vm * mis(cam_rev_pdf_w);
                 weight = 1.0 / (w_light + 1.0 + w_camera);
             }
             uvec2 counts = light_counts[slot / pc.light_path_len]; // (stored, seen)
             float inv_q = float(counts.y) / float(counts.x);
             float adjoint = HAS_NORMALS != 0u ? abs(dot(wi, ns_f)) / cos_g : 1.0;
-            sum += f * y.beta_f.rgb * (weight * inv_q * adjoint);
+            sum += f * y.beta_f * (weight * inv_q * adjoint);
         }
     }
     return sum;

@@ -38,22 +38,22 @@ layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_tot
 vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_rev_w) {
     if (HAS_GLOSSY != 0u || VCM_MERGES) {
         Continuous c = continuous_at(materials[y.material], y.uv);
-        return y.beta_f.rgb * continuous_eval(c, y.ns.xyz, y.wi.xyz, w, pdf_fwd_w, pdf_rev_w);
+        return y.beta_f * continuous_eval(c, y.ns, y.wi, w, pdf_fwd_w, pdf_rev_w);
     }
-    pdf_fwd_w = y.ng.w * max(0.0, dot(y.ns.xyz, w)) / PI;
-    pdf_rev_w = y.ng.w * max(0.0, dot(y.ns.xyz, y.wi.xyz)) / PI;
-    return y.beta_f.rgb;
+    pdf_fwd_w = y.pick * max(0.0, dot(y.ns, w)) / PI;
+    pdf_rev_w = y.pick * max(0.0, dot(y.ns, y.wi)) / PI;
+    return y.beta_f;
 }
 
 // Connection of camera vertex (p, ns_f, ng_f, continuous BSDF c, wo toward the previous
 // camera vertex, d_vcm, d_vc) to light vertex y.
 vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, float d_vc, float vm, LightVertex y, inout uvec2 stats) {
-    vec3 v = y.pos.xyz - p;
+    vec3 v = y.pos - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
     float cos_c = dot(ns_f, dir);
-    float cos_y = -dot(y.ns.xyz, dir);
-    if (cos_c <= 0.0 || cos_y <= 0.0 || dot(ng_f, dir) <= 0.0 || dot(y.ng.xyz, dir) >= 0.0) {
+    float cos_y = -dot(y.ns, dir);
+    if (cos_c <= 0.0 || cos_y <= 0.0 || dot(ng_f, dir) <= 0.0 || dot(y.ng, dir) >= 0.0) {
         return vec3(0.0);
     }
     float cam_dir_pdf_w, cam_rev_pdf_w, light_dir_pdf_w, light_rev_pdf_w;
@@ -61,14 +61,14 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, f
     vec3 beta_f_y = light_vertex_f(y, -dir, light_dir_pdf_w, light_rev_pdf_w);
     float cam_dir_pdf_a = cam_dir_pdf_w * cos_y / dist2;
     float light_dir_pdf_a = light_dir_pdf_w * cos_c / dist2;
-    float w_light = mis(cam_dir_pdf_a) * (vm + y.pos.w + y.ns.w * mis(light_rev_pdf_w));
+    float w_light = mis(cam_dir_pdf_a) * (vm + y.d_vcm + y.d_vc * mis(light_rev_pdf_w));
     float w_camera = mis(light_dir_pdf_a) * (vm + d_vcm + d_vc * mis(cam_rev_pdf_w));
     float g = cos_c * cos_y / dist2;
     if (HAS_NORMALS != 0u) {
-        g *= shading_normal_adjoint(y.wi.xyz, -dir, y.ns.xyz, y.ng.xyz);
+        g *= shading_normal_adjoint(y.wi, -dir, y.ns, y.ng);
     }
     vec3 contrib = f * beta_f_y * (g / (w_light + 1.0 + w_camera));
-    if (max3(contrib) <= 0.0 || !visible_between(p, ng_f, y.pos.xyz, y.ng.xyz, stats)) {
+    if (max3(contrib) <= 0.0 || !visible_between(p, ng_f, y.pos, y.ng, stats)) {
         return vec3(0.0);
     }
     return contrib;
@@ -127,13 +127,13 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         }
 
         // s = 0: the camera subpath found an emitter (front faces emit).
-        if (m.emission.w > 0.0 && s.front) {
+        if (m.emission_luminance > 0.0 && s.front) {
             if (depth == 1u || VCM_PHOTON_MAPPING) {
                 // Seen from the eye, or (progressive photon mapping, which stops at the first
                 // merge) after delta bounces only: no other strategy has this path.
                 radiance += beta * material_emission(m, s.uv);
             } else {
-                float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * m.emission.w / pc.emitter_weight;
+                float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * m.emission_luminance / pc.emitter_weight;
                 float cos_l = max(0.0, -dot(s.ng, d));
                 float emission_pdf_w = direct_pdf_a * cos_l / PI;
                 // Light sampling and emission see an emitter through its geometric normal:
@@ -219,8 +219,8 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     }
                 }
             }
-            // s >= 2: stored light vertices. Vertex y has light subpath segments y.wi.w, so
-            // the full path has y.wi.w + 1 + depth segments.
+            // s >= 2: stored light vertices. Vertex y has light subpath segments y.segments, so
+            // the full path has y.segments + 1 + depth segments.
             if (pc.join == JOIN_LVC) {
                 // Light vertex cache: `joins` vertices drawn uniformly from the `total` stored
                 // by all light paths. A drawn vertex y of path p was evaluated with
@@ -235,7 +235,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                         uint slot = lvc_index[rng_below(rng, total)];
                         uvec2 c = light_counts[slot / pc.light_path_len];
                         LightVertex y = light_vertices[slot];
-                        if (pc.max_depth != 0u && uint(y.wi.w) + 1u + depth > pc.max_depth) {
+                        if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                             continue;
                         }
                         float inv_q = scale * float(c.y) / float(c.x);
@@ -251,7 +251,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 for (uint j = 0u; j < joins; j++) {
                     uint slot = full ? j : min(uint(rng_next(rng) * float(lc.x)), lc.x - 1u);
                     LightVertex y = light_vertices[base + slot];
-                    if (pc.max_depth != 0u && uint(y.wi.w) + 1u + depth > pc.max_depth) {
+                    if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                         continue;
                     }
                     radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, k.vm, y, stats);
@@ -292,7 +292,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             // Rough glass: never connected, so the strategies whose connecting edge touches
             // this vertex are impossible: dVCM (the edge to the next vertex) is 0 and dVC
             // keeps only its own term, with the real pdf ratio (a delta lobe's cancels).
-            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float eta = s.front ? 1.0 / m.ior : m.ior;
             float u_sel = rng_next(rng);
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);
@@ -313,7 +313,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             if (lobe == LOBE_MIRROR) {
                 dn = reflect(d, ns_f);
             } else {
-                float eta = s.front ? 1.0 / m.params.z : m.params.z;
+                float eta = s.front ? 1.0 / m.ior : m.ior;
                 float scale;
                 bool refracted;
                 dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);

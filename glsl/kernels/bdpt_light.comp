@@ -205,7 +205,7 @@ void main() {
             seen++;
             uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
             if (slot < pc.light_path_len) {
-                light_vertices[base + slot] = LightVertex(vec4(s.p, d_vcm), vec4(ns_f, d_vc), vec4(ng_f, c.pick), vec4(wi, float(depth)), vec4(beta_f, 0.0), s.uv, s.material, d_vm);
+                light_vertices[base + slot] = LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, 0.0, s.uv, s.material, d_vm);
                 stored = min(seen, pc.light_path_len);
             }
             if (VCM_CONNECTS && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
@@ -246,7 +246,7 @@ void main() {
             d = dn;
         } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
             // Rough glass (importance: no eta^2), never connected: as bdpt_camera.comp.
-            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float eta = s.front ? 1.0 / m.ior : m.ior;
             float u_sel = rng_next(rng);
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);
@@ -267,7 +267,7 @@ void main() {
             if (lobe == LOBE_MIRROR) {
                 dn = reflect(d, ns_f);
             } else {
-                float eta = s.front ? 1.0 / m.params.z : m.params.z;
+                float eta = s.front ? 1.0 / m.ior : m.ior;
                 float scale;
                 bool refracted;
                 dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);

@@ -66,7 +66,7 @@ void first_hit_sample(vec2 pixel, inout Rng rng, inout FirstHitSums sum) {
         if (lobe == LOBE_MIRROR) {
             d = reflect(d, ns_f);
         } else {
-            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float eta = s.front ? 1.0 / m.ior : m.ior;
             float scale;
             bool refracted;
             d = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);

@@ -17,6 +17,6 @@ void main() {
     if (i >= lvc_total) {
         return;
     }
-    vec3 p = light_vertices[lvc_index[i]].pos.xyz;
+    vec3 p = light_vertices[lvc_index[i]].pos;
     atomicAdd(merge_cells[merge_cell_hash(merge_cell(p, 2.0 * vcm_radius(pc.sample_base)))], 1u);
 }

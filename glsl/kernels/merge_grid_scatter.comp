@@ -20,7 +20,7 @@ void main() {
         return;
     }
     uint slot = lvc_index[i];
-    vec3 p = light_vertices[slot].pos.xyz;
+    vec3 p = light_vertices[slot].pos;
     uint at = atomicAdd(merge_cells[merge_cell_hash(merge_cell(p, 2.0 * vcm_radius(pc.sample_base)))], 1u);
     merge_items[at] = slot;
 }

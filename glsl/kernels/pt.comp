@@ -56,11 +56,11 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
         GpuMaterial m = materials[s.material];
 
         // Emission seen by this segment: front faces only.
-        if (m.emission.w > 0.0 && s.front) {
+        if (m.emission_luminance > 0.0 && s.front) {
             float w = 1.0;
             if (NEE != 0u && !specular && pc.emitter_count > 0u) {
                 float cos_l = -dot(s.ng, d);
-                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission.w, pc.emitter_weight) * h.t * h.t / cos_l;
+                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission_luminance, pc.emitter_weight) * h.t * h.t / cos_l;
                 w = power_heuristic(prev_pdf_w, pdf_light_w);
             }
             radiance += throughput * material_emission(m, s.uv) * w;
@@ -78,7 +78,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
             specular = true;
         } else if (lobe == LOBE_GLASS) {
-            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float eta = s.front ? 1.0 / m.ior : m.ior;
             float scale;
             bool refracted;
             d = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
@@ -89,7 +89,7 @@ vec3 trace_path(vec2 pixel, inout Rng rng) {
             // Rough glass is sampled only (no light sampling here), so emission found next
             // counts in full, as after a delta lobe; its weight f |cos| / pdf_w is G2 / G1
             // (times eta^2 and the tint on refraction).
-            float eta = s.front ? 1.0 / m.params.z : m.params.z;
+            float eta = s.front ? 1.0 / m.ior : m.ior;
             float u_sel = rng_next(rng);
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);

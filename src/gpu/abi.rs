@@ -412,19 +412,35 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (112 bytes) {
-        /// Linear albedo (rgb); w: alpha cutoff (0 if not alpha-tested; BLEND: 0, see `opacity`).
-        pub albedo: Vec4,
-        /// Emitted radiance (rgb), front face only; w: its luminance.
-        pub emission: Vec4,
-        /// (reflectivity, refractivity, ior, 0).
-        pub params: Vec4,
-        /// (albedo texture + 1, alpha texture + 1, metallic-roughness texture + 1, 0); 0 = none.
-        pub tex: UVec4,
+    pub struct GpuMaterial (96 bytes) {
+        /// Linear albedo (base colour).
+        pub albedo: Vec3,
+        /// MASK: the alpha cutoff (> 0); 0 if not alpha-tested (BLEND: see `opacity`).
+        pub alpha_cutoff: f32,
+        /// Emitted radiance, front face only.
+        pub emission: Vec3,
+        /// Luminance of `emission` (light sampling's weight; 0: not an emitter).
+        pub emission_luminance: f32,
+        /// The thesis' mirror fraction.
+        pub reflectivity: f32,
+        /// The thesis' glass fraction (glTF: transmission).
+        pub refractivity: f32,
+        /// Index of refraction of the glass fraction.
+        pub ior: f32,
+        /// Transmission texture + 1 (linear; its red channel scales the refractivity), 0 = none.
+        pub transmission_texture: u32,
+        /// Albedo texture + 1 (sRGB), 0 = none.
+        pub albedo_texture: u32,
+        /// Texture whose alpha is the coverage (MASK, BLEND) + 1, 0 = none.
+        pub alpha_texture: u32,
+        /// Texture whose G channel scales the roughness + 1 (linear), 0 = none.
+        pub roughness_texture: u32,
+        /// Texture whose B channel scales the metallic factor + 1 (linear), 0 = none.
+        pub metallic_texture: u32,
         /// glTF metallic factor (MATERIAL_METAL_ROUGH).
         pub metallic: f32,
         /// GGX roughness (alpha = roughness^2); for MATERIAL_THESIS, > 0 makes the
-        /// reflectivity a rough conductor.
+        /// reflectivity a rough conductor and the refractivity a rough dielectric.
         pub roughness: f32,
         /// Schlick F0 of the dielectric coat, ((ior - 1) / (ior + 1))^2 (0.04 at ior 1.5).
         pub dielectric_f0: f32,
@@ -436,14 +452,9 @@ gpu_structs! {
         pub normal_texture: u32,
         /// Scale of the normal map's X and Y.
         pub normal_scale: f32,
-        /// glTF BLEND: the base opacity (times the alpha texture's alpha, `tex.y`); a hit is
-        /// kept with that probability. 1 for other materials.
+        /// glTF BLEND: the base opacity (times the alpha texture's alpha); a hit is kept with
+        /// that probability. 1 for other materials.
         pub opacity: f32,
-        /// Transmission texture + 1 (linear; its red channel scales the refractivity), 0 = none.
-        pub transmission_texture: u32,
-        pub pad0: u32,
-        pub pad1: u32,
-        pub pad2: u32,
     }
 
     /// An emissive triangle for light sampling.
@@ -572,18 +583,26 @@ gpu_structs! {
     /// quantities follow Georgiev 2012 ("Implementing Vertex Connection and Merging"),
     /// power heuristic.
     pub struct LightVertex (96 bytes) {
-        /// Position (xyz), dVCM (w).
-        pub pos: Vec4,
-        /// Shading normal facing the side light arrived from (xyz), dVC (w).
-        pub ns: Vec4,
-        /// Geometric normal facing that side (xyz), probability of the diffuse lobe (w).
-        pub ng: Vec4,
-        /// Unit direction toward the previous vertex (xyz), light subpath segments (w).
-        pub wi: Vec4,
-        /// Throughput times the diffuse BSDF value, beta * P_d * albedo / pi (rgb); in
-        /// scenes with GGX lobes (SPEC_HAS_GLOSSY), and where VCM merges, the throughput alone, the BSDF being
-        /// evaluated per connection from `material` at `uv`.
-        pub beta_f: Vec4,
+        pub pos: Vec3,
+        /// dVCM of the VCM technical report (Georgiev et al. 2012) at this vertex.
+        pub d_vcm: f32,
+        /// Shading normal facing the side light arrived from.
+        pub ns: Vec3,
+        /// dVC at this vertex.
+        pub d_vc: f32,
+        /// Geometric normal facing that side.
+        pub ng: Vec3,
+        /// Probability that the lobe choice took the continuous (non-delta) part here.
+        pub pick: f32,
+        /// Unit direction toward the previous vertex.
+        pub wi: Vec3,
+        /// Segments of the light subpath up to this vertex (a whole number).
+        pub segments: f32,
+        /// Throughput times the diffuse BSDF value, beta * P_d * albedo / pi; in scenes with
+        /// GGX lobes (SPEC_HAS_GLOSSY), and where VCM merges, the throughput alone, the BSDF
+        /// being evaluated per connection from `material` at `uv`.
+        pub beta_f: Vec3,
+        pub pad0: f32,
         /// Texture coordinates of the vertex (SPEC_HAS_GLOSSY).
         pub uv: Vec2,
         /// Material index of the vertex (SPEC_HAS_GLOSSY).

@@ -9,7 +9,7 @@ use crate::gpu::abi::{self, GpuMaterial, GpuPunctual, GpuTexture};
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::scene::{Material, MaterialModel, Scene, Texture};
 use crate::vk::{Bind, Buffer, Context, Memory, Result};
-use glam::{UVec4, Vec4};
+use glam::UVec4;
 
 /// Every buffer the integrators read.
 pub struct GpuScene {
@@ -194,28 +194,27 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
     let index = |t: Option<u32>| t.map_or(0, |t| t + 1);
     let f0 = ((m.ior - 1.0) / (m.ior + 1.0)).powi(2);
     GpuMaterial {
-        // A MASK cutoff stays positive: 0 in `albedo.w` means "not MASK" to the kernels.
-        albedo: m.albedo.extend(m.alpha.map_or(0.0, |a| a.cutoff.max(f32::MIN_POSITIVE))),
-        emission: m.emission.extend(luminance(m.emission)),
-        params: Vec4::new(m.reflectivity, m.refractivity, m.ior, 0.0),
-        tex: UVec4::new(
-            index(m.albedo_texture),
-            match (m.alpha, m.blend) {
-                (Some(a), _) => a.texture + 1,
-                (None, Some(_)) => index(m.albedo_texture),
-                (None, None) => 0,
-            },
-            index(m.roughness_texture),
-            index(m.metallic_texture),
-        ),
+        albedo: m.albedo,
+        // A MASK cutoff stays positive: 0 means "not MASK" to the kernels.
+        alpha_cutoff: m.alpha.map_or(0.0, |a| a.cutoff.max(f32::MIN_POSITIVE)),
+        emission: m.emission,
+        emission_luminance: luminance(m.emission),
+        reflectivity: m.reflectivity,
+        refractivity: m.refractivity,
+        ior: m.ior,
+        transmission_texture: index(m.transmission_texture),
+        albedo_texture: index(m.albedo_texture),
+        alpha_texture: match (m.alpha, m.blend) {
+            (Some(a), _) => a.texture + 1,
+            (None, Some(_)) => index(m.albedo_texture),
+            (None, None) => 0,
+        },
+        roughness_texture: index(m.roughness_texture),
+        metallic_texture: index(m.metallic_texture),
         emission_texture: index(m.emission_texture),
         normal_texture: index(m.normal_texture),
         normal_scale: m.normal_scale,
         opacity: m.blend.unwrap_or(1.0),
-        transmission_texture: index(m.transmission_texture),
-        pad0: 0,
-        pad1: 0,
-        pad2: 0,
         metallic: m.metallic,
         roughness: m.roughness,
         dielectric_f0: f0,
@@ -280,4 +279,13 @@ fn halve(w: u32, h: u32, p: &[u8]) -> (u32, u32, Vec<u8>) {
         }
     }
     (nw, nh, out)
+}
+
+#[cfg(test)]
+mod tests {
+    /// `Scene::gpu_bytes` (the size checks before upload) counts materials at the GPU size.
+    #[test]
+    fn material_bytes_match_the_gpu_struct() {
+        assert_eq!(std::mem::size_of::<crate::gpu::abi::GpuMaterial>() as u64, crate::scene::GPU_MATERIAL_BYTES);
+    }
 }

@@ -41,7 +41,7 @@ pub use obj::{load_obj, load_obj_str};
 pub use punctual::{PunctualKind, PunctualLight};
 pub use quad_light::{parse_vec3, QuadLight, QuadLightError};
 pub use sky::{Preetham, SkySpec};
-pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts};
+pub use stats::{luminance, Aabb, Emitter, Features, GpuBytes, MaterialCounts, GPU_MATERIAL_BYTES};
 pub use texture::srgb_to_linear;
 
 use std::path::Path;
