@@ -80,8 +80,8 @@ pub struct SettingsArgs {
     #[arg(long)]
     pub all_features: bool,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
-    /// diagonal (0.005), or a length in scene units with the suffix u (0.02u).
-    #[arg(long, default_value = "0.005", value_name = "R")]
+    /// diagonal (0.001), or a length in scene units with the suffix u (0.02u).
+    #[arg(long, default_value = "0.001", value_name = "R")]
     pub vcm_radius: bidir::render::vcm::VcmRadius,
     /// VCM: radius reduction, r_i = r_1 i^((alpha - 1) / 2) at iteration i (1: fixed radius).
     #[arg(long, default_value_t = 0.75, value_name = "ALPHA")]

@@ -28,7 +28,7 @@ impl VcmMode {
 /// The first iteration's merge radius.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum VcmRadius {
-    /// A fraction of the scene's bounding-box diagonal (`--vcm-radius 0.005`).
+    /// A fraction of the scene's bounding-box diagonal (`--vcm-radius 0.001`).
     Relative(f32),
     /// In scene units (`--vcm-radius 0.02u`).
     Absolute(f32),
@@ -36,7 +36,7 @@ pub enum VcmRadius {
 
 impl Default for VcmRadius {
     fn default() -> Self {
-        VcmRadius::Relative(0.005)
+        VcmRadius::Relative(0.001)
     }
 }
 
@@ -60,7 +60,7 @@ impl std::str::FromStr for VcmRadius {
         match num.parse::<f32>() {
             Ok(v) if v > 0.0 && v.is_finite() => Ok(if absolute { VcmRadius::Absolute(v) } else { VcmRadius::Relative(v) }),
             _ => Err(format!(
-                "bad merge radius '{s}': a positive fraction of the scene's diagonal (0.005) or a length in scene units with the suffix u (0.02u)"
+                "bad merge radius '{s}': a positive fraction of the scene's diagonal (0.001) or a length in scene units with the suffix u (0.02u)"
             )),
         }
     }
