@@ -19,6 +19,7 @@ use bidir::gpu_data::SceneFeatures;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Environment, Material, MaterialModel, Scene};
 use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use common::sphere::{dv, edges_about, frame, Cells};
 use common::stats::{self, Fit};
 use common::{finish, geometry, gpu, Pcg};
 use glam::{DVec3, Vec3, Vec4};
@@ -28,18 +29,6 @@ const ALPHA: f64 = 1e-3;
 const IOR: f64 = 1.5;
 /// Samples per chi-square case.
 const N: u32 = 1 << 17;
-/// Gauss–Legendre nodes and weights on [-1, 1] (8 points) for integrating the pdf over a cell.
-const GAUSS: [(f64, f64); 8] = [
-    (-0.9602898564975363, 0.1012285362903763),
-    (-0.7966664774136267, 0.2223810344533745),
-    (-0.525532409916329, 0.313706645877887),
-    (-0.1834346424956498, 0.362683783378362),
-    (0.1834346424956498, 0.362683783378362),
-    (0.525532409916329, 0.313706645877887),
-    (0.7966664774136267, 0.2223810344533745),
-    (0.9602898564975363, 0.1012285362903763),
-];
-const QUAD: usize = GAUSS.len();
 /// The shading normal of the sampling tests, tilted so the kernel's basis is not the world's.
 const NORMAL: Vec3 = Vec3::new(-0.48, 0.36, 0.8);
 
@@ -74,39 +63,6 @@ fn run(ctx: &Context, kernel: &Kernel, push: abi::SamplingTestPush, input: Optio
     ctx.read_buffer(&out).unwrap()
 }
 
-fn dv(v: Vec4) -> DVec3 {
-    DVec3::new(v.x as f64, v.y as f64, v.z as f64)
-}
-
-/// An orthonormal frame (t, b) about n, built here independently of the kernel's.
-fn frame(n: DVec3) -> (DVec3, DVec3) {
-    let helper = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
-    let t = helper.cross(n).normalize();
-    (t, n.cross(t))
-}
-
-/// Points at ± first · 2^k about each peak inside (lo, hi), with lo, hi and the peaks.
-fn edges_about(peaks: &[f64], lo: f64, hi: f64, first: f64) -> Vec<f64> {
-    let mut e = vec![lo, hi];
-    for &at in peaks {
-        let mut step = first;
-        while step < hi - lo {
-            e.extend([at - step, at + step].into_iter().filter(|x| *x > lo && *x < hi));
-            step *= 2.0;
-        }
-        if at > lo && at < hi {
-            e.push(at);
-        }
-    }
-    e.sort_by(f64::total_cmp);
-    e.dedup();
-    e
-}
-
-fn bin(edges: &[f64], x: f64) -> usize {
-    edges.partition_point(|&e| e <= x).clamp(1, edges.len() - 1) - 1
-}
-
 /// wo at `theta_deg` from the normal, and the z of its mirror and refracted directions
 /// (cell edges go there).
 fn incident(theta_deg: f64, eta: f64) -> (DVec3, Vec<f64>) {
@@ -127,54 +83,26 @@ fn incident(theta_deg: f64, eta: f64) -> (DVec3, Vec<f64>) {
 /// Chi-square of rough_dielectric_sample_world against the integral of its pdf over cells.
 fn check_sampling(ctx: &Context, kernel: &Kernel, roughness: f64, eta: f64, theta_deg: f64, seed: u32) -> Fit {
     let n = NORMAL.as_dvec3().normalize();
-    let (t, b) = frame(n);
     let (wo, peaks) = incident(theta_deg, eta);
-    let z_edges = edges_about(&peaks, -1.0, 1.0, 1e-8);
-    let phi_edges = edges_about(&[0.0], -PI, PI, 1e-4);
-    // φ relative to the plane of incidence, opposite wo: both peaks lie at 0.
-    let dir = |z: f64, rel_phi: f64| {
-        let phi = PI + rel_phi;
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        n * z + t * (r * phi.cos()) + b * (r * phi.sin())
-    };
-    let (nz, np) = (z_edges.len() - 1, phi_edges.len() - 1);
-    let cells = nz * np;
-    let mut pairs = Vec::with_capacity(2 * cells * QUAD * QUAD);
-    let mut weights = Vec::with_capacity(cells * QUAD * QUAD);
-    for zi in 0..nz {
-        let (z0, z1) = (z_edges[zi], z_edges[zi + 1]);
-        for pi in 0..np {
-            let (p0, p1) = (phi_edges[pi], phi_edges[pi + 1]);
-            for (xz, wz) in GAUSS {
-                for (xp, wp) in GAUSS {
-                    let z = 0.5 * (z0 + z1) + 0.5 * (z1 - z0) * xz;
-                    let p = 0.5 * (p0 + p1) + 0.5 * (p1 - p0) * xp;
-                    pairs.push(wo.as_vec3().extend(0.0));
-                    pairs.push(dir(z, p).as_vec3().extend(0.0));
-                    weights.push(0.25 * (z1 - z0) * (p1 - p0) * wz * wp);
-                }
-            }
-        }
-    }
+    let cells = Cells::new(n, edges_about(&peaks, -1.0, 1.0, 1e-8), edges_about(&[0.0], -PI, PI, 1e-4));
+    let (pairs, weights) = cells.quadrature(wo);
     let input = ctx.upload_buffer("rough.pairs", &pairs).unwrap();
     let evals = run(ctx, kernel, push(abi::SAMPLING_ROUGH_GLASS_EVAL, weights.len() as u32, 0, wo, eta, roughness, true), Some(&input));
-    let mut expected = vec![0.0f64; cells + 1];
-    for (k, w) in weights.iter().enumerate() {
-        expected[k / (QUAD * QUAD)] += evals[2 * k].z as f64 * w;
-    }
+    let mut expected = cells.integrate(|k| evals[2 * k].z as f64, &weights);
+    let failed = cells.count();
     let integral: f64 = expected.iter().sum();
     let case = format!("roughness {roughness}, eta {eta:.3}, {theta_deg}°");
     assert!(integral <= 1.0 + 2e-3, "{case}: the pdf integrates to {integral} > 1");
-    expected[cells] = (1.0 - integral).max(1e-12);
+    expected[failed] = (1.0 - integral).max(1e-12);
     for e in &mut expected {
         *e *= N as f64;
     }
     let out = run(ctx, kernel, push(abi::SAMPLING_ROUGH_GLASS, N, seed, wo, eta, roughness, true), None);
-    let mut observed = vec![0u64; cells + 1];
+    let mut observed = vec![0u64; failed + 1];
     let mut refracted = 0u64;
     for s in out.chunks_exact(2) {
         if s[0].w == 0.0 {
-            observed[cells] += 1;
+            observed[failed] += 1;
             continue;
         }
         let d = dv(s[0]).normalize();
@@ -182,15 +110,14 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, roughness: f64, eta: f64, thet
         assert!(s[1].y > 0.0, "{case}: a sampled direction has pdf {}", s[1].y);
         assert_eq!(s[1].w > 0.0, z < 0.0, "{case}: refracted flag {} for z = {z}", s[1].w);
         refracted += (z < 0.0) as u64;
-        let rel = d.dot(b).atan2(d.dot(t)).rem_euclid(2.0 * PI) - PI;
-        observed[bin(&z_edges, z) * np + bin(&phi_edges, rel)] += 1;
+        observed[cells.cell(d)] += 1;
     }
     let fit = stats::pearson(&observed, &expected);
     eprintln!(
         "{case}: pdf integral {integral:.5}, refracted {:.4}, failed {:.5} ({} cells -> {}): {fit}",
         refracted as f64 / N as f64,
-        observed[cells] as f64 / N as f64,
-        cells + 1,
+        observed[failed] as f64 / N as f64,
+        failed + 1,
         fit.cells
     );
     fit

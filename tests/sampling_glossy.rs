@@ -15,6 +15,7 @@ mod common;
 
 use bidir::gpu::{abi, kernels};
 use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use common::sphere::{dv, edges_about, frame, Cells};
 use common::stats::{self, Fit};
 use common::{finish, gpu, Pcg};
 use glam::{DVec3, Vec3, Vec4};
@@ -23,21 +24,6 @@ use std::f64::consts::PI;
 /// Samples per distribution.
 const N: u32 = 1 << 20;
 const ALPHA: f64 = 1e-3;
-/// Gauss–Legendre rule (8 points on [-1, 1]: nodes, weights) per cell edge when integrating
-/// the pdf: cells grow geometrically away from the lobe's peak, so the pdf changes by a factor
-/// of a few across one, which a midpoint rule resolves only to ~1e-4 of the total (enough to
-/// fail a million-sample test); Gauss–Legendre is exact for polynomials of degree 15.
-const GAUSS: [(f64, f64); 8] = [
-    (-0.9602898564975363, 0.1012285362903763),
-    (-0.7966664774136267, 0.2223810344533745),
-    (-0.525532409916329, 0.313706645877887),
-    (-0.1834346424956498, 0.362683783378362),
-    (0.1834346424956498, 0.362683783378362),
-    (0.525532409916329, 0.313706645877887),
-    (0.7966664774136267, 0.2223810344533745),
-    (0.9602898564975363, 0.1012285362903763),
-];
-const QUAD: usize = GAUSS.len();
 /// The shading normal used throughout, tilted so the kernel's basis is not the world's.
 const NORMAL: Vec3 = Vec3::new(0.36, -0.48, 0.8);
 
@@ -106,80 +92,19 @@ fn run(ctx: &Context, kernel: &Kernel, push: abi::SamplingTestPush, per_sample: 
     ctx.read_buffer(&out).unwrap()
 }
 
-fn dv(v: Vec4) -> DVec3 {
-    DVec3::new(v.x as f64, v.y as f64, v.z as f64)
-}
-
-/// An orthonormal frame (t, b) about n, built here independently of the kernel's.
-fn frame(n: DVec3) -> (DVec3, DVec3) {
-    let helper = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
-    let t = helper.cross(n).normalize();
-    (t, n.cross(t))
-}
-
-/// Edges in [lo, hi] refined geometrically about `at`: at ± 1e-6 · 2^k (and lo, hi).
-fn edges_about(at: f64, lo: f64, hi: f64, first: f64) -> Vec<f64> {
-    let mut e = vec![lo, hi];
-    let mut step = first;
-    while step < hi - lo {
-        for x in [at - step, at + step] {
-            if x > lo && x < hi {
-                e.push(x);
-            }
-        }
-        step *= 2.0;
-    }
-    if at > lo && at < hi {
-        e.push(at);
-    }
-    e.sort_by(|a, b| a.partial_cmp(b).unwrap());
-    e.dedup();
-    e
-}
-
-fn bin(edges: &[f64], x: f64) -> usize {
-    edges.partition_point(|&e| e <= x).clamp(1, edges.len() - 1) - 1
-}
-
 /// Chi-square of continuous_sample against the integral of its reported pdf over each cell.
 fn check_sampling(ctx: &Context, kernel: &Kernel, bsdf: Bsdf, theta_deg: f64, seed: u32) -> Fit {
     let n = NORMAL.as_dvec3().normalize();
-    let (t, b) = frame(n);
     let theta = theta_deg.to_radians();
-    let wo = (n * theta.cos() + t * theta.sin()).normalize();
     // Mirror direction: cos θ the same, φ = π in the (t, b) frame; φ is binned relative to it.
-    let z_edges = edges_about(theta.cos(), 0.0, 1.0, 1e-6);
-    let phi_edges = edges_about(0.0, -PI, PI, 1e-4);
-    let dir = |z: f64, rel_phi: f64| {
-        let phi = PI + rel_phi;
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        n * z + t * (r * phi.cos()) + b * (r * phi.sin())
-    };
-    let (nz, np) = (z_edges.len() - 1, phi_edges.len() - 1);
-    let cells = nz * np;
-    let mut pairs = Vec::with_capacity(2 * cells * QUAD * QUAD);
-    let mut weights = Vec::with_capacity(cells * QUAD * QUAD);
-    for zi in 0..nz {
-        let (z0, z1) = (z_edges[zi], z_edges[zi + 1]);
-        for pi in 0..np {
-            let (p0, p1) = (phi_edges[pi], phi_edges[pi + 1]);
-            for (xz, wz) in GAUSS {
-                for (xp, wp) in GAUSS {
-                    let z = 0.5 * (z0 + z1) + 0.5 * (z1 - z0) * xz;
-                    let p = 0.5 * (p0 + p1) + 0.5 * (p1 - p0) * xp;
-                    pairs.push(wo.as_vec3().extend(0.0));
-                    pairs.push(dir(z, p).as_vec3().extend(0.0));
-                    weights.push(0.25 * (z1 - z0) * (p1 - p0) * wz * wp);
-                }
-            }
-        }
-    }
+    let cells = Cells::new(n, edges_about(&[theta.cos()], 0.0, 1.0, 1e-6), edges_about(&[0.0], -PI, PI, 1e-4));
+    let (t, b) = (cells.t, cells.b);
+    let wo = (n * theta.cos() + t * theta.sin()).normalize();
+    let (pairs, weights) = cells.quadrature(wo);
     let input = ctx.upload_buffer("glossy.pairs", &pairs).unwrap();
     let evals = run(ctx, kernel, bsdf.push(abi::SAMPLING_GLOSSY_EVAL, weights.len() as u32, 0, wo), 2, Some(&input));
-    let mut expected = vec![0.0f64; cells + 1];
-    for (k, w) in weights.iter().enumerate() {
-        expected[k / (QUAD * QUAD)] += evals[2 * k].w as f64 * w;
-    }
+    let mut expected = cells.integrate(|k| evals[2 * k].w as f64, &weights);
+    let failed = cells.count();
     if bsdf.diffuse == Vec3::ZERO {
         // The pdf of a pure GGX lobe, G1(wo) D(h) / (4 wo.z) (Heitz 2018, eq. 17), in f64.
         let a = ((bsdf.roughness * bsdf.roughness) as f64).max(1e-3);
@@ -199,16 +124,16 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, bsdf: Bsdf, theta_deg: f64, se
     let integral: f64 = expected.iter().sum();
     assert!(integral <= 1.0 + 2e-3, "{bsdf:?} at {theta_deg}°: the pdf integrates to {integral} > 1");
     // Quadrature error may leave the failure cell a hair below zero; keep it a (pooled) cell.
-    expected[cells] = (1.0 - integral).max(1e-12);
+    expected[failed] = (1.0 - integral).max(1e-12);
     for e in &mut expected {
         *e *= N as f64;
     }
 
     let out = run(ctx, kernel, bsdf.push(abi::SAMPLING_GLOSSY, N, seed, wo), 2, None);
-    let mut observed = vec![0u64; cells + 1];
+    let mut observed = vec![0u64; failed + 1];
     for s in out.chunks_exact(2) {
         if s[0].w == 0.0 {
-            observed[cells] += 1;
+            observed[failed] += 1;
             continue;
         }
         let d = dv(s[0]);
@@ -218,14 +143,13 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, bsdf: Bsdf, theta_deg: f64, se
         let z = d.dot(n);
         assert!(z > 0.0, "{bsdf:?}: sample {d} below the surface");
         assert!(s[1].w > 0.0, "{bsdf:?}: a sampled direction has pdf {}", s[1].w);
-        let rel = d.dot(b).atan2(d.dot(t)).rem_euclid(2.0 * PI) - PI;
-        observed[bin(&z_edges, z) * np + bin(&phi_edges, rel)] += 1;
+        observed[cells.cell(d)] += 1;
     }
     let fit = stats::pearson(&observed, &expected);
     eprintln!(
         "{bsdf:?} at {theta_deg}°: pdf integral {integral:.5}, failed {:.5} ({} cells -> {} after pooling): {fit}",
-        observed[cells] as f64 / N as f64,
-        cells + 1,
+        observed[failed] as f64 / N as f64,
+        failed + 1,
         fit.cells
     );
     fit

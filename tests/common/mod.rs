@@ -3,6 +3,7 @@
 
 pub mod geometry;
 pub mod scenes;
+pub mod sphere;
 pub mod stats;
 
 use bidir::vk::{Context, ContextOptions};
