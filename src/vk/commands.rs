@@ -366,6 +366,12 @@ impl Context {
     }
 }
 
+/// Ticks from timestamp `a` to `b`, of which only `valid_bits` are written (they wrap).
+pub(super) fn ticks_between(a: u64, b: u64, valid_bits: u32) -> u64 {
+    let mask = if valid_bits >= 64 { u64::MAX } else { (1u64 << valid_bits) - 1 };
+    (b & mask).wrapping_sub(a & mask) & mask
+}
+
 /// GPU timestamps (a query pool).
 pub struct Timer {
     shared: Arc<Shared>,
@@ -384,9 +390,7 @@ impl Timer {
             self.shared.device.get_query_pool_results(self.pool, 0, &mut data, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
         }
         .ctx(|| "read timestamps".into())?;
-        let mask = if self.valid_bits >= 64 { u64::MAX } else { (1u64 << self.valid_bits) - 1 };
-        let ticks = (data[b as usize] & mask).wrapping_sub(data[a as usize] & mask) & mask;
-        Ok(ticks as f64 * self.period_ns)
+        Ok(ticks_between(data[a as usize], data[b as usize], self.valid_bits) as f64 * self.period_ns)
     }
 }
 

@@ -73,11 +73,9 @@ impl Profiler {
             shared.device.get_query_pool_results(self.pool, 0, &mut ticks, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
         }
         .ctx(|| "read profiling timestamps".into())?;
-        let bits = shared.info.timestamp_valid_bits;
-        let mask = if bits >= 64 { u64::MAX } else { (1u64 << bits) - 1 };
-        let period = shared.info.timestamp_period_ns as f64;
+        let (bits, period) = (shared.info.timestamp_valid_bits, shared.info.timestamp_period_ns as f64);
         for (i, name) in rec.names.into_iter().enumerate() {
-            let dt = (ticks[i + 1] & mask).wrapping_sub(ticks[i] & mask) & mask;
+            let dt = super::commands::ticks_between(ticks[i], ticks[i + 1], bits);
             let e = self.totals.entry(name).or_insert((0.0, 0));
             e.0 += dt as f64 * period;
             e.1 += 1;
