@@ -20,6 +20,7 @@
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_FIRST_HIT) buffer FirstHit { FirstHitSums first_hit[]; };
 layout(push_constant) uniform Push { FirstHitPush pc; };
+layout(constant_id = SPEC_FIRST_HIT_AOVS) const uint FIRST_HIT_AOVS = 1u;
 
 // Reflectance of the continuous part given that choose_lobe took it: the diffuse lobe under
 // its coat plus the GGX lobe's Schlick F0 (its albedo at normal incidence).
@@ -36,6 +37,15 @@ void first_hit_sample(vec2 pixel, inout Rng rng, inout FirstHitSums sum) {
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;
     vec3 d = camera_direction(pc.camera, pixel);
+    if (FIRST_HIT_AOVS == 0u) {
+        // Alpha alone: whether anything covers the ray, not what is nearest. An any-hit ray
+        // accepts a surface under the same BLEND/MASK test as the closest-hit ray (the
+        // decision hashes the primitive and the hit point), so the count is the same.
+        if (trace_ray(o, d, 0.0, 3.0e38, true, stats).prim != NO_HIT) {
+            sum.hits += 1.0;
+        }
+        return;
+    }
     TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
     if (h.prim == NO_HIT) {
         return;
@@ -100,6 +110,10 @@ void main() {
         Rng rng = rng_init(image_pixel, pc.sample_base + s, pc.seed);
         vec2 jitter = vec2(rng_next(rng), rng_next(rng));
         first_hit_sample(vec2(px) + jitter, rng, sum);
+    }
+    if (FIRST_HIT_AOVS == 0u) {
+        first_hit[pixel].hits += sum.hits;
+        return;
     }
     FirstHitSums total = first_hit[pixel];
     total.albedo += sum.albedo;

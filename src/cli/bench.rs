@@ -32,6 +32,10 @@ pub struct RenderBenchArgs {
     /// Timed runs (the median is reported).
     #[arg(long, default_value_t = 5)]
     pub runs: usize,
+    /// Also run the first-hit pass that writing an EXR adds: `alpha` (the EXR's alpha alone),
+    /// or alpha and the AOVs named, as `--aov` takes them (`albedo,normal,depth`).
+    #[arg(long, value_name = "alpha|AOVS")]
+    pub first_hit: Option<String>,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -116,7 +120,12 @@ fn render_cmd(a: &RenderBenchArgs, opts: &ContextOptions) -> anyhow::Result<()> 
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;
     }
-    let settings = a.settings.settings(a.integrator.integrator()?)?;
+    let mut settings = a.settings.settings(a.integrator.integrator()?)?;
+    settings.first_hit = match a.first_hit.as_deref() {
+        None => None,
+        Some("alpha") => Some(bidir::imaging::aov::Aovs::default()),
+        Some(list) => Some(list.parse().map_err(|e: String| anyhow::anyhow!("--first-hit {list}: {e}"))?),
+    };
     super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
     let ctx = Context::new(opts).context("cannot start Vulkan")?;

@@ -268,6 +268,9 @@ gpu_consts! {
     /// Trace kernels (not persistent): rays each invocation traces, strided by the launch's
     /// invocation count (default 1). Numbered apart from the scene features' ids.
     pub const SPEC_RAYS_PER_INVOCATION: u32 = 32;
+    /// First-hit pass: 1 when an AOV (albedo, normal, depth) is asked for; 0 when only the
+    /// EXR's alpha is, so the pass traces each camera ray as an any-hit ray and stops there.
+    pub const SPEC_FIRST_HIT_AOVS: u32 = 50;
 }
 
 gpu_structs! {

@@ -25,6 +25,8 @@ impl FirstHitPass {
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
         specs.push(sampler.spec());
+        let any_aov = aovs.albedo || aovs.normal || aovs.depth;
+        specs.push(Spec { id: abi::SPEC_FIRST_HIT_AOVS, value: any_aov as u32 });
         let kernel = ctx.create_kernel(&kernels::FIRST_HIT, &specs)?;
         let pass = FirstHitPass { kernel, sums: Self::sums_buffer(ctx, width, height)?, width, height, aovs };
         pass.clear(ctx)?;
