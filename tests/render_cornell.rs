@@ -145,7 +145,8 @@ fn check(integrator: Integrator, spp: u32) {
 
 #[test]
 fn pt_matches_references() {
-    check(Integrator::Pt, 64);
+    // 48 spp: median block se 0.664 % on llvmpipe (0.574 % at 64), under BLOCK_SE_MAX.
+    check(Integrator::Pt, 48);
 }
 
 #[test]

@@ -1,8 +1,9 @@
 #version 460
-// The thesis' megakernel path tracer: one invocation per pixel, `spp` paths each, summed
-// into the film. With NEE (pt-nee, the thesis' "explicit sampling") every non-delta vertex
-// also samples an emitter by power and traces a shadow ray; emission found by BSDF sampling
-// is then weighted with the power heuristic (Veach 1997, eq. 9.13) so nothing counts twice.
+// The thesis' megakernel path tracer: one invocation per pixel (and sample slice), its paths
+// one after another with path regeneration (PathState below), summed into the film. With NEE
+// (pt-nee, the thesis' "explicit sampling") every non-delta vertex also samples an emitter by
+// power and traces a shadow ray; emission found by BSDF sampling is then weighted
+// with the power heuristic (Veach 1997, eq. 9.13) so nothing counts twice.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -29,173 +30,216 @@ float power_heuristic(float pdf_a, float pdf_b) {
     return a / (a + pdf_b * pdf_b);
 }
 
-// One path's radiance estimate for image position `pixel` (pixels, row 0 on top).
-vec3 trace_path(vec2 pixel, inout Rng rng) {
+// One path in flight, between bounces. The invocation keeps one and regenerates: when a path
+// ends, the next sample of the pixel starts in the same loop iteration's place, so the
+// invocations of a subgroup keep tracing until the pass's samples are spent rather than
+// idling behind the longest path (path regeneration, Novak, Havran & Dachsbacher 2010).
+// The random numbers and the order of the sums are those of one path after another.
+struct PathState {
+    vec3 o;              // origin of the next segment
+    vec3 d;              // its direction
+    vec3 throughput;
+    vec3 radiance;       // the estimate so far
+    bool specular;       // the last bounce was a delta lobe (or the camera)
+    float prev_pdf_w;    // solid-angle pdf of the last non-delta bounce
+    uint depth;          // vertices so far, the one the next segment finds included
+};
+
+// A new path through image position `pixel` (pixels, row 0 on top); `rng` has drawn its jitter.
+PathState path_start(vec2 pixel, inout Rng rng) {
     if (HAS_ALPHA != 0u) {
         blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
     }
-    uvec2 stats = uvec2(0u);
-    vec3 o = pc.camera.eye.xyz;
-    vec3 d = camera_direction(pc.camera, pixel);
-    vec3 throughput = vec3(1.0);
-    vec3 radiance = vec3(0.0);
-    bool specular = true;      // the last bounce was a delta lobe (or the camera)
-    float prev_pdf_w = 0.0;    // solid-angle pdf of the last non-delta bounce
-    for (uint depth = 1u;; depth++) {
-        TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
-        if (h.prim == NO_HIT) {
-            // The environment, weighted against sampling it as a light (pt-nee).
-            if (HAS_ENV != 0u) {
-                EnvSample e = env_lookup(d);
-                float w = NEE != 0u && !specular ? power_heuristic(prev_pdf_w, env.pick * e.pdf_w) : 1.0;
-                radiance += throughput * e.le * w;
-            }
-            break;
-        }
-        Surface s = surface_at(o, d, h);
-        GpuMaterial m = materials[s.material];
-
-        // Emission seen by this segment: front faces only.
-        if (m.emission_luminance > 0.0 && s.front) {
-            float w = 1.0;
-            if (NEE != 0u && !specular && pc.emitter_count > 0u) {
-                float cos_l = -dot(s.ng, d);
-                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission_luminance, pc.emitter_weight) * h.t * h.t / cos_l;
-                w = power_heuristic(prev_pdf_w, pdf_light_w);
-            }
-            radiance += throughput * material_emission(m, s.uv) * w;
-        }
-        if (pc.max_depth != 0u && depth >= pc.max_depth) {
-            break;
-        }
-
-        // Normals facing the side the ray came from.
-        vec3 ng_f = s.front ? s.ng : -s.ng;
-        vec3 ns_f = s.front ? s.ns : -s.ns;
-        uint lobe = choose_lobe_drawn(m, s.uv, rng);
-        if (lobe == LOBE_MIRROR) {
-            d = reflect(d, ns_f);
-            o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
-            specular = true;
-        } else if (lobe == LOBE_GLASS) {
-            float eta = s.front ? 1.0 / m.ior : m.ior;
-            float scale;
-            bool refracted;
-            d = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
-            throughput *= refracted ? scale * glass_tint(m, s.uv) : vec3(scale);
-            o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
-            specular = true;
-        } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
-            // Rough glass is sampled only (no light sampling here), so emission found next
-            // counts in full, as after a delta lobe; its weight f |cos| / pdf_w is G2 / G1
-            // (times eta^2 and the tint on refraction).
-            float eta = s.front ? 1.0 / m.ior : m.ior;
-            float u_sel = rng_next(rng);
-            float u1 = rng_next(rng);
-            float u2 = rng_next(rng);
-            vec3 dn;
-            float weight, pdf_fwd_w, pdf_rev_w;
-            bool refracted;
-            if (!rough_dielectric_sample_world(ns_f, -d, eta, glass_alpha(m, s.uv), true, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
-                || (dot(dn, ng_f) > 0.0) == refracted) {
-                break; // masked, or the geometric normal disagrees with the shading normal's side
-            }
-            throughput *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
-            d = dn;
-            o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
-            specular = true;
-        } else {
-            // The continuous part (diffuse, GGX), chosen with probability c.pick: it is zero
-            // unless both directions lie above the shading normal too (a reciprocal BSDF, so
-            // light paths can follow it: docs/integrators.md). Its pdfs include c.pick; NEE
-            // and BSDF sampling are weighed with the pdfs given this choice.
-            if (HAS_NORMALS != 0u && dot(ns_f, -d) <= 0.0) {
-                break;
-            }
-            Continuous c = continuous_at(m, s.uv);
-            vec3 p_off = offset_ray_origin(s.p, ng_f);
-            // Next-event estimation: the environment (probability env.pick) or an emitter
-            // point by power, one shadow ray.
-            bool nee = NEE != 0u && (pc.emitter_count > 0u || HAS_ENV != 0u || HAS_PUNCTUAL != 0u) && (pc.max_depth == 0u || depth + 1u <= pc.max_depth);
-            float u_kind = nee && (HAS_ENV != 0u || HAS_PUNCTUAL != 0u) ? rng_next(rng) : 1.0;
-            bool env_light = nee && HAS_ENV != 0u && u_kind < env.pick;
-            bool punctual_light = nee && HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
-            if (punctual_light) {
-                // A delta light: BSDF sampling never finds it, so no MIS.
-                PunctualSample ps = punctual_sample(rng_next(rng), s.p);
-                float cos_s = dot(ps.w, ns_f);
-                if (cos_s > 0.0 && dot(ps.w, ng_f) > 0.0 && max3(ps.li) > 0.0) {
-                    // The contribution first, so only it stays live across the shadow ray.
-                    float pdf_fwd_w, pdf_rev_w;
-                    vec3 f = continuous_eval(c, ns_f, -d, ps.w, pdf_fwd_w, pdf_rev_w);
-                    vec3 contrib = throughput * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
-                    if (max3(contrib) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
-                        radiance += contrib;
-                    }
-                }
-            } else if (env_light) {
-                EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
-                float cos_s = dot(es.w, ns_f);
-                if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0) {
-                    float pdf_light_w = env.pick * es.pdf_w;
-                    float pdf_fwd_w, pdf_rev_w;
-                    vec3 f = continuous_eval(c, ns_f, -d, es.w, pdf_fwd_w, pdf_rev_w);
-                    float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
-                    vec3 contrib = throughput * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
-                    if (max3(contrib) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
-                        radiance += contrib;
-                    }
-                }
-            } else if (nee) {
-                LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
-                vec3 to_l = ls.p - s.p;
-                float dist2 = dot(to_l, to_l);
-                float dist = sqrt(dist2);
-                vec3 wi = to_l / dist;
-                float cos_s = dot(wi, ns_f);
-                float cos_l = -dot(wi, ls.n);
-                if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0) {
-                    float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(luminance(ls.le), pc.emitter_weight) * dist2 / cos_l;
-                    float pdf_fwd_w, pdf_rev_w;
-                    vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
-                    float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
-                    vec3 contrib = throughput * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
-                    if (max3(contrib) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
-                        radiance += contrib;
-                    }
-                }
-            }
-            // Continuation by the continuous part's sampling: f cos / pdf_fwd_w.
-            float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
-            float u1 = rng_next(rng);
-            float u2 = rng_next(rng);
-            vec3 dn;
-            if (!continuous_sample(c, ns_f, -d, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
-                break; // below the surface (shading-normal artefact) or a masked reflection
-            }
-            float pdf_fwd_w, pdf_rev_w;
-            vec3 f = continuous_eval(c, ns_f, -d, dn, pdf_fwd_w, pdf_rev_w);
-            if (pdf_fwd_w <= 0.0) {
-                break;
-            }
-            prev_pdf_w = pdf_fwd_w / c.pick;
-            throughput *= f * (dot(dn, ns_f) / pdf_fwd_w);
-            d = dn;
-            o = p_off;
-            specular = false;
-        }
-
-        // Russian roulette on throughput.
-        if (depth >= pc.rr_depth) {
-            float q = min(max3(throughput), 0.95);
-            if (q <= 0.0 || rng_next(rng) >= q) {
-                break;
-            }
-            throughput /= q;
-        }
-    }
-    return radiance;
+    PathState path;
+    path.o = pc.camera.eye.xyz;
+    path.d = camera_direction(pc.camera, pixel);
+    path.throughput = vec3(1.0);
+    path.radiance = vec3(0.0);
+    path.specular = true;
+    path.prev_pdf_w = 0.0;
+    path.depth = 1u;
+    return path;
 }
+
+// The path ends here: its radiance is final.
+#define PATH_END \
+    { \
+        path.radiance = radiance; \
+        return false; \
+    }
+
+// Traces `path`'s next segment and scatters at what it finds; false when the path ends.
+bool path_bounce(inout PathState path, inout Rng rng) {
+    uvec2 stats = uvec2(0u);
+    vec3 o = path.o;
+    vec3 d = path.d;
+    vec3 throughput = path.throughput;
+    vec3 radiance = path.radiance;
+    bool specular = path.specular;
+    float prev_pdf_w = path.prev_pdf_w;
+    uint depth = path.depth;
+
+    TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
+    if (h.prim == NO_HIT) {
+        // The environment, weighted against sampling it as a light (pt-nee).
+        if (HAS_ENV != 0u) {
+            EnvSample e = env_lookup(d);
+            float w = NEE != 0u && !specular ? power_heuristic(prev_pdf_w, env.pick * e.pdf_w) : 1.0;
+            radiance += throughput * e.le * w;
+        }
+        PATH_END;
+    }
+    Surface s = surface_at(o, d, h);
+    GpuMaterial m = materials[s.material];
+
+    // Emission seen by this segment: front faces only.
+    if (m.emission_luminance > 0.0 && s.front) {
+        float w = 1.0;
+        if (NEE != 0u && !specular && pc.emitter_count > 0u) {
+            float cos_l = -dot(s.ng, d);
+            float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(m.emission_luminance, pc.emitter_weight) * h.t * h.t / cos_l;
+            w = power_heuristic(prev_pdf_w, pdf_light_w);
+        }
+        radiance += throughput * material_emission(m, s.uv) * w;
+    }
+    if (pc.max_depth != 0u && depth >= pc.max_depth) {
+        PATH_END;
+    }
+
+    // Normals facing the side the ray came from.
+    vec3 ng_f = s.front ? s.ng : -s.ng;
+    vec3 ns_f = s.front ? s.ns : -s.ns;
+    uint lobe = choose_lobe_drawn(m, s.uv, rng);
+    if (lobe == LOBE_MIRROR) {
+        d = reflect(d, ns_f);
+        o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+        specular = true;
+    } else if (lobe == LOBE_GLASS) {
+        float eta = s.front ? 1.0 / m.ior : m.ior;
+        float scale;
+        bool refracted;
+        d = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
+        throughput *= refracted ? scale * glass_tint(m, s.uv) : vec3(scale);
+        o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+        specular = true;
+    } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
+        // Rough glass is sampled only (no light sampling here), so emission found next
+        // counts in full, as after a delta lobe; its weight f |cos| / pdf_w is G2 / G1
+        // (times eta^2 and the tint on refraction).
+        float eta = s.front ? 1.0 / m.ior : m.ior;
+        float u_sel = rng_next(rng);
+        float u1 = rng_next(rng);
+        float u2 = rng_next(rng);
+        vec3 dn;
+        float weight, pdf_fwd_w, pdf_rev_w;
+        bool refracted;
+        if (!rough_dielectric_sample_world(ns_f, -d, eta, glass_alpha(m, s.uv), true, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
+            || (dot(dn, ng_f) > 0.0) == refracted) {
+            PATH_END; // masked, or the geometric normal disagrees with the shading normal's side
+        }
+        throughput *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
+        d = dn;
+        o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
+        specular = true;
+    } else {
+        // The continuous part (diffuse, GGX), chosen with probability c.pick: it is zero
+        // unless both directions lie above the shading normal too (a reciprocal BSDF, so
+        // light paths can follow it: docs/integrators.md). Its pdfs include c.pick; NEE
+        // and BSDF sampling are weighed with the pdfs given this choice.
+        if (HAS_NORMALS != 0u && dot(ns_f, -d) <= 0.0) {
+            PATH_END;
+        }
+        Continuous c = continuous_at(m, s.uv);
+        vec3 p_off = offset_ray_origin(s.p, ng_f);
+        // Next-event estimation: the environment (probability env.pick) or an emitter
+        // point by power, one shadow ray.
+        bool nee = NEE != 0u && (pc.emitter_count > 0u || HAS_ENV != 0u || HAS_PUNCTUAL != 0u) && (pc.max_depth == 0u || depth + 1u <= pc.max_depth);
+        float u_kind = nee && (HAS_ENV != 0u || HAS_PUNCTUAL != 0u) ? rng_next(rng) : 1.0;
+        bool env_light = nee && HAS_ENV != 0u && u_kind < env.pick;
+        bool punctual_light = nee && HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
+        if (punctual_light) {
+            // A delta light: BSDF sampling never finds it, so no MIS.
+            PunctualSample ps = punctual_sample(rng_next(rng), s.p);
+            float cos_s = dot(ps.w, ns_f);
+            if (cos_s > 0.0 && dot(ps.w, ng_f) > 0.0 && max3(ps.li) > 0.0) {
+                // The contribution first, so only it stays live across the shadow ray.
+                float pdf_fwd_w, pdf_rev_w;
+                vec3 f = continuous_eval(c, ns_f, -d, ps.w, pdf_fwd_w, pdf_rev_w);
+                vec3 contrib = throughput * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
+                if (max3(contrib) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                    radiance += contrib;
+                }
+            }
+        } else if (env_light) {
+            EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+            float cos_s = dot(es.w, ns_f);
+            if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0) {
+                float pdf_light_w = env.pick * es.pdf_w;
+                float pdf_fwd_w, pdf_rev_w;
+                vec3 f = continuous_eval(c, ns_f, -d, es.w, pdf_fwd_w, pdf_rev_w);
+                float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
+                vec3 contrib = throughput * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
+                if (max3(contrib) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
+                    radiance += contrib;
+                }
+            }
+        } else if (nee) {
+            LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+            vec3 to_l = ls.p - s.p;
+            float dist2 = dot(to_l, to_l);
+            float dist = sqrt(dist2);
+            vec3 wi = to_l / dist;
+            float cos_s = dot(wi, ns_f);
+            float cos_l = -dot(wi, ls.n);
+            if (cos_s > 0.0 && cos_l > 0.0 && dot(wi, ng_f) > 0.0) {
+                float pdf_light_w = triangle_light_pick(HAS_PUNCTUAL != 0u) * light_pdf_a(luminance(ls.le), pc.emitter_weight) * dist2 / cos_l;
+                float pdf_fwd_w, pdf_rev_w;
+                vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
+                float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
+                vec3 contrib = throughput * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
+                if (max3(contrib) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
+                    radiance += contrib;
+                }
+            }
+        }
+        // Continuation by the continuous part's sampling: f cos / pdf_fwd_w.
+        float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
+        float u1 = rng_next(rng);
+        float u2 = rng_next(rng);
+        vec3 dn;
+        if (!continuous_sample(c, ns_f, -d, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
+            PATH_END; // below the surface (shading-normal artefact) or a masked reflection
+        }
+        float pdf_fwd_w, pdf_rev_w;
+        vec3 f = continuous_eval(c, ns_f, -d, dn, pdf_fwd_w, pdf_rev_w);
+        if (pdf_fwd_w <= 0.0) {
+            PATH_END;
+        }
+        prev_pdf_w = pdf_fwd_w / c.pick;
+        throughput *= f * (dot(dn, ns_f) / pdf_fwd_w);
+        d = dn;
+        o = p_off;
+        specular = false;
+    }
+
+    // Russian roulette on throughput.
+    if (depth >= pc.rr_depth) {
+        float q = min(max3(throughput), 0.95);
+        if (q <= 0.0 || rng_next(rng) >= q) {
+            PATH_END;
+        }
+        throughput /= q;
+    }
+    path.o = o;
+    path.d = d;
+    path.throughput = throughput;
+    path.radiance = radiance;
+    path.specular = specular;
+    path.prev_pdf_w = prev_pdf_w;
+    path.depth = depth + 1u;
+    return true;
+}
+#undef PATH_END
 
 void main() {
     // Invocation -> (slice, pixel): slice j takes samples j, j + S, j + 2S, ... of the pass.
@@ -215,16 +259,30 @@ void main() {
     vec3 sum = vec3(0.0);
     float count = 0.0;
     uint bad = 0u;
-    for (uint s = slice; s < pc.spp; s += slices) {
+    uint s = slice; // samples s, s + slices, ... of the pass
+    if (s < pc.spp) {
         Rng rng = rng_init(image_pixel, pc.sample_base + s, pc.seed);
         vec2 jitter = vec2(rng_next(rng), rng_next(rng));
-        vec3 l = trace_path(xy + jitter, rng);
-        if (any(isnan(l)) || any(isinf(l))) {
-            bad++;
-            continue; // never reaches the film; counted and reported
+        PathState path = path_start(xy + jitter, rng);
+        for (;;) {
+            if (path_bounce(path, rng)) {
+                continue;
+            }
+            vec3 l = path.radiance;
+            if (any(isnan(l)) || any(isinf(l))) {
+                bad++; // never reaches the film; counted and reported
+            } else {
+                sum += l;
+                count += 1.0;
+            }
+            s += slices;
+            if (s >= pc.spp) {
+                break;
+            }
+            rng = rng_init(image_pixel, pc.sample_base + s, pc.seed);
+            jitter = vec2(rng_next(rng), rng_next(rng));
+            path = path_start(xy + jitter, rng);
         }
-        sum += l;
-        count += 1.0;
     }
     if (slices == 1u) {
         accum[pixel] += vec4(sum, count);
