@@ -15,7 +15,7 @@
 //!   chi-square) against chi-square with 16 degrees of freedom, p above 1e-4: a small bias
 //!   spread over many blocks, which no single block shows, fails here;
 //! - the bound: every channel mean within 0.5 % of the reference, with power asserted
-//!   (the mean's relative standard error below `MEAN_SE_MAX`, so 0.5 % is more than 3 sigma).
+//!   (the mean's relative standard error below `MEAN_SE_MAX` = 0.2 %, so 0.5 % is 2.5 sigma).
 //!
 //! Skipped with a message only when the reference is missing (it is committed).
 
@@ -39,9 +39,9 @@ const T_MAX: f64 = 5.5;
 /// Smallest p-value of the blocks' chi-square statistic.
 const CHI2_P_MIN: f64 = 1e-4;
 /// The bound on each channel mean, and the largest relative standard error of the
-/// mean that keeps it meaningful (0.5 % > 3 sigma).
+/// mean that keeps it meaningful (0.5 % >= 2.5 sigma; a 1 % bias fails at once).
 const MEAN_TOLERANCE: f64 = 0.005;
-const MEAN_SE_MAX: f64 = 0.0016;
+const MEAN_SE_MAX: f64 = 0.002;
 
 /// The shared Cornell box camera (`../shared/scenes/cornell-box/README.md`) at 64 x 64, as the
 /// reference was rendered.
@@ -84,7 +84,8 @@ fn reference() -> Option<Vec<(f64, f64)>> {
             (values[c], var.sqrt() / pixels)
         })
         .collect();
-    let block_var = metrics::block_means(&RgbImage { width: se.width, height: se.height, data: se.data.chunks_exact(3).flat_map(pixel_var).collect() }, BLOCK);
+    let var = RgbImage { width: se.width, height: se.height, data: se.data.chunks_exact(3).flat_map(pixel_var).collect() };
+    let block_var = metrics::block_means(&var, BLOCK);
     let block_pixels = (BLOCK * BLOCK) as f64;
     for (v, (_, _, var)) in values[3..].iter().zip(block_var) {
         // block_means averaged the per-pixel variances; the block mean's variance is that / n.
@@ -100,10 +101,13 @@ fn pixel_var(p: &[f32]) -> [f32; 3] {
     [se * se; 3]
 }
 
-/// Mean and standard error of each statistic over `REPLICATES` renders of `spp` samples.
-fn estimate(integrator: Integrator, spp: u32) -> Vec<(f64, f64)> {
+/// Mean and standard error of each statistic over `REPLICATES` renders, and the samples per
+/// pixel of each: `spp_on_cpu` on lavapipe (as many as the CI's time budget allows; the power
+/// assertion says whether they suffice), 8x as many on a GPU.
+fn estimate(integrator: Integrator, spp_on_cpu: u32) -> (Vec<(f64, f64)>, u32) {
     let scene = bidir::scene::load(Path::new(SCENE), &Default::default()).expect("the rough Cornell box loads").scene;
     let ctx = gpu();
+    let spp = if ctx.info().device_type == bidir::vk::PhysicalDeviceType::CPU { spp_on_cpu } else { 8 * spp_on_cpu };
     let t0 = std::time::Instant::now();
     let mut r = Renderer::new(&ctx, &scene, &camera(), RenderSettings::new(integrator)).unwrap();
     let t1 = std::time::Instant::now();
@@ -118,19 +122,20 @@ fn estimate(integrator: Integrator, spp: u32) -> Vec<(f64, f64)> {
     drop(r);
     finish(ctx);
     let n = samples.len() as f64;
-    (0..samples[0].len())
+    let stats = (0..samples[0].len())
         .map(|i| {
             let mean = samples.iter().map(|s| s[i]).sum::<f64>() / n;
             let var = samples.iter().map(|s| (s[i] - mean).powi(2)).sum::<f64>() / (n - 1.0);
             (mean, (var / n).sqrt())
         })
-        .collect()
+        .collect();
+    (stats, spp)
 }
 
-fn check(integrator: Integrator, spp: u32) {
+fn check(integrator: Integrator, spp_on_cpu: u32) {
     let name = integrator.name();
     let Some(reference) = reference() else { return };
-    let est = estimate(integrator, spp);
+    let (est, spp) = estimate(integrator, spp_on_cpu);
     let t: Vec<f64> = est.iter().zip(&reference).map(|((m, se), (r, se_r))| (m - r) / (se * se + se_r * se_r).sqrt()).collect();
 
     let channels: Vec<String> = (0..3)
@@ -153,10 +158,8 @@ fn check(integrator: Integrator, spp: u32) {
         100.0 * block_se.iter().cloned().fold(0.0, f64::max)
     );
     // The blocks as they lie in the image (row 0 at the top): ratio to Mitsuba and t.
-    let per_row = (camera().width / BLOCK) as usize;
-    for row in block_t.chunks(per_row).enumerate().map(|(j, ts)| {
-        ts.iter().enumerate().map(|(i, t)| format!("{:.4} ({t:+.1})", est[3 + j * per_row + i].0 / reference[3 + j * per_row + i].0)).collect::<Vec<_>>()
-    }) {
+    let cells: Vec<String> = (3..est.len()).map(|i| format!("{:.4} ({:+.1})", est[i].0 / reference[i].0, t[i])).collect();
+    for row in cells.chunks((camera().width / BLOCK) as usize) {
         eprintln!("    {}", row.join("  "));
     }
 
@@ -175,10 +178,10 @@ fn check(integrator: Integrator, spp: u32) {
 
 #[test]
 fn pt_nee_matches_mitsuba_on_rough_spheres() {
-    check(Integrator::PtNee, std::env::var("SPP").map(|s| s.parse().unwrap()).unwrap_or(12));
+    check(Integrator::PtNee, 16);
 }
 
 #[test]
 fn bdpt_matches_mitsuba_on_rough_spheres() {
-    check(Integrator::Bdpt(Join::Lvc(0)), 2);
+    check(Integrator::Bdpt(Join::Lvc(0)), 8);
 }
