@@ -331,6 +331,8 @@ fn sky_flags_refuse_what_they_cannot_do() {
     };
     let o = ["-o", "bidir-lights-sky.png"];
     assert!(run(&["render", "--sky", "turbidity=3", o[0], o[1]]).contains("needs the sun's direction"));
+    // A bare --sky before another flag leaves that flag alone (it once took it as its value).
+    assert!(run(&["render", "--sky", "--integrator", "pt", o[0], o[1]]).contains("needs the sun's direction"));
     assert!(run(&["render", "--sky", "sun=0,1,0", "--env", "1,1,1", o[0], o[1]]).contains("--sky and --env"));
     assert!(run(&["render", "--sky", "sun=0,-1,0.2", o[0], o[1]]).contains("below the horizon"));
     assert!(run(&["render", "--sky", "sun=1,1,0", "--sun", "0,1,0;1,1,1", o[0], o[1]]).contains("differ"));

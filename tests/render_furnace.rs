@@ -58,12 +58,14 @@ fn furnace_pt_nee() {
 #[test]
 fn furnace_bdpt_full() {
     check(Integrator::Bdpt(bidir::render::Join::Full), 0.5, 1.0, 24);
-    check(Integrator::Bdpt(bidir::render::Join::Full), 0.8, 0.25, 96);
+    // 72 spp: 3 sigma 0.229 % on llvmpipe (0.199 % at 96), under the 0.25 % the check needs.
+    check(Integrator::Bdpt(bidir::render::Join::Full), 0.8, 0.25, 72);
 }
 
 #[test]
 fn furnace_bdpt_k_step_and_single() {
-    check(Integrator::Bdpt(bidir::render::Join::K(2)), 0.8, 0.25, 96);
+    // 72 spp: 3 sigma 0.232 % on llvmpipe (0.202 % at 96).
+    check(Integrator::Bdpt(bidir::render::Join::K(2)), 0.8, 0.25, 72);
     check(Integrator::Bdpt(bidir::render::Join::K(1)), 0.5, 1.0, 24);
 }
 
@@ -71,7 +73,8 @@ fn furnace_bdpt_k_step_and_single() {
 fn furnace_bdpt_light_vertex_cache() {
     // rho = 0.8: light paths often outgrow the 8-slot reservoir, so the cache's per-path
     // stored/seen correction is exercised too.
-    check(Integrator::Bdpt(bidir::render::Join::Lvc(0)), 0.8, 0.25, 96);
+    // 64 spp: 3 sigma 0.212 % on llvmpipe (0.172 % at 96).
+    check(Integrator::Bdpt(bidir::render::Join::Lvc(0)), 0.8, 0.25, 64);
     check(Integrator::Bdpt(bidir::render::Join::Lvc(1)), 0.5, 1.0, 24);
 }
 

@@ -75,7 +75,7 @@ pub struct SceneArgs {
     /// A clear sky (Preetham et al. 1999) as the environment, toward --sun's direction (or
     /// sun=X,Y,Z), quoted: e.g. --sky "turbidity=3;albedo=0.3" [defaults: turbidity 3 (2:
     /// very clear, 6: hazy), ground albedo 0.3, scale 1 (radiance = luminance / 683 lm/W)]
-    #[arg(long, value_name = "turbidity=T;albedo=A;scale=S;sun=X,Y,Z", num_args = 0..=1, default_missing_value = "", allow_hyphen_values = true)]
+    #[arg(long, value_name = "turbidity=T;albedo=A;scale=S;sun=X,Y,Z", num_args = 0..=1, default_missing_value = "")]
     pub sky: Option<bidir::scene::SkySpec>,
 }
 
