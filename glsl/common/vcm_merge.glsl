@@ -8,7 +8,7 @@
 #define BIDIR_VCM_MERGE_GLSL
 
 layout(std430, binding = BIND_MERGE_CELLS) readonly buffer MergeCells { uint merge_cells[]; };
-layout(std430, binding = BIND_MERGE_ITEMS) readonly buffer MergeItems { uint merge_items[]; };
+layout(std430, binding = BIND_MERGE_ITEMS) readonly buffer MergeItems { MergeItem merge_items[]; };
 
 // Camera vertex at p (shading and geometric normals facing wo, continuous BSDF c, `depth`
 // segments from the eye, MIS quantities d_vcm, d_vm). Returns the weighted sum over light
@@ -39,10 +39,16 @@ vec3 vcm_merge(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm,
         }
         uint end = merge_cells[h];
         for (uint e = h == 0u ? 0u : merge_cells[h - 1u]; e < end; e++) {
-            uint slot = merge_items[e];
+            // The distance test reads the cell's contiguous entries; the vertex itself (96
+            // bytes elsewhere) only where it lies within r.
+            MergeItem item = merge_items[e];
+            vec3 v = item.pos - p;
+            if (dot(v, v) > r * r) {
+                continue;
+            }
+            uint slot = item.slot;
             LightVertex y = light_vertices[slot];
-            vec3 v = y.pos - p;
-            if (dot(v, v) > r * r || (pc.max_depth != 0u && uint(y.segments) + depth > pc.max_depth)) {
+            if (pc.max_depth != 0u && uint(y.segments) + depth > pc.max_depth) {
                 continue;
             }
             vec3 wi = y.wi;

@@ -11,7 +11,7 @@ layout(std430, binding = BIND_LIGHT_VERTICES) readonly buffer LightVertices { Li
 layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 layout(std430, binding = BIND_MERGE_CELLS) buffer MergeCells { uint merge_cells[]; };
-layout(std430, binding = BIND_MERGE_ITEMS) writeonly buffer MergeItems { uint merge_items[]; };
+layout(std430, binding = BIND_MERGE_ITEMS) writeonly buffer MergeItems { MergeItem merge_items[]; };
 layout(push_constant) uniform Push { BdptPush pc; };
 
 void main() {
@@ -22,5 +22,5 @@ void main() {
     uint slot = lvc_index[i];
     vec3 p = light_vertices[slot].pos;
     uint at = atomicAdd(merge_cells[merge_cell_hash(merge_cell(p, 2.0 * vcm_radius(pc.sample_base)))], 1u);
-    merge_items[at] = slot;
+    merge_items[at] = MergeItem(p, slot);
 }

@@ -263,7 +263,7 @@ gpu_consts! {
     /// Merge grid: per hash cell, after the scatter, the end of its entries in
     /// BIND_MERGE_ITEMS (its start is the previous cell's end).
     pub const BIND_MERGE_CELLS: u32 = 33;
-    /// Merge grid: light-vertex slots sorted by hash cell.
+    /// Merge grid: the cached light vertices sorted by hash cell (`MergeItem`s).
     pub const BIND_MERGE_ITEMS: u32 = 34;
     /// Trace kernels (not persistent): rays each invocation traces, strided by the launch's
     /// invocation count (default 1). Numbered apart from the scene features' ids.
@@ -612,6 +612,15 @@ gpu_structs! {
         pub material: u32,
         /// dVM of the VCM technical report (SPEC_VCM; 0 for BDPT).
         pub d_vm: f32,
+    }
+
+    /// An entry of VCM's merge grid: a cached light vertex's position beside its slot, so a
+    /// query reads a cell's candidates contiguously and loads the vertex only when it lies
+    /// within the merge radius.
+    pub struct MergeItem (16 bytes) {
+        pub pos: Vec3,
+        /// Index of the vertex in BIND_LIGHT_VERTICES.
+        pub slot: u32,
     }
 
     /// Push constants of the BDPT kernels.

@@ -91,8 +91,9 @@ pub fn grid_bits(capacity: u32) -> u32 {
     capacity.max(1).next_power_of_two().trailing_zeros().clamp(10, 24)
 }
 
-/// The merge grid: per hash cell its entries' end (`cells`), the light-vertex slots sorted by
-/// cell (`items`), and the kernels that build them from the light vertex cache.
+/// The merge grid: per hash cell its entries' end (`cells`), the light vertices' positions and
+/// slots sorted by cell (`items`, `abi::MergeItem`), and the kernels that build them from the
+/// light vertex cache.
 pub struct MergeGrid {
     count: Kernel,
     scatter: Kernel,
@@ -110,7 +111,8 @@ impl MergeGrid {
     pub fn new(ctx: &Context, specs: &[Spec], capacity: u32, grid_bits: u32) -> Result<MergeGrid> {
         let cells_n = 1u32 << grid_bits;
         let cells = ctx.create_buffer("vcm.merge_cells", cells_n as u64 * 4, Memory::Device)?;
-        let items = ctx.create_buffer("vcm.merge_items", capacity.max(1) as u64 * 4, Memory::Device)?;
+        let item_bytes = std::mem::size_of::<abi::MergeItem>() as u64;
+        let items = ctx.create_buffer("vcm.merge_items", capacity.max(1) as u64 * item_bytes, Memory::Device)?;
         let plan = crate::compute::ScanPlan::new(ctx, cells_n)?;
         let scan_sums = (cells_n as u64).div_ceil(abi::SCAN_WG_SIZE as u64) * 4;
         Ok(MergeGrid {
