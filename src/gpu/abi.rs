@@ -247,6 +247,9 @@ gpu_consts! {
     /// 1: some material's glass fraction is rough (roughness > 0): the rough dielectric of
     /// glsl/common/rough_dielectric.glsl; 0 compiles it out (smooth glass only).
     pub const SPEC_HAS_ROUGH_GLASS: u32 = 20;
+    /// 1: some material has a volume (KHR_materials_volume): path segments inside closed
+    /// meshes of it are attenuated (glsl/common/volume.glsl); 0 compiles it out.
+    pub const SPEC_HAS_VOLUME: u32 = 21;
 
     // ---- Vertex connection and merging (docs/integrators.md, src/render/vcm.rs) ------------
     /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT (the BDPT kernels
@@ -412,7 +415,7 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (96 bytes) {
+    pub struct GpuMaterial (112 bytes) {
         /// Linear albedo (base colour).
         pub albedo: Vec3,
         /// MASK: the alpha cutoff (> 0); 0 if not alpha-tested (BLEND: see `opacity`).
@@ -455,6 +458,10 @@ gpu_structs! {
         /// glTF BLEND: the base opacity (times the alpha texture's alpha); a hit is kept with
         /// that probability. 1 for other materials.
         pub opacity: f32,
+        /// KHR_materials_volume: absorption coefficient sigma_a per unit length inside a
+        /// closed mesh of this material (SPEC_HAS_VOLUME; zero: none).
+        pub sigma_a: Vec3,
+        pub pad0: f32,
     }
 
     /// An emissive triangle for light sampling.
@@ -602,7 +609,9 @@ gpu_structs! {
         /// GGX lobes (SPEC_HAS_GLOSSY), and where VCM merges, the throughput alone, the BSDF
         /// being evaluated per connection from `material` at `uv`.
         pub beta_f: Vec3,
-        pub pad0: f32,
+        /// 1 where the light path arrived at the back face of the vertex's surface, so its
+        /// connections run inside the closed mesh (SPEC_HAS_VOLUME: volume.glsl); else 0.
+        pub back_face: u32,
         /// Texture coordinates of the vertex (SPEC_HAS_GLOSSY).
         pub uv: Vec2,
         /// Material index of the vertex (SPEC_HAS_GLOSSY).

@@ -25,6 +25,8 @@ pub struct SceneFeatures {
     pub punctual: bool,
     /// Rough glass (a glass fraction with roughness > 0).
     pub rough_glass: bool,
+    /// Absorbing volumes inside closed meshes (KHR_materials_volume).
+    pub volume: bool,
 }
 
 impl SceneFeatures {
@@ -60,6 +62,7 @@ impl SceneFeatures {
             env: scene.environment.as_ref().is_some_and(|e| !e.is_black()),
             punctual: !scene.punctual_lights.is_empty(),
             rough_glass: m.iter().any(Material::has_rough_glass),
+            volume: m.iter().any(Material::has_volume),
         }
     }
 
@@ -76,6 +79,7 @@ impl SceneFeatures {
             emission_textures: true,
             normal_maps: true,
             rough_glass: true,
+            volume: true,
             ..self
         }
     }
@@ -94,6 +98,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_ENV, value: self.env as u32 },
             Spec { id: abi::SPEC_HAS_PUNCTUAL, value: self.punctual as u32 },
             Spec { id: abi::SPEC_HAS_ROUGH_GLASS, value: self.rough_glass as u32 },
+            Spec { id: abi::SPEC_HAS_VOLUME, value: self.volume as u32 },
         ]
     }
 }

@@ -218,6 +218,8 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
         metallic: m.metallic,
         roughness: m.roughness,
         dielectric_f0: f0,
+        sigma_a: m.absorption,
+        pad0: 0.0,
         model: match m.model {
             MaterialModel::Thesis => abi::MATERIAL_THESIS,
             MaterialModel::MetalRough => abi::MATERIAL_METAL_ROUGH,

@@ -159,6 +159,10 @@ pub struct Material {
     pub metallic_texture: Option<u32>,
     /// Linear texture whose red channel scales `refractivity` (glTF transmissionTexture).
     pub transmission_texture: Option<u32>,
+    /// Absorption coefficient sigma_a per unit length, per channel, inside a closed mesh of
+    /// this material (glTF KHR_materials_volume: Beer-Lambert, docs/integrators.md); zero:
+    /// no volume.
+    pub absorption: Vec3,
 }
 
 impl Default for Material {
@@ -182,6 +186,7 @@ impl Default for Material {
             roughness_texture: None,
             metallic_texture: None,
             transmission_texture: None,
+            absorption: Vec3::ZERO,
         }
     }
 }
@@ -225,6 +230,9 @@ impl Material {
         } else if self.refractivity > 0.0 {
             f.push("glass");
         }
+        if self.has_volume() {
+            f.push("volume (absorbing)");
+        }
         if self.is_emissive() {
             f.push("emissive");
         }
@@ -245,6 +253,11 @@ impl Material {
     /// Whether the glass fraction is a rough dielectric (roughness > 0; Walter et al. 2007).
     pub fn has_rough_glass(&self) -> bool {
         self.refractivity > 0.0 && self.roughness > 0.0
+    }
+
+    /// Whether a closed mesh of this material absorbs inside (KHR_materials_volume).
+    pub fn has_volume(&self) -> bool {
+        self.absorption.max_element() > 0.0
     }
 
     /// Whether the thesis' perfect mirror (a delta lobe) is used.

@@ -316,6 +316,7 @@ pub(crate) fn to_material(
         roughness_texture,
         metallic_texture: if pbr { metallic_texture } else { None },
         transmission_texture: None,
+        absorption: Vec3::ZERO,
     }
 }
 
