@@ -415,7 +415,7 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (112 bytes) {
+    pub struct GpuMaterial (128 bytes) {
         /// Linear albedo (base colour).
         pub albedo: Vec3,
         /// MASK: the alpha cutoff (> 0); 0 if not alpha-tested (BLEND: see `opacity`).
@@ -445,7 +445,8 @@ gpu_structs! {
         /// GGX roughness (alpha = roughness^2); for MATERIAL_THESIS, > 0 makes the
         /// reflectivity a rough conductor and the refractivity a rough dielectric.
         pub roughness: f32,
-        /// Schlick F0 of the dielectric coat, ((ior - 1) / (ior + 1))^2 (0.04 at ior 1.5).
+        /// Schlick F0 of the dielectric coat's weight on the diffuse lobe: the largest channel
+        /// of `specular_f0` (KHR_materials_specular's max_value; 0.04 at ior 1.5).
         pub dielectric_f0: f32,
         /// MATERIAL_THESIS or MATERIAL_METAL_ROUGH.
         pub model: u32,
@@ -462,6 +463,11 @@ gpu_structs! {
         /// closed mesh of this material (SPEC_HAS_VOLUME; zero: none).
         pub sigma_a: Vec3,
         pub pad0: f32,
+        /// Schlick F0 of the dielectric coat's reflection, min(((ior - 1) / (ior + 1))^2
+        /// specularColorFactor, 1) (KHR_materials_specular; ((ior - 1) / (ior + 1))^2 without).
+        pub specular_f0: Vec3,
+        /// KHR_materials_specular's specularFactor: the coat's F90 and weight (1 without).
+        pub specular: f32,
     }
 
     /// An emissive triangle for light sampling.

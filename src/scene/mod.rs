@@ -163,6 +163,11 @@ pub struct Material {
     /// this material (glTF KHR_materials_volume: Beer-Lambert, docs/integrators.md); zero:
     /// no volume.
     pub absorption: Vec3,
+    /// glTF KHR_materials_specular (MetalRough): specularFactor, the strength of the
+    /// dielectric coat's reflection (its F90; 1 = plain glTF), and specularColorFactor,
+    /// which scales the coat's F0 (linear RGB; 1 = plain glTF).
+    pub specular: f32,
+    pub specular_colour: Vec3,
 }
 
 impl Default for Material {
@@ -187,6 +192,8 @@ impl Default for Material {
             metallic_texture: None,
             transmission_texture: None,
             absorption: Vec3::ZERO,
+            specular: 1.0,
+            specular_colour: Vec3::ONE,
         }
     }
 }
@@ -229,6 +236,9 @@ impl Material {
             f.push("rough glass (GGX)");
         } else if self.refractivity > 0.0 {
             f.push("glass");
+        }
+        if self.model == MaterialModel::MetalRough && (self.specular != 1.0 || self.specular_colour != Vec3::ONE) {
+            f.push("specular (KHR_materials_specular)");
         }
         if self.has_volume() {
             f.push("volume (absorbing)");

@@ -317,6 +317,8 @@ pub(crate) fn to_material(
         metallic_texture: if pbr { metallic_texture } else { None },
         transmission_texture: None,
         absorption: Vec3::ZERO,
+        specular: 1.0,
+        specular_colour: Vec3::ONE,
     }
 }
 

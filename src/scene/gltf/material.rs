@@ -20,6 +20,10 @@
 //!   `thicknessFactor` 0 (the default) means thin-walled (no volume: the extension's rule);
 //!   otherwise the thickness and its texture are ignored (a path tracer measures the
 //!   distance travelled).
+//! - `KHR_materials_specular`: specularFactor → the dielectric coat's F90 and weight,
+//!   specularColorFactor → its F0 colour (clamped to 1); the diffuse lobe keeps 1 − the
+//!   largest channel of that Fresnel (the extension's `max_value`). Their textures are not
+//!   read (a warning). The glass fraction keeps the exact Fresnel of its ior.
 //! - Texture coordinate sets and KHR_texture_transform: `uv_map.rs`; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
@@ -102,6 +106,25 @@ pub(super) fn convert<'a>(
                 .map_err(|msg| SceneError::Gltf { file: file.to_path_buf(), element: element.clone(), msg })?,
             _ => Vec3::ZERO,
         };
+        let (specular, specular_colour) = match m.specular() {
+            Some(s) => {
+                let (f, c) = (s.specular_factor(), Vec3::from(s.specular_color_factor()));
+                if !(0.0..=1.0).contains(&f) || !c.is_finite() || c.min_element() < 0.0 {
+                    return Err(SceneError::Gltf {
+                        file: file.to_path_buf(),
+                        element,
+                        msg: format!("KHR_materials_specular: specularFactor {f} must be in [0, 1], specularColorFactor {c} >= 0"),
+                    });
+                }
+                if s.specular_texture().is_some() || s.specular_color_texture().is_some() {
+                    w.warn_once("gltf-specular-textures", || {
+                        format!("{}: {element}: KHR_materials_specular textures are not supported; their factors are used", file.display())
+                    });
+                }
+                (f, c)
+            }
+            None => (1.0, Vec3::ONE),
+        };
         let material = Material {
             name,
             albedo,
@@ -122,6 +145,8 @@ pub(super) fn convert<'a>(
             metallic_texture: metal_rough_texture,
             transmission_texture: if refractivity > 0.0 { transmission_texture } else { None },
             absorption,
+            specular,
+            specular_colour,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
         if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {

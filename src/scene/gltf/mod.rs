@@ -43,6 +43,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_ior",
     "KHR_materials_emissive_strength",
     "KHR_materials_volume",
+    "KHR_materials_specular",
     "KHR_lights_punctual",
     "KHR_texture_transform",
 ];
