@@ -20,8 +20,10 @@
 //!    colour, per channel, within 4 standard errors (at the default specularFactor 1 the coat
 //!    moves it by several percent: the test shows the difference it resolves);
 //! 4. over a black base the reflection is the coat's alone, specularFactor times
-//!    Schlick(F0 colour, F90 = 1) times GGX: specularFactor 0.5 gives exactly half of 1 (the
-//!    same random numbers take the same paths; the ratio is exact up to float rounding).
+//!    Schlick(F0, F90 = 1) times GGX, and the same random numbers take the same paths: it is
+//!    exactly linear in specularFactor (0.5 gives half; specularTexture's alpha scales it) and
+//!    affine in F0 (specularColorFactor times the sRGB specularColorTexture, clamped to 1),
+//!    checked to float rounding.
 
 mod common;
 
@@ -83,7 +85,8 @@ fn slab(ior: f32) -> (Scene, Camera) {
         Mesh::cuboid(Vec3::new(-4.0, -4.0, -1.0), Vec3::new(4.0, 4.0, 1.0), 0),
         Mesh::quad(Vec3::new(-30.0, -30.0, -3.0), Vec3::X * 60.0, Vec3::Y * 60.0, Vec3::Z, 1),
     ];
-    let path = gltf_out::write(&format!("slab-{ior}"), &meshes, &[glass(1.0, ior, [1.0; 3], COLOUR, THICKNESS), emitter(LE)], &EXTENSIONS);
+    let path =
+        gltf_out::write(&format!("slab-{ior}"), &meshes, &[glass(1.0, ior, [1.0; 3], COLOUR, THICKNESS), emitter(LE)], &EXTENSIONS, &[]);
     let mut scene = load_strict(&path);
     // glTF's metal-rough model always has a specular coat, which would reflect the slab's
     // reflection of the emitter back through it: make the emitter a black thesis material.
@@ -168,7 +171,7 @@ fn room() -> (Scene, Camera) {
         diffuse("red", [0.8, 0.3, 0.2]),
         emitter(6.0),
     ];
-    let scene = load_strict(&gltf_out::write("room", &meshes, &materials, &EXTENSIONS));
+    let scene = load_strict(&gltf_out::write("room", &meshes, &materials, &EXTENSIONS, &[]));
     assert!(SceneFeatures::of(&scene).volume);
     let camera = Camera {
         name: "room".into(),
@@ -198,24 +201,25 @@ fn pt_pt_nee_and_bdpt_agree_through_an_absorbing_glass_cube() {
 // ---- KHR_materials_specular ------------------------------------------------------------------
 
 const BASE: [f32; 3] = [0.6, 0.45, 0.3];
+/// specularColorFactor of most cases.
+const TINT: &str = "[1, 0.8, 0.6]";
 
 /// Renders (pt-nee, `spp`) a 16x16 view of a large quad (facing +z) seen at 70° from its
-/// normal, its material metal-rough with base colour `base`, roughness 0.4 and
-/// KHR_materials_specular `specular` (specularColorFactor (1, 0.8, 0.6)), in a uniform white
-/// environment; returns the per-channel means and standard errors.
-fn specular_quad(ctx: &Context, base: [f32; 3], specular: f32, spp: u32) -> [(f64, f64); 3] {
+/// normal, its material metal-rough with base colour `base`, roughness 0.4 and the
+/// KHR_materials_specular object `{specular}` (JSON members), reading `textures`, in a
+/// uniform white environment; returns the per-channel means and standard errors.
+fn specular_quad(ctx: &Context, base: [f32; 3], specular: &str, textures: &[[u8; 4]], spp: u32) -> [(f64, f64); 3] {
     let material = format!(
         r#"{{"name": "coat", "pbrMetallicRoughness": {{"baseColorFactor": [{}, {}, {}, 1], "metallicFactor": 0, "roughnessFactor": 0.4}},
-  "extensions": {{"KHR_materials_specular": {{"specularFactor": {specular}, "specularColorFactor": [1, 0.8, 0.6]}}}}}}"#,
+  "extensions": {{"KHR_materials_specular": {{{specular}}}}}}}"#,
         base[0], base[1], base[2]
     );
     let quad = Mesh::quad(Vec3::new(-20.0, -20.0, 0.0), Vec3::X * 40.0, Vec3::Y * 40.0, Vec3::Z, 0);
-    let mut scene = load_strict(&gltf_out::write(&format!("specular-{specular}"), &[quad], &[material], &["KHR_materials_specular"]));
+    let name = format!("specular-{}", specular.chars().filter(char::is_ascii_alphanumeric).collect::<String>());
+    let mut scene = load_strict(&gltf_out::write(&name, &[quad], &[material], &["KHR_materials_specular"], textures));
     let m = &scene.materials[0];
-    assert_eq!((m.specular, m.specular_colour), (specular, Vec3::new(1.0, 0.8, 0.6)));
-    if specular != 1.0 {
-        assert!(m.describe().contains("specular"), "{}", m.describe());
-    }
+    assert!(m.describe().contains("specular"), "{}", m.describe());
+    assert_eq!(m.specular_texture.is_some() || m.specular_colour_texture.is_some(), !textures.is_empty(), "{}", m.describe());
     scene.environment = Some(Environment::uniform(Vec3::ONE));
     let a = 70f32.to_radians();
     let eye = Vec3::new(0.0, -a.sin(), a.cos()) * 10.0;
@@ -225,37 +229,44 @@ fn specular_quad(ctx: &Context, base: [f32; 3], specular: f32, spp: u32) -> [(f6
     [0, 1, 2].map(|c| mean_and_se(&img.chunks_exact(3).map(|p| p[c] as f64).collect::<Vec<_>>()))
 }
 
-/// What the kernels read: the coat's F0 is min(F0(ior) x specularColorFactor, 1) per channel,
-/// the diffuse lobe's weight uses its largest channel, specularFactor passes through.
+/// What the kernels read: the coat's F0 before the clamp, F0(ior) x specularColorFactor;
+/// specularFactor and the texture slots pass through.
 #[test]
-fn specular_colour_scales_and_clamps_the_coat_f0() {
-    let mut m = Material {
+fn specular_colour_scales_the_coat_f0() {
+    let m = Material {
         model: MaterialModel::MetalRough,
         ior: 1.5,
         specular: 0.7,
-        specular_colour: Vec3::new(1.0, 0.8, 0.6),
+        specular_colour: Vec3::new(100.0, 0.8, 0.6),
+        specular_colour_texture: Some(2),
         ..Default::default()
     };
     let g = gpu_material(&m);
-    assert!((g.specular_f0 - Vec3::new(0.04, 0.032, 0.024)).abs().max_element() < 1e-7, "{}", g.specular_f0);
-    assert!((g.dielectric_f0 - 0.04).abs() < 1e-7 && g.specular == 0.7);
-    m.specular_colour = Vec3::new(100.0, 2.0, 0.0);
-    let g = gpu_material(&m);
-    assert!((g.specular_f0 - Vec3::new(1.0, 0.08, 0.0)).abs().max_element() < 1e-6, "{}", g.specular_f0);
-    assert_eq!(g.dielectric_f0, 1.0);
+    assert!((g.specular_f0 - Vec3::new(4.0, 0.032, 0.024)).abs().max_element() < 1e-6, "{}", g.specular_f0);
+    assert_eq!((g.specular, g.specular_texture, g.specular_colour_texture), (0.7, 0, 3));
+}
+
+/// sRGB-encoded 8-bit value to linear (the sRGB transfer function, IEC 61966-2-1).
+fn srgb(v: u8) -> f64 {
+    let c = v as f64 / 255.0;
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
 }
 
 #[test]
-fn specular_factor_scales_the_coat_and_zero_leaves_the_lambertian_base() {
+fn specular_factor_colour_and_textures_scale_the_coat_and_zero_leaves_the_lambertian_base() {
     let ctx = gpu();
     // 3. specularFactor 0: the base colour exactly, in expectation.
-    let lambert = specular_quad(&ctx, BASE, 0.0, 16);
-    let coated = specular_quad(&ctx, BASE, 1.0, 16);
+    let lambert = specular_quad(&ctx, BASE, &format!(r#""specularFactor": 0, "specularColorFactor": {TINT}"#), &[], 16);
+    let coated = specular_quad(&ctx, BASE, &format!(r#""specularColorFactor": {TINT}"#), &[], 16);
     for c in 0..3 {
         let ((mean, se), (with_coat, coat_se)) = (lambert[c], coated[c]);
         let rho = BASE[c] as f64;
         eprintln!(
-            "specular 0, channel {c}: {mean:.5} ± {se:.5} vs base {rho} ({:+.3} %); specular 1: {with_coat:.5} ± {coat_se:.5} ({:+.2} %)",
+            "specular 0, channel {c}: {mean:.5} ± {se:.5} vs base {rho:.3} ({:+.3} %); specular 1: {with_coat:.5} ± {coat_se:.5} ({:+.2} %)",
             100.0 * (mean / rho - 1.0),
             100.0 * (with_coat / rho - 1.0)
         );
@@ -263,16 +274,43 @@ fn specular_factor_scales_the_coat_and_zero_leaves_the_lambertian_base() {
         // The test resolves what the coat does: specularFactor 1 is far from the base.
         assert!((with_coat - rho).abs() > 4.0 * (se + coat_se), "channel {c}: the coat's effect is not resolved");
     }
-    // 4. Black base: the coat alone, linear in specularFactor (F0 and F90 both scale).
-    let full = specular_quad(&ctx, [0.0; 3], 1.0, 2);
-    let half = specular_quad(&ctx, [0.0; 3], 0.5, 2);
+    // 4. Black base: the coat alone, weight x Schlick(F0, F90 = 1) x GGX with every path the
+    // same (the same random numbers; the lobe choice is the coat's whatever its weight), so
+    // the reflection is linear in specularFactor and affine in F0: L(F0) = L(0) + F0 / F0_1
+    // (L(F0_1) - L(0)). Exact up to float rounding (1e-4).
+    let full = specular_quad(&ctx, [0.0; 3], &format!(r#""specularColorFactor": {TINT}"#), &[], 2);
+    let half = specular_quad(&ctx, [0.0; 3], &format!(r#""specularFactor": 0.5, "specularColorFactor": {TINT}"#), &[], 2);
+    // specularTexture's alpha (linear) scales specularFactor: 64 / 255.
+    let alpha = specular_quad(
+        &ctx,
+        [0.0; 3],
+        &format!(r#""specularColorFactor": {TINT}, "specularTexture": {{"index": 0}}"#),
+        &[[255, 255, 255, 64]],
+        2,
+    );
+    let f0_zero = specular_quad(&ctx, [0.0; 3], r#""specularColorFactor": [0, 0, 0]"#, &[], 2);
+    // specularColorTexture (sRGB) scales specularColorFactor before the clamp to 1: red
+    // 0.04 x 40 x 1 clamps to 1, green and blue are 0.04 x srgb(128), 0.04 x srgb(64).
+    let texel = [255u8, 128, 64, 255];
+    let coloured = specular_quad(&ctx, [0.0; 3], r#""specularColorFactor": [40, 1, 1], "specularColorTexture": {"index": 0}"#, &[texel], 2);
+    let tint = [1.0, 0.8, 0.6];
     for c in 0..3 {
-        let (a, b) = (full[c].0, half[c].0);
-        eprintln!("black base, channel {c}: specular 1 {a:.6}, 0.5 {b:.6}, ratio {:.6}", b / a);
-        assert!(a > 0.01, "channel {c}: no coat reflection ({a})");
-        assert!((b / a - 0.5).abs() < 1e-4, "channel {c}: specularFactor 0.5 gives {b} of {a} (ratio {})", b / a);
+        let (l1, l0) = (full[c].0, f0_zero[c].0);
+        let f0_1 = 0.04 * tint[c];
+        let f0 = (0.04 * [40.0, 1.0, 1.0][c] * srgb(texel[c])).min(1.0);
+        let expect = l0 + f0 / f0_1 * (l1 - l0);
+        eprintln!(
+            "black base, channel {c}: specular 1 {l1:.6}, 0.5 {:.6} (ratio {:.6}), alpha 64 {:.6} (ratio {:.6}); F0 0: {l0:.6}, F0 {f0:.4}: {:.6} vs {expect:.6}",
+            half[c].0,
+            half[c].0 / l1,
+            alpha[c].0,
+            alpha[c].0 / l1,
+            coloured[c].0
+        );
+        assert!(l1 > 0.01 && l1 > l0, "channel {c}: no coat reflection ({l1}, F0 0: {l0})");
+        assert!((half[c].0 / l1 - 0.5).abs() < 1e-4, "channel {c}: specularFactor 0.5 gives {} of {l1}", half[c].0);
+        assert!((alpha[c].0 / l1 - 64.0 / 255.0).abs() < 1e-4, "channel {c}: specularTexture alpha 64 gives {} of {l1}", alpha[c].0);
+        assert!((coloured[c].0 / expect - 1.0).abs() < 1e-4, "channel {c}: specularColorTexture: {} vs {expect}", coloured[c].0);
     }
-    // The colour: F0 (1, 0.8, 0.6) x 0.04 makes the coat reddest (red > green > blue).
-    assert!(full[0].0 > full[1].0 && full[1].0 > full[2].0, "coat colour {:?}", full.map(|m| m.0));
     finish(ctx);
 }

@@ -445,9 +445,9 @@ gpu_structs! {
         /// GGX roughness (alpha = roughness^2); for MATERIAL_THESIS, > 0 makes the
         /// reflectivity a rough conductor and the refractivity a rough dielectric.
         pub roughness: f32,
-        /// Schlick F0 of the dielectric coat's weight on the diffuse lobe: the largest channel
-        /// of `specular_f0` (KHR_materials_specular's max_value; 0.04 at ior 1.5).
-        pub dielectric_f0: f32,
+        /// KHR_materials_specular's specularTexture + 1 (linear; its alpha scales
+        /// `specular`), 0 = none.
+        pub specular_texture: u32,
         /// MATERIAL_THESIS or MATERIAL_METAL_ROUGH.
         pub model: u32,
         /// Emission texture + 1 (sRGB; scales `emission`), 0 = none.
@@ -462,9 +462,12 @@ gpu_structs! {
         /// KHR_materials_volume: absorption coefficient sigma_a per unit length inside a
         /// closed mesh of this material (SPEC_HAS_VOLUME; zero: none).
         pub sigma_a: Vec3,
-        pub pad0: f32,
-        /// Schlick F0 of the dielectric coat's reflection, min(((ior - 1) / (ior + 1))^2
-        /// specularColorFactor, 1) (KHR_materials_specular; ((ior - 1) / (ior + 1))^2 without).
+        /// KHR_materials_specular's specularColorTexture + 1 (sRGB; its RGB scales
+        /// `specular_f0` before the clamp), 0 = none.
+        pub specular_colour_texture: u32,
+        /// Schlick F0 of the dielectric coat's reflection before the clamp to 1,
+        /// ((ior - 1) / (ior + 1))^2 x specularColorFactor (KHR_materials_specular; 0.04 at
+        /// ior 1.5 without); the diffuse lobe's coat weight uses its largest clamped channel.
         pub specular_f0: Vec3,
         /// KHR_materials_specular's specularFactor: the coat's F90 and weight (1 without).
         pub specular: f32,

@@ -40,6 +40,8 @@ impl SceneFeatures {
                     || m.roughness_texture.is_some()
                     || m.metallic_texture.is_some()
                     || m.transmission_texture.is_some()
+                    || m.specular_texture.is_some()
+                    || m.specular_colour_texture.is_some()
                     || m.emission_texture.is_some()
                     || m.normal_texture.is_some()
             });

@@ -9,7 +9,7 @@ use crate::gpu::abi::{self, GpuMaterial, GpuPunctual, GpuTexture};
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::scene::{Material, MaterialModel, Scene, Texture};
 use crate::vk::{Bind, Buffer, Context, Memory, Result};
-use glam::{UVec4, Vec3};
+use glam::UVec4;
 
 /// Every buffer the integrators read.
 pub struct GpuScene {
@@ -192,8 +192,8 @@ impl GpuScene {
 /// A material as the kernels read it (`GpuMaterial` in src/gpu/abi.rs).
 pub fn gpu_material(m: &Material) -> GpuMaterial {
     let index = |t: Option<u32>| t.map_or(0, |t| t + 1);
-    // KHR_materials_specular: the coat's F0, coloured and clamped (1 and plain glTF without).
-    let specular_f0 = (((m.ior - 1.0) / (m.ior + 1.0)).powi(2) * m.specular_colour).min(Vec3::ONE);
+    // KHR_materials_specular: the coat's F0, coloured (the kernels clamp it after the texture).
+    let specular_f0 = ((m.ior - 1.0) / (m.ior + 1.0)).powi(2) * m.specular_colour;
     GpuMaterial {
         albedo: m.albedo,
         // A MASK cutoff stays positive: 0 means "not MASK" to the kernels.
@@ -218,9 +218,9 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
         opacity: m.blend.unwrap_or(1.0),
         metallic: m.metallic,
         roughness: m.roughness,
-        dielectric_f0: specular_f0.max_element(),
+        specular_texture: index(m.specular_texture),
         sigma_a: m.absorption,
-        pad0: 0.0,
+        specular_colour_texture: index(m.specular_colour_texture),
         specular_f0,
         specular: m.specular,
         model: match m.model {

@@ -168,6 +168,10 @@ pub struct Material {
     /// which scales the coat's F0 (linear RGB; 1 = plain glTF).
     pub specular: f32,
     pub specular_colour: Vec3,
+    /// Linear texture whose alpha scales `specular` (glTF specularTexture).
+    pub specular_texture: Option<u32>,
+    /// sRGB texture whose RGB scales `specular_colour` (glTF specularColorTexture).
+    pub specular_colour_texture: Option<u32>,
 }
 
 impl Default for Material {
@@ -194,6 +198,8 @@ impl Default for Material {
             absorption: Vec3::ZERO,
             specular: 1.0,
             specular_colour: Vec3::ONE,
+            specular_texture: None,
+            specular_colour_texture: None,
         }
     }
 }
@@ -237,7 +243,12 @@ impl Material {
         } else if self.refractivity > 0.0 {
             f.push("glass");
         }
-        if self.model == MaterialModel::MetalRough && (self.specular != 1.0 || self.specular_colour != Vec3::ONE) {
+        if self.model == MaterialModel::MetalRough
+            && (self.specular != 1.0
+                || self.specular_colour != Vec3::ONE
+                || self.specular_texture.is_some()
+                || self.specular_colour_texture.is_some())
+        {
             f.push("specular (KHR_materials_specular)");
         }
         if self.has_volume() {
@@ -251,6 +262,8 @@ impl Material {
             (self.roughness_texture.is_some(), "roughness map"),
             (self.metallic_texture.is_some(), "metallic map"),
             (self.transmission_texture.is_some(), "transmission map"),
+            (self.specular_texture.is_some(), "specular map"),
+            (self.specular_colour_texture.is_some(), "specular colour map"),
             (self.normal_texture.is_some(), "normal map"),
             (self.emission_texture.is_some() && self.is_emissive(), "emission map"),
             (self.alpha.is_some(), "alpha mask"),

@@ -319,6 +319,8 @@ pub(crate) fn to_material(
         absorption: Vec3::ZERO,
         specular: 1.0,
         specular_colour: Vec3::ONE,
+        specular_texture: None,
+        specular_colour_texture: None,
     }
 }
 

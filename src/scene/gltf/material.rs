@@ -22,8 +22,9 @@
 //!   distance travelled).
 //! - `KHR_materials_specular`: specularFactor → the dielectric coat's F90 and weight,
 //!   specularColorFactor → its F0 colour (clamped to 1); the diffuse lobe keeps 1 − the
-//!   largest channel of that Fresnel (the extension's `max_value`). Their textures are not
-//!   read (a warning). The glass fraction keeps the exact Fresnel of its ior.
+//!   largest channel of that Fresnel (the extension's `max_value`); specularTexture (linear,
+//!   A) and specularColorTexture (sRGB, RGB) scale the factors. The glass fraction keeps the
+//!   exact Fresnel of its ior.
 //! - Texture coordinate sets and KHR_texture_transform: `uv_map.rs`; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
@@ -106,7 +107,7 @@ pub(super) fn convert<'a>(
                 .map_err(|msg| SceneError::Gltf { file: file.to_path_buf(), element: element.clone(), msg })?,
             _ => Vec3::ZERO,
         };
-        let (specular, specular_colour) = match m.specular() {
+        let (specular, specular_colour, specular_texture, specular_colour_texture) = match m.specular() {
             Some(s) => {
                 let (f, c) = (s.specular_factor(), Vec3::from(s.specular_color_factor()));
                 if !(0.0..=1.0).contains(&f) || !c.is_finite() || c.min_element() < 0.0 {
@@ -116,14 +117,17 @@ pub(super) fn convert<'a>(
                         msg: format!("KHR_materials_specular: specularFactor {f} must be in [0, 1], specularColorFactor {c} >= 0"),
                     });
                 }
-                if s.specular_texture().is_some() || s.specular_color_texture().is_some() {
-                    w.warn_once("gltf-specular-textures", || {
-                        format!("{}: {element}: KHR_materials_specular textures are not supported; their factors are used", file.display())
-                    });
-                }
-                (f, c)
+                let texture = match s.specular_texture() {
+                    Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?,
+                    None => None,
+                };
+                let colour_texture = match s.specular_color_texture() {
+                    Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?,
+                    None => None,
+                };
+                (f, c, texture, colour_texture)
             }
-            None => (1.0, Vec3::ONE),
+            None => (1.0, Vec3::ONE, None, None),
         };
         let material = Material {
             name,
@@ -147,6 +151,8 @@ pub(super) fn convert<'a>(
             absorption,
             specular,
             specular_colour,
+            specular_texture,
+            specular_colour_texture,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
         if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {
