@@ -77,6 +77,26 @@ fn load_strict(path: &std::path::Path) -> Scene {
     loaded.scene
 }
 
+/// Bad extension values are errors naming the file, the material and the extension.
+#[test]
+fn bad_volume_and_specular_values_are_errors() {
+    let quad = || [Mesh::quad(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z, 0)];
+    let cases = [
+        ("distance", glass(1.0, 1.5, [1.0; 3], COLOUR, -1.0), "KHR_materials_volume"),
+        ("colour", glass(1.0, 1.5, [1.0; 3], [1.5, 0.5, 0.5], 1.0), "KHR_materials_volume"),
+        (
+            "specular",
+            r#"{"name": "glass", "extensions": {"KHR_materials_specular": {"specularFactor": 2}}}"#.to_owned(),
+            "KHR_materials_specular",
+        ),
+    ];
+    for (name, material, what) in cases {
+        let path = gltf_out::write(&format!("bad-{name}"), &quad(), &[material], &EXTENSIONS, &[]);
+        let e = load(&path, &LoadOptions { strict: true }).map(|_| ()).expect_err(name).to_string();
+        assert!(e.contains("bad-") && e.contains("material 0 \"glass\"") && e.contains(what), "{name}: {e}");
+    }
+}
+
 /// The slab [-4, 4] x [-4, 4] x [-1, 1], the emitter z = -3 facing +z, and a camera at
 /// z = 10 looking down -z with a 0.5° field of view: rays at most 0.36° off normal, so paths
 /// in the glass are longer than d by a factor below 1 + 2e-5 and R changes by less than 1e-8.
