@@ -114,7 +114,7 @@ pub(super) fn convert<'a>(
                     return Err(SceneError::Gltf {
                         file: file.to_path_buf(),
                         element,
-                        msg: format!("KHR_materials_specular: specularFactor {f} must be in [0, 1], specularColorFactor {c} >= 0"),
+                        msg: format!("KHR_materials_specular needs specularFactor in [0, 1] and specularColorFactor >= 0; got {f}, {c}"),
                     });
                 }
                 let texture = match s.specular_texture() {
@@ -181,7 +181,7 @@ pub(super) fn volume_absorption(thickness: f32, colour: [f32; 3], distance: f32)
         || colour.max_element() > 1.0
     {
         return Err(format!(
-            "KHR_materials_volume: thicknessFactor {thickness} must be >= 0, attenuationDistance {distance} > 0, attenuationColor {colour} in [0, 1]"
+            "KHR_materials_volume needs thicknessFactor >= 0, attenuationDistance > 0 and attenuationColor in [0, 1]; got {thickness}, {distance}, {colour}"
         ));
     }
     if thickness == 0.0 || distance.is_infinite() {
