@@ -19,13 +19,13 @@ use bidir::gpu_data::SceneFeatures;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Environment, Material, MaterialModel, Scene};
 use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use common::agree::{assert_agree, mean_and_se, render_with, ALPHA};
 use common::sphere::{dv, edges_about, frame, Cells};
 use common::stats::{self, Fit};
 use common::{finish, geometry, gpu, Pcg};
 use glam::{DVec3, Vec3, Vec4};
 use std::f64::consts::PI;
 
-const ALPHA: f64 = 1e-3;
 const IOR: f64 = 1.5;
 /// Samples per chi-square case.
 const N: u32 = 1 << 17;
@@ -276,22 +276,6 @@ fn render(ctx: &Context, scene: &Scene, camera: &Camera, integrator: Integrator,
 
 /// Renders `spp` with `integrator` on a renderer that keeps its scene (only the integrator's
 /// kernels are rebuilt).
-fn render_with(r: &mut Renderer, integrator: Integrator, spp: u32) -> Vec<f32> {
-    if r.settings().integrator != integrator {
-        r.set_integrator(integrator).unwrap();
-    }
-    r.render_spp(spp, |_| {}).unwrap();
-    assert_eq!(r.nan_samples().unwrap(), 0, "{}: NaN/Inf samples", integrator.name());
-    r.image().unwrap().data
-}
-
-fn mean_and_se(v: &[f64]) -> (f64, f64) {
-    let n = v.len() as f64;
-    let mean = v.iter().sum::<f64>() / n;
-    let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    (mean, (var / n).sqrt())
-}
-
 /// A rough glass sphere (IOR 1.5, no absorption, flat facets) filling a 16x16 view, in a
 /// uniform environment of radiance 1: every path ends in the environment, so a lossless BSDF
 /// gives exactly 1 and single-scattering GGX somewhat less.
@@ -368,36 +352,6 @@ fn rough_glass_cornell() -> (Scene, Camera) {
     camera.width = 32;
     camera.height = 32;
     (s, camera)
-}
-
-/// Whether images a and b have the same expectation: the per-pixel difference (channels
-/// summed) averaged over 8x8 blocks, each block's mean against its own standard error.
-fn assert_agree(what: &str, a: &[f32], b: &[f32], width: usize) {
-    let diff: Vec<f64> =
-        a.chunks_exact(3).zip(b.chunks_exact(3)).map(|(x, y)| x.iter().zip(y).map(|(p, q)| (p - q) as f64).sum()).collect();
-    let level = a.iter().map(|&v| v as f64).sum::<f64>() / (a.len() / 3) as f64;
-    let height = diff.len() / width;
-    let (mut chi2, mut blocks, mut worst) = (0.0, 0u32, 0.0f64);
-    for by in (0..height).step_by(8) {
-        for bx in (0..width).step_by(8) {
-            let v: Vec<f64> = (by..by + 8).flat_map(|y| (bx..bx + 8).map(move |x| (x, y))).map(|(x, y)| diff[y * width + x]).collect();
-            let (m, se) = mean_and_se(&v);
-            let z = if se > 0.0 { m / se } else { 0.0 };
-            worst = worst.max(z.abs());
-            chi2 += z * z;
-            blocks += 1;
-        }
-    }
-    let (m, se) = mean_and_se(&diff);
-    let p_blocks = stats::chi2_sf(chi2, blocks);
-    eprintln!(
-        "{what}: mean difference {:+.3} % ± {:.3} % of the image level, blocks X^2 = {chi2:.1} over {blocks} (p = {p_blocks:.4}), worst |z| {worst:.2}",
-        100.0 * m / level,
-        100.0 * se / level
-    );
-    assert!(se / level < 0.02, "{what}: too noisy to resolve 2 % (se {:.3} %)", 100.0 * se / level);
-    assert!(m.abs() < 3.29 * se, "{what}: images differ by {:+.3} % (z = {:.2})", 100.0 * m / level, m / se);
-    assert!(p_blocks >= ALPHA, "{what}: block means differ beyond their noise (X^2 = {chi2:.1}, dof {blocks}, p = {p_blocks:.2e})");
 }
 
 #[test]

@@ -86,7 +86,8 @@ struct Continuous {
     vec3 spec_f0;   // Schlick F0 of the GGX lobe (1: the thesis' rough conductor, F = 1)
     float spec;     // weight of the GGX lobe (0: none)
     float coat_f0;  // F0 of the dielectric coat over the diffuse lobe
-    float coat;     // 1: the diffuse lobe is weighted by 1 - F(coat_f0); 0: not
+    float coat;     // the diffuse lobe is weighted by 1 - coat F(coat_f0): 1 (glTF; its
+                    // specularFactor with KHR_materials_specular) or 0 (the thesis)
     float alpha;    // GGX alpha = roughness^2
 };
 

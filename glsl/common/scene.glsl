@@ -283,11 +283,25 @@ Continuous continuous_at(GpuMaterial m, vec2 uv) {
         metallic *= tm.b;
     }
     if (m.model == MATERIAL_METAL_ROUGH) {
+        // KHR_materials_specular: the dielectric Fresnel is specular * Schlick(specular_f0)
+        // (F90 = specular) and the diffuse lobe keeps 1 - its largest channel; mixed with the
+        // metal's Schlick(albedo) by metallic this is one Schlick lobe of F0 = f0 / f90 and
+        // weight f90 (glTF's plain model at specular = 1, specular_f0 = F0(ior)).
+        float specular = m.specular;
+        vec3 f0 = m.specular_f0;
+        if (HAS_TEXTURES != 0u && m.specular_texture != 0u) {
+            specular *= sample_texture(m.specular_texture - 1u, uv).a;
+        }
+        if (HAS_TEXTURES != 0u && m.specular_colour_texture != 0u) {
+            f0 *= sample_texture(m.specular_colour_texture - 1u, uv).rgb;
+        }
+        f0 = min(f0, vec3(1.0));
+        float f90 = specular + (1.0 - specular) * metallic;
         c.diffuse = c.pick * (1.0 - metallic) * albedo;
-        c.coat = 1.0;
-        c.coat_f0 = m.dielectric_f0;
-        c.spec_f0 = mix(vec3(m.dielectric_f0), albedo, metallic);
-        c.spec = c.pick;
+        c.coat = specular;
+        c.coat_f0 = max(f0.r, max(f0.g, f0.b));
+        c.spec_f0 = f90 > 0.0 ? mix(specular * f0, albedo, metallic) / f90 : vec3(1.0);
+        c.spec = c.pick * f90;
     } else if (m.roughness > 0.0) {
         // The thesis' reflectivity, made rough: a conductor with F = 1.
         float r = HAS_MIRROR != 0u ? m.reflectivity : 0.0;

@@ -21,6 +21,7 @@
 #include "emission.glsl"
 #include "env.glsl"
 #include "punctual.glsl"
+#include "volume.glsl"
 #include "bdpt.glsl"
 #include "vcm.glsl"
 
@@ -47,8 +48,9 @@ vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_re
 }
 
 // Connection of camera vertex (p, ns_f, ng_f, continuous BSDF c, wo toward the previous
-// camera vertex, d_vcm, d_vc) to light vertex y.
-vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, float d_vc, float vm, LightVertex y, inout uvec2 stats) {
+// camera vertex, sigma_a on the side it was reached from, d_vcm, d_vc) to light vertex y.
+// Both ends connect on the side their paths arrived on; either may lie inside a volume.
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm, LightVertex y, inout uvec2 stats) {
     vec3 v = y.pos - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
@@ -69,6 +71,10 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm, f
         g *= shading_normal_adjoint(y.wi, -dir, y.ns, y.ng);
     }
     vec3 contrib = f * beta_f_y * (g / (w_light + 1.0 + w_camera));
+    if (HAS_VOLUME != 0u) {
+        vec3 sigma_y = volume_sigma(materials[y.material], y.back_face != 0u);
+        contrib *= volume_transmittance(segment_sigma(sigma, sigma_y), sqrt(dist2));
+    }
     if (max3(contrib) <= 0.0 || !visible_between(p, ng_f, y.pos, y.ng, stats)) {
         return vec3(0.0);
     }
@@ -91,6 +97,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
     uvec2 lc = light_counts[path];   // (stored, seen) of this sample's light path
     uint base = path * pc.light_path_len;
+    vec3 sigma_near = vec3(0.0); // sigma_a where the next segment leaves its surface (volume.glsl)
 
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
@@ -101,6 +108,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             // path emits it with that over the disk area.
             if (HAS_ENV != 0u) {
                 EnvSample e = env_lookup(d);
+                beta *= volume_transmittance(sigma_near, 3.0e38);
                 if (depth == 1u || VCM_PHOTON_MAPPING) {
                     radiance += beta * e.le; // the eye, or (photon mapping) only delta bounces before
                 } else {
@@ -114,6 +122,11 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         }
         Surface s = surface_at(o, d, h);
         GpuMaterial m = materials[s.material];
+        // Beer-Lambert over the segment just traced, inside a volume at either of its ends.
+        vec3 sigma_in = volume_sigma(m, !s.front);
+        if (HAS_VOLUME != 0u) {
+            beta *= volume_transmittance(segment_sigma(sigma_near, sigma_in), h.t);
+        }
         vec3 ng_f = s.front ? s.ng : -s.ng;
         vec3 ns_f = s.front ? s.ns : -s.ns;
         float cos_in = abs(dot(ns_f, -d));
@@ -177,7 +190,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, ps.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_camera = mis(ps.emission_over_direct * cos_s) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
-                    vec3 c = beta * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
+                    vec3 c = beta * volume_transmittance(sigma_in, ps.dist) * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
                     if (max3(c) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
                         radiance += c;
                     }
@@ -192,7 +205,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     vec3 f = continuous_eval(bsdf, ns_f, wo, es.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / direct_pdf_w);
                     float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
-                    vec3 c = beta * f * es.le * (cos_s / (direct_pdf_w * (w_light + 1.0 + w_camera)));
+                    vec3 c = beta * volume_transmittance(sigma_in, 3.0e38) * f * es.le * (cos_s / (direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
                         radiance += c;
                     }
@@ -214,7 +227,9 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     // With merging, k.vm counts merging at this vertex (a light path's first
                     // vertex found here).
                     float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
-                    vec3 c = beta * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
+                    // The shadow ray leaves on the side the path arrived on and reaches the
+                    // emitter's front: only this end can lie inside a volume.
+                    vec3 c = beta * volume_transmittance(sigma_in, sqrt(dist2)) * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
                         radiance += c;
                     }
@@ -240,7 +255,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                             continue;
                         }
                         float inv_q = scale * float(c.y) / float(c.x);
-                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, k.vm, y, stats);
+                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, k.vm, y, stats);
                     }
                 }
             } else if (lc.x > 0u) {
@@ -255,7 +270,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                         continue;
                     }
-                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vc, k.vm, y, stats);
+                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, k.vm, y, stats);
                 }
             }
         }
@@ -325,6 +340,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             d_vm *= mis(abs(dot(dn, ns_f)));
             d = dn;
         }
+        sigma_near = volume_sigma(m, dot(d, s.ng) < 0.0);
         o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
 
         if (depth >= pc.rr_depth) {

@@ -21,6 +21,7 @@
 #include "emission.glsl"
 #include "env.glsl"
 #include "punctual.glsl"
+#include "volume.glsl"
 #include "bdpt.glsl"
 #include "vcm.glsl"
 
@@ -32,8 +33,9 @@ layout(push_constant) uniform Push { BdptPush pc; };
 layout(std430, binding = BIND_LVC_OFFSETS) writeonly buffer LvcOffsets { uint lvc_offsets[]; };
 
 // Strategy t = 1: joins the light vertex at `p` to the eye and splats its contribution.
-// `c` is the vertex's continuous BSDF, `beta` the throughput arriving along wi.
-void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3 beta, float d_vcm, float d_vc, float vm, inout uvec2 stats) {
+// `c` is the vertex's continuous BSDF, `beta` the throughput arriving along wi, `sigma` the
+// absorption on the side of the surface the path arrived on (volume.glsl).
+void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3 beta, vec3 sigma, float d_vcm, float d_vc, float vm, inout uvec2 stats) {
     vec3 to_eye = pc.camera.eye.xyz - p;
     float dist2 = dot(to_eye, to_eye);
     float dist = sqrt(dist2);
@@ -55,7 +57,7 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
     vec3 f = continuous_eval(c, ns_f, wi, w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
     float w_light = mis(image_to_surface / float(pc.light_paths)) * (vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
     float adjoint = HAS_NORMALS != 0u ? shading_normal_adjoint(wi, w, ns_f, ng_f) : 1.0;
-    vec3 contrib = beta * f * (adjoint * image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
+    vec3 contrib = beta * volume_transmittance(sigma, dist) * f * (adjoint * image_to_surface / float(pc.light_paths)) / (w_light + 1.0);
     if (max3(contrib) <= 0.0) {
         return;
     }
@@ -170,6 +172,7 @@ void main() {
     }
     float beta0 = max3(beta);
     float d_vm = d_vc * k.vc; // dVM starts as dVC / eta (0 for a delta light)
+    vec3 sigma_near = vec3(0.0); // sigma_a where the next segment leaves its surface (volume.glsl)
 
     for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
@@ -178,6 +181,11 @@ void main() {
         }
         Surface s = surface_at(o, d, h);
         GpuMaterial m = materials[s.material];
+        // Beer-Lambert over the segment just traced, inside a volume at either of its ends.
+        vec3 sigma_in = volume_sigma(m, !s.front);
+        if (HAS_VOLUME != 0u) {
+            beta *= volume_transmittance(segment_sigma(sigma_near, sigma_in), h.t);
+        }
         vec3 ng_f = s.front ? s.ng : -s.ng;
         vec3 ns_f = s.front ? s.ns : -s.ns;
         vec3 wi = -d;
@@ -206,11 +214,11 @@ void main() {
             seen++;
             uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
             if (slot < pc.light_path_len) {
-                light_vertices[base + slot] = LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, 0.0, s.uv, s.material, d_vm);
+                light_vertices[base + slot] = LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, s.front ? 0u : 1u, s.uv, s.material, d_vm);
                 stored = min(seen, pc.light_path_len);
             }
             if (VCM_CONNECTS && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
-                connect_to_camera(s.p, ns_f, ng_f, wi, c, beta, d_vcm, d_vc, k.vm, stats);
+                connect_to_camera(s.p, ns_f, ng_f, wi, c, beta, sigma_in, d_vcm, d_vc, k.vm, stats);
             }
         }
         if (pc.max_depth != 0u && depth + 1u >= pc.max_depth) {
@@ -285,6 +293,7 @@ void main() {
         if (HAS_NORMALS != 0u) {
             beta *= shading_normal_adjoint(wi, d, ns_f, ng_f);
         }
+        sigma_near = volume_sigma(m, dot(d, s.ng) < 0.0);
         o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
 
         if (depth >= pc.rr_depth) {

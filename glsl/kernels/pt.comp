@@ -17,6 +17,7 @@
 #include "emission.glsl"
 #include "env.glsl"
 #include "punctual.glsl"
+#include "volume.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
@@ -44,6 +45,7 @@ struct PathState {
     bool specular;       // the last bounce was a delta lobe (or the camera)
     float prev_pdf_w;    // solid-angle pdf of the last non-delta bounce
     uint depth;          // vertices so far, the one the next segment finds included
+    vec3 sigma_near;     // sigma_a where the next segment leaves its surface (volume.glsl)
 };
 
 // A new path through image position `pixel` (pixels, row 0 on top); `rng` has drawn its jitter.
@@ -59,6 +61,7 @@ PathState path_start(vec2 pixel, inout Rng rng) {
     path.specular = true;
     path.prev_pdf_w = 0.0;
     path.depth = 1u;
+    path.sigma_near = vec3(0.0);
     return path;
 }
 
@@ -79,6 +82,7 @@ bool path_bounce(inout PathState path, inout Rng rng) {
     bool specular = path.specular;
     float prev_pdf_w = path.prev_pdf_w;
     uint depth = path.depth;
+    vec3 sigma_near = path.sigma_near;
 
     TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
     if (h.prim == NO_HIT) {
@@ -86,12 +90,17 @@ bool path_bounce(inout PathState path, inout Rng rng) {
         if (HAS_ENV != 0u) {
             EnvSample e = env_lookup(d);
             float w = NEE != 0u && !specular ? power_heuristic(prev_pdf_w, env.pick * e.pdf_w) : 1.0;
-            radiance += throughput * e.le * w;
+            radiance += throughput * volume_transmittance(sigma_near, 3.0e38) * e.le * w;
         }
         PATH_END;
     }
     Surface s = surface_at(o, d, h);
     GpuMaterial m = materials[s.material];
+    // Beer-Lambert over the segment just traced, inside a volume at either of its ends.
+    vec3 sigma_in = volume_sigma(m, !s.front);
+    if (HAS_VOLUME != 0u) {
+        throughput *= volume_transmittance(segment_sigma(sigma_near, sigma_in), h.t);
+    }
 
     // Emission seen by this segment: front faces only.
     if (m.emission_luminance > 0.0 && s.front) {
@@ -166,7 +175,7 @@ bool path_bounce(inout PathState path, inout Rng rng) {
                 // The contribution first, so only it stays live across the shadow ray.
                 float pdf_fwd_w, pdf_rev_w;
                 vec3 f = continuous_eval(c, ns_f, -d, ps.w, pdf_fwd_w, pdf_rev_w);
-                vec3 contrib = throughput * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
+                vec3 contrib = throughput * volume_transmittance(sigma_in, ps.dist) * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
                 if (max3(contrib) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
                     radiance += contrib;
                 }
@@ -179,7 +188,7 @@ bool path_bounce(inout PathState path, inout Rng rng) {
                 float pdf_fwd_w, pdf_rev_w;
                 vec3 f = continuous_eval(c, ns_f, -d, es.w, pdf_fwd_w, pdf_rev_w);
                 float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
-                vec3 contrib = throughput * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
+                vec3 contrib = throughput * volume_transmittance(sigma_in, 3.0e38) * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
                 if (max3(contrib) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
                     radiance += contrib;
                 }
@@ -197,7 +206,9 @@ bool path_bounce(inout PathState path, inout Rng rng) {
                 float pdf_fwd_w, pdf_rev_w;
                 vec3 f = continuous_eval(c, ns_f, -d, wi, pdf_fwd_w, pdf_rev_w);
                 float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
-                vec3 contrib = throughput * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
+                // The shadow ray leaves on the side the path arrived on and reaches the
+                // emitter's front: only this end can lie inside a volume.
+                vec3 contrib = throughput * volume_transmittance(sigma_in, dist) * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
                 if (max3(contrib) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
                     radiance += contrib;
                 }
@@ -222,6 +233,7 @@ bool path_bounce(inout PathState path, inout Rng rng) {
         o = p_off;
         specular = false;
     }
+    sigma_near = volume_sigma(m, dot(d, s.ng) < 0.0);
 
     // Russian roulette on throughput.
     if (depth >= pc.rr_depth) {
@@ -238,6 +250,7 @@ bool path_bounce(inout PathState path, inout Rng rng) {
     path.specular = specular;
     path.prev_pdf_w = prev_pdf_w;
     path.depth = depth + 1u;
+    path.sigma_near = sigma_near;
     return true;
 }
 #undef PATH_END

@@ -247,6 +247,9 @@ gpu_consts! {
     /// 1: some material's glass fraction is rough (roughness > 0): the rough dielectric of
     /// glsl/common/rough_dielectric.glsl; 0 compiles it out (smooth glass only).
     pub const SPEC_HAS_ROUGH_GLASS: u32 = 20;
+    /// 1: some material has a volume (KHR_materials_volume): path segments inside closed
+    /// meshes of it are attenuated (glsl/common/volume.glsl); 0 compiles it out.
+    pub const SPEC_HAS_VOLUME: u32 = 21;
 
     // ---- Vertex connection and merging (docs/integrators.md, src/render/vcm.rs) ------------
     /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT (the BDPT kernels
@@ -415,7 +418,7 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (96 bytes) {
+    pub struct GpuMaterial (128 bytes) {
         /// Linear albedo (base colour).
         pub albedo: Vec3,
         /// MASK: the alpha cutoff (> 0); 0 if not alpha-tested (BLEND: see `opacity`).
@@ -445,8 +448,9 @@ gpu_structs! {
         /// GGX roughness (alpha = roughness^2); for MATERIAL_THESIS, > 0 makes the
         /// reflectivity a rough conductor and the refractivity a rough dielectric.
         pub roughness: f32,
-        /// Schlick F0 of the dielectric coat, ((ior - 1) / (ior + 1))^2 (0.04 at ior 1.5).
-        pub dielectric_f0: f32,
+        /// KHR_materials_specular's specularTexture + 1 (linear; its alpha scales
+        /// `specular`), 0 = none.
+        pub specular_texture: u32,
         /// MATERIAL_THESIS or MATERIAL_METAL_ROUGH.
         pub model: u32,
         /// Emission texture + 1 (sRGB; scales `emission`), 0 = none.
@@ -458,6 +462,18 @@ gpu_structs! {
         /// glTF BLEND: the base opacity (times the alpha texture's alpha); a hit is kept with
         /// that probability. 1 for other materials.
         pub opacity: f32,
+        /// KHR_materials_volume: absorption coefficient sigma_a per unit length inside a
+        /// closed mesh of this material (SPEC_HAS_VOLUME; zero: none).
+        pub sigma_a: Vec3,
+        /// KHR_materials_specular's specularColorTexture + 1 (sRGB; its RGB scales
+        /// `specular_f0` before the clamp), 0 = none.
+        pub specular_colour_texture: u32,
+        /// Schlick F0 of the dielectric coat's reflection before the clamp to 1,
+        /// ((ior - 1) / (ior + 1))^2 x specularColorFactor (KHR_materials_specular; 0.04 at
+        /// ior 1.5 without); the diffuse lobe's coat weight uses its largest clamped channel.
+        pub specular_f0: Vec3,
+        /// KHR_materials_specular's specularFactor: the coat's F90 and weight (1 without).
+        pub specular: f32,
     }
 
     /// An emissive triangle for light sampling.
@@ -605,7 +621,9 @@ gpu_structs! {
         /// GGX lobes (SPEC_HAS_GLOSSY), and where VCM merges, the throughput alone, the BSDF
         /// being evaluated per connection from `material` at `uv`.
         pub beta_f: Vec3,
-        pub pad0: f32,
+        /// 1 where the light path arrived at the back face of the vertex's surface, so its
+        /// connections run inside the closed mesh (SPEC_HAS_VOLUME: volume.glsl); else 0.
+        pub back_face: u32,
         /// Texture coordinates of the vertex (SPEC_HAS_GLOSSY).
         pub uv: Vec2,
         /// Material index of the vertex (SPEC_HAS_GLOSSY).

@@ -25,6 +25,8 @@ pub struct SceneFeatures {
     pub punctual: bool,
     /// Rough glass (a glass fraction with roughness > 0).
     pub rough_glass: bool,
+    /// Absorbing volumes inside closed meshes (KHR_materials_volume).
+    pub volume: bool,
 }
 
 impl SceneFeatures {
@@ -38,6 +40,8 @@ impl SceneFeatures {
                     || m.roughness_texture.is_some()
                     || m.metallic_texture.is_some()
                     || m.transmission_texture.is_some()
+                    || m.specular_texture.is_some()
+                    || m.specular_colour_texture.is_some()
                     || m.emission_texture.is_some()
                     || m.normal_texture.is_some()
             });
@@ -60,6 +64,7 @@ impl SceneFeatures {
             env: scene.environment.as_ref().is_some_and(|e| !e.is_black()),
             punctual: !scene.punctual_lights.is_empty(),
             rough_glass: m.iter().any(Material::has_rough_glass),
+            volume: m.iter().any(Material::has_volume),
         }
     }
 
@@ -76,6 +81,7 @@ impl SceneFeatures {
             emission_textures: true,
             normal_maps: true,
             rough_glass: true,
+            volume: true,
             ..self
         }
     }
@@ -94,6 +100,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_ENV, value: self.env as u32 },
             Spec { id: abi::SPEC_HAS_PUNCTUAL, value: self.punctual as u32 },
             Spec { id: abi::SPEC_HAS_ROUGH_GLASS, value: self.rough_glass as u32 },
+            Spec { id: abi::SPEC_HAS_VOLUME, value: self.volume as u32 },
         ]
     }
 }

@@ -192,7 +192,8 @@ impl GpuScene {
 /// A material as the kernels read it (`GpuMaterial` in src/gpu/abi.rs).
 pub fn gpu_material(m: &Material) -> GpuMaterial {
     let index = |t: Option<u32>| t.map_or(0, |t| t + 1);
-    let f0 = ((m.ior - 1.0) / (m.ior + 1.0)).powi(2);
+    // KHR_materials_specular: the coat's F0, coloured (the kernels clamp it after the texture).
+    let specular_f0 = ((m.ior - 1.0) / (m.ior + 1.0)).powi(2) * m.specular_colour;
     GpuMaterial {
         albedo: m.albedo,
         // A MASK cutoff stays positive: 0 means "not MASK" to the kernels.
@@ -217,7 +218,11 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
         opacity: m.blend.unwrap_or(1.0),
         metallic: m.metallic,
         roughness: m.roughness,
-        dielectric_f0: f0,
+        specular_texture: index(m.specular_texture),
+        sigma_a: m.absorption,
+        specular_colour_texture: index(m.specular_colour_texture),
+        specular_f0,
+        specular: m.specular,
         model: match m.model {
             MaterialModel::Thesis => abi::MATERIAL_THESIS,
             MaterialModel::MetalRough => abi::MATERIAL_METAL_ROUGH,

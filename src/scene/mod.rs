@@ -159,6 +159,19 @@ pub struct Material {
     pub metallic_texture: Option<u32>,
     /// Linear texture whose red channel scales `refractivity` (glTF transmissionTexture).
     pub transmission_texture: Option<u32>,
+    /// Absorption coefficient sigma_a per unit length, per channel, inside a closed mesh of
+    /// this material (glTF KHR_materials_volume: Beer-Lambert, docs/integrators.md); zero:
+    /// no volume.
+    pub absorption: Vec3,
+    /// glTF KHR_materials_specular (MetalRough): specularFactor, the strength of the
+    /// dielectric coat's reflection (its F90; 1 = plain glTF), and specularColorFactor,
+    /// which scales the coat's F0 (linear RGB; 1 = plain glTF).
+    pub specular: f32,
+    pub specular_colour: Vec3,
+    /// Linear texture whose alpha scales `specular` (glTF specularTexture).
+    pub specular_texture: Option<u32>,
+    /// sRGB texture whose RGB scales `specular_colour` (glTF specularColorTexture).
+    pub specular_colour_texture: Option<u32>,
 }
 
 impl Default for Material {
@@ -182,6 +195,11 @@ impl Default for Material {
             roughness_texture: None,
             metallic_texture: None,
             transmission_texture: None,
+            absorption: Vec3::ZERO,
+            specular: 1.0,
+            specular_colour: Vec3::ONE,
+            specular_texture: None,
+            specular_colour_texture: None,
         }
     }
 }
@@ -225,6 +243,17 @@ impl Material {
         } else if self.refractivity > 0.0 {
             f.push("glass");
         }
+        if self.model == MaterialModel::MetalRough
+            && (self.specular != 1.0
+                || self.specular_colour != Vec3::ONE
+                || self.specular_texture.is_some()
+                || self.specular_colour_texture.is_some())
+        {
+            f.push("specular (KHR_materials_specular)");
+        }
+        if self.has_volume() {
+            f.push("volume (absorbing)");
+        }
         if self.is_emissive() {
             f.push("emissive");
         }
@@ -233,6 +262,8 @@ impl Material {
             (self.roughness_texture.is_some(), "roughness map"),
             (self.metallic_texture.is_some(), "metallic map"),
             (self.transmission_texture.is_some(), "transmission map"),
+            (self.specular_texture.is_some(), "specular map"),
+            (self.specular_colour_texture.is_some(), "specular colour map"),
             (self.normal_texture.is_some(), "normal map"),
             (self.emission_texture.is_some() && self.is_emissive(), "emission map"),
             (self.alpha.is_some(), "alpha mask"),
@@ -245,6 +276,11 @@ impl Material {
     /// Whether the glass fraction is a rough dielectric (roughness > 0; Walter et al. 2007).
     pub fn has_rough_glass(&self) -> bool {
         self.refractivity > 0.0 && self.roughness > 0.0
+    }
+
+    /// Whether a closed mesh of this material absorbs inside (KHR_materials_volume).
+    pub fn has_volume(&self) -> bool {
+        self.absorption.max_element() > 0.0
     }
 
     /// Whether the thesis' perfect mirror (a delta lobe) is used.

@@ -316,6 +316,11 @@ pub(crate) fn to_material(
         roughness_texture,
         metallic_texture: if pbr { metallic_texture } else { None },
         transmission_texture: None,
+        absorption: Vec3::ZERO,
+        specular: 1.0,
+        specular_colour: Vec3::ONE,
+        specular_texture: None,
+        specular_colour_texture: None,
     }
 }
 

@@ -72,7 +72,7 @@ pub struct MaterialCounts {
 
 /// Estimated GPU memory, by buffer. The layout assumed is the std430 one the kernels will use:
 /// positions and normals as `vec4` (std430 pads a `vec3` array to 16 bytes), UVs as `vec2`,
-/// triangles as three `uint`, one `uint` material id per triangle, 96 bytes per material
+/// triangles as three `uint`, one `uint` material id per triangle, 128 bytes per material
 /// (`GpuMaterial`), textures as RGBA8
 /// without mipmaps. The BVH is not included: the bvh module adds its own nodes and
 /// reordered triangle indices.
@@ -106,7 +106,7 @@ pub struct Features {
 }
 
 /// Bytes of one material on the GPU (`gpu::abi::GpuMaterial`; a test in `render::gpu_scene` keeps them equal).
-pub const GPU_MATERIAL_BYTES: u64 = 96;
+pub const GPU_MATERIAL_BYTES: u64 = 128;
 
 fn has_diffuse(m: &Material) -> bool {
     match m.model {
@@ -207,6 +207,8 @@ impl Scene {
                 || m.roughness_texture.is_some()
                 || m.metallic_texture.is_some()
                 || m.transmission_texture.is_some()
+                || m.specular_texture.is_some()
+                || m.specular_colour_texture.is_some()
                 || m.emission_texture.is_some()
                 || m.normal_texture.is_some()) as usize;
         }
@@ -292,7 +294,7 @@ mod tests {
             MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, glossy: 0, emissive: 1, alpha_masked: 0, blended: 0, textured: 0 }
         );
         let g = s.gpu_bytes_estimate();
-        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 192));
-        assert_eq!(g.total(), 304);
+        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 256));
+        assert_eq!(g.total(), 368);
     }
 }

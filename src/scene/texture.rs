@@ -160,6 +160,8 @@ impl Decoded {
             m.normal_texture = m.normal_texture.and_then(|t| self.remap[t as usize]);
             m.metallic_texture = m.metallic_texture.and_then(|t| self.remap[t as usize]);
             m.transmission_texture = m.transmission_texture.and_then(|t| self.remap[t as usize]);
+            m.specular_texture = m.specular_texture.and_then(|t| self.remap[t as usize]);
+            m.specular_colour_texture = m.specular_colour_texture.and_then(|t| self.remap[t as usize]);
             m.alpha = m.alpha.and_then(|a| self.remap[a.texture as usize].map(|t| super::AlphaMask { texture: t, ..a }));
         }
     }

@@ -1,7 +1,9 @@
 //! Shared helpers for integration tests: a validated Vulkan context, a small RNG, geometry.
 #![allow(dead_code)]
 
+pub mod agree;
 pub mod geometry;
+pub mod gltf_out;
 pub mod scenes;
 pub mod sphere;
 pub mod stats;

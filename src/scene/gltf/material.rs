@@ -15,6 +15,16 @@
 //!   base colour factor alpha × texture alpha), unbiased for every integrator.
 //! - `normalTexture` (linear, tangent space, `scale`) → normal map; tangents are generated
 //!   from the UVs (`scene/tangents.rs`).
+//! - `KHR_materials_volume` → absorption inside closed meshes (Beer-Lambert), sigma_a =
+//!   −ln(attenuationColor) / attenuationDistance per channel, where the material transmits;
+//!   `thicknessFactor` 0 (the default) means thin-walled (no volume: the extension's rule);
+//!   otherwise the thickness and its texture are ignored (a path tracer measures the
+//!   distance travelled).
+//! - `KHR_materials_specular`: specularFactor → the dielectric coat's F90 and weight,
+//!   specularColorFactor → its F0 colour (clamped to 1); the diffuse lobe keeps 1 − the
+//!   largest channel of that Fresnel (the extension's `max_value`); specularTexture (linear,
+//!   A) and specularColorTexture (sRGB, RGB) scale the factors. The glass fraction keeps the
+//!   exact Fresnel of its ior.
 //! - Texture coordinate sets and KHR_texture_transform: `uv_map.rs`; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
@@ -92,6 +102,33 @@ pub(super) fn convert<'a>(
                 }
             }
         };
+        let absorption = match m.volume() {
+            Some(v) if refractivity > 0.0 => volume_absorption(v.thickness_factor(), v.attenuation_color(), v.attenuation_distance())
+                .map_err(|msg| SceneError::Gltf { file: file.to_path_buf(), element: element.clone(), msg })?,
+            _ => Vec3::ZERO,
+        };
+        let (specular, specular_colour, specular_texture, specular_colour_texture) = match m.specular() {
+            Some(s) => {
+                let (f, c) = (s.specular_factor(), Vec3::from(s.specular_color_factor()));
+                if !(0.0..=1.0).contains(&f) || !c.is_finite() || c.min_element() < 0.0 {
+                    return Err(SceneError::Gltf {
+                        file: file.to_path_buf(),
+                        element,
+                        msg: format!("KHR_materials_specular needs specularFactor in [0, 1] and specularColorFactor >= 0; got {f}, {c}"),
+                    });
+                }
+                let texture = match s.specular_texture() {
+                    Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Linear, requests, w)?,
+                    None => None,
+                };
+                let colour_texture = match s.specular_color_texture() {
+                    Some(info) => image_request(file, buffers, base, info.texture().source(), Role::Colour, requests, w)?,
+                    None => None,
+                };
+                (f, c, texture, colour_texture)
+            }
+            None => (1.0, Vec3::ONE, None, None),
+        };
         let material = Material {
             name,
             albedo,
@@ -111,6 +148,11 @@ pub(super) fn convert<'a>(
             roughness_texture: metal_rough_texture,
             metallic_texture: metal_rough_texture,
             transmission_texture: if refractivity > 0.0 { transmission_texture } else { None },
+            absorption,
+            specular,
+            specular_colour,
+            specular_texture,
+            specular_colour_texture,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
         if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {
@@ -123,6 +165,29 @@ pub(super) fn convert<'a>(
         out.push(material);
     }
     Ok(out)
+}
+
+/// KHR_materials_volume's absorption coefficient per unit length, −ln(colour) / distance per
+/// channel (zero for a thin-walled material, thickness 0, or an infinite distance); colour
+/// channels of 0 absorb completely (clamped to 1e-6).
+pub(super) fn volume_absorption(thickness: f32, colour: [f32; 3], distance: f32) -> Result<Vec3, String> {
+    let colour = Vec3::from(colour);
+    if !thickness.is_finite()
+        || thickness < 0.0
+        || distance.is_nan()
+        || distance <= 0.0
+        || !colour.is_finite()
+        || colour.min_element() < 0.0
+        || colour.max_element() > 1.0
+    {
+        return Err(format!(
+            "KHR_materials_volume needs thicknessFactor >= 0, attenuationDistance > 0 and attenuationColor in [0, 1]; got {thickness}, {distance}, {colour}"
+        ));
+    }
+    if thickness == 0.0 || distance.is_infinite() {
+        return Ok(Vec3::ZERO);
+    }
+    Ok(-colour.max(Vec3::splat(1e-6)).ln() / distance)
 }
 
 /// The provisional texture index of `image` decoded for `role` (sRGB colour or linear data).
@@ -168,4 +233,27 @@ fn image_request<'a>(
         _ => format!("image {index}"),
     };
     Ok(Some(requests.request(format!("image {index}"), role, || Request { name, source, role, at, file: file.to_path_buf(), line: None })))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::volume_absorption;
+    use glam::Vec3;
+
+    #[test]
+    fn volume_absorption_is_minus_ln_colour_over_distance() {
+        let s = volume_absorption(1.0, [0.5, 1.0, 0.25], 2.0).unwrap();
+        assert!((s - Vec3::new(2f32.ln() / 2.0, 0.0, 4f32.ln() / 2.0)).abs().max_element() < 1e-6, "{s}");
+        // Thin-walled (thickness 0, the default) and an infinite distance: no volume.
+        assert_eq!(volume_absorption(0.0, [0.5; 3], 2.0).unwrap(), Vec3::ZERO);
+        assert_eq!(volume_absorption(1.0, [0.5; 3], f32::INFINITY).unwrap(), Vec3::ZERO);
+        // A black channel absorbs completely (finite, large).
+        assert!(volume_absorption(1.0, [0.0, 1.0, 1.0], 1.0).unwrap().x > 13.0);
+        for (t, c, d) in
+            [(1.0, [0.5; 3], 0.0), (1.0, [0.5; 3], -1.0), (1.0, [1.5, 0.5, 0.5], 1.0), (-1.0, [0.5; 3], 1.0), (1.0, [f32::NAN; 3], 1.0)]
+        {
+            let e = volume_absorption(t, c, d).unwrap_err();
+            assert!(e.contains("KHR_materials_volume"), "{e}");
+        }
+    }
 }

@@ -38,8 +38,15 @@ use super::{Camera, LoadOptions, Loaded, Material, Scene, SceneError};
 use crate::limits::{thousands, MAX_INSTANCES, MAX_TRIANGLES};
 
 /// Material extensions the loader reads.
-const SUPPORTED_EXTENSIONS: &[&str] =
-    &["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform"];
+const SUPPORTED_EXTENSIONS: &[&str] = &[
+    "KHR_materials_transmission",
+    "KHR_materials_ior",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_volume",
+    "KHR_materials_specular",
+    "KHR_lights_punctual",
+    "KHR_texture_transform",
+];
 
 /// Loads a `.gltf` or `.glb` file with its buffers and base colour textures.
 pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {

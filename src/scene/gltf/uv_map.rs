@@ -59,6 +59,8 @@ pub(super) fn uv_maps(file: &Path, doc: &Document, w: &mut Warnings) -> Vec<UvMa
                 pbr.metallic_roughness_texture().map(|i| of_info(&i)),
                 m.emissive_texture().map(|i| of_info(&i)),
                 m.transmission().and_then(|t| t.transmission_texture()).map(|i| of_info(&i)),
+                m.specular().and_then(|s| s.specular_texture()).map(|i| of_info(&i)),
+                m.specular().and_then(|s| s.specular_color_texture()).map(|i| of_info(&i)),
                 m.normal_texture().map(|n| UvMap { tex_coord: n.tex_coord(), transform: Mat3::IDENTITY }),
             ]
             .into_iter()
