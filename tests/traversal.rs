@@ -155,6 +155,43 @@ fn check_layout(
     ((hits, misses), (want, want_any))
 }
 
+/// `offset_ray_origin` of glsl/common/ray.glsl: `p` moved off its surface toward `n` by 256
+/// ulps, or by its scale / 65536 where a coordinate is under its scale / 32 (the scale: its
+/// largest coordinate, at least 1).
+fn offset_ray_origin(p: Vec3, n: Vec3) -> Vec3 {
+    let scale = p.abs().max_element().max(1.0);
+    let off = |p: f32, n: f32| {
+        if p.abs() < scale / 32.0 {
+            p + n * (scale / 65536.0)
+        } else {
+            let i = (256.0 * n) as i32;
+            f32::from_bits((p.to_bits() as i32 + if p < 0.0 { -i } else { i }) as u32)
+        }
+    };
+    Vec3::new(off(p.x, n.x), off(p.y, n.y), off(p.z, n.z))
+}
+
+/// Shadow rays as the integrators trace them (`visible_between` in glsl/common/scene.glsl):
+/// from points on the Cornell box's right wall and floor, offset off them, to points on the
+/// light, offset below it, ending `slack` short of the target.
+fn shadow_rays_to_the_light(rng: &mut Pcg, n: usize) -> Vec<GpuRay> {
+    (0..n)
+        .map(|i| {
+            let (a, na) = if i % 2 == 0 {
+                (Vec3::new(0.0, rng.next_f32() * 548.8, rng.next_f32() * 559.2), Vec3::X)
+            } else {
+                (Vec3::new(rng.next_f32() * 556.0, 0.0, rng.next_f32() * 559.2), Vec3::Y)
+            };
+            let b = Vec3::new(213.0 + rng.next_f32() * 130.0, 548.3, 227.0 + rng.next_f32() * 105.0);
+            let (o, target) = (offset_ray_origin(a, na), offset_ray_origin(b, -Vec3::Y));
+            let v = target - o;
+            let len = v.length();
+            let slack = o.abs().max(target.abs()).max_element() * (32.0 / 8_388_608.0);
+            ray(o, v / len, len - slack)
+        })
+        .collect()
+}
+
 /// Rays of three kinds: from outside toward the scene, random directions from inside, and
 /// segments between random points (shadow-like, finite tmax).
 fn mixed_rays(rng: &mut Pcg, lo: Vec3, hi: Vec3, n: usize) -> Vec<GpuRay> {
@@ -269,6 +306,7 @@ fn cornell_box_matches_cpu_hit_for_hit() {
     let mut rng = Pcg::new(13);
     let (lo, hi) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(556.0, 548.8, 559.2));
     let mut rays = mixed_rays(&mut rng, lo, hi, 90_000);
+    rays.extend(shadow_rays_to_the_light(&mut rng, 30_000));
     // Camera rays through jittered pixels of the reference camera.
     let cam = &scene.cameras[0];
     let g = bidir::gpu_data::gpu_camera(cam);

@@ -7,13 +7,23 @@
 const float PI = 3.14159265358979323846;
 
 // Moves a surface point off its surface along the geometric normal `n` (pointing to the side
-// the new ray leaves on), by a few ulps of the coordinate far from the origin and by a tiny
-// absolute amount near it: no scene-scale epsilon. After Wächter & Binder, "A Fast and
+// the new ray leaves on), by a few ulps of each coordinate that is large next to the point's
+// largest, and by a fixed fraction of that largest coordinate for the others: no scene-scale
+// epsilon. After Wächter & Binder, "A Fast and
 // Robust Method for Avoiding Self-Intersection", Ray Tracing Gems (2019), ch. 6.
+//
+// "Near the origin" is relative to the point's largest coordinate (at least 1): a triangle
+// test's rounding error grows with the coordinates of the triangle and the ray, not with one
+// small coordinate of the point, so a point on the plane x = 0 of a box 500 units wide needs
+// an offset of the box's scale in x, not 1/65536 (found with the compressed wide BVH, whose
+// looser boxes let a ray leaving that wall be tested against it: the test put the wall
+// 2e-5 in front of the ray; tests/traversal.rs, shadow_rays_to_the_light). For points within
+// 1 of the origin this is the chapter's method unchanged.
 vec3 offset_ray_origin(vec3 p, vec3 n) {
-    const float near_origin = 1.0 / 32.0;
-    const float float_scale = 1.0 / 65536.0;
     const float int_scale = 256.0;
+    float scale = max(max(abs(p.x), abs(p.y)), max(abs(p.z), 1.0));
+    float near_origin = scale * (1.0 / 32.0);
+    float float_scale = scale * (1.0 / 65536.0);
     ivec3 of_i = ivec3(int_scale * n);
     vec3 p_i = intBitsToFloat(floatBitsToInt(p) + ivec3(p.x < 0.0 ? -of_i.x : of_i.x,
                                                        p.y < 0.0 ? -of_i.y : of_i.y,
