@@ -19,6 +19,11 @@ mod sobol;
 /// (the ABI layout test).
 const UNOPTIMISED: &[&str] = &["abi_layout"];
 
+/// Integrator kernels also compiled with `TRAVERSE_CWBVH` defined, as `<stem>_cwbvh`: the same
+/// kernel traversing the compressed wide BVH (glsl/common/traverse_cwbvh.glsl), which the
+/// renderer binds on devices where it traces faster (`render::default_bvh_layout`).
+const WIDE_VARIANTS: &[&str] = &["pt", "bdpt_light", "bdpt_camera", "first_hit"];
+
 fn main() {
     let root = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap());
     let out = PathBuf::from(env::var("OUT_DIR").unwrap());
@@ -55,8 +60,12 @@ fn main() {
     let mut all = Vec::new();
     let spv_dir = out.join("spv");
     fs::create_dir_all(&spv_dir).unwrap();
-    for path in &kernels {
+    let builds = kernels.iter().flat_map(|path| {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
+        let wide = WIDE_VARIANTS.contains(&stem.as_str()).then(|| (path, format!("{stem}_cwbvh"), Some("TRAVERSE_CWBVH")));
+        std::iter::once((path, stem, None)).chain(wide)
+    });
+    for (path, stem, define) in builds {
         let rel = path.strip_prefix(&root).unwrap_or(path).to_string_lossy().into_owned();
         let src = fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read {rel}: {e}"));
 
@@ -64,6 +73,9 @@ fn main() {
         opts.set_target_env(shaderc::TargetEnv::Vulkan, shaderc::EnvVersion::Vulkan1_2 as u32);
         opts.set_target_spirv(shaderc::SpirvVersion::V1_5);
         opts.set_source_language(shaderc::SourceLanguage::GLSL);
+        if let Some(name) = define {
+            opts.add_macro_definition(name, None);
+        }
         if release && !UNOPTIMISED.contains(&stem.as_str()) {
             opts.set_optimization_level(shaderc::OptimizationLevel::Performance);
         } else {

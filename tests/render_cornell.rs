@@ -21,6 +21,7 @@
 
 mod common;
 
+use bidir::bvh::BvhLayout;
 use bidir::imaging::{read_exr, RgbImage};
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::Scene;
@@ -66,11 +67,14 @@ fn mean_se(samples: &[Vec<f64>]) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// `REPLICATES` renders of `spp` samples per pixel each, seeds 1..=REPLICATES.
-fn estimate(integrator: Integrator, spp: u32) -> Estimate {
+/// `REPLICATES` renders of `spp` samples per pixel each, seeds 1..=REPLICATES, traversing
+/// `layout` (`None`: the device's default).
+fn estimate(integrator: Integrator, spp: u32, layout: Option<BvhLayout>) -> Estimate {
     let ctx = gpu();
     let scene = Scene::builtin_cornell_box();
-    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], RenderSettings::new(integrator)).unwrap();
+    let mut settings = RenderSettings::new(integrator);
+    settings.bvh_layout = layout;
+    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
     let (mut channels, mut blocks) = (Vec::new(), Vec::new());
     for seed in 1..=REPLICATES {
         r.set_seed(seed).unwrap();
@@ -116,10 +120,16 @@ fn judge(what: &str, est: &[(f64, f64)], reference: &[(f64, f64)]) -> f64 {
 }
 
 fn check(integrator: Integrator, spp: u32) {
-    let name = integrator.name();
+    check_with(integrator, spp, None)
+}
+
+/// Both BVH layouts the integrators traverse are judged: the device's default (the compressed
+/// wide BVH on lavapipe) by most tests, the binary one (GPUs' default) where `layout` says.
+fn check_with(integrator: Integrator, spp: u32, layout: Option<BvhLayout>) {
+    let name = format!("{} ({})", integrator.name(), layout.map_or("default BVH", |l| l.name()));
     let Some(sharp) = reference(SHARP, SHARP_NOISE) else { return };
     let Some(mitsuba) = reference(MITSUBA, MITSUBA_NOISE) else { return };
-    let est = estimate(integrator, spp);
+    let est = estimate(integrator, spp, layout);
 
     // Power first: a test too noisy to see a 1 % mean or 4 % block bias proves nothing.
     for (c, (m, se)) in est.channels.iter().enumerate() {
@@ -150,8 +160,13 @@ fn pt_matches_references() {
 }
 
 #[test]
-fn pt_nee_matches_references() {
-    check(Integrator::PtNee, 2);
+fn pt_nee_over_the_binary_bvh_matches_references() {
+    check_with(Integrator::PtNee, 2, Some(BvhLayout::Bvh2));
+}
+
+#[test]
+fn pt_nee_over_the_wide_bvh_matches_references() {
+    check_with(Integrator::PtNee, 2, Some(BvhLayout::Cwbvh));
 }
 
 #[test]
@@ -171,5 +186,6 @@ fn bdpt_single_join_matches_references() {
 
 #[test]
 fn bdpt_light_vertex_cache_matches_references() {
-    check(Integrator::Bdpt(Join::Lvc(0)), 1);
+    // Over the binary BVH, as GPUs render the default BDPT.
+    check_with(Integrator::Bdpt(Join::Lvc(0)), 1, Some(BvhLayout::Bvh2));
 }

@@ -10,6 +10,7 @@
 // merging terms to every weight and merges at each continuous vertex (vcm_merge.glsl).
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "bidir_abi.glsl"
 #include "ray.glsl"

@@ -9,6 +9,7 @@
 // for merging; without connections (photon mapping) it does not splat.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_EXT_shader_atomic_float : require
 #include "bidir_abi.glsl"

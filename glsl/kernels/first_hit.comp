@@ -10,6 +10,7 @@
 // them (same random numbers for the jitter), so coverage follows the colour's samples.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "bidir_abi.glsl"
 #include "ray.glsl"

@@ -6,6 +6,7 @@
 // with the power heuristic (Veach 1997, eq. 9.13) so nothing counts twice.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "bidir_abi.glsl"
 #include "ray.glsl"

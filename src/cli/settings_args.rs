@@ -75,6 +75,10 @@ pub struct SettingsArgs {
     /// Ray-triangle test: watertight | woop.
     #[arg(long, default_value = "watertight")]
     pub tri_test: TriTest,
+    /// BVH layout the integrators traverse: auto (the device's faster one: cwbvh on CPU
+    /// devices such as lavapipe, bvh2 on GPUs) | bvh2 | cwbvh.
+    #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh")]
+    pub bvh: String,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
     /// what kernel specialisation buys).
     #[arg(long)]
@@ -108,6 +112,12 @@ impl SettingsArgs {
         s.light_path_ratio = self.light_paths;
         s.sample_slices = self.sample_slices;
         s.bvh.tri_test = self.tri_test;
+        s.bvh_layout = match self.bvh.as_str() {
+            "auto" => None,
+            "bvh2" => Some(bidir::bvh::BvhLayout::Bvh2),
+            "cwbvh" => Some(bidir::bvh::BvhLayout::Cwbvh),
+            other => bail!("--bvh {other}: the integrators traverse auto | bvh2 | cwbvh (bvh2q is for `bidir bench traversal`)"),
+        };
         s.all_material_code = self.all_features;
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;

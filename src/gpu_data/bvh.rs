@@ -2,7 +2,7 @@
 
 use crate::bvh::{Bvh, BvhLayout, TriTest};
 use crate::gpu::abi;
-use crate::vk::{Bind, Buffer, Context, Result};
+use crate::vk::{Bind, Buffer, Context, KernelSource, Result};
 
 /// A BVH in GPU memory.
 pub struct GpuBvh {
@@ -28,6 +28,16 @@ impl GpuBvh {
             layout: bvh.layout,
             bytes: (bvh.node_bytes() + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
         })
+    }
+
+    /// The variant of an integrator kernel that traverses this BVH's layout: `bvh2` is built
+    /// from the kernel's source as it is, `cwbvh` with `TRAVERSE_CWBVH` (build.rs). The
+    /// renderer builds only these two layouts (`render::check_layout`).
+    pub fn kernel(&self, bvh2: &'static KernelSource, cwbvh: &'static KernelSource) -> &'static KernelSource {
+        match self.layout {
+            BvhLayout::Cwbvh => cwbvh,
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q => bvh2,
+        }
     }
 
     /// Bindings of the BVH buffers (glsl/common/traverse.glsl).

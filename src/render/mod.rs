@@ -182,7 +182,11 @@ pub struct RenderSettings {
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
     /// responsive and far from the GPU timeout).
     pub pass_target: Duration,
+    /// How the BVH is built; its `layout` is set from `bvh_layout` by [`Renderer::new`].
     pub bvh: BuildOptions,
+    /// The BVH layout the integrators traverse (`--bvh`): `bvh2` or `cwbvh`; `None` takes the
+    /// device's faster one ([`default_bvh_layout`]).
+    pub bvh_layout: Option<BvhLayout>,
     /// Index of the first sample rendered (`--sample-range START..`): a render of samples
     /// `a..b` uses the random numbers a render from 0 uses for them, so disjoint ranges are
     /// independent parts of one estimate (see `film::merge`).
@@ -213,6 +217,7 @@ impl RenderSettings {
             all_material_code: false,
             pass_target: Duration::from_millis(250),
             bvh: BuildOptions::default(),
+            bvh_layout: None,
             sample_start: 0,
             crop: None,
             first_hit: None,
@@ -276,17 +281,29 @@ const TARGET_INVOCATIONS: u64 = 1 << 18;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
 const SLICED_STORE_BYTES: u64 = 1 << 30;
 
-/// The integrator kernels include only the binary traversal of 64-byte nodes
-/// (glsl/common/traverse.glsl): wide or quantised nodes would be read as those and the image
-/// would be quietly wrong.
+/// The integrator kernels are built for the binary BVH of 64-byte nodes and the compressed
+/// wide BVH (build.rs, `WIDE_VARIANTS`): quantised nodes would be read as one of those and the
+/// image would be quietly wrong.
 fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
     match layout {
-        BvhLayout::Bvh2 => Ok(()),
+        BvhLayout::Bvh2 | BvhLayout::Cwbvh => Ok(()),
         other => Err(RenderError::Unsupported(format!(
-            "the integrators traverse the binary BVH of 64-byte nodes (bvh2) only; the '{}' layout is for `bidir bench traversal --bvh {}`",
+            "the integrators traverse bvh2 or cwbvh; the '{}' layout is for `bidir bench traversal --bvh {}`",
             other.name(),
             other.name()
         ))),
+    }
+}
+
+/// The BVH layout the integrators trace fastest on a device, measured with `bidir bench
+/// traversal` and `bidir bench render` (docs/traversal.md, docs/results.md): the compressed
+/// wide BVH on CPU devices (llvmpipe: fewer, wider node visits suit its SIMD lanes), the
+/// binary one on GPUs (NVIDIA H200: bvh2 ahead on primary and diffuse rays).
+pub fn default_bvh_layout(ctx: &Context) -> BvhLayout {
+    if ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU {
+        BvhLayout::Cwbvh
+    } else {
+        BvhLayout::Bvh2
     }
 }
 
@@ -358,6 +375,7 @@ impl Renderer {
         if camera.width == 0 || camera.height == 0 {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
+        settings.bvh.layout = settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(ctx));
         check_layout(settings.bvh.layout)?;
         // VCM's relative radius becomes scene units once, so integrator switches keep it.
         settings.vcm_radius = vcm::VcmRadius::Absolute(settings.vcm_radius.resolve(scene.bounds().diagonal().length()));

@@ -14,7 +14,7 @@ impl PathTracer {
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(sampler.spec());
-        Ok(PathTracer { kernel: ctx.create_kernel(&kernels::PT, &specs)? })
+        Ok(PathTracer { kernel: ctx.create_kernel(scene.bvh.kernel(&kernels::PT, &kernels::PT_CWBVH), &specs)? })
     }
 
     /// Records one pass: `push.spp` samples for every pixel.
