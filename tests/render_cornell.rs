@@ -155,7 +155,7 @@ fn check_with(integrator: Integrator, spp: u32, layout: Option<BvhLayout>) {
 
 #[test]
 fn pt_matches_references() {
-    // 48 spp: median block se 0.664 % on llvmpipe (0.574 % at 64), under BLOCK_SE_MAX.
+    // 48 spp: median block se 0.666 % on llvmpipe (0.574 % at 64), under BLOCK_SE_MAX.
     check(Integrator::Pt, 48);
 }
 
