@@ -13,10 +13,8 @@ mod common;
 
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Material, MaterialModel, Scene};
-use common::{finish, geometry, gpu, stats};
+use common::{agree, finish, geometry, gpu};
 use glam::Vec3;
-
-const ALPHA: f64 = 1e-3;
 
 fn render(scene: &Scene, camera: &Camera, integrator: Integrator, spp: u32) -> Vec<f32> {
     let ctx = gpu();
@@ -129,36 +127,10 @@ fn glossy_cornell() -> (Scene, Camera) {
     (s, camera)
 }
 
-/// Whether images a and b have the same expectation: the per-pixel difference (channels
-/// summed) averaged over 16x16 blocks, each block's mean against its standard error.
+/// Whether images a and b have the same expectation: 16x16-pixel blocks of their difference,
+/// the overall mean resolving 1 % (tests/common/agree.rs).
 fn assert_agree(what: &str, a: &[f32], b: &[f32], width: usize) {
-    let diff: Vec<f64> =
-        a.chunks_exact(3).zip(b.chunks_exact(3)).map(|(x, y)| x.iter().zip(y).map(|(p, q)| (p - q) as f64).sum()).collect();
-    let level = a.iter().map(|&v| v as f64).sum::<f64>() / (a.len() / 3) as f64;
-    let height = diff.len() / width;
-    let mut chi2 = 0.0;
-    let mut blocks = 0u32;
-    let mut worst = 0.0f64;
-    for by in (0..height).step_by(16) {
-        for bx in (0..width).step_by(16) {
-            let v: Vec<f64> = (by..by + 16).flat_map(|y| (bx..bx + 16).map(move |x| (x, y))).map(|(x, y)| diff[y * width + x]).collect();
-            let (m, se) = mean_and_se(&v);
-            let z = if se > 0.0 { m / se } else { 0.0 };
-            worst = worst.max(z.abs());
-            chi2 += z * z;
-            blocks += 1;
-        }
-    }
-    let (m, se) = mean_and_se(&diff);
-    let p_blocks = stats::chi2_sf(chi2, blocks);
-    eprintln!(
-        "{what}: mean difference {:+.3} % ± {:.3} % of the image level, blocks X^2 = {chi2:.1} over {blocks} (p = {p_blocks:.4}), worst |z| {worst:.2}",
-        100.0 * m / level,
-        100.0 * se / level
-    );
-    assert!(se / level < 0.01, "{what}: too noisy to resolve 1 % (se {:.3} %)", 100.0 * se / level);
-    assert!(m.abs() < 3.29 * se, "{what}: images differ by {:+.3} % (z = {:.2})", 100.0 * m / level, m / se);
-    assert!(p_blocks >= ALPHA, "{what}: block means differ beyond their noise (X^2 = {chi2:.1}, dof {blocks}, p = {p_blocks:.2e})");
+    agree::assert_agree_blocks(what, a, b, width, 16, 0.01)
 }
 
 /// The glossy Cornell box with its light's emission scaled by a 2x2 linear checker texture

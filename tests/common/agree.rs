@@ -27,16 +27,24 @@ pub fn mean_and_se(v: &[f64]) -> (f64, f64) {
 }
 
 /// Whether images a and b have the same expectation: the per-pixel difference (channels
-/// summed) averaged over 8x8 blocks, each block's mean against its own standard error.
+/// summed) averaged over 8x8 blocks, each block's mean against its own standard error; the
+/// overall mean must resolve 2 % of the image level.
 pub fn assert_agree(what: &str, a: &[f32], b: &[f32], width: usize) {
+    assert_agree_blocks(what, a, b, width, 8, 0.02)
+}
+
+/// As [`assert_agree`] with `block` x `block` blocks, the overall mean's standard error below
+/// `resolve` of the image level (the test's power).
+pub fn assert_agree_blocks(what: &str, a: &[f32], b: &[f32], width: usize, block: usize, resolve: f64) {
     let diff: Vec<f64> =
         a.chunks_exact(3).zip(b.chunks_exact(3)).map(|(x, y)| x.iter().zip(y).map(|(p, q)| (p - q) as f64).sum()).collect();
     let level = a.iter().map(|&v| v as f64).sum::<f64>() / (a.len() / 3) as f64;
     let height = diff.len() / width;
     let (mut chi2, mut blocks, mut worst) = (0.0, 0u32, 0.0f64);
-    for by in (0..height).step_by(8) {
-        for bx in (0..width).step_by(8) {
-            let v: Vec<f64> = (by..by + 8).flat_map(|y| (bx..bx + 8).map(move |x| (x, y))).map(|(x, y)| diff[y * width + x]).collect();
+    for by in (0..height).step_by(block) {
+        for bx in (0..width).step_by(block) {
+            let v: Vec<f64> =
+                (by..by + block).flat_map(|y| (bx..bx + block).map(move |x| (x, y))).map(|(x, y)| diff[y * width + x]).collect();
             let (m, se) = mean_and_se(&v);
             let z = if se > 0.0 { m / se } else { 0.0 };
             worst = worst.max(z.abs());
@@ -51,7 +59,7 @@ pub fn assert_agree(what: &str, a: &[f32], b: &[f32], width: usize) {
         100.0 * m / level,
         100.0 * se / level
     );
-    assert!(se / level < 0.02, "{what}: too noisy to resolve 2 % (se {:.3} %)", 100.0 * se / level);
+    assert!(se / level < resolve, "{what}: too noisy to resolve {} % (se {:.3} %)", 100.0 * resolve, 100.0 * se / level);
     assert!(m.abs() < 3.29 * se, "{what}: images differ by {:+.3} % (z = {:.2})", 100.0 * m / level, m / se);
     assert!(p_blocks >= ALPHA, "{what}: block means differ beyond their noise (X^2 = {chi2:.1}, dof {blocks}, p = {p_blocks:.2e})");
 }
