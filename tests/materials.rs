@@ -14,12 +14,13 @@
 
 mod common;
 
-use bidir::gpu::{abi, kernels};
+use bidir::gpu::abi;
 use bidir::gpu_data::SceneFeatures;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::scene::{Camera, Environment, Material, MaterialModel, Scene};
-use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use bidir::vk::Context;
 use common::agree::{assert_agree, mean_and_se, render_with, ALPHA};
+use common::sampling_kernel::SamplingKernel;
 use common::sphere::{dv, edges_about, frame, Cells};
 use common::stats::{self, Fit};
 use common::{finish, geometry, gpu, Pcg};
@@ -45,24 +46,6 @@ fn push(mode: u32, count: u32, seed: u32, wo: DVec3, eta: f64, roughness: f64, r
     }
 }
 
-fn run(ctx: &Context, kernel: &Kernel, push: abi::SamplingTestPush, input: Option<&Buffer>) -> Vec<Vec4> {
-    let out = ctx.create_buffer("rough.out", push.count as u64 * 32, Memory::Device).unwrap();
-    // Bindings the sampling kernel declares but these modes never read.
-    let placeholder = ctx.create_buffer("rough.placeholder", 128, Memory::Device).unwrap();
-    let binds = [
-        Bind::buffer(abi::SAMPLING_BIND_OUT, &out),
-        Bind::buffer(abi::SAMPLING_BIND_IN, input.unwrap_or(&placeholder)),
-        Bind::buffer(abi::BIND_EMITTERS, &placeholder),
-        Bind::buffer(abi::BIND_ALIAS, &placeholder),
-        Bind::buffer(abi::BIND_ENV, &placeholder),
-        Bind::buffer(abi::BIND_ENV_TEXELS, &placeholder),
-        Bind::buffer(abi::BIND_ENV_ALIAS, &placeholder),
-    ];
-    let groups = kernel.groups_for(push.count);
-    ctx.submit("rough", |rec| rec.dispatch(kernel, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])).unwrap();
-    ctx.read_buffer(&out).unwrap()
-}
-
 /// wo at `theta_deg` from the normal, and the z of its mirror and refracted directions
 /// (cell edges go there).
 fn incident(theta_deg: f64, eta: f64) -> (DVec3, Vec<f64>) {
@@ -81,13 +64,13 @@ fn incident(theta_deg: f64, eta: f64) -> (DVec3, Vec<f64>) {
 }
 
 /// Chi-square of rough_dielectric_sample_world against the integral of its pdf over cells.
-fn check_sampling(ctx: &Context, kernel: &Kernel, roughness: f64, eta: f64, theta_deg: f64, seed: u32) -> Fit {
+fn check_sampling(ctx: &Context, kernel: &SamplingKernel, roughness: f64, eta: f64, theta_deg: f64, seed: u32) -> Fit {
     let n = NORMAL.as_dvec3().normalize();
     let (wo, peaks) = incident(theta_deg, eta);
     let cells = Cells::new(n, edges_about(&peaks, -1.0, 1.0, 1e-8), edges_about(&[0.0], -PI, PI, 1e-4));
     let (pairs, weights) = cells.quadrature(wo);
     let input = ctx.upload_buffer("rough.pairs", &pairs).unwrap();
-    let evals = run(ctx, kernel, push(abi::SAMPLING_ROUGH_GLASS_EVAL, weights.len() as u32, 0, wo, eta, roughness, true), Some(&input));
+    let evals = kernel.run(push(abi::SAMPLING_ROUGH_GLASS_EVAL, weights.len() as u32, 0, wo, eta, roughness, true), 2, Some(&input));
     let mut expected = cells.integrate(|k| evals[2 * k].z as f64, &weights);
     let failed = cells.count();
     let integral: f64 = expected.iter().sum();
@@ -97,7 +80,7 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, roughness: f64, eta: f64, thet
     for e in &mut expected {
         *e *= N as f64;
     }
-    let out = run(ctx, kernel, push(abi::SAMPLING_ROUGH_GLASS, N, seed, wo, eta, roughness, true), None);
+    let out = kernel.run(push(abi::SAMPLING_ROUGH_GLASS, N, seed, wo, eta, roughness, true), 2, None);
     let mut observed = vec![0u64; failed + 1];
     let mut refracted = 0u64;
     for s in out.chunks_exact(2) {
@@ -126,7 +109,7 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, roughness: f64, eta: f64, thet
 #[test]
 fn rough_dielectric_samples_follow_their_pdf() {
     let ctx = gpu();
-    let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+    let kernel = SamplingKernel::new(&ctx);
     let mut cases = Vec::new();
     for roughness in [0.05, 0.3, 0.8] {
         // Entering (eta = 1 / 1.5) and leaving (1.5; 60° is past the critical 41.8°).
@@ -159,7 +142,7 @@ fn close(a: f64, b: f64, rel: f64) -> bool {
 #[test]
 fn rough_dielectric_is_reciprocal_and_weights_are_f_cos_over_pdf() {
     let ctx = gpu();
-    let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+    let kernel = SamplingKernel::new(&ctx);
     let n = NORMAL.as_dvec3().normalize();
     let mut rng = Pcg::new(11);
     let count = 4096usize;
@@ -175,7 +158,7 @@ fn rough_dielectric_is_reciprocal_and_weights_are_f_cos_over_pdf() {
     for roughness in [0.05, 0.3, 0.8] {
         for eta in [1.0 / IOR, IOR] {
             let case = format!("roughness {roughness}, eta {eta:.3}");
-            let e = run(&ctx, &kernel, push(abi::SAMPLING_ROUGH_GLASS_EVAL, count as u32, 0, DVec3::Z, eta, roughness, true), Some(&input));
+            let e = kernel.run(push(abi::SAMPLING_ROUGH_GLASS_EVAL, count as u32, 0, DVec3::Z, eta, roughness, true), 2, Some(&input));
             let (mut nonzero, mut grazing) = (0, 0);
             for i in 0..count {
                 let (a, s) = (e[2 * i], e[2 * i + 1]);
@@ -206,14 +189,13 @@ fn rough_dielectric_is_reciprocal_and_weights_are_f_cos_over_pdf() {
             // A sample's weight is f |cos| / pdf of its own direction, for radiance and importance.
             for radiance in [true, false] {
                 let wo = pairs[0].truncate().as_dvec3();
-                let s = run(&ctx, &kernel, push(abi::SAMPLING_ROUGH_GLASS, count as u32, 3, wo, eta, roughness, radiance), None);
+                let s = kernel.run(push(abi::SAMPLING_ROUGH_GLASS, count as u32, 3, wo, eta, roughness, radiance), 2, None);
                 let sampled: Vec<Vec4> =
                     s.chunks_exact(2).filter(|p| p[0].w > 0.0).flat_map(|p| [wo.as_vec3().extend(0.0), p[0]]).collect();
                 let buf = ctx.upload_buffer("rough.sampled", &sampled).unwrap();
-                let ev = run(
-                    &ctx,
-                    &kernel,
+                let ev = kernel.run(
                     push(abi::SAMPLING_ROUGH_GLASS_EVAL, (sampled.len() / 2) as u32, 0, wo, eta, roughness, true),
+                    2,
                     Some(&buf),
                 );
                 for (k, p) in s.chunks_exact(2).filter(|p| p[0].w > 0.0).enumerate() {
@@ -239,7 +221,7 @@ fn rough_dielectric_is_reciprocal_and_weights_are_f_cos_over_pdf() {
 #[test]
 fn rough_dielectric_never_gains_energy() {
     let ctx = gpu();
-    let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+    let kernel = SamplingKernel::new(&ctx);
     let n = NORMAL.as_dvec3().normalize();
     let (t, _) = frame(n);
     eprintln!("single-scattering albedo of the rough dielectric, IOR 1.5 (importance; 1 - albedo is the loss):");
@@ -248,7 +230,7 @@ fn rough_dielectric_never_gains_energy() {
             let mut line = format!("  {} roughness {roughness:4}:", if eta < 1.0 { "entering" } else { "leaving " });
             for th in [0.0f64, 45.0, 80.0] {
                 let wo = (n * th.to_radians().cos() + t * th.to_radians().sin()).normalize();
-                let out = run(&ctx, &kernel, push(abi::SAMPLING_ROUGH_GLASS, N / 2, 7, wo, eta, roughness, false), None);
+                let out = kernel.run(push(abi::SAMPLING_ROUGH_GLASS, N / 2, 7, wo, eta, roughness, false), 2, None);
                 let w: Vec<f64> = out.chunks_exact(2).map(|s| if s[0].w > 0.0 { s[1].x as f64 } else { 0.0 }).collect();
                 let mean = w.iter().sum::<f64>() / w.len() as f64;
                 let var = w.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (w.len() - 1) as f64;

@@ -56,17 +56,6 @@ fn statistics(img: &RgbImage) -> (Vec<f64>, Vec<f64>) {
     (channels, blocks)
 }
 
-fn mean_se(samples: &[Vec<f64>]) -> Vec<(f64, f64)> {
-    let n = samples.len() as f64;
-    (0..samples[0].len())
-        .map(|i| {
-            let mean = samples.iter().map(|s| s[i]).sum::<f64>() / n;
-            let var = samples.iter().map(|s| (s[i] - mean).powi(2)).sum::<f64>() / (n - 1.0);
-            (mean, (var / n).sqrt())
-        })
-        .collect()
-}
-
 /// `REPLICATES` renders of `spp` samples per pixel each, seeds 1..=REPLICATES, traversing
 /// `layout` (`None`: the device's default).
 fn estimate(integrator: Integrator, spp: u32, layout: Option<BvhLayout>) -> Estimate {
@@ -86,7 +75,7 @@ fn estimate(integrator: Integrator, spp: u32, layout: Option<BvhLayout>) -> Esti
     assert_eq!(r.nan_samples().unwrap(), 0, "{}: NaN/Inf samples", integrator.name());
     drop(r);
     finish(ctx);
-    Estimate { channels: mean_se(&channels), blocks: mean_se(&blocks) }
+    Estimate { channels: common::stats::replicate_mean_se(&channels), blocks: common::stats::replicate_mean_se(&blocks) }
 }
 
 /// (mean, standard error) of each statistic.

@@ -16,10 +16,10 @@
 
 mod common;
 
-use bidir::gpu::{abi, kernels};
+use bidir::gpu::abi;
 use bidir::render::lights::LightTable;
 use bidir::scene::{Material, Scene};
-use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use common::sampling_kernel::SamplingKernel;
 use common::stats::{self, Fit};
 use common::{finish, gpu};
 use glam::{DVec3, Vec3, Vec4};
@@ -29,52 +29,6 @@ use std::f64::consts::PI;
 const N: u32 = 1 << 20;
 /// Significance level at which every test rejects.
 const ALPHA: f64 = 1e-3;
-
-/// The sampling kernel with its buffers; unused inputs are bound to placeholders.
-struct Sampler<'a> {
-    ctx: &'a Context,
-    kernel: Kernel,
-    placeholder: Buffer,
-}
-
-impl<'a> Sampler<'a> {
-    fn new(ctx: &'a Context) -> Self {
-        let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
-        let placeholder = ctx.create_buffer("sampling.placeholder", 64, Memory::Device).unwrap();
-        Sampler { ctx, kernel, placeholder }
-    }
-
-    /// Runs `push.count` invocations and returns `per_sample` vec4s for each.
-    fn run(&self, push: abi::SamplingTestPush, per_sample: u64, input: Option<&Buffer>, lights: Option<(&Buffer, &Buffer)>) -> Vec<Vec4> {
-        self.run_env(push, per_sample, input, lights, None)
-    }
-
-    /// As `run`, with the environment's (GpuEnv, texels, alias) buffers where given.
-    fn run_env(
-        &self,
-        push: abi::SamplingTestPush,
-        per_sample: u64,
-        input: Option<&Buffer>,
-        lights: Option<(&Buffer, &Buffer)>,
-        env: Option<[&Buffer; 3]>,
-    ) -> Vec<Vec4> {
-        let out = self.ctx.create_buffer("sampling.out", push.count as u64 * per_sample * 16, Memory::Device).unwrap();
-        let (emitters, alias) = lights.unwrap_or((&self.placeholder, &self.placeholder));
-        let [env, env_texels, env_alias] = env.unwrap_or([&self.placeholder; 3]);
-        let binds = [
-            Bind::buffer(abi::SAMPLING_BIND_OUT, &out),
-            Bind::buffer(abi::SAMPLING_BIND_IN, input.unwrap_or(&self.placeholder)),
-            Bind::buffer(abi::BIND_EMITTERS, emitters),
-            Bind::buffer(abi::BIND_ALIAS, alias),
-            Bind::buffer(abi::BIND_ENV, env),
-            Bind::buffer(abi::BIND_ENV_TEXELS, env_texels),
-            Bind::buffer(abi::BIND_ENV_ALIAS, env_alias),
-        ];
-        let groups = self.kernel.groups_for(push.count);
-        self.ctx.submit("sampling", |rec| rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])).unwrap();
-        self.ctx.read_buffer(&out).unwrap()
-    }
-}
 
 fn dv(v: Vec4) -> DVec3 {
     DVec3::new(v.x as f64, v.y as f64, v.z as f64)
@@ -161,7 +115,7 @@ fn direction(n: DVec3, t: DVec3, b: DVec3, z: f64, phi: f64) -> DVec3 {
 /// Checks sample_cosine_hemisphere about `normal`: chi-square of the samples against the
 /// integral of cosine_hemisphere_pdf over each cell, the pdf's integral over the hemisphere
 /// and the sphere, unit length and no sample below the surface.
-fn check_cosine(s: &Sampler, normal: Vec3, seed: u32) -> Fit {
+fn check_cosine(s: &SamplingKernel, normal: Vec3, seed: u32) -> Fit {
     let n = normal.as_dvec3().normalize();
     let (t, b) = frame(n);
     let cells = Z_BINS * PHI_BINS;
@@ -192,7 +146,7 @@ fn check_cosine(s: &Sampler, normal: Vec3, seed: u32) -> Fit {
     let input = s.ctx.upload_buffer("sampling.dirs", &dirs).unwrap();
     let push =
         abi::SamplingTestPush { mode: abi::SAMPLING_COSINE_PDF, count: dirs.len() as u32, a: normal.extend(0.0), ..Default::default() };
-    let pdf: Vec<f64> = s.run(push, 1, Some(&input), None).iter().map(|v| v.x as f64).collect();
+    let pdf: Vec<f64> = s.run(push, 1, Some(&input)).iter().map(|v| v.x as f64).collect();
     let mut expected = vec![0.0f64; cells];
     for (k, w) in weights.iter().enumerate() {
         expected[k / (QUAD * QUAD)] += pdf[k] * w;
@@ -208,7 +162,7 @@ fn check_cosine(s: &Sampler, normal: Vec3, seed: u32) -> Fit {
 
     // The samples.
     let push = abi::SamplingTestPush { mode: abi::SAMPLING_COSINE, count: N, seed, a: normal.extend(0.0), ..Default::default() };
-    let samples = s.run(push, 1, None, None);
+    let samples = s.run(push, 1, None);
     let mut observed = vec![0u64; cells];
     for v in &samples {
         let d = dv(*v);
@@ -228,7 +182,7 @@ fn check_cosine(s: &Sampler, normal: Vec3, seed: u32) -> Fit {
 #[test]
 fn cosine_hemisphere_matches_its_pdf() {
     let ctx = gpu();
-    let s = Sampler::new(&ctx);
+    let s = SamplingKernel::new(&ctx);
     // Axis-aligned, tilted, and tilted into the lower half space (the other branch of the
     // orthonormal basis).
     let fits =
@@ -323,12 +277,12 @@ fn emitter_sampling_follows_power_and_area() {
     assert_eq!(table.emitters.len(), tris.len(), "one emitter per emitting triangle");
 
     let ctx = gpu();
-    let s = Sampler::new(&ctx);
+    let s = SamplingKernel::new(&ctx);
     let emitters = ctx.upload_buffer("sampling.emitters", &table.emitters).unwrap();
     let alias = ctx.upload_buffer("sampling.alias", &table.alias).unwrap();
     let count = tris.len() as u32;
     let push = abi::SamplingTestPush { mode: abi::SAMPLING_EMITTER, count: N, seed: 7, emitter_count: count, ..Default::default() };
-    let out = s.run(push, 2, None, Some((&emitters, &alias)));
+    let out = s.run_lights(push, 2, None, Some((&emitters, &alias)));
 
     let cells = 2 * TRI_SPLIT * TRI_SPLIT;
     let mut chosen = vec![0u64; tris.len()];
@@ -415,7 +369,7 @@ fn fresnel(cos_i: f64, eta: f64) -> f64 {
 #[test]
 fn dielectric_reflects_with_fresnel_probability() {
     let ctx = gpu();
-    let s = Sampler::new(&ctx);
+    let s = SamplingKernel::new(&ctx);
     let ior = 1.5f64;
     let n = DVec3::new(0.36, -0.48, 0.8);
     let (t, _) = frame(n);
@@ -438,7 +392,7 @@ fn dielectric_reflects_with_fresnel_probability() {
             b: n.as_vec3().extend(0.0),
             ..Default::default()
         };
-        let out = s.run(push, 1, None, None);
+        let out = s.run(push, 1, None);
         let f = fresnel(cos_i, eta);
         let mirror = d - 2.0 * d.dot(n) * n;
         let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
@@ -504,7 +458,7 @@ fn environment_sampling_matches_its_pdf() {
     let table = EnvTable::build(&env, &bounds, 1.0).unwrap();
 
     let ctx = gpu();
-    let s = Sampler::new(&ctx);
+    let s = SamplingKernel::new(&ctx);
     let genv = ctx.upload_buffer("sampling.env", std::slice::from_ref(&table.env)).unwrap();
     let texel_buf = ctx.upload_buffer("sampling.env_texels", &table.texels).unwrap();
     let alias = ctx.upload_buffer("sampling.env_alias", &table.alias).unwrap();
@@ -579,7 +533,7 @@ fn environment_sampling_with_a_sun_matches_its_pdf() {
     assert_eq!(table.alias.len() as u32, w * h + 1);
 
     let ctx = gpu();
-    let s = Sampler::new(&ctx);
+    let s = SamplingKernel::new(&ctx);
     let genv = ctx.upload_buffer("sampling.env", std::slice::from_ref(&table.env)).unwrap();
     let texel_buf = ctx.upload_buffer("sampling.env_texels", &table.texels).unwrap();
     let alias = ctx.upload_buffer("sampling.env_alias", &table.alias).unwrap();

@@ -13,8 +13,9 @@
 
 mod common;
 
-use bidir::gpu::{abi, kernels};
-use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use bidir::gpu::abi;
+use bidir::vk::Context;
+use common::sampling_kernel::SamplingKernel;
 use common::sphere::{dv, edges_about, frame, Cells};
 use common::stats::{self, Fit};
 use common::{finish, gpu, Pcg};
@@ -73,27 +74,8 @@ impl Bsdf {
     }
 }
 
-fn run(ctx: &Context, kernel: &Kernel, push: abi::SamplingTestPush, per_sample: u64, input: Option<&Buffer>) -> Vec<Vec4> {
-    let out = ctx.create_buffer("glossy.out", push.count as u64 * per_sample * 16, Memory::Device).unwrap();
-    // Bindings the sampling kernel declares but the glossy modes never read (emitters, the
-    // environment): one placeholder, as large as the largest struct read from them.
-    let placeholder = ctx.create_buffer("glossy.placeholder", 128, Memory::Device).unwrap();
-    let binds = [
-        Bind::buffer(abi::SAMPLING_BIND_OUT, &out),
-        Bind::buffer(abi::SAMPLING_BIND_IN, input.unwrap_or(&placeholder)),
-        Bind::buffer(abi::BIND_EMITTERS, &placeholder),
-        Bind::buffer(abi::BIND_ALIAS, &placeholder),
-        Bind::buffer(abi::BIND_ENV, &placeholder),
-        Bind::buffer(abi::BIND_ENV_TEXELS, &placeholder),
-        Bind::buffer(abi::BIND_ENV_ALIAS, &placeholder),
-    ];
-    let groups = kernel.groups_for(push.count);
-    ctx.submit("glossy", |rec| rec.dispatch(kernel, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])).unwrap();
-    ctx.read_buffer(&out).unwrap()
-}
-
 /// Chi-square of continuous_sample against the integral of its reported pdf over each cell.
-fn check_sampling(ctx: &Context, kernel: &Kernel, bsdf: Bsdf, theta_deg: f64, seed: u32) -> Fit {
+fn check_sampling(ctx: &Context, kernel: &SamplingKernel, bsdf: Bsdf, theta_deg: f64, seed: u32) -> Fit {
     let n = NORMAL.as_dvec3().normalize();
     let theta = theta_deg.to_radians();
     // Mirror direction: cos θ the same, φ = π in the (t, b) frame; φ is binned relative to it.
@@ -102,7 +84,7 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, bsdf: Bsdf, theta_deg: f64, se
     let wo = (n * theta.cos() + t * theta.sin()).normalize();
     let (pairs, weights) = cells.quadrature(wo);
     let input = ctx.upload_buffer("glossy.pairs", &pairs).unwrap();
-    let evals = run(ctx, kernel, bsdf.push(abi::SAMPLING_GLOSSY_EVAL, weights.len() as u32, 0, wo), 2, Some(&input));
+    let evals = kernel.run(bsdf.push(abi::SAMPLING_GLOSSY_EVAL, weights.len() as u32, 0, wo), 2, Some(&input));
     let mut expected = cells.integrate(|k| evals[2 * k].w as f64, &weights);
     let failed = cells.count();
     if bsdf.diffuse == Vec3::ZERO {
@@ -129,7 +111,7 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, bsdf: Bsdf, theta_deg: f64, se
         *e *= N as f64;
     }
 
-    let out = run(ctx, kernel, bsdf.push(abi::SAMPLING_GLOSSY, N, seed, wo), 2, None);
+    let out = kernel.run(bsdf.push(abi::SAMPLING_GLOSSY, N, seed, wo), 2, None);
     let mut observed = vec![0u64; failed + 1];
     for s in out.chunks_exact(2) {
         if s[0].w == 0.0 {
@@ -157,7 +139,7 @@ fn check_sampling(ctx: &Context, kernel: &Kernel, bsdf: Bsdf, theta_deg: f64, se
 
 fn check_all(cases: &[(Bsdf, f64)]) {
     let ctx = gpu();
-    let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+    let kernel = SamplingKernel::new(&ctx);
     let fits: Vec<Fit> = cases.iter().enumerate().map(|(i, (b, th))| check_sampling(&ctx, &kernel, *b, *th, 1000 + i as u32)).collect();
     for ((b, th), f) in cases.iter().zip(&fits) {
         assert!(f.p >= ALPHA / fits.len() as f64, "{b:?} at {th}°: samples do not follow the reported pdf ({f})");
@@ -192,7 +174,7 @@ fn gltf_metal_dielectric_mix_samples_follow_their_pdf() {
 #[test]
 fn continuous_bsdf_is_reciprocal_and_pdfs_swap() {
     let ctx = gpu();
-    let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+    let kernel = SamplingKernel::new(&ctx);
     let n = NORMAL.as_dvec3().normalize();
     let mut rng = Pcg::new(5);
     let mut uniform_dir = || loop {
@@ -217,8 +199,8 @@ fn continuous_bsdf_is_reciprocal_and_pdfs_swap() {
     let mut worst = 0.0f64;
     for bsdf in [Bsdf::conductor(0.05), Bsdf::conductor(0.3), Bsdf::conductor(0.8), Bsdf::gltf(base, 0.5, 0.3), Bsdf::gltf(base, 0.0, 0.6)]
     {
-        let e = run(&ctx, &kernel, bsdf.push(abi::SAMPLING_GLOSSY_EVAL, count as u32, 0, DVec3::Z), 2, Some(&input));
-        let s = run(&ctx, &kernel, bsdf.push(abi::SAMPLING_GLOSSY_EVAL, count as u32, 0, DVec3::Z), 2, Some(&input_swapped));
+        let e = kernel.run(bsdf.push(abi::SAMPLING_GLOSSY_EVAL, count as u32, 0, DVec3::Z), 2, Some(&input));
+        let s = kernel.run(bsdf.push(abi::SAMPLING_GLOSSY_EVAL, count as u32, 0, DVec3::Z), 2, Some(&input_swapped));
         for i in 0..count {
             let (f_ab, f_ba) = (dv(e[2 * i]), dv(e[2 * i + 1]));
             let rel = (f_ab - f_ba).abs().max_element() / f_ab.abs().max_element().max(1e-6);
@@ -241,7 +223,7 @@ fn continuous_bsdf_is_reciprocal_and_pdfs_swap() {
 #[test]
 fn rough_conductor_with_unit_fresnel_never_gains_energy() {
     let ctx = gpu();
-    let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+    let kernel = SamplingKernel::new(&ctx);
     let n = NORMAL.as_dvec3().normalize();
     let (t, _) = frame(n);
     eprintln!("albedo of a GGX conductor with F = 1 (1 - albedo is the energy lost to single scattering):");
@@ -249,7 +231,7 @@ fn rough_conductor_with_unit_fresnel_never_gains_energy() {
         let mut line = format!("  roughness {r:4}:");
         for th in [0.0f64, 45.0, 70.0, 85.0] {
             let wo = (n * th.to_radians().cos() + t * th.to_radians().sin()).normalize();
-            let out = run(&ctx, &kernel, Bsdf::conductor(r).push(abi::SAMPLING_GLOSSY, N, 7, wo), 2, None);
+            let out = kernel.run(Bsdf::conductor(r).push(abi::SAMPLING_GLOSSY, N, 7, wo), 2, None);
             let w: Vec<f64> = out.chunks_exact(2).map(|s| s[1].x as f64).collect();
             let mean = w.iter().sum::<f64>() / w.len() as f64;
             let var = w.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / (w.len() - 1) as f64;

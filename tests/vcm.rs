@@ -41,18 +41,6 @@ fn render(scene: &Scene, settings: RenderSettings, spp: u32, seeds: std::ops::Ra
     images
 }
 
-/// Mean and standard error of each statistic over replicates (`samples[replicate][statistic]`).
-fn mean_se(samples: &[Vec<f64>]) -> Vec<(f64, f64)> {
-    let n = samples.len() as f64;
-    (0..samples[0].len())
-        .map(|i| {
-            let mean = samples.iter().map(|s| s[i]).sum::<f64>() / n;
-            let var = samples.iter().map(|s| (s[i] - mean).powi(2)).sum::<f64>() / (n - 1.0);
-            (mean, (var / n).sqrt())
-        })
-        .collect()
-}
-
 /// Whole-image mean over pixels and channels.
 fn image_mean(img: &RgbImage) -> f64 {
     img.mean().iter().sum::<f64>() / 3.0
@@ -101,7 +89,7 @@ fn furnace() {
         let mut s = RenderSettings::new(VCM);
         s.sample_slices = slices;
         let means: Vec<Vec<f64>> = render(&scene, s, spp, 1..=REPLICATES).iter().map(|i| vec![image_mean(i)]).collect();
-        let (mean, se) = mean_se(&means)[0];
+        let (mean, se) = common::stats::replicate_mean_se(&means)[0];
         let (err, t) = (mean / 2.0 - 1.0, (mean - 2.0) / se);
         eprintln!(
             "vcm, {slices} sample(s) per iteration: furnace mean {mean:.5} expected 2 ({:+.3} %), se {:.3} %, t {t:.2}",
@@ -161,7 +149,7 @@ fn paired(
     let stats: Vec<Vec<f64>> = est.iter().map(|i| statistics(i, BLOCK)).collect();
     let diffs: Vec<Vec<f64>> =
         base.iter().zip(&stats).map(|(b, e)| statistics(b, BLOCK).iter().zip(e).map(|(b, e)| e - b).collect()).collect();
-    (mean_se(&diffs), mean_se(&stats))
+    (common::stats::replicate_mean_se(&diffs), common::stats::replicate_mean_se(&stats))
 }
 
 /// Checks `integrator` on the Cornell box: its difference from BDPT (paired, see [`paired`])

@@ -4,6 +4,7 @@
 pub mod agree;
 pub mod geometry;
 pub mod gltf_out;
+pub mod sampling_kernel;
 pub mod scenes;
 pub mod sphere;
 pub mod stats;

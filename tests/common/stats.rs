@@ -163,3 +163,16 @@ pub fn combine(fits: &[Fit]) -> Fit {
     let dof = fits.iter().map(|f| f.dof).sum();
     Fit { stat, dof, p: chi2_sf(stat, dof), cells: fits.iter().map(|f| f.cells).sum() }
 }
+
+/// Mean and standard error of each statistic over independent replicates
+/// (`samples[replicate][statistic]`).
+pub fn replicate_mean_se(samples: &[Vec<f64>]) -> Vec<(f64, f64)> {
+    let n = samples.len() as f64;
+    (0..samples[0].len())
+        .map(|i| {
+            let mean = samples.iter().map(|s| s[i]).sum::<f64>() / n;
+            let var = samples.iter().map(|s| (s[i] - mean).powi(2)).sum::<f64>() / (n - 1.0);
+            (mean, (var / n).sqrt())
+        })
+        .collect()
+}
