@@ -7,37 +7,14 @@ rough glass sphere (thesis glass, IOR 1.5, Pr 0.3: alpha 0.09). The spheres are 
 reads this same OBJ) both shade them with flat face normals. Deterministic:
 python3 make_scene.py"""
 import math
+import os
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ among the scenes
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from icosphere import icosphere  # noqa: E402
 
 SUBDIVISIONS = 4
-
-
-def icosphere(n):
-    t = (1 + 5 ** 0.5) / 2
-    v = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
-         (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
-    v = [tuple(c / math.sqrt(sum(x * x for x in p)) for c in p) for p in v]
-    # Counter-clockwise seen from outside.
-    f = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2), (10, 7, 6),
-         (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10),
-         (8, 6, 7), (9, 8, 1)]
-    for _ in range(n):
-        mid = {}
-
-        def m(a, b):
-            k = (min(a, b), max(a, b))
-            if k not in mid:
-                p = [(v[a][i] + v[b][i]) / 2 for i in range(3)]
-                length = math.sqrt(sum(x * x for x in p))
-                v.append(tuple(x / length for x in p))
-                mid[k] = len(v) - 1
-            return mid[k]
-
-        nf = []
-        for a, b, c in f:
-            ab, bc, ca = m(a, b), m(b, c), m(c, a)
-            nf += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
-        f = nf
-    return v, f
 
 
 out = ["# Rough Cornell box, written by make_scene.py. Millimetres, Y up. No vn: flat normals.",

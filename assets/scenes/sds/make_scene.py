@@ -8,31 +8,13 @@ BDPT samples it (the floor point is seen only through the mirror, and the light 
 the glass), so only unidirectional paths that happen to hit the small light find it; vertex
 merging finds it with photons. Run: python3 make_scene.py (deterministic)."""
 import math
+import os
+import sys
 
-def icosphere(n):
-    t = (1 + 5 ** 0.5) / 2
-    v = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
-         (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
-    v = [tuple(c / math.sqrt(sum(x * x for x in p)) for c in p) for p in v]
-    f = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2), (10, 7, 6),
-         (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10),
-         (8, 6, 7), (9, 8, 1)]
-    for _ in range(n):
-        mid = {}
-        def m(a, b):
-            k = (min(a, b), max(a, b))
-            if k not in mid:
-                p = [(v[a][i] + v[b][i]) / 2 for i in range(3)]
-                l = math.sqrt(sum(x * x for x in p))
-                v.append(tuple(x / l for x in p))
-                mid[k] = len(v) - 1
-            return mid[k]
-        nf = []
-        for a, b, c in f:
-            ab, bc, ca = m(a, b), m(b, c), m(c, a)
-            nf += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
-        f = nf
-    return v, f
+sys.dont_write_bytecode = True  # no __pycache__ among the scenes
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from icosphere import icosphere  # noqa: E402
+
 
 out = ["# SDS test scene, written by make_scene.py. Metres, Y up; the box spans x -1..1, y 0..2, z -1.5..1.",
        "mtllib sds.mtl"]
