@@ -21,6 +21,7 @@
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
+layout(constant_id = SPEC_PATH_REGENERATION) const uint PATH_REGENERATION = 1u;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { PtPush pc; };
@@ -255,6 +256,30 @@ bool path_bounce(inout PathState path, inout Rng rng) {
 }
 #undef PATH_END
 
+// The pixel's sums of a pass: finite samples add to `sum` and `count`; a NaN or Inf sample
+// never reaches the film, it is counted in `bad` and reported.
+struct PixelSums {
+    vec3 sum;
+    float count;
+    uint bad;
+};
+
+void add_sample(inout PixelSums px, vec3 l) {
+    if (any(isnan(l)) || any(isinf(l))) {
+        px.bad++;
+    } else {
+        px.sum += l;
+        px.count += 1.0;
+    }
+}
+
+// Sample `s` of the pixel: its random numbers and the start of its path.
+PathState sample_start(uint image_pixel, uint s, vec2 xy, inout Rng rng) {
+    rng = rng_init(image_pixel, pc.sample_base + s, pc.seed);
+    vec2 jitter = vec2(rng_next(rng), rng_next(rng));
+    return path_start(xy + jitter, rng);
+}
+
 void main() {
     // Invocation -> (slice, pixel): slice j takes samples j, j + S, j + 2S, ... of the pass.
     // The film holds the camera's window; random numbers follow the full image's pixel.
@@ -270,40 +295,42 @@ void main() {
     uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
     uint image_pixel = px.y * pc.camera.size.x + px.x;
     vec2 xy = vec2(px);
-    vec3 sum = vec3(0.0);
-    float count = 0.0;
-    uint bad = 0u;
-    uint s = slice; // samples s, s + slices, ... of the pass
-    if (s < pc.spp) {
-        Rng rng = rng_init(image_pixel, pc.sample_base + s, pc.seed);
-        vec2 jitter = vec2(rng_next(rng), rng_next(rng));
-        PathState path = path_start(xy + jitter, rng);
-        for (;;) {
-            if (path_bounce(path, rng)) {
-                continue;
+    PixelSums sums = PixelSums(vec3(0.0), 0.0, 0u);
+    Rng rng;
+    if (PATH_REGENERATION != 0u) {
+        // One loop of bounces: where a path ends, the invocation's next sample starts
+        // (Novak, Havran & Dachsbacher 2010), so a subgroup's lanes do not wait for its
+        // longest path while they have samples left.
+        uint s = slice; // samples s, s + slices, ... of the pass
+        if (s < pc.spp) {
+            PathState path = sample_start(image_pixel, s, xy, rng);
+            for (;;) {
+                if (path_bounce(path, rng)) {
+                    continue;
+                }
+                add_sample(sums, path.radiance);
+                s += slices;
+                if (s >= pc.spp) {
+                    break;
+                }
+                path = sample_start(image_pixel, s, xy, rng);
             }
-            vec3 l = path.radiance;
-            if (any(isnan(l)) || any(isinf(l))) {
-                bad++; // never reaches the film; counted and reported
-            } else {
-                sum += l;
-                count += 1.0;
+        }
+    } else {
+        // A loop of samples around a loop of bounces: fewer values live across the trace.
+        for (uint s = slice; s < pc.spp; s += slices) {
+            PathState path = sample_start(image_pixel, s, xy, rng);
+            while (path_bounce(path, rng)) {
             }
-            s += slices;
-            if (s >= pc.spp) {
-                break;
-            }
-            rng = rng_init(image_pixel, pc.sample_base + s, pc.seed);
-            jitter = vec2(rng_next(rng), rng_next(rng));
-            path = path_start(xy + jitter, rng);
+            add_sample(sums, path.radiance);
         }
     }
     if (slices == 1u) {
-        accum[pixel] += vec4(sum, count);
+        accum[pixel] += vec4(sums.sum, sums.count);
     } else {
-        slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel] = vec4(sum, count);
+        slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel] = vec4(sums.sum, sums.count);
     }
-    if (bad > 0u) {
-        atomicAdd(render_stats[STAT_NAN_SAMPLES], bad);
+    if (sums.bad > 0u) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], sums.bad);
     }
 }

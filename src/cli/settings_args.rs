@@ -75,14 +75,20 @@ pub struct SettingsArgs {
     /// Ray-triangle test: watertight | woop.
     #[arg(long, default_value = "watertight")]
     pub tri_test: TriTest,
-    /// BVH layout the integrators traverse: auto (the device's faster one: cwbvh on CPU
-    /// devices such as lavapipe, bvh2 on GPUs) | bvh2 | cwbvh.
+    /// BVH layout the integrators traverse: auto (the faster one for the device, integrator
+    /// and scene: cwbvh on CPU devices such as lavapipe and for pt/pt-nee on GPUs in scenes
+    /// with only diffuse surfaces, bvh2 otherwise) | bvh2 | cwbvh.
     #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh")]
     pub bvh: String,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
     /// what kernel specialisation buys).
     #[arg(long)]
     pub all_features: bool,
+    /// pt and pt-nee: start a thread's next sample where its path ends (on), or run a loop of
+    /// samples around a loop of bounces (off); the image is the same. auto: on, except on GPUs
+    /// for scenes with smooth mirrors or glass (the faster there, measured on the H200).
+    #[arg(long, default_value = "auto", value_name = "auto|on|off")]
+    pub path_regeneration: String,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
     /// diagonal (0.001), or a length in scene units with the suffix u (0.02u).
     #[arg(long, default_value = "0.001", value_name = "R")]
@@ -119,6 +125,12 @@ impl SettingsArgs {
             other => bail!("--bvh {other}: the integrators traverse auto | bvh2 | cwbvh (bvh2q is for `bidir bench traversal`)"),
         };
         s.all_material_code = self.all_features;
+        s.path_regeneration = match self.path_regeneration.as_str() {
+            "auto" => None,
+            "on" => Some(true),
+            "off" => Some(false),
+            other => bail!("--path-regeneration {other}: auto | on | off"),
+        };
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;
         Ok(s)

@@ -37,6 +37,7 @@ pub use tonemap::{Tonemap, TonemapSettings};
 
 use crate::bvh::{BuildOptions, Bvh, BvhError, BvhLayout};
 use crate::gpu::abi::GpuCamera;
+use crate::gpu_data::SceneFeatures;
 use crate::imaging::{part::Accumulation, Crop, RgbImage};
 use crate::scene::{Camera, Scene};
 use crate::vk::{Context, Image, Recorder, VkError};
@@ -201,6 +202,10 @@ pub struct RenderSettings {
     pub vcm_radius: vcm::VcmRadius,
     /// VCM: radius reduction exponent alpha, r_i = r_1 i^((alpha - 1) / 2).
     pub vcm_alpha: f32,
+    /// pt and pt-nee: start an invocation's next sample where its path ends
+    /// (`--path-regeneration`); `None` takes [`default_path_regeneration`]. Either gives the
+    /// same image.
+    pub path_regeneration: Option<bool>,
 }
 
 impl RenderSettings {
@@ -223,6 +228,7 @@ impl RenderSettings {
             first_hit: None,
             vcm_radius: vcm::VcmRadius::default(),
             vcm_alpha: 0.75,
+            path_regeneration: None,
         }
     }
 }
@@ -295,16 +301,34 @@ fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
     }
 }
 
-/// The BVH layout the integrators trace fastest on a device, measured with `bidir bench
-/// traversal` and `bidir bench render` (docs/traversal.md, docs/results.md): the compressed
-/// wide BVH on CPU devices (llvmpipe: fewer, wider node visits suit its SIMD lanes), the
-/// binary one on GPUs (NVIDIA H200: bvh2 ahead on primary and diffuse rays).
-pub fn default_bvh_layout(ctx: &Context) -> BvhLayout {
+/// The BVH layout `integrator` traces fastest on a device for a scene with `features`,
+/// measured with `bidir bench render` (NVIDIA H200 and llvmpipe; docs/results.md, "Path
+/// tracers' defaults on the H200"): the compressed wide BVH on CPU devices (fewer, wider node
+/// visits suit llvmpipe's SIMD lanes); on GPUs the wide BVH for the path tracers where the
+/// scene has only diffuse surfaces (Cornell box pt-nee 693 against 606 Msamples/s over the
+/// binary BVH), the binary one where it has mirrors, glass or GGX lobes (their larger kernels
+/// reached 96 registers over the wide BVH: caustic scene pt-nee 314-412 against 385-490) and
+/// for BDPT and VCM (their camera pass was 13-24 % slower over the wide BVH). The viewer
+/// keeps the layout it started with when it switches integrators.
+pub fn default_bvh_layout(ctx: &Context, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
     if ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU {
-        BvhLayout::Cwbvh
-    } else {
-        BvhLayout::Bvh2
+        return BvhLayout::Cwbvh;
     }
+    let only_diffuse = !(features.mirror || features.glass || features.glossy || features.rough_glass);
+    match integrator {
+        Integrator::Pt | Integrator::PtNee if only_diffuse => BvhLayout::Cwbvh,
+        _ => BvhLayout::Bvh2,
+    }
+}
+
+/// Whether pt and pt-nee regenerate paths by default (the image is the same either way):
+/// on, except on GPUs for scenes with smooth mirrors or glass, where the regenerating loop
+/// was slower on the H200 (caustic scene pt-nee 385 against 490 Msamples/s, mirror-and-glass
+/// scene 318 against 395; elsewhere it gained up to 32 %: Sponza pt-nee 67.5 against 51.1).
+/// Measured, not modelled (docs/results.md).
+pub fn default_path_regeneration(ctx: &Context, features: &SceneFeatures) -> bool {
+    let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
+    ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU || !smooth_specular
 }
 
 /// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`).
@@ -354,7 +378,10 @@ fn build_kernels(
 ) -> Result<Kernels, RenderError> {
     check_layout(scene.bvh.layout)?;
     Ok(match integrator {
-        Integrator::Pt | Integrator::PtNee => Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler)?),
+        Integrator::Pt | Integrator::PtNee => {
+            let regenerate = settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(ctx, &scene.features));
+            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler, regenerate)?)
+        }
         Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
         Integrator::Vcm(mode) => {
             let config = bdpt::VcmConfig { mode, radius: settings.vcm_radius.resolve(0.0), alpha: settings.vcm_alpha };
@@ -375,7 +402,8 @@ impl Renderer {
         if camera.width == 0 || camera.height == 0 {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
-        settings.bvh.layout = settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(ctx));
+        let features = SceneFeatures::of(scene);
+        settings.bvh.layout = settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(ctx, settings.integrator, &features));
         check_layout(settings.bvh.layout)?;
         // VCM's relative radius becomes scene units once, so integrator switches keep it.
         settings.vcm_radius = vcm::VcmRadius::Absolute(settings.vcm_radius.resolve(scene.bounds().diagonal().length()));
