@@ -29,6 +29,7 @@ fn register_font() -> Result<(), String> {
 }
 
 /// One line of the chart: a name and its (x, y) points, x ascending.
+#[derive(Debug)]
 pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,

@@ -1,6 +1,7 @@
 //! Command-line parsing and the subcommands.
 
 mod bench;
+mod chart;
 mod converge;
 mod diff;
 mod info;
@@ -50,6 +51,8 @@ pub enum Command {
     Bench(bench::BenchCommand),
     /// Speed against accuracy: RMSE vs a reference over render time, per integrator (CSV, charts).
     Converge(Box<converge::ConvergeArgs>),
+    /// Redraw the RMSE chart of `convergence.csv` files written by `bidir converge` (SVG or PNG).
+    Chart(chart::ChartArgs),
 }
 
 /// Prints a loader's warnings to stderr.
@@ -74,5 +77,6 @@ pub fn run() -> anyhow::Result<()> {
         Command::Diff(args) => diff::run(&args),
         Command::Merge(args) => merge::run(&args),
         Command::Converge(args) => converge::run(&args, &opts),
+        Command::Chart(args) => chart::run(&args),
     }
 }
