@@ -3,12 +3,14 @@
 # ../shared/tools/device/README.md): build here, bundle, and run from the repository root
 #   source .device/env.sh; bash scripts/device/pending-h200.sh PART > $OUT/log 2>&1
 # with .device/bidir (this commit), .device/bidir-base (built at 1e41285, the last commit
-# measured on the H200) and .device/ref.exr (../shared/references/cornell-box/
-# reference-bidir-h200.exr). PART is one of: speed, vcm, rough (each under 10 minutes).
+# measured on the H200), optionally .device/bidir-pre (fc01b5d) and .device/ref.exr (../shared/references/cornell-box/
+# reference-bidir-h200.exr). PART is one of: speed, vcm, rough, trav, defaults, final (each under 10 minutes).
 set -u
 B=${B:-$PWD/.device/bidir}
 BASE=${BASE:-$PWD/.device/bidir-base}
 REF=${REF:-$PWD/.device/ref.exr}
+# optional: a build from before the materials merge (fc01b5d), for #13's 2 % budget
+PRE=${PRE:-$PWD/.device/bidir-pre}
 OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
@@ -35,6 +37,22 @@ speed)
       done
     done
   done
+  # #13's budget: before the materials merge (fc01b5d) against this commit, interleaved
+  if [ -x "$PRE" ]; then
+    for i in pt-nee bdpt; do
+      for b in "$PRE" "$B" "$PRE" "$B" "$PRE" "$B"; do
+        echo "== $i $(basename "$b") --time 2"
+        "$b" render --integrator "$i" --time 2 --reference "$REF" -o /tmp/x.exr 2>&1 | grep -E "spp in|RMSE"
+      done
+    done
+  fi
+  # #17: the integrators over the compressed wide BVH on the GPU
+  for i in pt-nee bdpt; do
+    for l in bvh2 cwbvh; do
+      echo "== $i --bvh $l"
+      "$B" bench render $CB --integrator "$i" --bvh $l --spp 1024 --warmup 2 --runs 5 | head -4
+    done
+  done
   "$B" info --kernels 2>&1 | grep -iE "pt|bdpt" | head -20
   ;;
 vcm)
@@ -46,6 +64,7 @@ vcm)
     "$B" converge $SDS --reference assets/scenes/sds/reference-h200-vcm.exr --integrators pt-nee,bdpt,vcm --time $t --seeds 2 --out "$OUT/sds-$t" 2>&1 | grep -iE "rmse|stability"
     "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators pt-nee,bdpt,vcm --time $t --seeds 2 --out "$OUT/caustic-$t" 2>&1 | grep -iE "rmse|stability"
   done
+  "$B" converge --reference "$REF" --integrators bdpt,vcm,vcm:no-merge --spp-points 64,1024,8192 --seeds 2 --out "$OUT/cornell-spp" 2>&1 | grep -iE "rmse|stability"
   for b in "$BASE" "$B"; do for i in bdpt vcm; do
     echo "== $(basename "$b") $i"
     "$b" bench render $CB --integrator $i --spp 1024 | head -8
@@ -56,9 +75,96 @@ rough)
   RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077"
   for i in pt-nee bdpt; do
     "$B" render $RC --width 64 --height 64 --integrator $i --spp 65536 --reference assets/scenes/rough-cornell/reference.exr -o "$OUT/rough-$i.exr" 2>&1 | grep -E "spp in|RMSE"
+    "$B" diff "$OUT/rough-$i.exr" assets/scenes/rough-cornell/reference.exr --blocks 16 2>&1 | tail -24
   done
-  "$B" render $RC --width 256 --height 256 --integrator bdpt --time 120 --seed 4242 -o "$OUT/rough-ref.exr" 2>&1 | grep -E "spp in"
+  "$B" render $RC --width 256 --height 256 --integrator bdpt --time 240 --seed 4242 -o "$OUT/rough-ref.exr" 2>&1 | grep -E "spp in"
   "$B" converge $RC --width 256 --height 256 --reference "$OUT/rough-ref.exr" --integrators pt-nee,bdpt --time 10 --seeds 2 --out "$OUT/rough-chart" 2>&1 | grep -iE "rmse|stability"
   ;;
-*) echo "usage: $0 speed|vcm|rough" >&2; exit 2 ;;
+trav)
+  # #17: Sponza traversal (geometry only) and the integrators over either layout.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  for a in "" "--bvh cwbvh" "--bvh cwbvh --tri-test woop"; do
+    echo "== bench traversal $a"
+    "$B" bench traversal "$SP" --camera CameraMain $a 2>&1 | grep -vE "^\s*$" | tail -14
+  done
+  for l in bvh2 cwbvh; do
+    for i in pt-nee bdpt; do
+      echo "== sponza $i --bvh $l"
+      "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --bvh $l --spp 64 --warmup 1 --runs 3 2>&1 | grep -v warning | head -4
+    done
+  done
+  ;;
+defaults)
+  # #16: path regeneration and the BVH layout of the path tracers on a GPU, against the
+  # last binary measured (BASE); #13's budget at equal settings against PRE; #15's merge
+  # query against PREV (the binary before it) and its sensitivity to the radius.
+  PREV=${PREV:-$PWD/.device/bidir-prev}
+  bench() { echo "== $*"; "$@" --spp 1024 --warmup 2 --runs 5 2>&1 | head -4 | grep -E "Msamples|^(pt|bdpt_camera|bdpt_light)"; }
+  for i in pt pt-nee; do
+    bench "$BASE" bench render $CB --integrator $i
+    bench "$B" bench render $CB --integrator $i
+    for l in bvh2 cwbvh; do for r in on off; do
+      bench "$B" bench render $CB --integrator $i --bvh $l --path-regeneration $r
+    done; done
+    bench "$BASE" bench render $CB --integrator $i
+  done
+  for b in "$PREV" "$B" "$PREV" "$B"; do
+    bench "$b" bench render $CB --integrator vcm
+  done
+  bench "$B" bench render $CB --integrator bdpt
+  for rad in 0.0005 0.002; do bench "$B" bench render $CB --integrator vcm --vcm-radius $rad; done
+  "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-90
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  for b in "$BASE" "$B"; do
+    echo "== sponza pt-nee $(basename "$b")"
+    "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep Msamples
+  done
+  if [ -x "$PRE" ]; then
+    for a in "" "--bvh bvh2 --path-regeneration off"; do
+      for b in "$PRE" "$B" "$PRE" "$B" "$PRE" "$B"; do
+        x=""; [ "$b" = "$B" ] && x="$a"
+        echo "== pt-nee $(basename "$b") $x --rr-depth 3 --sampler sobol:all --time 2"
+        "$b" render --integrator pt-nee --rr-depth 3 --sampler sobol:all $x --time 2 -o /tmp/x.png 2>&1 | grep -E "spp in"
+      done
+    done
+  fi
+  for i in pt pt-nee bdpt; do for t in 0.1 1 2; do
+    echo "== $i --time $t"
+    "$B" render --integrator $i --time $t --reference "$REF" -o /tmp/x.png 2>&1 | grep -E "spp in|RMSE"
+  done; done
+  SDS="assets/scenes/sds/sds.obj --eye 0.9,1.3,-3.2 --target -0.4,0.4,0 --up 0,1,0 --fov 50 --width 256 --height 256"
+  "$B" converge --reference "$REF" --integrators pt-nee,bdpt,vcm --time 10 --seeds 2 --out "$OUT/cornell-10" 2>&1 | grep -iE "stability"
+  "$B" converge $SDS --reference assets/scenes/sds/reference-h200-vcm.exr --integrators bdpt,vcm --time 10 --seeds 2 --out "$OUT/sds-10" 2>&1 | grep -iE "stability"
+  ;;
+final)
+  # The defaults chosen from `defaults`: #16's table, #13's budget at equal settings.
+  bench() { echo "== $*"; "$@" --spp 1024 --warmup 2 --runs 5 2>&1 | head -4 | grep -E "Msamples"; }
+  for i in pt pt-nee bdpt; do bench "$B" bench render $CB --integrator $i; done
+  bench "$BASE" bench render $CB --integrator pt-nee
+  for i in pt pt-nee bdpt bdpt:full; do for t in 0.1 1 2; do
+    echo "== $i --time $t"
+    "$B" render --integrator $i --time $t --reference "$REF" -o /tmp/x.png 2>&1 | grep -E "spp in|RMSE"
+  done; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for b in "$BASE" "$B"; do for i in pt pt-nee bdpt bdpt:full; do
+    echo "== caustic $(basename "$b") $i --time 1"
+    "$b" render $CAU --integrator $i --time 1 --reference assets/scenes/caustic/reference.exr -o /tmp/x.png 2>&1 | grep -E "spp in|RMSE"
+  done; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  for b in "$BASE" "$B"; do
+    echo "== sponza pt-nee $(basename "$b")"
+    "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep Msamples
+  done
+  if [ -x "$PRE" ]; then
+    for a in "" "--bvh bvh2"; do
+      for b in "$PRE" "$B" "$PRE" "$B" "$PRE" "$B"; do
+        x=""; [ "$b" = "$B" ] && x="$a --rr-depth 3 --sampler sobol:all"
+        echo "== pt-nee $(basename "$b") $x --time 2"
+        "$b" render --integrator pt-nee $x --time 2 -o /tmp/x.png 2>&1 | grep -E "spp in"
+      done
+    done
+  fi
+  "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-70
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final" >&2; exit 2 ;;
 esac
