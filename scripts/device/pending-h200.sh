@@ -95,18 +95,21 @@ trav)
   done
   ;;
 defaults)
-  # #16: path regeneration and the BVH layout of the path tracers on a GPU, against the
-  # last binary measured (BASE); #13's budget at equal settings against PRE; #15's merge
-  # query against PREV (the binary before it) and its sensitivity to the radius.
+  # #16: path regeneration and the BVH layout of the path tracers per scene (the table of
+  # docs/results.md, "Cornell box, session 6"), against the last binary measured (BASE);
+  # #15: the merge query against PREV (the binary before it) and its radius sensitivity.
   PREV=${PREV:-$PWD/.device/bidir-prev}
   bench() { echo "== $*"; "$@" --spp 1024 --warmup 2 --runs 5 2>&1 | head -4 | grep -E "Msamples|^(pt|bdpt_camera|bdpt_light)"; }
-  for i in pt pt-nee; do
-    bench "$BASE" bench render $CB --integrator $i
-    bench "$B" bench render $CB --integrator $i
-    for l in bvh2 cwbvh; do for r in on off; do
-      bench "$B" bench render $CB --integrator $i --bvh $l --path-regeneration $r
-    done; done
-    bench "$BASE" bench render $CB --integrator $i
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  SDS="assets/scenes/sds/sds.obj --eye 0.9,1.3,-3.2 --target -0.4,0.4,0 --up 0,1,0 --fov 50 --width 256 --height 256"
+  RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  for S in "$CB" "$CAU" "$SDS" "$RC"; do
+    for i in pt-nee pt; do
+      bench "$BASE" bench render $S --integrator $i
+      for l in bvh2 cwbvh; do for r in on off; do
+        bench "$B" bench render $S --integrator $i --bvh $l --path-regeneration $r
+      done; done
+    done
   done
   for b in "$PREV" "$B" "$PREV" "$B"; do
     bench "$b" bench render $CB --integrator vcm
@@ -114,27 +117,7 @@ defaults)
   bench "$B" bench render $CB --integrator bdpt
   for rad in 0.0005 0.002; do bench "$B" bench render $CB --integrator vcm --vcm-radius $rad; done
   "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-90
-  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
-  for b in "$BASE" "$B"; do
-    echo "== sponza pt-nee $(basename "$b")"
-    "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep Msamples
-  done
-  if [ -x "$PRE" ]; then
-    for a in "" "--bvh bvh2 --path-regeneration off"; do
-      for b in "$PRE" "$B" "$PRE" "$B" "$PRE" "$B"; do
-        x=""; [ "$b" = "$B" ] && x="$a"
-        echo "== pt-nee $(basename "$b") $x --rr-depth 3 --sampler sobol:all --time 2"
-        "$b" render --integrator pt-nee --rr-depth 3 --sampler sobol:all $x --time 2 -o /tmp/x.png 2>&1 | grep -E "spp in"
-      done
-    done
-  fi
-  for i in pt pt-nee bdpt; do for t in 0.1 1 2; do
-    echo "== $i --time $t"
-    "$B" render --integrator $i --time $t --reference "$REF" -o /tmp/x.png 2>&1 | grep -E "spp in|RMSE"
-  done; done
-  SDS="assets/scenes/sds/sds.obj --eye 0.9,1.3,-3.2 --target -0.4,0.4,0 --up 0,1,0 --fov 50 --width 256 --height 256"
-  "$B" converge --reference "$REF" --integrators pt-nee,bdpt,vcm --time 10 --seeds 2 --out "$OUT/cornell-10" 2>&1 | grep -iE "stability"
-  "$B" converge $SDS --reference assets/scenes/sds/reference-h200-vcm.exr --integrators bdpt,vcm --time 10 --seeds 2 --out "$OUT/sds-10" 2>&1 | grep -iE "stability"
+  "$B" info --kernels $CAU 2>&1 | grep -E "Register" | cut -c1-90
   ;;
 final)
   # The defaults chosen from `defaults`: #16's table, #13's budget at equal settings.
