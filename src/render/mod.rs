@@ -302,16 +302,16 @@ fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
 }
 
 /// The BVH layout `integrator` traces fastest on a device for a scene with `features`,
-/// measured with `bidir bench render` (NVIDIA H200 and llvmpipe; docs/results.md, "Path
-/// tracers' defaults on the H200"): the compressed wide BVH on CPU devices (fewer, wider node
+/// measured with `bidir bench render` (NVIDIA H200 and llvmpipe; docs/results.md, "Cornell
+/// box, session 6"): the compressed wide BVH on CPU devices (fewer, wider node
 /// visits suit llvmpipe's SIMD lanes); on GPUs the wide BVH for the path tracers where the
 /// scene has only diffuse surfaces (Cornell box pt-nee 693 against 606 Msamples/s over the
 /// binary BVH), the binary one where it has mirrors, glass or GGX lobes (their larger kernels
 /// reached 96 registers over the wide BVH: caustic scene pt-nee 314-412 against 385-490) and
 /// for BDPT and VCM (their camera pass was 13-24 % slower over the wide BVH). The viewer
 /// keeps the layout it started with when it switches integrators.
-pub fn default_bvh_layout(ctx: &Context, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
-    if ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU {
+pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
+    if on_cpu {
         return BvhLayout::Cwbvh;
     }
     let only_diffuse = !(features.mirror || features.glass || features.glossy || features.rough_glass);
@@ -326,9 +326,14 @@ pub fn default_bvh_layout(ctx: &Context, integrator: Integrator, features: &Scen
 /// was slower on the H200 (caustic scene pt-nee 385 against 490 Msamples/s, mirror-and-glass
 /// scene 318 against 395; elsewhere it gained up to 32 %: Sponza pt-nee 67.5 against 51.1).
 /// Measured, not modelled (docs/results.md).
-pub fn default_path_regeneration(ctx: &Context, features: &SceneFeatures) -> bool {
+pub fn default_path_regeneration(on_cpu: bool, features: &SceneFeatures) -> bool {
     let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
-    ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU || !smooth_specular
+    on_cpu || !smooth_specular
+}
+
+/// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
+fn on_cpu(ctx: &Context) -> bool {
+    ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU
 }
 
 /// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`).
@@ -336,7 +341,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
     if settings.sample_slices > 0 {
         return settings.sample_slices;
     }
-    if ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU {
+    if on_cpu(ctx) {
         return 1;
     }
     let mut s = TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64);
@@ -379,7 +384,7 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => {
-            let regenerate = settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(ctx, &scene.features));
+            let regenerate = settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(on_cpu(ctx), &scene.features));
             Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler, regenerate)?)
         }
         Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
@@ -403,7 +408,7 @@ impl Renderer {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
         let features = SceneFeatures::of(scene);
-        settings.bvh.layout = settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(ctx, settings.integrator, &features));
+        settings.bvh.layout = settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), settings.integrator, &features));
         check_layout(settings.bvh.layout)?;
         // VCM's relative radius becomes scene units once, so integrator switches keep it.
         settings.vcm_radius = vcm::VcmRadius::Absolute(settings.vcm_radius.resolve(scene.bounds().diagonal().length()));
@@ -637,7 +642,7 @@ impl Renderer {
     /// loop) per invocation would drop samples' light and darken the image
     /// (`furnace_many_samples_per_pass`).
     fn max_pass_spp(&self) -> u32 {
-        if self.ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU {
+        if on_cpu(&self.ctx) {
             16
         } else {
             4096
@@ -691,5 +696,34 @@ impl Renderer {
     /// Samples that came out NaN or infinite and were dropped.
     pub fn nan_samples(&self) -> Result<u32, RenderError> {
         Ok(self.film.nan_samples(&self.ctx)?)
+    }
+}
+
+#[cfg(test)]
+mod default_tests {
+    use super::*;
+
+    /// The scenes of the measured table (docs/results.md, "Cornell box, session 6") by what
+    /// they have, and what `auto` picked there for pt-nee on the H200.
+    #[test]
+    fn path_tracer_defaults_follow_the_measured_table() {
+        let diffuse = SceneFeatures::default();
+        let glass = SceneFeatures { glass: true, ..diffuse };
+        let mirror_glass = SceneFeatures { mirror: true, glass: true, ..diffuse };
+        let rough = SceneFeatures { glossy: true, glass: true, rough_glass: true, ..diffuse };
+        let textured_ggx = SceneFeatures { glossy: true, textures: true, uvs: true, normals: true, ..diffuse };
+        let (cw, b2) = (BvhLayout::Cwbvh, BvhLayout::Bvh2);
+        let gpu = [(diffuse, cw, true), (glass, b2, false), (mirror_glass, b2, false), (rough, b2, true), (textured_ggx, b2, true)];
+        for (f, layout, regen) in gpu {
+            assert_eq!(default_bvh_layout(false, Integrator::PtNee, &f), layout, "{f:?}");
+            assert_eq!(default_bvh_layout(false, Integrator::Pt, &f), layout, "{f:?}");
+            assert_eq!(default_path_regeneration(false, &f), regen, "{f:?}");
+            // BDPT and VCM stay on the binary BVH on GPUs; CPU devices take the wide one and
+            // regenerate everywhere.
+            assert_eq!(default_bvh_layout(false, Integrator::Bdpt(Join::Lvc(0)), &f), b2);
+            assert_eq!(default_bvh_layout(false, Integrator::Vcm(vcm::VcmMode::FULL), &f), b2);
+            assert_eq!(default_bvh_layout(true, Integrator::Bdpt(Join::Full), &f), cw);
+            assert!(default_path_regeneration(true, &f));
+        }
     }
 }
