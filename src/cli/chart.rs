@@ -13,9 +13,9 @@ pub struct ChartArgs {
     /// Output chart: .svg or .png.
     #[arg(short, long)]
     pub output: PathBuf,
-    /// Chart title.
-    #[arg(long, default_value = "RMSE against render time")]
-    pub title: String,
+    /// Chart title [default: RMSE against render time, or against samples per pixel].
+    #[arg(long)]
+    pub title: Option<String>,
     /// Horizontal axis: seconds | spp.
     #[arg(long, default_value = "seconds", value_name = "seconds|spp")]
     pub x: String,
@@ -62,6 +62,22 @@ fn read_series(path: &Path, by_spp: bool, prefix: Option<&str>) -> anyhow::Resul
     Ok(series)
 }
 
+/// A short, distinct name per CSV for the legend: the run's folder for a `convergence.csv`
+/// (`converge --out DIR`), else the file's stem; the whole path where those repeat.
+fn run_names(paths: &[PathBuf]) -> Vec<String> {
+    let short = |p: &PathBuf| -> Option<String> {
+        let name = if p.file_name()? == "convergence.csv" { p.parent()?.file_name()? } else { p.file_stem()? };
+        Some(name.to_string_lossy().into_owned())
+    };
+    let names: Vec<String> = paths.iter().map(|p| short(p).unwrap_or_else(|| p.display().to_string())).collect();
+    let distinct = names.iter().collect::<std::collections::HashSet<_>>().len() == names.len();
+    if distinct {
+        names
+    } else {
+        paths.iter().map(|p| p.display().to_string()).collect()
+    }
+}
+
 pub fn run(args: &ChartArgs) -> anyhow::Result<()> {
     let by_spp = match args.x.as_str() {
         "seconds" => false,
@@ -72,14 +88,15 @@ pub fn run(args: &ChartArgs) -> anyhow::Result<()> {
     if !matches!(ext.as_deref(), Some("svg") | Some("png")) {
         bail!("{}: the chart is written as .svg or .png", args.output.display());
     }
+    let names = run_names(&args.csv);
     let mut series = Vec::new();
-    for path in &args.csv {
-        let stem = path.parent().and_then(|p| p.file_name()).map(|s| s.to_string_lossy().into_owned());
-        let prefix = if args.csv.len() > 1 { stem.or_else(|| Some(path.display().to_string())) } else { None };
-        series.extend(read_series(path, by_spp, prefix.as_deref())?);
+    for (path, name) in args.csv.iter().zip(&names) {
+        let prefix = if args.csv.len() > 1 { Some(name.as_str()) } else { None };
+        series.extend(read_series(path, by_spp, prefix)?);
     }
     let x_label = if by_spp { "samples per pixel" } else { "render time [s] (sum of pass times)" };
-    let text = ChartText { title: args.title.clone(), x_label: x_label.into(), y_label: "RMSE vs reference".into() };
+    let title = args.title.clone().unwrap_or_else(|| format!("RMSE against {}", if by_spp { "samples per pixel" } else { "render time" }));
+    let text = ChartText { title, x_label: x_label.into(), y_label: "RMSE vs reference".into() };
     let out = &args.output;
     if ext.as_deref() == Some("svg") {
         let svg = chart::log_log_svg(&series, &text).map_err(anyhow::Error::msg)?;
@@ -115,6 +132,14 @@ mod tests {
         let s = read_series(&p, true, Some("run")).unwrap();
         assert_eq!(s[1].name, "run: pt-nee");
         assert_eq!(s[1].points, vec![(10.0, 0.05)]);
+    }
+
+    #[test]
+    fn names_runs_apart() {
+        let p = |s: &str| PathBuf::from(s);
+        assert_eq!(run_names(&[p("a/run1/convergence.csv"), p("b/run2/convergence.csv")]), ["run1", "run2"]);
+        assert_eq!(run_names(&[p("r/vcm-sds.csv"), p("r/vcm-cornell.csv")]), ["vcm-sds", "vcm-cornell"]);
+        assert_eq!(run_names(&[p("a/x/convergence.csv"), p("b/x/convergence.csv")]), ["a/x/convergence.csv", "b/x/convergence.csv"]);
     }
 
     #[test]
