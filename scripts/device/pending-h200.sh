@@ -4,7 +4,8 @@
 #   source .device/env.sh; bash scripts/device/pending-h200.sh PART > $OUT/log 2>&1
 # with .device/bidir (this commit), .device/bidir-base (built at 1e41285, the last commit
 # measured on the H200), optionally .device/bidir-pre (fc01b5d) and .device/ref.exr (../shared/references/cornell-box/
-# reference-bidir-h200.exr). PART is one of: speed, vcm, rough, trav, defaults, final (each under 10 minutes).
+# reference-bidir-h200.exr). PART is one of: speed, vcm, rough, trav, defaults, final, light-paths (each under 10
+# minutes).
 set -u
 B=${B:-$PWD/.device/bidir}
 BASE=${BASE:-$PWD/.device/bidir-base}
@@ -149,5 +150,18 @@ final)
   fi
   "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-70
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final" >&2; exit 2 ;;
+light-paths)
+  # #16: fewer light paths per iteration for bdpt (the light pass is a third of its GPU time
+  # on the Cornell box; per sample the Cornell image is as good with a quarter of them on
+  # lavapipe). Equal time, Cornell box and caustic scene, ratio 1 / 0.5 / 0.25.
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for lp in 1 0.5 0.25; do
+    echo "== bdpt --light-paths $lp"
+    "$B" bench render $CB --integrator bdpt --light-paths $lp --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples|bdpt_"
+    "$B" converge --reference "$REF" --integrators bdpt --light-paths $lp --time 2 --seeds 2 --out "$OUT/cornell-lp$lp" 2>&1 | grep -iE "stability"
+    "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators bdpt --light-paths $lp --time 2 --seeds 2 --out "$OUT/caustic-lp$lp" 2>&1 | grep -iE "stability"
+  done
+  "$B" bench traversal "${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}" --camera CameraMain --quality 3 2>&1 | grep -E "build|primary|shadow|diffuse"
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths" >&2; exit 2 ;;
 esac
