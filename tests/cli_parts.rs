@@ -37,7 +37,9 @@ fn render_ranges_merge_info_and_refusal() {
         common.iter().chain(extra).copied().collect()
     }
     ok(&with(&common, &["--sample-range", "0..3", "-o", s(&a)]));
-    ok(&with(&common, &["--sample-range", "3..8", "--crop", "0,0,16,12", "-o", s(&b)]));
+    // The second part runs the other kernel form (layout, regeneration): the same estimator,
+    // so it merges, and the metadata keeps both forms.
+    ok(&with(&common, &["--sample-range", "3..8", "--crop", "0,0,16,12", "--bvh", "bvh2", "--path-regeneration", "off", "-o", s(&b)]));
     ok(&with(&common, &["--spp", "8", "-o", s(&whole)]));
     let out = ok(&["merge", s(&a), s(&b), "-o", s(&merged), "-o", s(&png)]);
     assert!(out.contains("samples 0..8 (8 spp)"), "{out}");
@@ -65,9 +67,11 @@ fn render_ranges_merge_info_and_refusal() {
         "spp",
         "render_time_s",
         "merged_from",
+        "kernels",
     ] {
         assert!(info.contains(key), "bidir info lacks {key}:\n{info}");
     }
+    assert!(info.contains("bvh2, path regeneration off"), "the second part's kernel form is lost:\n{info}");
     // Another seed: refused, naming the key and both files; nothing written.
     let c = d.join("c.exr");
     let refused = d.join("refused.exr");

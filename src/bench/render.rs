@@ -35,6 +35,8 @@ pub struct KernelRow {
 pub struct Report {
     pub device: String,
     pub integrator: String,
+    /// The BVH layout and, for pt/pt-nee, path regeneration (`render::kernel_form`).
+    pub kernel_form: String,
     pub pixels: u64,
     pub spp: u32,
     /// Median GPU milliseconds of a run (the sum of its dispatches' times).
@@ -54,8 +56,9 @@ impl Report {
 
     pub fn print(&self) {
         println!(
-            "{} on {}: {} pixels x {} spp; GPU {:.2} ms ({:.4} Msamples/s), wall {:.2} ms (median of runs)",
+            "{} ({}) on {}: {} pixels x {} spp; GPU {:.2} ms ({:.4} Msamples/s), wall {:.2} ms (median of runs)",
             self.integrator,
+            self.kernel_form,
             self.device,
             self.pixels,
             self.spp,
@@ -84,6 +87,7 @@ impl Report {
         Json::obj(vec![
             ("device", Json::Str(self.device.clone())),
             ("integrator", Json::Str(self.integrator.clone())),
+            ("kernel_form", Json::Str(self.kernel_form.clone())),
             ("pixels", Json::Int(self.pixels as i64)),
             ("spp", Json::Int(self.spp as i64)),
             ("gpu_ms", Json::Num(self.gpu_ms)),
@@ -113,6 +117,7 @@ impl Report {
 pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings, o: &Options) -> Result<Report, RenderError> {
     let integrator = settings.integrator.name();
     let mut r = Renderer::new(ctx, scene, camera, settings)?;
+    let kernel_form = crate::render::kernel_form(r.settings());
     let spp = o.spp.max(1);
     for _ in 0..o.warmup {
         r.reset(None)?;
@@ -147,6 +152,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
     Ok(Report {
         device: ctx.info().name.clone(),
         integrator,
+        kernel_form,
         pixels: camera.width as u64 * camera.height as u64,
         spp,
         gpu_ms: super::median(&gpu),

@@ -101,10 +101,11 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let setup = t_setup.elapsed();
     super::part_args::warn_unaligned(&args.part, &info_settings, r.sample_slices());
     eprintln!(
-        "rendering {}x{} with {} (Ctrl-C: stop after this pass and write what was rendered)",
+        "rendering {}x{} with {} over {} (Ctrl-C: stop after this pass and write what was rendered)",
         camera.width,
         camera.height,
-        integrator.name()
+        integrator.name(),
+        bidir::render::kernel_form(r.settings())
     );
 
     let pixels = settings_window_pixels(&info_settings, &camera);
@@ -148,7 +149,8 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let nan = r.nan_samples()?;
     let spp = r.samples();
     let range = bidir::imaging::SampleRange { start: info_settings.sample_start, end: info_settings.sample_start + spp };
-    let info = super::part_args::render_info(&loaded, &info_settings, range, elapsed.as_secs_f64(), &ctx.info().name);
+    let mut info = super::part_args::render_info(&loaded, &info_settings, range, elapsed.as_secs_f64(), &ctx.info().name);
+    info.set(bidir::imaging::part::keys::KERNELS, bidir::render::kernel_form(r.settings()));
     let crop = info_settings.crop.unwrap_or(imaging::Crop::full(camera.width, camera.height));
     super::part_args::write_outputs(&outputs, &r.sums()?, &img, &info, crop, args.exposure)?;
     println!(

@@ -159,6 +159,18 @@ pub fn plan(parts: &[(PathBuf, PartHeader)]) -> Result<Plan, PartError> {
     let time: f64 = parts.iter().filter_map(|(_, p)| p.info.get(keys::RENDER_TIME)?.parse::<f64>().ok()).sum();
     info.set(keys::RENDER_TIME, format!("{time:.3}"));
     info.set(keys::MERGED_FROM, parts.len().to_string());
+    // Where and how the parts ran may differ (they need not match): every distinct value.
+    for key in [keys::DEVICE, keys::KERNELS] {
+        let mut values: Vec<&str> = Vec::new();
+        for v in parts.iter().filter_map(|(_, p)| p.info.get(key)) {
+            if !values.contains(&v) {
+                values.push(v);
+            }
+        }
+        if !values.is_empty() {
+            info.set(key, values.join("; "));
+        }
+    }
     // Alpha and the AOV layers every part has.
     let first_hit = parts.iter().try_fold(first.first_hit.unwrap_or_default(), |a, (_, p)| p.first_hit.map(|b| a.common(b)));
     let header = PartHeader { info, full: first.full, crop: bounds, ranges: joined, has_light: first.has_light, first_hit };

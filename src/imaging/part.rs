@@ -89,6 +89,9 @@ pub mod keys {
     pub const SPP: &str = "spp";
     pub const RENDER_TIME: &str = "render_time_s";
     pub const DEVICE: &str = "device";
+    /// How the kernels ran (BVH layout, path regeneration): informative, not compared by
+    /// `bidir merge` (parts from different devices may differ here and still merge).
+    pub const KERNELS: &str = "kernels";
     pub const MERGED_FROM: &str = "merged_from";
     /// Keys whose values must agree for parts to merge.
     pub const MUST_MATCH: &[&str] = &[SCENE_HASH, CAMERA, FULL_SIZE, INTEGRATOR, SETTINGS, SEED];
@@ -229,6 +232,7 @@ fn render_info<'a>(attrs: impl Iterator<Item = (&'a exr::meta::attribute::Text, 
         keys::SPP,
         keys::RENDER_TIME,
         keys::DEVICE,
+        keys::KERNELS,
         keys::MERGED_FROM,
     ];
     entries.sort_by_key(|(k, _)| (order.iter().position(|o| o == k).unwrap_or(order.len()), k.clone()));

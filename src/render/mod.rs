@@ -331,6 +331,16 @@ pub fn default_path_regeneration(on_cpu: bool, features: &SceneFeatures) -> bool
     on_cpu || !smooth_specular
 }
 
+/// How the kernels of `settings` run, for logs and image metadata (neither changes the image):
+/// the BVH layout, and for pt/pt-nee whether paths are regenerated.
+pub fn kernel_form(settings: &RenderSettings) -> String {
+    let layout = settings.bvh.layout.name();
+    match (settings.integrator, settings.path_regeneration) {
+        (Integrator::Pt | Integrator::PtNee, Some(r)) => format!("{layout}, path regeneration {}", if r { "on" } else { "off" }),
+        _ => layout.to_string(),
+    }
+}
+
 /// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
 fn on_cpu(ctx: &Context) -> bool {
     ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU
@@ -384,7 +394,8 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => {
-            let regenerate = settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(on_cpu(ctx), &scene.features));
+            // Resolved by `Renderer::new` (`None` only where kernels are built without it).
+            let regenerate = settings.path_regeneration.unwrap_or(true);
             Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler, regenerate)?)
         }
         Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
@@ -409,6 +420,8 @@ impl Renderer {
         }
         let features = SceneFeatures::of(scene);
         settings.bvh.layout = settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), settings.integrator, &features));
+        // Resolved once from what the scene has, so `settings()` says what runs.
+        settings.path_regeneration = Some(settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(on_cpu(ctx), &features)));
         check_layout(settings.bvh.layout)?;
         // VCM's relative radius becomes scene units once, so integrator switches keep it.
         settings.vcm_radius = vcm::VcmRadius::Absolute(settings.vcm_radius.resolve(scene.bounds().diagonal().length()));
