@@ -341,6 +341,12 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
     }
 }
 
+/// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
+/// the default for the device, integrator and scene).
+pub fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrator: Integrator, scene: &Scene) -> BvhLayout {
+    settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), integrator, &SceneFeatures::of(scene)))
+}
+
 /// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
 fn on_cpu(ctx: &Context) -> bool {
     ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU
@@ -419,7 +425,7 @@ impl Renderer {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
         let features = SceneFeatures::of(scene);
-        settings.bvh.layout = settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), settings.integrator, &features));
+        settings.bvh.layout = auto_bvh_layout(ctx, &settings, settings.integrator, scene);
         // Resolved once from what the scene has, so `settings()` says what runs.
         settings.path_regeneration = Some(settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(on_cpu(ctx), &features)));
         check_layout(settings.bvh.layout)?;

@@ -275,15 +275,15 @@ impl State {
         let once = !event.repeat;
         match code {
             KeyCode::Escape => return Ok(false),
-            KeyCode::Digit1 | KeyCode::Numpad1 if once => self.switch(Integrator::Pt)?,
-            KeyCode::Digit2 | KeyCode::Numpad2 if once => self.switch(Integrator::PtNee)?,
+            KeyCode::Digit1 | KeyCode::Numpad1 if once => self.switch(opts, Integrator::Pt)?,
+            KeyCode::Digit2 | KeyCode::Numpad2 if once => self.switch(opts, Integrator::PtNee)?,
             KeyCode::Digit3 | KeyCode::Numpad3 if once => {
                 // BDPT with the join the viewer was started with, else the full join.
                 let join = match opts.settings.integrator {
                     Integrator::Bdpt(j) => j,
                     _ => Join::Full,
                 };
-                self.switch(Integrator::Bdpt(join))?
+                self.switch(opts, Integrator::Bdpt(join))?
             }
             KeyCode::KeyF if once => {
                 self.fly.frame_scene();
@@ -308,12 +308,28 @@ impl State {
         Ok(true)
     }
 
-    /// Switches the integrator; one the device cannot run is reported and skipped.
-    fn switch(&mut self, integrator: Integrator) -> Result<(), ViewerError> {
+    /// Switches the integrator; one the device cannot run is reported and skipped. Where the
+    /// new integrator's default BVH layout differs from the one on the GPU (`--bvh auto` on a
+    /// GPU: the wide BVH for the path tracers in diffuse scenes, the binary one for BDPT), the
+    /// renderer is rebuilt over that layout; otherwise only the kernels change.
+    fn switch(&mut self, opts: &ViewOptions, integrator: Integrator) -> Result<(), ViewerError> {
         if integrator == self.integrator {
             return Ok(());
         }
-        match self.renderer.set_integrator(integrator) {
+        let layout = crate::render::auto_bvh_layout(&self.ctx, &opts.settings, integrator, &opts.scene);
+        let result = if layout == self.renderer.settings().bvh.layout {
+            self.renderer.set_integrator(integrator)
+        } else {
+            let mut settings = opts.settings.clone();
+            settings.integrator = integrator;
+            if opts.settings.rr_depth == crate::render::default_rr_depth(opts.settings.integrator) {
+                settings.rr_depth = crate::render::default_rr_depth(integrator);
+            }
+            Renderer::new(&self.ctx, &opts.scene, &self.fly.camera, settings).map(|r| {
+                self.renderer = r;
+            })
+        };
+        match result {
             Ok(()) => {
                 self.integrator = integrator;
                 self.pacer.restart();
