@@ -309,7 +309,7 @@ fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
 /// binary BVH), the binary one where it has mirrors, glass or GGX lobes (their larger kernels
 /// reached 96 registers over the wide BVH: caustic scene pt-nee 314-412 against 385-490) and
 /// for BDPT and VCM (their camera pass was 13-24 % slower over the wide BVH). The viewer
-/// keeps the layout it started with when it switches integrators.
+/// rebuilds its renderer when a switch of integrator changes this choice.
 pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
     if on_cpu {
         return BvhLayout::Cwbvh;
