@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# The measurements issues #13, #15 and #16 wait for, in one run on a lent GPU (see
-# ../shared/tools/device/README.md): build here, bundle, and run from the repository root
+# H200 measurements for the open issues, in parts of under 10 minutes each (see
+# ../shared/tools/device/README.md): build here, bundle (`../shared/tools/device/bundle.sh
+# --geometry-only sponza`, then strip .device/bidir), and run from the repository root
 #   source .device/env.sh; bash scripts/device/pending-h200.sh PART > $OUT/log 2>&1
-# with .device/bidir (this commit), .device/bidir-base (built at 1e41285, the last commit
-# measured on the H200), optionally .device/bidir-pre (fc01b5d) and .device/ref.exr (../shared/references/cornell-box/
-# reference-bidir-h200.exr). PART is one of: speed, vcm, rough, trav, defaults, final, light-paths (each under 10
-# minutes).
+# with .device/bidir (this commit), .device/bidir-base (a build of the commit to compare
+# with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
+# for some parts, .device/bidir-prev / .device/bidir-pre.
+#
+# Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
+# defaults, final. Still to run (next session, ~3 minutes): light-paths (#16: bdpt with fewer
+# light paths at equal time; bvh2 built at quality 3 on Sponza, #17). Rerun `final` against
+# the commit that changes a default, with BASE = the commit before it.
 set -u
 B=${B:-$PWD/.device/bidir}
 BASE=${BASE:-$PWD/.device/bidir-base}
