@@ -16,7 +16,8 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
         println!("  the driver does not offer VK_KHR_pipeline_executable_properties: no kernel statistics");
         return Ok(());
     }
-    // Each integrator over the BVH layout it renders with by default (`--bvh auto`).
+    // Each integrator over the BVH layout it renders with by default (`--bvh auto`); the BVH is
+    // rebuilt only where that layout changes.
     let integrators = [
         Integrator::Pt,
         Integrator::PtNee,
@@ -24,8 +25,9 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
         Integrator::Bdpt(Join::Full),
         Integrator::Vcm(bidir::render::vcm::VcmMode::FULL),
     ];
+    let mut r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrators[0]))?;
     for integrator in integrators {
-        let r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrator))?;
+        r.switch_integrator(&loaded.scene, &loaded.camera, integrator)?;
         for kernel in r.kernels() {
             let stats = kernel.statistics()?;
             let line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();

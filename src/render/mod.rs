@@ -209,6 +209,17 @@ pub struct RenderSettings {
 }
 
 impl RenderSettings {
+    /// These settings for another integrator: Russian roulette follows the new integrator's
+    /// default unless it was set by hand.
+    pub fn with_integrator(&self, integrator: Integrator) -> RenderSettings {
+        let mut s = self.clone();
+        s.integrator = integrator;
+        if self.rr_depth == default_rr_depth(self.integrator) {
+            s.rr_depth = default_rr_depth(integrator);
+        }
+        s
+    }
+
     pub fn new(integrator: Integrator) -> Self {
         RenderSettings {
             integrator,
@@ -308,8 +319,8 @@ fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
 /// scene has only diffuse surfaces (Cornell box pt-nee 693 against 606 Msamples/s over the
 /// binary BVH), the binary one where it has mirrors, glass or GGX lobes (their larger kernels
 /// reached 96 registers over the wide BVH: caustic scene pt-nee 314-412 against 385-490) and
-/// for BDPT and VCM (their camera pass was 13-24 % slower over the wide BVH). The viewer
-/// rebuilds its renderer when a switch of integrator changes this choice.
+/// for BDPT and VCM (their camera pass was 13-24 % slower over the wide BVH).
+/// [`Renderer::switch_integrator`] rebuilds the renderer where a switch changes this choice.
 pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
     if on_cpu {
         return BvhLayout::Cwbvh;
@@ -343,8 +354,8 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
 
 /// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
 /// the default for the device, integrator and scene).
-pub fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrator: Integrator, scene: &Scene) -> BvhLayout {
-    settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), integrator, &SceneFeatures::of(scene)))
+fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
+    settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), integrator, features))
 }
 
 /// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
@@ -425,7 +436,7 @@ impl Renderer {
             return Err(RenderError::EmptyImage(camera.name.clone(), camera.width, camera.height));
         }
         let features = SceneFeatures::of(scene);
-        settings.bvh.layout = auto_bvh_layout(ctx, &settings, settings.integrator, scene);
+        settings.bvh.layout = auto_bvh_layout(ctx, &settings, settings.integrator, &features);
         // Resolved once from what the scene has, so `settings()` says what runs.
         settings.path_regeneration = Some(settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(on_cpu(ctx), &features)));
         check_layout(settings.bvh.layout)?;
@@ -560,12 +571,7 @@ impl Renderer {
     /// the film. On error the renderer is unchanged.
     pub fn set_integrator(&mut self, integrator: Integrator) -> Result<(), RenderError> {
         let pixels = self.camera.size.x * self.camera.size.y;
-        let mut settings = self.settings.clone();
-        settings.integrator = integrator;
-        // Russian roulette follows the new integrator's default unless it was set by hand.
-        if settings.rr_depth == default_rr_depth(self.settings.integrator) {
-            settings.rr_depth = default_rr_depth(integrator);
-        }
+        let settings = self.settings.with_integrator(integrator);
         let (x0, y0) = (self.camera.window_x, self.camera.window_y);
         let window = Crop { x0, y0, x1: x0 + self.film.width, y1: y0 + self.film.height };
         let slices = sample_slices(&self.ctx, &settings, slice_pixels(&settings, pixels, window));
@@ -581,6 +587,18 @@ impl Renderer {
         if let Some(f) = &self.first_hit {
             f.clear(&self.ctx)?;
         }
+        Ok(())
+    }
+
+    /// Switches to another integrator as [`Renderer::set_integrator`] does, except that where
+    /// the new integrator's BVH layout (`--bvh`, or its default for the device and scene)
+    /// differs from the one on the GPU, the renderer is rebuilt over that layout from `scene`
+    /// and `camera` (the ones it renders). On error the renderer is unchanged.
+    pub fn switch_integrator(&mut self, scene: &Scene, camera: &Camera, integrator: Integrator) -> Result<(), RenderError> {
+        if auto_bvh_layout(&self.ctx, &self.settings, integrator, &SceneFeatures::of(scene)) == self.settings.bvh.layout {
+            return self.set_integrator(integrator);
+        }
+        *self = Renderer::new(&self.ctx, scene, camera, self.settings.with_integrator(integrator))?;
         Ok(())
     }
 

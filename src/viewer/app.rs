@@ -308,28 +308,13 @@ impl State {
         Ok(true)
     }
 
-    /// Switches the integrator; one the device cannot run is reported and skipped. Where the
-    /// new integrator's default BVH layout differs from the one on the GPU (`--bvh auto` on a
-    /// GPU: the wide BVH for the path tracers in diffuse scenes, the binary one for BDPT), the
-    /// renderer is rebuilt over that layout; otherwise only the kernels change.
+    /// Switches the integrator (over its own default BVH layout: `Renderer::switch_integrator`);
+    /// one the device cannot run is reported and skipped.
     fn switch(&mut self, opts: &ViewOptions, integrator: Integrator) -> Result<(), ViewerError> {
         if integrator == self.integrator {
             return Ok(());
         }
-        let layout = crate::render::auto_bvh_layout(&self.ctx, &opts.settings, integrator, &opts.scene);
-        let result = if layout == self.renderer.settings().bvh.layout {
-            self.renderer.set_integrator(integrator)
-        } else {
-            let mut settings = opts.settings.clone();
-            settings.integrator = integrator;
-            if opts.settings.rr_depth == crate::render::default_rr_depth(opts.settings.integrator) {
-                settings.rr_depth = crate::render::default_rr_depth(integrator);
-            }
-            Renderer::new(&self.ctx, &opts.scene, &self.fly.camera, settings).map(|r| {
-                self.renderer = r;
-            })
-        };
-        match result {
+        match self.renderer.switch_integrator(&opts.scene, &self.fly.camera, integrator) {
             Ok(()) => {
                 self.integrator = integrator;
                 self.pacer.restart();
