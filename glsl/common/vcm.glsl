@@ -17,6 +17,19 @@
 // Merging alone (progressive photon mapping). Spelled out rather than !VCM_CONNECTS: shaderc's
 // optimiser loses a LogicalNot of a specialisation-constant expression.
 #define VCM_PHOTON_MAPPING (VCM != 0u && (VCM & VCM_CONNECT) == 0u)
+// Where merging is a strategy. VCM_MERGE_ALL: at every continuous camera vertex (Georgiev
+// 2012). Without it (the default) only at a path's first continuous vertex seen from the eye,
+// the vertex after a chain of delta (or rough-glass) scatterings, as photon mapping's final
+// gather: a path has one merging strategy instead of one per vertex. Both sides know which
+// vertex that is: on a camera subpath it is the vertex reached by delta scatterings only; on a
+// light subpath only the vertex joined to the eye (t = 1) can be it, so light subpaths carry
+// no merging terms in dVC and dVM (vcm_light_merge_terms() = 0) and every connection of a
+// light vertex to a camera vertex has none at the light vertex.
+#define VCM_MERGE_EVERYWHERE ((VCM & VCM_MERGE_ALL) != 0u)
+// 1 where the light subpaths' recursion counts merging at their vertices, else 0.
+float vcm_light_merge_terms() {
+    return VCM_MERGE_EVERYWHERE ? 1.0 : 0.0;
+}
 
 // The report's "misVmWeightFactor" (mis(eta_VCM), 0 without merging) and
 // "misVcWeightFactor" (mis(1 / eta_VCM), 0 without connections).

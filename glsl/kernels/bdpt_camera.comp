@@ -7,7 +7,8 @@
 // k-step's k / stored, the cache's k / total), so with the fixed full-BDPT MIS weights the
 // estimator stays unbiased whichever join runs (docs/integrators.md).
 // With SPEC_VCM (`--integrator vcm`, vcm.glsl) the same pass also carries dVM, adds the
-// merging terms to every weight and merges at each continuous vertex (vcm_merge.glsl).
+// merging terms to every weight and merges at the first continuous camera vertex (or, with
+// VCM_MERGE_ALL, at each; vcm.glsl, vcm_merge.glsl).
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -50,7 +51,9 @@ vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_re
 // Connection of camera vertex (p, ns_f, ng_f, continuous BSDF c, wo toward the previous
 // camera vertex, sigma_a on the side it was reached from, d_vcm, d_vc) to light vertex y.
 // Both ends connect on the side their paths arrived on; either may lie inside a volume.
-vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm, LightVertex y, inout uvec2 stats) {
+// vm_camera / vm_light: the merging factor where merging at the camera / light vertex is a
+// strategy of this path, else 0 (vcm.glsl).
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, LightVertex y, inout uvec2 stats) {
     vec3 v = y.pos - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
@@ -64,8 +67,8 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
     vec3 beta_f_y = light_vertex_f(y, -dir, light_dir_pdf_w, light_rev_pdf_w);
     float cam_dir_pdf_a = cam_dir_pdf_w * cos_y / dist2;
     float light_dir_pdf_a = light_dir_pdf_w * cos_c / dist2;
-    float w_light = mis(cam_dir_pdf_a) * (vm + y.d_vcm + y.d_vc * mis(light_rev_pdf_w));
-    float w_camera = mis(light_dir_pdf_a) * (vm + d_vcm + d_vc * mis(cam_rev_pdf_w));
+    float w_light = mis(cam_dir_pdf_a) * (vm_light + y.d_vcm + y.d_vc * mis(light_rev_pdf_w));
+    float w_camera = mis(light_dir_pdf_a) * (vm_camera + d_vcm + d_vc * mis(cam_rev_pdf_w));
     float g = cos_c * cos_y / dist2;
     if (HAS_NORMALS != 0u) {
         g *= shading_normal_adjoint(y.wi, -dir, y.ns, y.ng);
@@ -95,6 +98,11 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     float d_vc = 0.0;
     float d_vm = 0.0;
     VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
+    // Merging at a light vertex joined to this camera vertex is a strategy only when merging
+    // runs everywhere; at this camera vertex, also while every scattering so far was a delta
+    // one (`first_continuous`; vcm.glsl).
+    float vm_light = k.vm * vcm_light_merge_terms();
+    bool first_continuous = true;
     uvec2 lc = light_counts[path];   // (stored, seen) of this sample's light path
     uint base = path * pc.light_path_len;
     vec3 sigma_near = vec3(0.0); // sigma_a where the next segment leaves its surface (volume.glsl)
@@ -170,7 +178,9 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             bsdf.pick = 0.0;
         }
         vec3 wo = -d;
-        if (VCM_MERGES && bsdf.pick > 0.0) {
+        bool merge_here = VCM_MERGE_EVERYWHERE || first_continuous;
+        float vm_camera = merge_here ? k.vm : 0.0;
+        if (VCM_MERGES && merge_here && bsdf.pick > 0.0) {
             float r = vcm_radius(pc.sample_base);
             vec3 merged = vcm_merge(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vm, depth, r, k);
             radiance += beta * merged / (PI * r * r * float(pc.light_path_total));
@@ -189,7 +199,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 if (cos_s > 0.0 && dot(ng_f, ps.w) > 0.0 && max3(ps.li) > 0.0) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, ps.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
-                    float w_camera = mis(ps.emission_over_direct * cos_s) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    float w_camera = mis(ps.emission_over_direct * cos_s) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * volume_transmittance(sigma_in, ps.dist) * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
                     if (max3(c) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
                         radiance += c;
@@ -204,7 +214,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, es.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / direct_pdf_w);
-                    float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * volume_transmittance(sigma_in, 3.0e38) * f * es.le * (cos_s / (direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
                         radiance += c;
@@ -224,9 +234,9 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, wi, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
-                    // With merging, k.vm counts merging at this vertex (a light path's first
-                    // vertex found here).
-                    float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (k.vm + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    // With merging, vm_camera counts merging at this vertex (a light path's
+                    // first vertex found here).
+                    float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     // The shadow ray leaves on the side the path arrived on and reaches the
                     // emitter's front: only this end can lie inside a volume.
                     vec3 c = beta * volume_transmittance(sigma_in, sqrt(dist2)) * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
@@ -255,7 +265,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                             continue;
                         }
                         float inv_q = scale * float(c.y) / float(c.x);
-                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, k.vm, y, stats);
+                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, y, stats);
                     }
                 }
             } else if (lc.x > 0u) {
@@ -270,7 +280,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                         continue;
                     }
-                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, k.vm, y, stats);
+                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, y, stats);
                 }
             }
         }
@@ -298,11 +308,13 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             }
             float cos_out = dot(dn, ns_f);
             beta *= f * (cos_out / pdf_fwd_w);
+            // The merging terms of this vertex: 1 in dVM, k.vm in dVC, where it is one.
             if (VCM != 0u) {
-                d_vm = mis(cos_out / pdf_fwd_w) * (d_vm * mis(pdf_rev_w) + d_vcm * k.vc + 1.0);
+                d_vm = mis(cos_out / pdf_fwd_w) * (d_vm * mis(pdf_rev_w) + d_vcm * k.vc + (merge_here ? 1.0 : 0.0));
             }
-            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + k.vm);
+            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + vm_camera);
             d_vcm = mis(1.0 / pdf_fwd_w);
+            first_continuous = false;
             d = dn;
         } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
             // Rough glass: never connected, so the strategies whose connecting edge touches

@@ -247,10 +247,14 @@ void main() {
             }
             float cos_out = dot(dn, ns_f);
             beta *= f * (cos_out / pdf_fwd_w);
+            // Merging at this vertex: 1 (dVM) and k.vm (dVC) where light vertices can be
+            // merged at (vcm.glsl, VCM_MERGE_EVERYWHERE); the vertex joined to the eye adds
+            // its own (connect_to_camera's vm).
+            float merge_here = vcm_light_merge_terms();
             if (VCM != 0u) {
-                d_vm = mis(cos_out / pdf_fwd_w) * (d_vm * mis(pdf_rev_w) + d_vcm * k.vc + 1.0);
+                d_vm = mis(cos_out / pdf_fwd_w) * (d_vm * mis(pdf_rev_w) + d_vcm * k.vc + merge_here);
             }
-            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + k.vm);
+            d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + k.vm * merge_here);
             d_vcm = mis(1.0 / pdf_fwd_w);
             d = dn;
         } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {

@@ -168,5 +168,22 @@ light-paths)
   done
   "$B" bench traversal "${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}" --camera CameraMain --quality 3 2>&1 | grep -E "build|primary|shadow|diffuse"
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths" >&2; exit 2 ;;
+vcm-first)
+  # #15 (session 7): merging at the first continuous camera vertex (`vcm`) against merging at
+  # every one (`vcm:merge-all`, session 6's vcm) and bdpt: cost per 1024 spp, then the
+  # equal-time charts of docs/results.md, "VCM on the H200", with both.
+  SDS="assets/scenes/sds/sds.obj --eye 0.9,1.3,-3.2 --target -0.4,0.4,0 --up 0,1,0 --fov 50 --width 256 --height 256"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for i in bdpt vcm vcm:merge-all bdpt vcm vcm:merge-all; do
+    echo "== $i"
+    "$B" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples|bdpt_|merge"
+  done
+  for t in ${TIMES:-1 10}; do
+    "$B" converge --reference "$REF" --integrators pt-nee,bdpt,vcm,vcm:merge-all --time $t --seeds 2 --out "$OUT/cornell-$t" 2>&1 | grep -iE "rmse|stability"
+    "$B" converge $SDS --reference assets/scenes/sds/reference-h200-vcm.exr --integrators pt-nee,bdpt,vcm,vcm:merge-all --time $t --seeds 2 --out "$OUT/sds-$t" 2>&1 | grep -iE "rmse|stability"
+    "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators pt-nee,bdpt,vcm,vcm:merge-all --time $t --seeds 2 --out "$OUT/caustic-$t" 2>&1 | grep -iE "rmse|stability"
+  done
+  "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-90
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first" >&2; exit 2 ;;
 esac

@@ -25,7 +25,7 @@ pub struct ConvergeArgs {
     #[arg(long, value_name = "REF.exr")]
     pub reference: PathBuf,
     /// Integrators, rendered one after the other: pt | pt-nee | bdpt:full | bdpt:single |
-    /// bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm | vcm:no-merge | vcm:no-connect
+    /// bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm | vcm:merge-all | vcm:no-merge | vcm:no-connect
     #[arg(long, value_delimiter = ',', default_value = "pt,pt-nee,bdpt:lvc,bdpt:full,bdpt:single,bdpt:k=4")]
     pub integrators: Vec<Integrator>,
     /// Render-time budget per integrator, in seconds. Render time is the sum of the

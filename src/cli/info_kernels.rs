@@ -24,6 +24,7 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
         Integrator::Bdpt(Join::Lvc(0)),
         Integrator::Bdpt(Join::Full),
         Integrator::Vcm(bidir::render::vcm::VcmMode::FULL),
+        Integrator::Vcm(bidir::render::vcm::VcmMode::MERGE_ALL),
     ];
     let mut r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrators[0]))?;
     for integrator in integrators {

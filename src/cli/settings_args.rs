@@ -9,7 +9,8 @@ use bidir::render::{Integrator, Join, RenderSettings, Sampler};
 #[derive(clap::Args, Debug)]
 pub struct IntegratorArgs {
     /// pt | pt-nee | bdpt (= bdpt:lvc) | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N
-    /// | vcm (vertex connection and merging)
+    /// | vcm (vertex connection and merging; merging at the first continuous camera vertex) |
+    /// vcm:merge-all (merging at every one)
     #[arg(long, default_value = "pt-nee")]
     pub integrator: Integrator,
     /// BDPT join (overrides the one in --integrator): full | single | k=N | lvc | lvc=N.

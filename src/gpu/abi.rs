@@ -252,8 +252,9 @@ gpu_consts! {
     pub const SPEC_HAS_VOLUME: u32 = 21;
 
     // ---- Vertex connection and merging (docs/integrators.md, src/render/vcm.rs) ------------
-    /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT (the BDPT kernels
-    /// carry dVM and merge only then).
+    /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT, and where merging
+    /// runs (VCM_MERGE_ALL: at every continuous camera vertex; without it at the first one
+    /// only). The BDPT kernels carry dVM and merge only with VCM_MERGE.
     pub const SPEC_VCM: u32 = 40;
     /// First iteration's merge radius r_1 (f32 bits, scene units).
     pub const SPEC_VCM_RADIUS: u32 = 41;
@@ -263,6 +264,7 @@ gpu_consts! {
     pub const SPEC_MERGE_GRID_BITS: u32 = 43;
     pub const VCM_MERGE: u32 = 1;
     pub const VCM_CONNECT: u32 = 2;
+    pub const VCM_MERGE_ALL: u32 = 4;
     /// Merge grid: per hash cell, after the scatter, the end of its entries in
     /// BIND_MERGE_ITEMS (its start is the previous cell's end).
     pub const BIND_MERGE_CELLS: u32 = 33;

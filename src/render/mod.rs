@@ -62,10 +62,11 @@ impl Integrator {
             Integrator::Pt => "pt".into(),
             Integrator::PtNee => "pt-nee".into(),
             Integrator::Bdpt(j) => format!("bdpt:{}", j.name()),
-            Integrator::Vcm(m) => match (m.merge, m.connect) {
-                (true, true) => "vcm".into(),
-                (false, _) => "vcm:no-merge".into(),
-                (true, false) => "vcm:no-connect".into(),
+            Integrator::Vcm(m) => match (m.merge, m.connect, m.normalized().merge_all) {
+                (true, true, false) => "vcm".into(),
+                (true, true, true) => "vcm:merge-all".into(),
+                (false, _, _) => "vcm:no-merge".into(),
+                (true, false, _) => "vcm:no-connect".into(),
             },
         }
     }
@@ -86,12 +87,13 @@ impl std::str::FromStr for Integrator {
             // The GPU-native variant won on RMSE against time (docs/integrators.md).
             "bdpt" => Ok(Integrator::Bdpt(Join::Lvc(0))),
             "vcm" => Ok(Integrator::Vcm(vcm::VcmMode::FULL)),
-            "vcm:no-merge" => Ok(Integrator::Vcm(vcm::VcmMode { merge: false, connect: true })),
-            "vcm:no-connect" => Ok(Integrator::Vcm(vcm::VcmMode { merge: true, connect: false })),
+            "vcm:merge-all" => Ok(Integrator::Vcm(vcm::VcmMode::MERGE_ALL)),
+            "vcm:no-merge" => Ok(Integrator::Vcm(vcm::VcmMode::NO_MERGE)),
+            "vcm:no-connect" => Ok(Integrator::Vcm(vcm::VcmMode::NO_CONNECT)),
             _ => match s.strip_prefix("bdpt:") {
                 Some(j) => Ok(Integrator::Bdpt(j.parse()?)),
                 None => Err(format!(
-                    "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm)"
+                    "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm | vcm:merge-all | vcm:no-merge | vcm:no-connect)"
                 )),
             },
         }

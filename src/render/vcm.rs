@@ -14,14 +14,34 @@ pub struct VcmMode {
     pub merge: bool,
     /// Vertex connection: BDPT's strategies (light sampling, connections, light tracing).
     pub connect: bool,
+    /// Merging at every continuous camera vertex (Georgiev et al. 2012) rather than at the
+    /// first one only, after delta scatterings (`vcm:merge-all`; glsl/common/vcm.glsl).
+    /// Only meaningful with both strategies: photon mapping merges at the first vertex anyway.
+    pub merge_all: bool,
 }
 
 impl VcmMode {
-    pub const FULL: VcmMode = VcmMode { merge: true, connect: true };
+    /// `vcm`: both strategies, merging at the first continuous camera vertex.
+    pub const FULL: VcmMode = VcmMode { merge: true, connect: true, merge_all: false };
+    /// `vcm:merge-all`: both strategies, merging at every continuous camera vertex.
+    pub const MERGE_ALL: VcmMode = VcmMode { merge: true, connect: true, merge_all: true };
+    /// `vcm:no-merge`: the connections alone (BDPT's image).
+    pub const NO_MERGE: VcmMode = VcmMode { merge: false, connect: true, merge_all: false };
+    /// `vcm:no-connect`: progressive photon mapping.
+    pub const NO_CONNECT: VcmMode = VcmMode { merge: true, connect: false, merge_all: false };
+
+    /// The same mode with `merge_all` cleared where it changes nothing (one name, one
+    /// specialisation per distinct estimator).
+    pub fn normalized(self) -> VcmMode {
+        VcmMode { merge_all: self.merge_all && self.merge && self.connect, ..self }
+    }
 
     /// The value of `SPEC_VCM`.
     pub fn spec_value(self) -> u32 {
-        (if self.merge { abi::VCM_MERGE } else { 0 }) | (if self.connect { abi::VCM_CONNECT } else { 0 })
+        let m = self.normalized();
+        (if m.merge { abi::VCM_MERGE } else { 0 })
+            | (if m.connect { abi::VCM_CONNECT } else { 0 })
+            | (if m.merge_all { abi::VCM_MERGE_ALL } else { 0 })
     }
 }
 
