@@ -18,14 +18,22 @@
 // optimiser loses a LogicalNot of a specialisation-constant expression.
 #define VCM_PHOTON_MAPPING (VCM != 0u && (VCM & VCM_CONNECT) == 0u)
 // Where merging is a strategy. VCM_MERGE_ALL: at every continuous camera vertex (Georgiev
-// 2012). Without it (the default) only at a path's first continuous vertex seen from the eye,
-// the vertex after a chain of delta (or rough-glass) scatterings, as photon mapping's final
-// gather: a path has one merging strategy instead of one per vertex. Both sides know which
-// vertex that is: on a camera subpath it is the vertex reached by delta scatterings only; on a
-// light subpath only the vertex joined to the eye (t = 1) can be it, so light subpaths carry
-// no merging terms in dVC and dVM (vcm_light_merge_terms() = 0) and every connection of a
-// light vertex to a camera vertex has none at the light vertex.
+// 2012). Without it (the default) only at a camera path's first vertex that scatters through
+// a continuous lobe, reached from the eye by delta (or rough-glass) scatterings only, as
+// photon mapping's visible point: a path has one merging strategy instead of one per vertex.
+// Both sides know which vertex that is: on a camera subpath the vertex where the first
+// continuous lobe is taken (merging is evaluated at each vertex with a continuous component
+// until then, `merge_pending`); on a light subpath only the vertex joined to the eye (t = 1)
+// can be it, so light subpaths carry no merging terms in dVC and dVM
+// (vcm_light_merge_terms() = 0) and a light vertex joined to a camera vertex never is it.
+// Photon mapping (no connections) follows the same rule without weights.
 #define VCM_MERGE_EVERYWHERE ((VCM & VCM_MERGE_ALL) != 0u)
+// Merging runs apart from the camera pass (vcm_merge.comp, over the vertex the camera pass
+// records): set by the host for full VCM at the first continuous vertex in scenes where no
+// material mixes a continuous lobe with a delta one, so that a camera sample merges at most
+// once (SceneFeatures::mixed_lobes; elsewhere a path may merge at each mixed vertex it
+// leaves by a delta lobe, and merging stays in the camera pass).
+#define VCM_MERGE_DEFERRED ((VCM & VCM_MERGE_APART) != 0u)
 // 1 where the light subpaths' recursion counts merging at their vertices, else 0.
 float vcm_light_merge_terms() {
     return VCM_MERGE_EVERYWHERE ? 1.0 : 0.0;

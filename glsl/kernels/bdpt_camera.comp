@@ -8,7 +8,8 @@
 // estimator stays unbiased whichever join runs (docs/integrators.md).
 // With SPEC_VCM (`--integrator vcm`, vcm.glsl) the same pass also carries dVM, adds the
 // merging terms to every weight and merges at the first continuous camera vertex (or, with
-// VCM_MERGE_ALL, at each; vcm.glsl, vcm_merge.glsl).
+// VCM_MERGE_ALL, at each; vcm.glsl, vcm_merge.glsl). Full VCM at the first vertex records that
+// vertex (BIND_MERGE_QUERIES) for vcm_merge.comp instead of merging here.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -35,6 +36,10 @@ layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[
 layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 #include "vcm_merge.glsl"
+layout(std430, binding = BIND_MERGE_QUERIES) writeonly buffer MergeQueries { MergeQuery merge_queries[]; };
+// This invocation's camera sample: its entry in merge_queries, and whether it recorded one.
+uint g_query = 0u;
+bool g_queued = false;
 
 // The BSDF of light vertex y toward direction w and its pdfs (forward: sampling w from y.wi;
 // reverse: y.wi from w). Without GGX lobes y stores beta f and its lobe probability.
@@ -99,10 +104,10 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     float d_vm = 0.0;
     VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
     // Merging at a light vertex joined to this camera vertex is a strategy only when merging
-    // runs everywhere; at this camera vertex, also while every scattering so far was a delta
-    // one (`first_continuous`; vcm.glsl).
+    // runs everywhere; at this camera vertex, also while every earlier vertex scattered
+    // through a delta lobe (`merge_pending`; vcm.glsl).
     float vm_light = k.vm * vcm_light_merge_terms();
-    bool first_continuous = true;
+    bool merge_pending = true;
     uvec2 lc = light_counts[path];   // (stored, seen) of this sample's light path
     uint base = path * pc.light_path_len;
     vec3 sigma_near = vec3(0.0); // sigma_a where the next segment leaves its surface (volume.glsl)
@@ -178,12 +183,18 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             bsdf.pick = 0.0;
         }
         vec3 wo = -d;
-        bool merge_here = VCM_MERGE_EVERYWHERE || first_continuous;
+        bool merge_here = VCM_MERGE_EVERYWHERE || merge_pending;
         float vm_camera = merge_here ? k.vm : 0.0;
         if (VCM_MERGES && merge_here && bsdf.pick > 0.0) {
-            float r = vcm_radius(pc.sample_base);
-            vec3 merged = vcm_merge(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vm, depth, r, k);
-            radiance += beta * merged / (PI * r * r * float(pc.light_path_total));
+            if (VCM_MERGE_DEFERRED) {
+                // No mixed materials: this vertex takes its continuous lobe, the only merge.
+                merge_queries[g_query] = MergeQuery(s.p, d_vcm, ns_f, d_vm, ng_f, depth, wo, s.material, beta, 0u, s.uv, 0u, 0u);
+                g_queued = true;
+            } else {
+                float r = vcm_radius(pc.sample_base);
+                vec3 merged = vcm_merge(s.p, ns_f, ng_f, wo, bsdf, d_vcm, d_vm, depth, r, k);
+                radiance += beta * merged / (PI * r * r * float(pc.light_path_total));
+            }
         }
         if (VCM_CONNECTS && bsdf.pick > 0.0) {
             // s = 1: the environment (probability env.pick; its "point" is a direction, the
@@ -314,7 +325,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             }
             d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + vm_camera);
             d_vcm = mis(1.0 / pdf_fwd_w);
-            first_continuous = false;
+            merge_pending = false; // the first continuous scattering: no merging after it
             d = dn;
         } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
             // Rough glass: never connected, so the strategies whose connecting edge touches
@@ -385,7 +396,11 @@ void main() {
     uint image_pixel = px.y * pc.camera.size.x + px.x;
     Rng rng = rng_init(image_pixel, pc.sample_base + slice, pc.seed);
     vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
+    g_query = slice * pixels + pixel;
     vec3 l = camera_path(slice * pc.camera.size.x * pc.camera.size.y + image_pixel, xy, rng);
+    if (VCM_MERGE_DEFERRED && !g_queued) {
+        merge_queries[g_query].depth = 0u; // nothing to merge for this sample
+    }
     vec4 add = vec4(l, 1.0);
     if (any(isnan(l)) || any(isinf(l))) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);

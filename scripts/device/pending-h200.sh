@@ -156,6 +156,7 @@ final)
   "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-70
   ;;
 light-paths)
+  # (run in session 7)
   # #16: fewer light paths per iteration for bdpt (the light pass is a third of its GPU time
   # on the Cornell box; per sample the Cornell image is as good with a quarter of them on
   # lavapipe). Equal time, Cornell box and caustic scene, ratio 1 / 0.5 / 0.25.
@@ -167,6 +168,7 @@ light-paths)
     "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators bdpt --light-paths $lp --time 2 --seeds 2 --out "$OUT/caustic-lp$lp" 2>&1 | grep -iE "stability"
   done
   "$B" bench traversal "${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}" --camera CameraMain --quality 3 2>&1 | grep -E "build|primary|shadow|diffuse"
+  find "$OUT" \( -name '*.exr' -o -name '*.png' -o -name '*.svg' \) -delete
   ;;
 vcm-first)
   # #15 (session 7): merging at the first continuous camera vertex (`vcm`) against merging at
@@ -184,6 +186,8 @@ vcm-first)
     "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators pt-nee,bdpt,vcm,vcm:merge-all --time $t --seeds 2 --out "$OUT/caustic-$t" 2>&1 | grep -iE "rmse|stability"
   done
   "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-90
+  # The device tool brings back a limited number of files: keep the CSVs (charts: bidir chart).
+  find "$OUT" \( -name '*.exr' -o -name '*.png' -o -name '*.svg' \) -delete
   ;;
 *) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first" >&2; exit 2 ;;
 esac

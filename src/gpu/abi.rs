@@ -254,7 +254,7 @@ gpu_consts! {
     // ---- Vertex connection and merging (docs/integrators.md, src/render/vcm.rs) ------------
     /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT, and where merging
     /// runs (VCM_MERGE_ALL: at every continuous camera vertex; without it at the first one
-    /// only). The BDPT kernels carry dVM and merge only with VCM_MERGE.
+    /// only), and VCM_MERGE_APART. The BDPT kernels carry dVM and merge only with VCM_MERGE.
     pub const SPEC_VCM: u32 = 40;
     /// First iteration's merge radius r_1 (f32 bits, scene units).
     pub const SPEC_VCM_RADIUS: u32 = 41;
@@ -265,11 +265,17 @@ gpu_consts! {
     pub const VCM_MERGE: u32 = 1;
     pub const VCM_CONNECT: u32 = 2;
     pub const VCM_MERGE_ALL: u32 = 4;
+    /// Merging runs in its own pass after the camera pass (vcm_merge.comp; set by the host,
+    /// `VcmMode::merges_apart`, where a camera sample merges at most once).
+    pub const VCM_MERGE_APART: u32 = 8;
     /// Merge grid: per hash cell, after the scatter, the end of its entries in
     /// BIND_MERGE_ITEMS (its start is the previous cell's end).
     pub const BIND_MERGE_CELLS: u32 = 33;
     /// Merge grid: the cached light vertices sorted by hash cell (`MergeItem`s).
     pub const BIND_MERGE_ITEMS: u32 = 34;
+    /// VCM merging at the first continuous camera vertex: per camera sample (slice x pixels
+    /// + pixel) the vertex the camera pass left for vcm_merge.comp (`MergeQuery`).
+    pub const BIND_MERGE_QUERIES: u32 = 35;
     /// Trace kernels (not persistent): rays each invocation traces, strided by the launch's
     /// invocation count (default 1). Numbered apart from the scene features' ids.
     pub const SPEC_RAYS_PER_INVOCATION: u32 = 32;
@@ -646,6 +652,34 @@ gpu_structs! {
         pub pos: Vec3,
         /// Index of the vertex in BIND_LIGHT_VERTICES.
         pub slot: u32,
+    }
+
+    /// A camera vertex waiting to be merged (VCM merging at the first continuous camera
+    /// vertex: the camera pass records it, vcm_merge.comp merges it and adds the result to
+    /// the sample's pixel).
+    pub struct MergeQuery (96 bytes) {
+        pub pos: Vec3,
+        /// dVCM of the camera subpath at the vertex.
+        pub d_vcm: f32,
+        /// Shading normal facing `wo`.
+        pub ns: Vec3,
+        /// dVM of the camera subpath at the vertex.
+        pub d_vm: f32,
+        /// Geometric normal facing `wo`.
+        pub ng: Vec3,
+        /// Segments from the eye to the vertex; 0: this sample has no vertex to merge.
+        pub depth: u32,
+        /// Unit direction toward the previous camera vertex.
+        pub wo: Vec3,
+        /// Material index of the vertex.
+        pub material: u32,
+        /// Camera-path throughput arriving at the vertex.
+        pub beta: Vec3,
+        pub pad0: u32,
+        /// Texture coordinates of the vertex.
+        pub uv: Vec2,
+        pub pad1: u32,
+        pub pad2: u32,
     }
 
     /// Push constants of the BDPT kernels.

@@ -27,6 +27,10 @@ pub struct SceneFeatures {
     pub rough_glass: bool,
     /// Absorbing volumes inside closed meshes (KHR_materials_volume).
     pub volume: bool,
+    /// Some material's lobe choice can take a continuous lobe or a delta (or rough-glass)
+    /// one ([`Material::mixes_lobes`]); not a kernel specialisation of its own: VCM merges in
+    /// the camera pass then (`VcmMode::merges_apart`).
+    pub mixed_lobes: bool,
 }
 
 impl SceneFeatures {
@@ -65,6 +69,7 @@ impl SceneFeatures {
             punctual: !scene.punctual_lights.is_empty(),
             rough_glass: m.iter().any(Material::has_rough_glass),
             volume: m.iter().any(Material::has_volume),
+            mixed_lobes: m.iter().any(Material::mixes_lobes),
         }
     }
 
@@ -82,6 +87,7 @@ impl SceneFeatures {
             normal_maps: true,
             rough_glass: true,
             volume: true,
+            mixed_lobes: true,
             ..self
         }
     }

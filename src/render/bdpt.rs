@@ -146,7 +146,7 @@ impl Bdpt {
                 return Err(RenderError::Unsupported(format!("the VCM merge radius must be positive, not {}", v.radius)));
             }
             super::vcm::check_alpha(v.alpha).map_err(RenderError::Unsupported)?;
-            specs.extend(super::vcm::specs(v.mode, v.radius, v.alpha, super::vcm::grid_bits(capacity)));
+            specs.extend(super::vcm::specs(v.mode, scene.features.mixed_lobes, v.radius, v.alpha, super::vcm::grid_bits(capacity)));
         }
         let vertices = ctx.create_buffer("bdpt.light_vertices", bytes, Memory::Device).map_err(|e| match e {
             VkError::Alloc { bytes, .. } => {
@@ -165,7 +165,10 @@ impl Bdpt {
             _ => None,
         };
         let grid = match vcm {
-            Some(v) if v.mode.merge => Some(super::vcm::MergeGrid::new(ctx, &specs, capacity, super::vcm::grid_bits(capacity))?),
+            Some(v) if v.mode.merge => {
+                let queries = if v.mode.merges_apart(scene.features.mixed_lobes) { pixels.saturating_mul(camera_samples) } else { 0 };
+                Some(super::vcm::MergeGrid::new(ctx, &specs, capacity, super::vcm::grid_bits(capacity), queries)?)
+            }
             _ => None,
         };
         let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4) + grid.as_ref().map_or(0, |g| g.bytes);
@@ -209,6 +212,7 @@ impl Bdpt {
                 // The camera kernel declares the merge grid; BDPT never reads it.
                 binds.push(Bind::buffer(abi::BIND_MERGE_CELLS, &self.lvc_offsets));
                 binds.push(Bind::buffer(abi::BIND_MERGE_ITEMS, &self.lvc_offsets));
+                binds.push(Bind::buffer(abi::BIND_MERGE_QUERIES, &self.lvc_offsets));
             }
         }
         let total = push.light_path_total;
@@ -224,6 +228,9 @@ impl Bdpt {
         let samples = push.camera_samples.max(1);
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
         rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])?;
+        if let Some(grid) = &self.grid {
+            grid.record_merge(rec, &binds, push, film.width * film.height * samples)?;
+        }
         film.record_add_slices(rec, samples)
     }
 }

@@ -36,12 +36,22 @@ impl VcmMode {
         VcmMode { merge_all: self.merge_all && self.merge && self.connect, ..self }
     }
 
-    /// The value of `SPEC_VCM`.
-    pub fn spec_value(self) -> u32 {
+    /// Whether merging runs in its own pass after the camera pass (vcm_merge.comp): full VCM
+    /// merging at the first continuous camera vertex in a scene where no material mixes a
+    /// continuous lobe with a delta one (`mixed_lobes`, `SceneFeatures::mixed_lobes`), so that
+    /// a camera sample merges at most once.
+    pub fn merges_apart(self, mixed_lobes: bool) -> bool {
+        let m = self.normalized();
+        m.merge && m.connect && !m.merge_all && !mixed_lobes
+    }
+
+    /// The value of `SPEC_VCM` in a scene with or without `mixed_lobes`.
+    pub fn spec_value(self, mixed_lobes: bool) -> u32 {
         let m = self.normalized();
         (if m.merge { abi::VCM_MERGE } else { 0 })
             | (if m.connect { abi::VCM_CONNECT } else { 0 })
             | (if m.merge_all { abi::VCM_MERGE_ALL } else { 0 })
+            | (if self.merges_apart(mixed_lobes) { abi::VCM_MERGE_APART } else { 0 })
     }
 }
 
@@ -96,9 +106,9 @@ pub fn check_alpha(alpha: f32) -> std::result::Result<f32, String> {
 }
 
 /// The specialisation constants of the BDPT kernels for VCM (`radius`: r_1 in scene units).
-pub fn specs(mode: VcmMode, radius: f32, alpha: f32, grid_bits: u32) -> [Spec; 4] {
+pub fn specs(mode: VcmMode, mixed_lobes: bool, radius: f32, alpha: f32, grid_bits: u32) -> [Spec; 4] {
     [
-        Spec { id: abi::SPEC_VCM, value: mode.spec_value() },
+        Spec { id: abi::SPEC_VCM, value: mode.spec_value(mixed_lobes) },
         Spec { id: abi::SPEC_VCM_RADIUS, value: radius.to_bits() },
         Spec { id: abi::SPEC_VCM_ALPHA, value: alpha.to_bits() },
         Spec { id: abi::SPEC_MERGE_GRID_BITS, value: grid_bits },
@@ -113,7 +123,8 @@ pub fn grid_bits(capacity: u32) -> u32 {
 
 /// The merge grid: per hash cell its entries' end (`cells`), the light vertices' positions and
 /// slots sorted by cell (`items`, `abi::MergeItem`), and the kernels that build them from the
-/// light vertex cache.
+/// light vertex cache; where merging runs apart ([`VcmMode::merges_apart`]), the camera
+/// vertices the camera pass leaves for it and the kernel that merges them.
 pub struct MergeGrid {
     count: Kernel,
     scatter: Kernel,
@@ -122,39 +133,76 @@ pub struct MergeGrid {
     cells: Buffer,
     items: Buffer,
     capacity: u32,
-    /// GPU bytes of the grid (cells, items, scan sums).
+    apart: Option<MergeApart>,
+    /// GPU bytes of the grid (cells, items, scan sums, queries).
     pub bytes: u64,
 }
 
+/// Merging in its own pass: one `abi::MergeQuery` per camera sample of an iteration.
+struct MergeApart {
+    merge: Kernel,
+    queries: Buffer,
+}
+
 impl MergeGrid {
-    /// A grid for up to `capacity` cached light vertices (`specs`: the BDPT kernels' constants).
-    pub fn new(ctx: &Context, specs: &[Spec], capacity: u32, grid_bits: u32) -> Result<MergeGrid> {
+    /// A grid for up to `capacity` cached light vertices (`specs`: the BDPT kernels' constants);
+    /// with `queries` > 0 also the merge pass over that many camera samples per iteration.
+    pub fn new(ctx: &Context, specs: &[Spec], capacity: u32, grid_bits: u32, queries: u32) -> Result<MergeGrid> {
         let cells_n = 1u32 << grid_bits;
         let cells = ctx.create_buffer("vcm.merge_cells", cells_n as u64 * 4, Memory::Device)?;
         let item_bytes = std::mem::size_of::<abi::MergeItem>() as u64;
         let items = ctx.create_buffer("vcm.merge_items", capacity.max(1) as u64 * item_bytes, Memory::Device)?;
         let plan = crate::compute::ScanPlan::new(ctx, cells_n)?;
         let scan_sums = (cells_n as u64).div_ceil(abi::SCAN_WG_SIZE as u64) * 4;
+        let apart = match queries {
+            0 => None,
+            n => Some(MergeApart {
+                merge: ctx.create_kernel(&kernels::VCM_MERGE, specs)?,
+                queries: ctx.create_buffer(
+                    "vcm.merge_queries",
+                    n as u64 * std::mem::size_of::<abi::MergeQuery>() as u64,
+                    Memory::Device,
+                )?,
+            }),
+        };
         Ok(MergeGrid {
             count: ctx.create_kernel(&kernels::MERGE_GRID_COUNT, specs)?,
             scatter: ctx.create_kernel(&kernels::MERGE_GRID_SCATTER, specs)?,
             scan: crate::compute::Scan::new(ctx)?,
             plan,
-            bytes: cells.size() + items.size() + scan_sums,
+            bytes: cells.size() + items.size() + scan_sums + apart.as_ref().map_or(0, |a| a.queries.size()),
+            apart,
             cells,
             items,
             capacity,
         })
     }
 
-    /// The grid's kernels (for their compile statistics).
-    pub fn kernels(&self) -> [&Kernel; 2] {
-        [&self.count, &self.scatter]
+    /// The grid's kernels (for their compile statistics and timings).
+    pub fn kernels(&self) -> Vec<&Kernel> {
+        let mut k = vec![&self.count, &self.scatter];
+        k.extend(self.apart.as_ref().map(|a| &a.merge));
+        k
     }
 
-    /// The grid's buffers for the camera kernel.
-    pub fn binds(&self) -> [Bind<'_>; 2] {
-        [Bind::buffer(abi::BIND_MERGE_CELLS, &self.cells), Bind::buffer(abi::BIND_MERGE_ITEMS, &self.items)]
+    /// The grid's buffers for the camera kernel (the queries: the cells where merging does
+    /// not run apart; the camera kernel then never touches them).
+    pub fn binds(&self) -> [Bind<'_>; 3] {
+        let queries = self.apart.as_ref().map_or(&self.cells, |a| &a.queries);
+        [
+            Bind::buffer(abi::BIND_MERGE_CELLS, &self.cells),
+            Bind::buffer(abi::BIND_MERGE_ITEMS, &self.items),
+            Bind::buffer(abi::BIND_MERGE_QUERIES, queries),
+        ]
+    }
+
+    /// Records the merge pass over the `samples` camera samples the camera pass just ran (a
+    /// no-op unless merging runs apart).
+    pub fn record_merge(&self, rec: &mut Recorder, binds: &[Bind], push: &BdptPush, samples: u32) -> Result<()> {
+        match &self.apart {
+            Some(a) => rec.dispatch(&a.merge, binds, bytemuck::bytes_of(push), [a.merge.groups_for(samples), 1, 1]),
+            None => Ok(()),
+        }
     }
 
     /// Records the grid's build over the listed light vertex cache (`binds` hold the light

@@ -274,6 +274,15 @@ impl Material {
     }
 
     /// Whether the glass fraction is a rough dielectric (roughness > 0; Walter et al. 2007).
+    /// Whether the lobe choice here (bsdf.glsl's choose_lobe) can take both a continuous lobe
+    /// and a delta or rough-glass one: a mirror or glass fraction beside a continuous part
+    /// (1 - reflectivity - refractivity > 0), or a glass fraction scaled by a transmission
+    /// texture. Conservative: a rough mirror's fraction counts though its lobe is GGX.
+    pub fn mixes_lobes(&self) -> bool {
+        let delta = self.reflectivity + self.refractivity;
+        delta > 0.0 && (delta < 1.0 || (self.refractivity > 0.0 && self.transmission_texture.is_some()))
+    }
+
     pub fn has_rough_glass(&self) -> bool {
         self.refractivity > 0.0 && self.roughness > 0.0
     }
