@@ -168,7 +168,7 @@ light-paths)
     "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators bdpt --light-paths $lp --time 2 --seeds 2 --out "$OUT/caustic-lp$lp" 2>&1 | grep -iE "stability"
   done
   "$B" bench traversal "${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}" --camera CameraMain --quality 3 2>&1 | grep -E "build|primary|shadow|diffuse"
-  find "$OUT" \( -name '*.exr' -o -name '*.png' -o -name '*.svg' \) -delete
+  (cd "$OUT" && tar czf csv.tgz $(find . -name '*.csv'))
   ;;
 vcm-first)
   # #15 (session 7): merging at the first continuous camera vertex (`vcm`) against merging at
@@ -186,8 +186,17 @@ vcm-first)
     "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators pt-nee,bdpt,vcm,vcm:merge-all --time $t --seeds 2 --out "$OUT/caustic-$t" 2>&1 | grep -iE "rmse|stability"
   done
   "$B" info --kernels 2>&1 | grep -E "Register" | cut -c1-90
-  # The device tool brings back a limited number of files: keep the CSVs (charts: bidir chart).
-  find "$OUT" \( -name '*.exr' -o -name '*.png' -o -name '*.svg' \) -delete
+  # The device tool brings back at most 8 files: the CSVs in one archive (charts: bidir chart).
+  (cd "$OUT" && tar czf csv.tgz $(find . -name '*.csv'))
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first" >&2; exit 2 ;;
+bvh-quality)
+  # #17 (session 7): the integrators on Sponza over a BVH built at quality 3 (bench
+  # traversal there: diffuse 1.47 against 1.30 Grays/s at quality 2).
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  for q in 2 3 2 3; do for i in pt-nee bdpt; do
+    echo "== sponza $i --bvh-quality $q"
+    "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --bvh-quality $q --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples|build"
+  done; done
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality" >&2; exit 2 ;;
 esac

@@ -81,6 +81,10 @@ pub struct SettingsArgs {
     /// with only diffuse surfaces, bvh2 otherwise) | bvh2 | cwbvh.
     #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh")]
     pub bvh: String,
+    /// BVH build quality, obvhs's preset 0 (fastest build) .. 4 (slowest build, fewest nodes
+    /// visited per ray); the image is the same.
+    #[arg(long, default_value_t = 2, value_name = "0..4", value_parser = clap::value_parser!(u32).range(0..=4))]
+    pub bvh_quality: u32,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
     /// what kernel specialisation buys).
     #[arg(long)]
@@ -119,6 +123,7 @@ impl SettingsArgs {
         s.light_path_ratio = self.light_paths;
         s.sample_slices = self.sample_slices;
         s.bvh.tri_test = self.tri_test;
+        s.bvh.quality = self.bvh_quality;
         s.bvh_layout = match self.bvh.as_str() {
             "auto" => None,
             "bvh2" => Some(bidir::bvh::BvhLayout::Bvh2),
