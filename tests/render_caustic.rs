@@ -41,7 +41,7 @@ fn bdpt_beats_pt_nee_at_equal_time_on_a_caustic() {
     // Long enough on lavapipe for a few dozen BDPT samples per pixel; GPUs get far more.
     let time = Duration::from_secs_f64(if ctx.info().device_type == bidir::vk::PhysicalDeviceType::CPU { 12.0 } else { 1.0 });
     let mut mse = Vec::new();
-    for integrator in [Integrator::PtNee, Integrator::Bdpt(Join::Lvc(0))] {
+    for integrator in [Integrator::PtNee, Integrator::Bdpt(Join::DEFAULT)] {
         let mut r = Renderer::new(&ctx, &scene, &cam, RenderSettings::new(integrator)).unwrap();
         r.render_time(time, |_| {}).unwrap();
         let img = r.image().unwrap();

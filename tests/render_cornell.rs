@@ -176,5 +176,5 @@ fn bdpt_single_join_matches_references() {
 #[test]
 fn bdpt_light_vertex_cache_matches_references() {
     // Over the binary BVH, as GPUs render the default BDPT.
-    check_with(Integrator::Bdpt(Join::Lvc(0)), 1, Some(BvhLayout::Bvh2));
+    check_with(Integrator::Bdpt(Join::DEFAULT), 1, Some(BvhLayout::Bvh2));
 }

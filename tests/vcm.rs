@@ -57,22 +57,22 @@ fn small_cornell(size: u32) -> Scene {
 }
 
 /// With merging off VCM's weights are BDPT's (eta_VCM = 0 removes every merging term), so
-/// `vcm:no-merge` and `bdpt:lvc` give the same image for the same seed: the same kernels with
-/// dVM carried but unused, the same random numbers. Not always to the last bit: light tracing
+/// `vcm:no-merge` and `bdpt` (the same join, `Join::DEFAULT`) give the same image for the
+/// same seed: the same kernels with dVM carried but unused, the same random numbers. Not always to the last bit: light tracing
 /// splats with float atomics whose order varies from run to run (as BDPT against itself), so
 /// values may differ by a few ulps (measured: at most 2e-7 relative; a weight error would show
 /// at 1e-3 or more).
 #[test]
 fn no_merge_equals_bdpt() {
     let scene = small_cornell(32);
-    let a = render(&scene, RenderSettings::new(Integrator::Bdpt(Join::Lvc(0))), 2, 3..=3).remove(0);
+    let a = render(&scene, RenderSettings::new(Integrator::Bdpt(Join::DEFAULT)), 2, 3..=3).remove(0);
     let b = render(&scene, RenderSettings::new(NO_MERGE), 2, 3..=3).remove(0);
     let differ = a.data.iter().zip(&b.data).filter(|(x, y)| x != y).count();
     let rel = a.data.iter().zip(&b.data).map(|(x, y)| ((x - y).abs() / x.abs().max(1e-6)) as f64).fold(0.0, f64::max);
     let mean = image_mean(&a);
-    eprintln!("vcm:no-merge vs bdpt:lvc: {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})", a.data.len());
+    eprintln!("vcm:no-merge vs bdpt: {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})", a.data.len());
     assert!(mean > 0.01, "the image is lit");
-    assert!(rel < 2e-6, "vcm:no-merge differs from bdpt:lvc by {rel:e} relative: more than float atomics' rounding");
+    assert!(rel < 2e-6, "vcm:no-merge differs from bdpt by {rel:e} relative: more than float atomics' rounding");
 }
 
 /// The furnace (radiance exactly 2): merging a uniform photon density is unbiased on a
@@ -136,7 +136,7 @@ type Stats = Vec<(f64, f64)>;
 const SIZE: u32 = 64;
 const BLOCK: u32 = 16;
 
-/// (mean, se) of each statistic of `integrator` minus `bdpt:lvc` over REPLICATES seeds, and
+/// (mean, se) of each statistic of `integrator` minus `bdpt` (`Join::DEFAULT`, as VCM connects) over REPLICATES seeds, and
 /// of `integrator` alone. Same seed, same sample indices: the camera and light paths are the
 /// same random numbers, so the difference has a small fraction of either's variance (0.014 %
 /// against 0.85 % of the mean measured here) and is the bias of `integrator` relative to an
@@ -152,7 +152,7 @@ fn paired(
     if let Some(change) = scene_change {
         change(&mut scene);
     }
-    let mut s = RenderSettings::new(Integrator::Bdpt(Join::Lvc(0)));
+    let mut s = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
     settings(&mut s);
     let base = render(&scene, s.clone(), spp, 1..=replicates);
     s.integrator = integrator;
@@ -332,7 +332,7 @@ fn sds_vcm_beats_bdpt_at_equal_samples() {
     let reference = read_exr(Path::new(SDS_REFERENCE)).expect("the SDS reference is committed beside the scene");
     let scene = sds_scene();
     let mut mse = Vec::new();
-    for integrator in [Integrator::Bdpt(Join::Lvc(0)), VCM, MERGE_ALL] {
+    for integrator in [Integrator::Bdpt(Join::DEFAULT), VCM, MERGE_ALL] {
         let t = std::time::Instant::now();
         let img = render(&scene, RenderSettings::new(integrator), 8, 1..=1).remove(0);
         let e = bidir::imaging::metrics::rmse(&img, &reference);

@@ -198,5 +198,32 @@ bvh-quality)
     "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --bvh-quality $q --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples|build"
   done; done
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality" >&2; exit 2 ;;
+bdpt-joins)
+  # #16 (session 7): connections per camera vertex (lvc: the mean stored per light path,
+  # lvc=1: one) against light paths per pixel, at equal time on the Cornell box and the
+  # caustic scene; bdpt at its defaults in the same run.
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for c in "bdpt:lvc 1" "bdpt:lvc=1 1" "bdpt:lvc=1 0.25" "bdpt:lvc=2 0.25"; do
+    set -- $c
+    echo "== $1 --light-paths $2"
+    "$B" bench render $CB --integrator $1 --light-paths $2 --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples|bdpt_"
+    "$B" converge --reference "$REF" --integrators $1 --light-paths $2 --time 2 --seeds 2 --out "$OUT/cornell" 2>&1 | grep -E "^bdpt"
+    "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators $1 --light-paths $2 --time 2 --seeds 2 --out "$OUT/caustic" 2>&1 | grep -E "^bdpt"
+  done
+  ;;
+join-default)
+  # #16/#15 (session 7): bdpt and vcm with one connection per camera vertex (the new default,
+  # bdpt = bdpt:lvc=1) against the old default (bdpt:lvc) and pt-nee, 2 s, two seeds.
+  SDS="assets/scenes/sds/sds.obj --eye 0.9,1.3,-3.2 --target -0.4,0.4,0 --up 0,1,0 --fov 50 --width 256 --height 256"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for i in bdpt vcm; do
+    echo "== $i"
+    "$B" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples|bdpt_|vcm_"
+  done
+  "$B" converge --reference "$REF" --integrators pt-nee,bdpt,bdpt:lvc,vcm --time 2 --seeds 2 --out "$OUT/cornell" 2>&1 | grep -E "stability"
+  "$B" converge $CAU --reference assets/scenes/caustic/reference.exr --integrators bdpt,bdpt:lvc,vcm --time 2 --seeds 2 --out "$OUT/caustic" 2>&1 | grep -E "stability"
+  "$B" converge $SDS --reference assets/scenes/sds/reference-h200-vcm.exr --integrators bdpt,bdpt:lvc,vcm --time 2 --seeds 2 --out "$OUT/sds" 2>&1 | grep -E "stability"
+  (cd "$OUT" && tar czf csv.tgz $(find . -name '*.csv'))
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default" >&2; exit 2 ;;
 esac

@@ -21,7 +21,7 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
     let integrators = [
         Integrator::Pt,
         Integrator::PtNee,
-        Integrator::Bdpt(Join::Lvc(0)),
+        Integrator::Bdpt(Join::DEFAULT),
         Integrator::Bdpt(Join::Full),
         Integrator::Vcm(bidir::render::vcm::VcmMode::FULL),
         Integrator::Vcm(bidir::render::vcm::VcmMode::MERGE_ALL),

@@ -8,7 +8,7 @@ use bidir::render::{Integrator, Join, RenderSettings, Sampler};
 /// Which integrator, for the commands that render with one.
 #[derive(clap::Args, Debug)]
 pub struct IntegratorArgs {
-    /// pt | pt-nee | bdpt (= bdpt:lvc) | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N
+    /// pt | pt-nee | bdpt (= bdpt:lvc=1) | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N
     /// | vcm (vertex connection and merging; merging at the first continuous camera vertex) |
     /// vcm:merge-all (merging at every one)
     #[arg(long, default_value = "pt-nee")]

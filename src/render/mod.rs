@@ -84,8 +84,9 @@ impl std::str::FromStr for Integrator {
         match s {
             "pt" => Ok(Integrator::Pt),
             "pt-nee" => Ok(Integrator::PtNee),
-            // The GPU-native variant won on RMSE against time (docs/integrators.md).
-            "bdpt" => Ok(Integrator::Bdpt(Join::Lvc(0))),
+            // The GPU-native variant won on RMSE against time (docs/integrators.md), with
+            // one connection per camera vertex ([`Join::DEFAULT`]).
+            "bdpt" => Ok(Integrator::Bdpt(Join::DEFAULT)),
             "vcm" => Ok(Integrator::Vcm(vcm::VcmMode::FULL)),
             "vcm:merge-all" => Ok(Integrator::Vcm(vcm::VcmMode::MERGE_ALL)),
             "vcm:no-merge" => Ok(Integrator::Vcm(vcm::VcmMode::NO_MERGE)),
@@ -420,7 +421,7 @@ fn build_kernels(
         Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
         Integrator::Vcm(mode) => {
             let config = bdpt::VcmConfig { mode, radius: settings.vcm_radius.resolve(0.0), alpha: settings.vcm_alpha };
-            Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::Lvc(0), slices, Some(config))?)
+            Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::DEFAULT, slices, Some(config))?)
         }
     })
 }
