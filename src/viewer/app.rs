@@ -278,10 +278,10 @@ impl State {
             KeyCode::Digit1 | KeyCode::Numpad1 if once => self.switch(opts, Integrator::Pt)?,
             KeyCode::Digit2 | KeyCode::Numpad2 if once => self.switch(opts, Integrator::PtNee)?,
             KeyCode::Digit3 | KeyCode::Numpad3 if once => {
-                // BDPT with the join the viewer was started with, else the full join.
+                // BDPT with the join the viewer was started with, else the default one.
                 let join = match opts.settings.integrator {
                     Integrator::Bdpt(j) => j,
-                    _ => Join::Full,
+                    _ => Join::DEFAULT,
                 };
                 self.switch(opts, Integrator::Bdpt(join))?
             }
