@@ -110,3 +110,27 @@ impl SceneFeatures {
         ]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::Material;
+
+    /// `mixed_lobes` decides whether VCM may merge apart from the camera pass (at most one
+    /// merge per camera sample): it must hold wherever the lobe choice can take both kinds.
+    #[test]
+    fn mixed_lobes_where_the_lobe_choice_can_take_both_kinds() {
+        let m = |reflectivity: f32, refractivity: f32, transmission_texture: Option<u32>| Material {
+            reflectivity,
+            refractivity,
+            transmission_texture,
+            ..Material::default()
+        };
+        assert!(!m(0.0, 0.0, None).mixes_lobes(), "diffuse only");
+        assert!(!m(1.0, 0.0, None).mixes_lobes(), "a perfect mirror");
+        assert!(!m(0.0, 1.0, None).mixes_lobes(), "smooth glass");
+        assert!(!m(0.4, 0.6, None).mixes_lobes(), "mirror and glass, no continuous part");
+        assert!(m(0.3, 0.0, None).mixes_lobes(), "a mirror fraction beside diffuse");
+        assert!(m(0.0, 0.5, None).mixes_lobes(), "a glass fraction beside diffuse");
+        assert!(m(0.0, 1.0, Some(0)).mixes_lobes(), "glass scaled by a transmission texture");
+    }
+}

@@ -231,4 +231,22 @@ mod tests {
         assert_eq!(grid_bits(1), 10);
         assert_eq!(grid_bits(5000), 13);
     }
+
+    #[test]
+    fn merging_runs_apart_only_where_a_sample_merges_once() {
+        assert!(VcmMode::FULL.merges_apart(false));
+        assert!(!VcmMode::FULL.merges_apart(true), "mixed materials: a path may merge at several vertices");
+        for m in [VcmMode::MERGE_ALL, VcmMode::NO_CONNECT, VcmMode::NO_MERGE] {
+            assert!(!m.merges_apart(false), "{m:?}");
+        }
+        assert_eq!(VcmMode::FULL.spec_value(false), abi::VCM_MERGE | abi::VCM_CONNECT | abi::VCM_MERGE_APART);
+        assert_eq!(VcmMode::FULL.spec_value(true), abi::VCM_MERGE | abi::VCM_CONNECT);
+        assert_eq!(VcmMode::MERGE_ALL.spec_value(false), abi::VCM_MERGE | abi::VCM_CONNECT | abi::VCM_MERGE_ALL);
+        // merge_all means nothing without both strategies: one specialisation, one name.
+        let ppm_all = VcmMode { merge_all: true, ..VcmMode::NO_CONNECT };
+        assert_eq!(ppm_all.spec_value(false), VcmMode::NO_CONNECT.spec_value(false));
+        assert_eq!(super::super::Integrator::Vcm(ppm_all).name(), "vcm:no-connect");
+        assert_eq!(super::super::Integrator::Vcm(VcmMode::MERGE_ALL).name(), "vcm:merge-all");
+        assert_eq!("vcm:merge-all".parse::<super::super::Integrator>().unwrap(), super::super::Integrator::Vcm(VcmMode::MERGE_ALL));
+    }
 }
