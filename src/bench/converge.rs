@@ -49,6 +49,18 @@ pub struct Point {
     pub spp: u32,
     pub rmse: f64,
     pub rel_mse: f64,
+    /// The schedule's moments (indices of its times or sample counts) this snapshot stands
+    /// for: taken for `moment`; a pass that already went past the following moments (no new
+    /// samples since) makes it stand for them too, through `through`.
+    pub moment: u32,
+    pub through: u32,
+}
+
+impl Point {
+    /// A snapshot for moment `moment` alone.
+    pub fn new(seconds: f64, spp: u32, rmse: f64, rel_mse: f64, moment: u32) -> Point {
+        Point { seconds, spp, rmse, rel_mse, moment, through: moment }
+    }
 }
 
 /// An integrator's snapshots and final image.
@@ -71,22 +83,31 @@ pub fn stability(points: &[Point]) -> f64 {
     points.windows(2).map(|w| w[1].rmse / w[0].rmse).fold(0.0, f64::max)
 }
 
-/// One curve from several seeds' curves of the same schedule: per snapshot the mean time and
-/// samples and the root mean square of the RMSEs (so the square root of the mean MSE; relMSE
-/// averaged), over the snapshots every seed took; the stability figure is the worst seed's.
-/// The image is the last seed's.
+/// One curve from several seeds' curves of the same schedule: per moment of the schedule the
+/// mean time and samples and the root mean square of the RMSEs (so the square root of the mean
+/// MSE; relMSE averaged) of each seed's snapshot for that moment (the one that stands for it:
+/// a seed whose pass went past a moment answers it with the snapshot taken after that pass),
+/// over the moments every seed answered and some seed took a snapshot for; the stability
+/// figure is the worst seed's. The image is the last seed's.
 pub fn average(mut curves: Vec<Curve>) -> Curve {
     let n = curves.len() as f64;
-    let len = curves.iter().map(|c| c.points.len()).min().unwrap_or(0);
-    let points = (0..len)
-        .map(|i| {
-            let mean = |f: &dyn Fn(&Point) -> f64| curves.iter().map(|c| f(&c.points[i])).sum::<f64>() / n;
-            Point {
+    let mut moments: Vec<u32> = curves.iter().flat_map(|c| c.points.iter().map(|p| p.moment)).collect();
+    moments.sort_unstable();
+    moments.dedup();
+    let points = moments
+        .into_iter()
+        .filter_map(|k| {
+            let at: Option<Vec<&Point>> = curves.iter().map(|c| c.points.iter().find(|p| (p.moment..=p.through).contains(&k))).collect();
+            let at = at?;
+            let mean = |f: &dyn Fn(&Point) -> f64| at.iter().map(|p| f(p)).sum::<f64>() / n;
+            Some(Point {
                 seconds: mean(&|p| p.seconds),
                 spp: mean(&|p| p.spp as f64).round() as u32,
                 rmse: mean(&|p| p.rmse * p.rmse).sqrt(),
                 rel_mse: mean(&|p| p.rel_mse),
-            }
+                moment: k,
+                through: k,
+            })
         })
         .collect();
     let stability = curves.iter().map(|c| c.stability).fold(0.0, f64::max);
@@ -214,13 +235,13 @@ fn curve(
     let mut rendered = 0.0;
     let mut points: Vec<Point> = Vec::new();
     let mut image = None;
-    let mut snapshot = |r: &mut Renderer, rendered: f64| -> Result<(), RenderError> {
-        if points.last().is_some_and(|p| p.spp == r.samples()) {
-            return Ok(()); // a long pass already passed this moment
+    let mut snapshot = |r: &mut Renderer, rendered: f64, moment: u32| -> Result<(), RenderError> {
+        if let Some(last) = points.last_mut().filter(|p| p.spp == r.samples()) {
+            last.through = moment; // a long pass already passed this moment
+            return Ok(());
         }
         let img = r.image()?;
-        let p =
-            Point { seconds: rendered, spp: r.samples(), rmse: metrics::rmse(&img, reference), rel_mse: metrics::rel_mse(&img, reference) };
+        let p = Point::new(rendered, r.samples(), metrics::rmse(&img, reference), metrics::rel_mse(&img, reference), moment);
         on_point(integrator, &p);
         points.push(p);
         image = Some(img);
@@ -228,25 +249,25 @@ fn curve(
     };
     match schedule {
         Schedule::Time { budget_s, points } => {
-            for target in log_spaced_times(*budget_s, *points) {
+            for (k, target) in log_spaced_times(*budget_s, *points).into_iter().enumerate() {
                 let left = target - rendered;
                 if left > 0.0 || r.samples() == 0 {
                     let t = Instant::now();
                     r.render_time(Duration::from_secs_f64(left.max(0.0)), |_| {})?;
                     rendered += t.elapsed().as_secs_f64();
                 }
-                snapshot(&mut r, rendered)?;
+                snapshot(&mut r, rendered, k as u32)?;
                 if stop_requested() {
                     break;
                 }
             }
         }
         Schedule::Spp(spps) => {
-            for &n in spps {
+            for (k, &n) in spps.iter().enumerate() {
                 let t = Instant::now();
                 r.render_spp(n, |_| {})?;
                 rendered += t.elapsed().as_secs_f64();
-                snapshot(&mut r, rendered)?;
+                snapshot(&mut r, rendered, k as u32)?;
                 if stop_requested() {
                     break;
                 }
@@ -356,7 +377,7 @@ fn side_by_side(curves: &[Curve], reference: &RgbImage, exposure: f32) -> Result
     let mut pixels: Vec<(Vec<String>, Vec<u8>)> = curves
         .iter()
         .map(|c| {
-            let last = c.points.last().copied().unwrap_or(Point { seconds: 0.0, spp: 0, rmse: f64::NAN, rel_mse: f64::NAN });
+            let last = c.points.last().copied().unwrap_or(Point::new(0.0, 0, f64::NAN, f64::NAN, 0));
             let lines = vec![c.integrator.name(), format!("{} spp, {:.3} s", last.spp, last.seconds), format!("RMSE {:.5}", last.rmse)];
             (lines, imaging::to_srgb8(&c.image, exposure))
         })
@@ -419,7 +440,7 @@ mod tests {
 
     #[test]
     fn csv_rows_and_file_names() {
-        let p = |s: f64, n: u32, e: f64| Point { seconds: s, spp: n, rmse: e, rel_mse: 2.0 * e };
+        let p = |s: f64, n: u32, e: f64| Point::new(s, n, e, 2.0 * e, n);
         let curves = vec![
             Curve {
                 integrator: Integrator::PtNee,
@@ -452,7 +473,8 @@ mod tests {
 
     #[test]
     fn seeds_average_and_worst_stability() {
-        let p = |s: f64, n: u32, e: f64| Point { seconds: s, spp: n, rmse: e, rel_mse: e };
+        // Snapshots for moments 0, 1, 2, ... of the schedule.
+        let p = |s: f64, n: u32, e: f64| Point::new(s, n, e, e, n.trailing_zeros());
         // A curve that only descends, and one that jumps up 1.5x at its third snapshot.
         let a = vec![p(1.0, 1, 0.4), p(2.0, 2, 0.2), p(4.0, 4, 0.1)];
         let b = vec![p(3.0, 1, 0.3), p(4.0, 2, 0.2), p(6.0, 4, 0.3), p(8.0, 8, 0.1)];
@@ -472,6 +494,20 @@ mod tests {
         assert!((avg.points[0].rmse - (0.125f64).sqrt()).abs() < 1e-12, "root mean square of 0.4 and 0.3");
         assert!((avg.stability - 1.5).abs() < 1e-12, "the worst seed's figure");
         assert_eq!(avg.nan_samples, 2);
+        // A seed whose long pass went past moment 1 answers it with the snapshot taken after
+        // that pass (at or past moment 1's time): moments stay aligned, whatever each seed
+        // skipped; a moment no seed took a snapshot for is left out.
+        // Seed a's first pass ran to 2.5 s, past moments 0 and 1: one snapshot for both.
+        let a = vec![Point { through: 1, ..p(2.5, 1, 0.3) }, p(4.0, 4, 0.1)];
+        let b = vec![p(1.0, 1, 0.4), p(2.0, 2, 0.2), p(4.0, 4, 0.1)];
+        let avg = average(vec![curve(a), curve(b)]);
+        let moments: Vec<(u32, f64)> = avg.points.iter().map(|q| (q.moment, q.seconds)).collect();
+        assert_eq!(moments, [(0, 1.75), (1, 2.25), (2, 4.0)], "a's one snapshot beside each of b's");
+        let both = average(vec![
+            curve(vec![p(1.0, 1, 0.4), Point { through: 2, ..p(2.5, 2, 0.25) }]),
+            curve(vec![p(1.0, 1, 0.4), Point { through: 2, ..p(2.0, 2, 0.2) }]),
+        ]);
+        assert_eq!(both.points.iter().map(|q| q.moment).collect::<Vec<_>>(), [0, 1], "neither took one for moment 2");
         assert!(check(
             &Options { seeds: 0, ..opts(vec![Integrator::Pt], Schedule::Spp(vec![1])) },
             &Camera::cornell_box(),
