@@ -8,9 +8,9 @@
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
-# defaults, final. Still to run (next session, ~3 minutes): light-paths (#16: bdpt with fewer
-# light paths at equal time; bvh2 built at quality 3 on Sponza, #17). Rerun `final` against
-# the commit that changes a default, with BASE = the commit before it.
+# defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
+# join-default. Rerun `final` against the commit that changes a default, with BASE = the
+# commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
 BASE=${BASE:-$PWD/.device/bidir-base}
