@@ -174,6 +174,15 @@ impl Bdpt {
         let grid = match vcm {
             Some(v) if v.mode.merge => {
                 let queries = if v.mode.merges_apart(scene.features.mixed_lobes) { pixels.saturating_mul(camera_samples) } else { 0 };
+                let query_bytes = queries as u64 * std::mem::size_of::<abi::MergeQuery>() as u64;
+                if query_bytes > info.max_storage_buffer_range as u64 {
+                    return Err(RenderError::Memory(format!(
+                        "VCM's merge queries need {:.1} MiB ({queries} camera samples x {} bytes), over the device's {} MiB storage-buffer limit: lower --sample-slices or the resolution",
+                        query_bytes as f64 / (1u64 << 20) as f64,
+                        std::mem::size_of::<abi::MergeQuery>(),
+                        info.max_storage_buffer_range >> 20
+                    )));
+                }
                 Some(super::vcm::MergeGrid::new(ctx, &specs, capacity, super::vcm::grid_bits(capacity), queries)?)
             }
             _ => None,

@@ -273,7 +273,6 @@ impl Material {
         format!("{kind}: {}", f.join(", "))
     }
 
-    /// Whether the glass fraction is a rough dielectric (roughness > 0; Walter et al. 2007).
     /// Whether the lobe choice here (bsdf.glsl's choose_lobe) can take both a continuous lobe
     /// and a delta or rough-glass one: a mirror or glass fraction beside a continuous part
     /// (1 - reflectivity - refractivity > 0), or a glass fraction scaled by a transmission
@@ -283,6 +282,7 @@ impl Material {
         delta > 0.0 && (delta < 1.0 || (self.refractivity > 0.0 && self.transmission_texture.is_some()))
     }
 
+    /// Whether the glass fraction is a rough dielectric (roughness > 0; Walter et al. 2007).
     pub fn has_rough_glass(&self) -> bool {
         self.refractivity > 0.0 && self.roughness > 0.0
     }
