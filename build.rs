@@ -1,4 +1,5 @@
-//! Compiles every GLSL compute kernel under `glsl/kernels/` and `glsl/tests/` to SPIR-V with
+//! Compiles every GLSL compute kernel under `glsl/kernels/` and `glsl/tests/` (and the stages
+//! of the driver ray-tracing yardstick under `glsl/rt/`) to SPIR-V with
 //! shaderc, after writing the ABI header generated from `src/gpu/abi.rs`. A shader error fails
 //! the build with shaderc's own `file:line: error` message.
 
@@ -66,54 +67,39 @@ fn main() {
         std::iter::once((path, stem, None)).chain(wide)
     });
     for (path, stem, define) in builds {
-        let rel = path.strip_prefix(&root).unwrap_or(path).to_string_lossy().into_owned();
-        let src = fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read {rel}: {e}"));
-
-        let mut opts = shaderc::CompileOptions::new().unwrap();
-        opts.set_target_env(shaderc::TargetEnv::Vulkan, shaderc::EnvVersion::Vulkan1_2 as u32);
-        opts.set_target_spirv(shaderc::SpirvVersion::V1_5);
-        opts.set_source_language(shaderc::SourceLanguage::GLSL);
-        if let Some(name) = define {
-            opts.add_macro_definition(name, None);
+        match compile(
+            &compiler,
+            &root,
+            &gen_dir,
+            path,
+            shaderc::ShaderKind::Compute,
+            define,
+            release && !UNOPTIMISED.contains(&stem.as_str()),
+        ) {
+            Some(spirv) => {
+                table += &source_entry(&spv_dir, &root, path, &stem, &spirv);
+                all.push(stem.to_uppercase());
+            }
+            None => failed = true,
         }
-        if release && !UNOPTIMISED.contains(&stem.as_str()) {
-            opts.set_optimization_level(shaderc::OptimizationLevel::Performance);
-        } else {
-            opts.set_optimization_level(shaderc::OptimizationLevel::Zero);
-        }
-        let common = glsl.join("common");
-        let gen = gen_dir.clone();
-        let root_c = root.clone();
-        opts.set_include_callback(move |name, _ty, _from, _depth| {
-            for dir in [&common, &gen] {
-                let p = dir.join(name);
-                if let Ok(content) = fs::read_to_string(&p) {
-                    let shown = p.strip_prefix(&root_c).unwrap_or(&p).to_string_lossy().into_owned();
-                    return Ok(shaderc::ResolvedInclude { resolved_name: shown, content });
-                }
-            }
-            Err(format!("cannot find include \"{name}\" in glsl/common/ or the generated ABI header"))
-        });
-        match compiler.compile_into_spirv(&src, shaderc::ShaderKind::Compute, &rel, "main", Some(&opts)) {
-            Ok(art) => {
-                if art.get_num_warnings() > 0 {
-                    for line in art.get_warning_messages().lines() {
-                        println!("cargo:warning={line}");
-                    }
-                }
-                let spv = spv_dir.join(format!("{stem}.spv"));
-                write_if_changed(&spv, art.as_binary_u8());
-                let ident = stem.to_uppercase();
-                table += &format!(
-                    "pub const {ident}: KernelSource = KernelSource {{ name: \"{stem}\", file: \"{rel}\", spirv: include_bytes!(\"{}\") }};\n",
-                    spv.display()
-                );
-                all.push(ident);
-            }
-            Err(e) => {
-                eprintln!("{e}");
-                failed = true;
-            }
+    }
+    // The driver's ray-tracing pipeline (the traversal benchmark's yardstick): its stages are
+    // listed apart, RT_<STEM>_<STAGE>, and not in ALL (they are no compute kernels).
+    let mut rt: Vec<PathBuf> =
+        fs::read_dir(glsl.join("rt")).map(|rd| rd.filter_map(|e| e.ok().map(|e| e.path())).collect()).unwrap_or_default();
+    rt.sort();
+    for path in &rt {
+        let ext = path.extension().map(|e| e.to_string_lossy().into_owned()).unwrap_or_default();
+        let kind = match ext.as_str() {
+            "rgen" => shaderc::ShaderKind::RayGeneration,
+            "rchit" => shaderc::ShaderKind::ClosestHit,
+            "rmiss" => shaderc::ShaderKind::Miss,
+            _ => continue,
+        };
+        let stem = format!("rt_{}_{ext}", path.file_stem().unwrap().to_string_lossy());
+        match compile(&compiler, &root, &gen_dir, path, kind, None, release) {
+            Some(spirv) => table += &source_entry(&spv_dir, &root, path, &stem, &spirv),
+            None => failed = true,
         }
     }
     if failed {
@@ -122,6 +108,68 @@ fn main() {
     }
     table += &format!("/// Every kernel, for tools that list or validate them.\npub const ALL: &[KernelSource] = &[{}];\n", all.join(", "));
     write_if_changed(&out.join("kernels.rs"), table.as_bytes());
+}
+
+/// Compiles one GLSL file to SPIR-V (Vulkan 1.2, SPIR-V 1.5) with `glsl/common/`, the file's
+/// own folder and the generated headers on the include path; None (after printing
+/// shaderc's `file:line: error`) if it does not compile.
+fn compile(
+    compiler: &shaderc::Compiler,
+    root: &Path,
+    gen_dir: &Path,
+    path: &Path,
+    kind: shaderc::ShaderKind,
+    define: Option<&str>,
+    optimise: bool,
+) -> Option<Vec<u8>> {
+    let rel = path.strip_prefix(root).unwrap_or(path).to_string_lossy().into_owned();
+    let src = fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read {rel}: {e}"));
+    let mut opts = shaderc::CompileOptions::new().unwrap();
+    opts.set_target_env(shaderc::TargetEnv::Vulkan, shaderc::EnvVersion::Vulkan1_2 as u32);
+    opts.set_target_spirv(shaderc::SpirvVersion::V1_5);
+    opts.set_source_language(shaderc::SourceLanguage::GLSL);
+    if let Some(name) = define {
+        opts.add_macro_definition(name, None);
+    }
+    opts.set_optimization_level(if optimise { shaderc::OptimizationLevel::Performance } else { shaderc::OptimizationLevel::Zero });
+    let dirs = [root.join("glsl").join("common"), path.parent().unwrap_or(root).to_path_buf(), gen_dir.to_path_buf()];
+    let root_c = root.to_path_buf();
+    opts.set_include_callback(move |name, _ty, _from, _depth| {
+        for dir in &dirs {
+            let p = dir.join(name);
+            if let Ok(content) = fs::read_to_string(&p) {
+                let shown = p.strip_prefix(&root_c).unwrap_or(&p).to_string_lossy().into_owned();
+                return Ok(shaderc::ResolvedInclude { resolved_name: shown, content });
+            }
+        }
+        Err(format!("cannot find include \"{name}\" in glsl/common/, beside the file or in the generated ABI header"))
+    });
+    match compiler.compile_into_spirv(&src, kind, &rel, "main", Some(&opts)) {
+        Ok(art) => {
+            if art.get_num_warnings() > 0 {
+                for line in art.get_warning_messages().lines() {
+                    println!("cargo:warning={line}");
+                }
+            }
+            Some(art.as_binary_u8().to_vec())
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            None
+        }
+    }
+}
+
+/// Writes `spirv` as `<stem>.spv` and returns its `KernelSource` constant.
+fn source_entry(spv_dir: &Path, root: &Path, path: &Path, stem: &str, spirv: &[u8]) -> String {
+    let rel = path.strip_prefix(root).unwrap_or(path).to_string_lossy().into_owned();
+    let spv = spv_dir.join(format!("{stem}.spv"));
+    write_if_changed(&spv, spirv);
+    format!(
+        "pub const {}: KernelSource = KernelSource {{ name: \"{stem}\", file: \"{rel}\", spirv: include_bytes!(\"{}\") }};\n",
+        stem.to_uppercase(),
+        spv.display()
+    )
 }
 
 fn write_if_changed(path: &Path, bytes: &[u8]) {

@@ -182,6 +182,7 @@ fn numbers_out_of_range_are_rejected_with_the_flag() {
     fails(&["bench", "traversal", "--workgroup-size", "96"], &["--workgroup-size 96"]);
     fails(&["bench", "traversal", "--workgroup-size", "128", "--bvh", "bvh2q"], &["--workgroup-size 128", "only with --bvh bvh2"]);
     fails(&["bench", "traversal", "--rays-per-invocation", "2", "--persistent"], &["--rays-per-invocation 2", "1 with --persistent"]);
+    fails(&["bench", "traversal", "--driver-rt", "--alpha"], &["--driver-rt", "leave out --alpha"]);
     fails(
         &["info", "--builtin", "--width", "100000", "--height", "100000"],
         &["100000x100000", "limit of 134,217,728 pixels", "--width/--height"],
@@ -242,6 +243,41 @@ fn gltf_two_parents_and_bad_glb_magic() {
 }
 
 // ---- on the GPU --------------------------------------------------------------------------
+
+/// `bench traversal --driver-rt` on a device without the driver's ray tracing (lavapipe):
+/// an error naming the extension and the flag, before any report is written; on a device
+/// with it, the yardstick's rows.
+#[test]
+fn driver_rt_needs_the_extension() {
+    let json = scratch("driver_rt").join("report.json");
+    let json_arg = json.to_string_lossy().into_owned();
+    let args = [
+        "bench",
+        "traversal",
+        "--driver-rt",
+        "--rays",
+        "primary",
+        "--warmup",
+        "0",
+        "--reps",
+        "5",
+        "--width",
+        "32",
+        "--height",
+        "32",
+        "--json",
+        &json_arg,
+    ];
+    let out = bidir(&args).output().expect("bidir runs");
+    if out.status.success() {
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains("driver's ray-tracing pipeline") && text.contains("agree %"), "{text}");
+        assert!(json.exists());
+        return;
+    }
+    check_failure(&args, &out, &["VK_KHR_ray_tracing_pipeline", "--driver-rt"]);
+    assert!(!json.exists(), "no report is written when the yardstick cannot run");
+}
 
 #[test]
 fn gpu_memory_errors_name_the_flags() {

@@ -9,7 +9,7 @@
 #
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
-# join-default. Rerun `final` against the commit that changes a default, with BASE = the
+# join-default; in session 8: driver-rt. Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -225,5 +225,23 @@ join-default)
   "$B" converge $SDS --reference assets/scenes/sds/reference-h200-vcm.exr --integrators bdpt,bdpt:lvc,vcm --time 2 --seeds 2 --out "$OUT/sds" 2>&1 | grep -E "stability"
   (cd "$OUT" && tar czf csv.tgz $(find . -name '*.csv'))
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default" >&2; exit 2 ;;
+driver-rt)
+  # #17 (session 8): the driver's ray-tracing pipeline as the yardstick in the same run
+  # (bench traversal --driver-rt: same rays, hit agreement); whether ncu profiles a Vulkan
+  # compute kernel here. Each command under a timeout (a hang must not eat the call).
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 120"
+  "$B" info 2>&1 | grep -E "NVIDIA|features"
+  echo "== small, validation"
+  $T env BIDIR_VALIDATION=1 "$B" bench traversal --driver-rt --width 64 --height 64 --warmup 0 --reps 5 2>&1
+  echo "== cornell 1920x1080"
+  $T "$B" bench traversal --driver-rt --width 1920 --height 1080 2>&1
+  echo "== sponza (bvh2, the default)"
+  $T "$B" bench traversal "$SP" --camera CameraMain --driver-rt --json "$OUT/sponza-driver-rt.json" 2>&1
+  echo "== sponza, cwbvh woop quality 3"
+  $T "$B" bench traversal "$SP" --camera CameraMain --bvh cwbvh --tri-test woop --quality 3 --driver-rt 2>&1
+  echo "== ncu on a Vulkan compute kernel"
+  timeout -k 5 60 ncu --clock-control none --launch-count 2 "$B" bench traversal --rays primary --warmup 0 --reps 5 2>&1 | tail -25
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt" >&2; exit 2 ;;
 esac

@@ -11,6 +11,7 @@ pub enum Json {
     Bool(bool),
     Arr(Vec<Json>),
     Obj(Vec<(String, Json)>),
+    Null,
 }
 
 impl Json {
@@ -22,7 +23,7 @@ impl Json {
         let pad = "  ".repeat(indent + 1);
         match self {
             Json::Num(x) if x.is_finite() => write!(out, "{x}").unwrap(),
-            Json::Num(_) => out.push_str("null"),
+            Json::Num(_) | Json::Null => out.push_str("null"),
             Json::Int(x) => write!(out, "{x}").unwrap(),
             Json::Bool(b) => write!(out, "{b}").unwrap(),
             Json::Str(s) => {

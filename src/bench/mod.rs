@@ -3,6 +3,7 @@
 
 pub mod chart;
 pub mod converge;
+pub mod driver_rt;
 pub mod json;
 pub mod render;
 pub mod traversal;

@@ -3,6 +3,7 @@
 //! cosine-distributed about the geometric normal at each primary hit), then only the
 //! traversal kernel timed with GPU timestamps: warm-up runs, then repetitions, median.
 
+use super::driver_rt::{compare, Agreement, Driver};
 use super::median;
 use crate::bvh::BvhError;
 use crate::bvh::{BuildOptions, Bvh, BvhLayout, TriTest};
@@ -62,6 +63,9 @@ pub struct Options {
     pub sort: bool,
     /// Invocations per workgroup of the trace kernel (see `TraceOptions::workgroup_size`).
     pub workgroup_size: u32,
+    /// Trace the same rays through the driver's ray-tracing pipeline too (`driver_rt.rs`);
+    /// the context must have been created with `ContextOptions::ray_tracing`.
+    pub driver_rt: bool,
 }
 
 impl Default for Options {
@@ -80,6 +84,7 @@ impl Default for Options {
             rays_per_invocation: 1,
             sort: false,
             workgroup_size: crate::gpu::abi::TRACE_WG_SIZE,
+            driver_rt: false,
         }
     }
 }
@@ -99,6 +104,18 @@ pub struct KindResult {
     pub node_bytes_per_ray: f64,
     pub tris_per_ray: f64,
     pub hit_fraction: f64,
+    /// The same rays through the driver's ray-tracing pipeline (`Options::driver_rt`).
+    pub driver: Option<DriverKindResult>,
+}
+
+/// One ray kind through the driver's ray-tracing pipeline.
+#[derive(Clone, Debug)]
+pub struct DriverKindResult {
+    pub times_ms: Vec<f64>,
+    pub median_ms: f64,
+    pub mrays_per_s: f64,
+    pub hit_fraction: f64,
+    pub agreement: Agreement,
 }
 
 /// The whole report.
@@ -131,6 +148,8 @@ pub struct Report {
     pub height: u32,
     pub light: Vec3,
     pub results: Vec<KindResult>,
+    /// The driver's bottom-level acceleration structure: GPU build time (ms) and bytes.
+    pub driver_build: Option<(f64, u64)>,
 }
 
 /// Why the benchmark could not run.
@@ -214,6 +233,8 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let stats = ctx.create_buffer("bench.stats", 8, Memory::Device)?;
     let timer = ctx.create_timer("bench.timer", 3)?;
     let sorter = if opts.sort { Some(RaySorter::new(ctx, n)?) } else { None };
+    let driver = if opts.driver_rt { Some(Driver::new(ctx, positions, triangles)?) } else { None };
+    let driver_hits = ctx.create_buffer("bench.driver_hits", if driver.is_some() { n as u64 * 16 } else { 16 }, Memory::Device)?;
     let sorted = ctx.create_buffer("bench.sorted_rays", if opts.sort { ray_bytes } else { 32 }, Memory::Device)?;
     let order = ctx.create_buffer("bench.sort_order", if opts.sort { n as u64 * 4 } else { 4 }, Memory::Device)?;
 
@@ -274,6 +295,22 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         let med = median(&times);
         // Primary rays of edge tiles outside the image (none at 1920x1080) are not counted.
         let real = if kind == RayKind::Primary { pixels } else { count };
+        let driver = match &driver {
+            None => None,
+            Some(d) => {
+                let times = d.time(ctx, &timer, rays, &driver_hits, count, any_hit, opts.warmup, opts.repetitions)?;
+                let theirs: Vec<crate::gpu::abi::GpuHit> = ctx.read_buffer(&driver_hits)?;
+                let theirs = &theirs[..count as usize];
+                let med = median(&times);
+                Some(DriverKindResult {
+                    median_ms: med,
+                    mrays_per_s: real as f64 / (med * 1e-3) / 1e6,
+                    hit_fraction: theirs.iter().filter(|x| x.tri != crate::gpu::abi::NO_HIT).count() as f64 / real as f64,
+                    agreement: compare(&h[..count as usize], theirs, &bvh.tri_ids, any_hit),
+                    times_ms: times,
+                })
+            }
+        };
         results.push(KindResult {
             kind,
             rays: real,
@@ -285,6 +322,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
             node_bytes_per_ray: s[0] as f64 * opts.build.layout.node_size() as f64 / real as f64,
             tris_per_ray: s[1] as f64 / real as f64,
             hit_fraction: hit_count as f64 / real as f64,
+            driver,
         });
     }
     Ok(Report {
@@ -311,6 +349,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         height: camera.size.y,
         light,
         results,
+        driver_build: driver.as_ref().map(|d| (d.build_ms, d.bytes)),
     })
 }
 
@@ -336,6 +375,13 @@ impl Report {
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
             ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
+            (
+                "driver_rt_build",
+                match self.driver_build {
+                    None => Json::Null,
+                    Some((ms, bytes)) => Json::obj(vec![("blas_build_ms", Json::Num(ms)), ("blas_bytes", Json::Int(bytes as i64))]),
+                },
+            ),
             (
                 "bvh",
                 Json::obj(vec![
@@ -363,6 +409,22 @@ impl Report {
                                 ("tris_per_ray", Json::Num(r.tris_per_ray)),
                                 ("hit_fraction", Json::Num(r.hit_fraction)),
                                 ("times_ms", Json::Arr(r.times_ms.iter().map(|&t| Json::Num(t)).collect())),
+                                (
+                                    "driver_rt",
+                                    match &r.driver {
+                                        None => Json::Null,
+                                        Some(d) => Json::obj(vec![
+                                            ("median_ms", Json::Num(d.median_ms)),
+                                            ("mrays_per_s", Json::Num(d.mrays_per_s)),
+                                            ("hit_fraction", Json::Num(d.hit_fraction)),
+                                            ("agree_fraction", Json::Num(d.agreement.fraction())),
+                                            ("only_bidir", Json::Int(d.agreement.only_bidir as i64)),
+                                            ("only_driver", Json::Int(d.agreement.only_driver as i64)),
+                                            ("different", Json::Int(d.agreement.different as i64)),
+                                            ("times_ms", Json::Arr(d.times_ms.iter().map(|&t| Json::Num(t)).collect())),
+                                        ]),
+                                    },
+                                ),
                             ])
                         })
                         .collect(),
@@ -412,6 +474,36 @@ impl Report {
                 100.0 * r.hit_fraction,
                 r.sort_median_ms.map_or("-".to_string(), |t| format!("{t:.3}"))
             );
+        }
+        if let Some((ms, bytes)) = self.driver_build {
+            println!(
+                "driver's ray-tracing pipeline (VK_KHR_ray_tracing_pipeline): acceleration structure built in {ms:.1} ms (GPU), {:.1} MiB",
+                bytes as f64 / (1 << 20) as f64
+            );
+            println!(
+                "{:<8} {:>10} {:>10} {:>12} {:>18} {:>6} {:>9}",
+                "rays", "count", "median ms", "Mrays/s", "bidir / driver", "hit %", "agree %"
+            );
+            for r in &self.results {
+                let Some(d) = &r.driver else { continue };
+                println!(
+                    "{:<8} {:>10} {:>10.3} {:>12.1} {:>18.2} {:>6.1} {:>9.3}",
+                    r.kind.name(),
+                    r.rays,
+                    d.median_ms,
+                    d.mrays_per_s,
+                    r.mrays_per_s / d.mrays_per_s,
+                    100.0 * d.hit_fraction,
+                    100.0 * d.agreement.fraction()
+                );
+                let a = &d.agreement;
+                if a.agree < a.rays {
+                    println!(
+                        "         disagreements: {} hit by bidir only, {} by the driver only, {} different triangles at different distances",
+                        a.only_bidir, a.only_driver, a.different
+                    );
+                }
+            }
         }
         for (kernel, stats) in &self.kernel_stats {
             println!("{kernel}: {stats}");

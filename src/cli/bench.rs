@@ -104,6 +104,12 @@ pub struct TraversalArgs {
     /// 256 (bvh2 without --alpha, --short-stack or --persistent).
     #[arg(long, value_name = "N", default_value_t = 64)]
     pub workgroup_size: u32,
+    /// Also trace the same rays through the driver's own ray-tracing pipeline
+    /// (VK_KHR_ray_tracing_pipeline, over acceleration structures the driver builds), timed the
+    /// same way, its hits compared with bidir's: the yardstick. Geometry only (not with
+    /// --alpha); the device must offer the extension (lavapipe does not).
+    #[arg(long)]
+    pub driver_rt: bool,
     /// Write the report as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -169,6 +175,9 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     {
         anyhow::bail!("--workgroup-size {}: 64 with every variant; 32, 128 or 256 only with --bvh bvh2 and without --alpha, --short-stack, --persistent", a.workgroup_size);
     }
+    if a.driver_rt && a.alpha {
+        anyhow::bail!("--driver-rt traces the geometry alone: leave out --alpha");
+    }
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;
     }
@@ -176,7 +185,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     let loaded = a.scene.load()?;
     // The driver's registers, spills and shared memory of the timed kernels, where it reports
     // them (printed with the timings).
-    let opts = ContextOptions { kernel_statistics: true, ..opts.clone() };
+    let opts = ContextOptions { kernel_statistics: true, ray_tracing: a.driver_rt, ..opts.clone() };
     let ctx = Context::new(&opts).context("cannot start Vulkan")?;
     let mut o = traversal::Options { kinds, warmup: a.warmup, repetitions: a.reps.max(5), ..Default::default() };
     o.build.tri_test = a.tri_test;
@@ -191,6 +200,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.rays_per_invocation = a.rays_per_invocation;
     o.sort = a.sort;
     o.workgroup_size = a.workgroup_size;
+    o.driver_rt = a.driver_rt;
     o.persistent = match (a.persistent, a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),

@@ -69,9 +69,10 @@ fn devices(opts: &ContextOptions) -> anyhow::Result<()> {
             d.timestamp_period_ns
         );
         println!(
-            "  features:      atomic float add {}, int64 {}",
+            "  features:      atomic float add {}, int64 {}, driver ray tracing {}",
             if d.atomic_float_add { "yes" } else { "no" },
-            if d.shader_int64 { "yes" } else { "no" }
+            if d.shader_int64 { "yes" } else { "no" },
+            if d.ray_tracing_pipeline { "yes (bench traversal --driver-rt)" } else { "no" }
         );
         if !d.usable() {
             println!("  not usable:    lacks {}", d.missing.join(", "));

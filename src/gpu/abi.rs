@@ -86,6 +86,11 @@ gpu_consts! {
     /// Persistent trace kernels: the next ray to fetch (one u32, zeroed before each launch).
     pub const BIND_RAY_COUNTER: u32 = 26;
 
+    // ---- Bindings: the driver's ray-tracing pipeline (glsl/rt/, vk::DriverTracer) ----------
+    /// The top-level acceleration structure the driver built over the scene's triangles;
+    /// the rays and hits use BIND_RAYS / BIND_HITS as the trace kernels do.
+    pub const RT_BIND_TLAS: u32 = 0;
+
     // ---- Bindings: ray_sort_keys.comp / ray_sort_scatter.comp (trace::RaySorter) -----------
     /// Rays to sort (`GpuRay`).
     pub const RAY_SORT_BIND_RAYS: u32 = 0;
@@ -397,6 +402,15 @@ gpu_structs! {
         /// Persistent trace kernels: most ray batches one subgroup fetches.
         pub max_batches: u32,
         pub pad0: u32,
+    }
+
+    /// Push constants of the driver's ray-generation shader (glsl/rt/trace.rgen).
+    pub struct RtTracePush (16 bytes) {
+        pub count: u32,
+        /// 1: shadow rays (any hit ends the query, no closest-hit shader runs).
+        pub any_hit: u32,
+        pub pad0: u32,
+        pub pad1: u32,
     }
 
     /// A pinhole camera as kernels use it: `dir = forward + x * right + y * up` for

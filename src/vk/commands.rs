@@ -47,7 +47,7 @@ pub struct Recorder<'a> {
 impl<'a> Recorder<'a> {
     /// With profiling on, writes a timestamp that closes the command `name` just recorded
     /// (after its barrier, so it brackets that command alone).
-    fn mark(&mut self, name: &str) {
+    pub(super) fn mark(&mut self, name: &str) {
         let Some(p) = &mut self.profile else { return };
         match p.next(name) {
             // SAFETY: recording state; the profile's pool was reset at the start of this buffer.
@@ -382,15 +382,22 @@ pub struct Timer {
 }
 
 impl Timer {
-    /// Nanoseconds between timestamps `a` and `b` of the last completed submission.
+    /// Nanoseconds between timestamps `a` and `b` of the last completed submission. Only the
+    /// queries from the lower to the higher index are read, and waited for: each of them
+    /// must have been written since the timer's reset (an unwritten one would wait forever).
     pub fn elapsed_ns(&self, a: u32, b: u32) -> Result<f64> {
-        let mut data = vec![0u64; self.count as usize];
-        // SAFETY: the submission that wrote them has completed (submit waits).
+        let (lo, hi) = (a.min(b), a.max(b));
+        if hi >= self.count {
+            return Err(VkError::Usage { name: "timer".into(), msg: format!("timestamp {hi} of a timer of {}", self.count) });
+        }
+        let mut data = vec![0u64; (hi - lo + 1) as usize];
+        // SAFETY: the submission that wrote them has completed (submit waits); the range is
+        // inside the pool.
         unsafe {
-            self.shared.device.get_query_pool_results(self.pool, 0, &mut data, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
+            self.shared.device.get_query_pool_results(self.pool, lo, &mut data, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
         }
         .ctx(|| "read timestamps".into())?;
-        Ok(ticks_between(data[a as usize], data[b as usize], self.valid_bits) as f64 * self.period_ns)
+        Ok(ticks_between(data[(a - lo) as usize], data[(b - lo) as usize], self.valid_bits) as f64 * self.period_ns)
     }
 }
 

@@ -34,6 +34,10 @@ pub struct ContextOptions {
     /// Ask the driver to keep each kernel's compile statistics (registers, spills, ...:
     /// `Kernel::statistics`), where it offers VK_KHR_pipeline_executable_properties.
     pub kernel_statistics: bool,
+    /// Enable the driver's ray-tracing pipeline (acceleration structures, buffer device
+    /// addresses): `bench traversal --driver-rt`. An error naming the extension where the
+    /// device has none (`DeviceInfo::ray_tracing_pipeline`).
+    pub ray_tracing: bool,
     /// Environment variables [`ContextOptions::from_env`] could not use, for the caller to
     /// print.
     pub env_warnings: Vec<String>,
@@ -48,6 +52,7 @@ impl Default for ContextOptions {
             instance_extensions: vec![],
             device_extensions: vec![],
             kernel_statistics: false,
+            ray_tracing: false,
             env_warnings: vec![],
         }
     }
@@ -93,6 +98,8 @@ pub(crate) struct Shared {
     pub push_descriptor: ash::khr::push_descriptor::Device,
     /// Present when kernels are created with their statistics captured.
     pub pipeline_executables: Option<ash::khr::pipeline_executable_properties::Device>,
+    /// Present when the context was created with `ContextOptions::ray_tracing`.
+    pub ray_tracing: Option<super::rt::RtDevice>,
     pub allocator: ManuallyDrop<Mutex<Allocator>>,
     pub queue: Mutex<vk::Queue>,
     pub command_pool: Mutex<vk::CommandPool>,
@@ -188,6 +195,7 @@ impl Context {
                 let pipeline_executables = (opts.kernel_statistics && info.kernel_statistics)
                     .then(|| ash::khr::pipeline_executable_properties::Device::new(&parts.instance, &device));
                 let queue_family = info.queue_family.expect("usable devices have a compute queue");
+                let ray_tracing = opts.ray_tracing.then(|| super::rt::RtDevice::new(&parts.instance, physical, &device));
                 let shared = Shared {
                     entry: parts.entry,
                     instance: parts.instance,
@@ -199,6 +207,7 @@ impl Context {
                     debug_device,
                     push_descriptor,
                     pipeline_executables,
+                    ray_tracing,
                     allocator: ManuallyDrop::new(Mutex::new(allocator)),
                     queue: Mutex::new(queue),
                     command_pool: Mutex::new(pool),
@@ -280,6 +289,16 @@ fn create_device(
         ext_ptrs.push(ash::ext::shader_atomic_float::NAME.as_ptr());
     }
     ext_ptrs.extend(opts.device_extensions.iter().map(|e| e.as_ptr()));
+    if opts.ray_tracing {
+        if !info.ray_tracing_pipeline {
+            return Err(VkError::MissingExtension {
+                extension: instance::RAY_TRACING_EXTENSIONS.iter().map(|e| e.to_string_lossy()).collect::<Vec<_>>().join(" + "),
+                on: format!("device '{}'", info.name),
+                hint: "the driver's ray-tracing pipeline (--driver-rt) needs it; run without --driver-rt, or choose a device that has it with --device".into(),
+            });
+        }
+        ext_ptrs.extend(instance::RAY_TRACING_EXTENSIONS.iter().map(|e| e.as_ptr()));
+    }
     let statistics = opts.kernel_statistics && info.kernel_statistics;
     if statistics {
         ext_ptrs.push(ash::khr::pipeline_executable_properties::NAME.as_ptr());
@@ -303,7 +322,8 @@ fn create_device(
         .host_query_reset(f12.host_query_reset == vk::TRUE)
         .shader_float16(f12.shader_float16 == vk::TRUE)
         .storage_buffer8_bit_access(f12.storage_buffer8_bit_access == vk::TRUE)
-        .shader_int8(f12.shader_int8 == vk::TRUE);
+        .shader_int8(f12.shader_int8 == vk::TRUE)
+        .buffer_device_address(opts.ray_tracing);
     let mut e13 = vk::PhysicalDeviceVulkan13Features::default()
         .subgroup_size_control(f13.subgroup_size_control == vk::TRUE)
         .compute_full_subgroups(f13.compute_full_subgroups == vk::TRUE);
@@ -322,6 +342,11 @@ fn create_device(
     let mut atomic_float = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default().shader_buffer_float32_atomic_add(true);
     if info.atomic_float_add {
         create = create.push_next(&mut atomic_float);
+    }
+    let mut accel = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
+    let mut rt_pipeline = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
+    if opts.ray_tracing {
+        create = create.push_next(&mut accel).push_next(&mut rt_pipeline);
     }
     // SAFETY: every pointer in `create` outlives the call.
     let device = unsafe { instance.create_device(physical, &create, None) }.ctx(|| format!("vkCreateDevice ({})", info.name))?;
@@ -344,7 +369,7 @@ fn create_device(
         device: device.clone(),
         physical_device: physical,
         debug_settings: Default::default(),
-        buffer_device_address: false,
+        buffer_device_address: opts.ray_tracing,
         allocation_sizes: Default::default(),
     }) {
         Ok(a) => a,

@@ -192,6 +192,10 @@ pub struct MemoryHeap {
     pub device_local: bool,
 }
 
+/// The device extensions the driver's ray-tracing pipeline needs (`ContextOptions::ray_tracing`).
+pub(crate) const RAY_TRACING_EXTENSIONS: [&CStr; 3] =
+    [ash::khr::acceleration_structure::NAME, ash::khr::ray_tracing_pipeline::NAME, ash::khr::deferred_host_operations::NAME];
+
 /// What bidir knows about a physical device.
 #[derive(Clone, Debug)]
 pub struct DeviceInfo {
@@ -227,6 +231,10 @@ pub struct DeviceInfo {
     /// VK_KHR_pipeline_executable_properties: the driver reports each kernel's registers,
     /// spills, shared memory and the like (`ContextOptions::kernel_statistics`).
     pub kernel_statistics: bool,
+    /// VK_KHR_ray_tracing_pipeline with VK_KHR_acceleration_structure (and the deferred host
+    /// operations it needs): the driver's own ray tracing, which `bench traversal --driver-rt`
+    /// measures bidir's traversal against.
+    pub ray_tracing_pipeline: bool,
     /// Why bidir cannot use this device; empty when it can.
     pub missing: Vec<String>,
 }
@@ -369,6 +377,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             sm_count: sm.shader_sm_count,
             warps_per_sm: sm.shader_warps_per_sm,
             kernel_statistics: has_ext(ash::khr::pipeline_executable_properties::NAME),
+            ray_tracing_pipeline: RAY_TRACING_EXTENSIONS.iter().all(|e| has_ext(e)),
             missing,
         })
     }

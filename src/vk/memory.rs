@@ -162,9 +162,15 @@ impl Drop for Image {
 impl Context {
     /// Creates a buffer of `bytes` bytes (at least 4: Vulkan has no empty buffers).
     pub fn create_buffer(&self, name: &str, bytes: u64, memory: Memory) -> Result<Buffer> {
+        self.create_buffer_with_usage(name, bytes, memory, vk::BufferUsageFlags::empty())
+    }
+
+    /// `create_buffer` with `extra` usages (acceleration-structure storage and inputs, shader
+    /// binding tables, device addresses: the ray-tracing yardstick, `rt.rs`).
+    pub(crate) fn create_buffer_with_usage(&self, name: &str, bytes: u64, memory: Memory, extra: vk::BufferUsageFlags) -> Result<Buffer> {
         let s = &self.shared;
         let size = bytes.max(4).next_multiple_of(4);
-        let usage = vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
+        let usage = vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST | extra;
         if size > s.info.max_storage_buffer_range as u64 && memory == Memory::Device {
             return Err(VkError::Usage {
                 name: name.into(),
@@ -204,8 +210,13 @@ impl Context {
 
     /// Creates a device-local buffer holding `data` (uploaded through a staging buffer).
     pub fn upload_buffer<T: bytemuck::Pod>(&self, name: &str, data: &[T]) -> Result<Buffer> {
+        self.upload_buffer_with_usage(name, data, vk::BufferUsageFlags::empty())
+    }
+
+    /// `upload_buffer` with `extra` usages (see `create_buffer_with_usage`).
+    pub(crate) fn upload_buffer_with_usage<T: bytemuck::Pod>(&self, name: &str, data: &[T], extra: vk::BufferUsageFlags) -> Result<Buffer> {
         let bytes: &[u8] = bytemuck::cast_slice(data);
-        let dst = self.create_buffer(name, bytes.len() as u64, Memory::Device)?;
+        let dst = self.create_buffer_with_usage(name, bytes.len() as u64, Memory::Device, extra)?;
         if !bytes.is_empty() {
             let mut staging = self.create_buffer(&format!("{name}.staging"), bytes.len() as u64, Memory::Upload)?;
             staging.write(0, bytes)?;

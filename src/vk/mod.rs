@@ -33,6 +33,7 @@ mod kernel;
 mod memory;
 mod profile;
 pub mod reflect;
+mod rt;
 mod swapchain;
 
 pub use ash::vk::{Format, PhysicalDeviceType};
@@ -43,4 +44,5 @@ pub use instance::{choose_device, list_devices, DeviceInfo, MemoryHeap, Subgroup
 pub use kernel::{Kernel, KernelSource, KernelStatistic, Spec};
 pub use memory::{Buffer, Image, Memory};
 pub use profile::KernelTime;
+pub use rt::{DriverTracer, RtShaders};
 pub use swapchain::{surface_extensions, Presented, Swapchain, Vsync, SWAPCHAIN_EXTENSION};
