@@ -25,6 +25,7 @@ pub(crate) struct RtDevice {
     base_alignment: u32,
     scratch_alignment: u32,
     max_invocations: u32,
+    max_primitives: u64,
 }
 
 impl RtDevice {
@@ -45,6 +46,7 @@ impl RtDevice {
             base_alignment: rt.shader_group_base_alignment.max(1),
             scratch_alignment: accel.min_acceleration_structure_scratch_offset_alignment.max(1),
             max_invocations: rt.max_ray_dispatch_invocation_count,
+            max_primitives: accel.max_primitive_count,
         }
     }
 }
@@ -149,6 +151,13 @@ impl Context {
         let rt = s.ray_tracing.as_ref().ok_or_else(|| usage("the context was created without ContextOptions::ray_tracing"))?;
         if triangles.is_empty() || positions.is_empty() {
             return Err(usage("the scene has no triangles"));
+        }
+        if triangles.len() as u64 > rt.max_primitives {
+            return Err(usage(&format!(
+                "{} triangles exceed the {} one acceleration structure of this driver holds",
+                triangles.len(),
+                rt.max_primitives
+            )));
         }
         let mut t = DriverTracer {
             shared: s.clone(),
