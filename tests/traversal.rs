@@ -42,6 +42,7 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
                 v.push(("short stack, 3 rays per invocation", ss));
                 let wg = TraceOptions { workgroup_size: 256, rays_per_invocation: 2, ..base };
                 v.push(("workgroups of 256, 2 rays per invocation", wg));
+                v.push(("float slab test", TraceOptions { int_slabs: false, ..base }));
             }
         }
         // The binary loop on decoded nodes: its variants are the exact layout's.

@@ -69,6 +69,9 @@ BvhNode fetch_node(int node) {
 }
 #endif
 layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
+// 1 (default): the slab test's minima and maxima on the distances' bits as integers (below);
+// 0: as floats. The same boxes are hit either way.
+layout(constant_id = SPEC_INT_SLABS) const uint INT_SLABS = 1u;
 
 #ifdef TRAVERSE_SHORT_STACK
 #include "traverse_short_stack.glsl"
@@ -109,10 +112,24 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             vec4 t0xy = vec4(n.c0_xy.xy * idir.x, n.c0_xy.zw * idir.y) - ood.xxyy;
             vec4 t1xy = vec4(n.c1_xy.xy * idir.x, n.c1_xy.zw * idir.y) - ood.xxyy;
             vec4 tz = n.c01_z * idir.z - ood.zzzz;
-            float c0min = max(max(min(t0xy.x, t0xy.y), min(t0xy.z, t0xy.w)), max(min(tz.x, tz.y), tmin));
-            float c0max = min(min(max(t0xy.x, t0xy.y), max(t0xy.z, t0xy.w)), min(max(tz.x, tz.y), hit.t));
-            float c1min = max(max(min(t1xy.x, t1xy.y), min(t1xy.z, t1xy.w)), max(min(tz.z, tz.w), tmin));
-            float c1max = min(min(max(t1xy.x, t1xy.y), max(t1xy.z, t1xy.w)), min(max(tz.z, tz.w), hit.t));
+            float c0min, c0max, c1min, c1max;
+            if (INT_SLABS != 0u) {
+                // The same selections on the floats' bits as signed integers (Aila & Laine
+                // 2009's Kepler trick): exact where it matters, since tmin and hit.t are not
+                // negative and a negative float, whichever the integer order picks, loses
+                // to tmin in a near distance and rejects the box in a far one.
+                ivec4 a0 = floatBitsToInt(t0xy), a1 = floatBitsToInt(t1xy), az = floatBitsToInt(tz);
+                int lo = floatBitsToInt(tmin), hi = floatBitsToInt(hit.t);
+                c0min = intBitsToFloat(max(max(min(a0.x, a0.y), min(a0.z, a0.w)), max(min(az.x, az.y), lo)));
+                c0max = intBitsToFloat(min(min(max(a0.x, a0.y), max(a0.z, a0.w)), min(max(az.x, az.y), hi)));
+                c1min = intBitsToFloat(max(max(min(a1.x, a1.y), min(a1.z, a1.w)), max(min(az.z, az.w), lo)));
+                c1max = intBitsToFloat(min(min(max(a1.x, a1.y), max(a1.z, a1.w)), min(max(az.z, az.w), hi)));
+            } else {
+                c0min = max(max(min(t0xy.x, t0xy.y), min(t0xy.z, t0xy.w)), max(min(tz.x, tz.y), tmin));
+                c0max = min(min(max(t0xy.x, t0xy.y), max(t0xy.z, t0xy.w)), min(max(tz.x, tz.y), hit.t));
+                c1min = max(max(min(t1xy.x, t1xy.y), min(t1xy.z, t1xy.w)), max(min(tz.z, tz.w), tmin));
+                c1max = min(min(max(t1xy.x, t1xy.y), max(t1xy.z, t1xy.w)), min(max(tz.z, tz.w), hit.t));
+            }
             bool hit0 = c0min <= c0max * BOX_EXIT_SCALE;
             bool hit1 = c1min <= c1max * BOX_EXIT_SCALE;
             if (!hit0 && !hit1) {

@@ -14,7 +14,7 @@ pub struct Driver {
 }
 
 /// How the driver's hits compare with bidir's, ray by ray.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Agreement {
     pub rays: u64,
     /// Same verdict and, for closest hits, the same triangle or one at the same distance
@@ -23,9 +23,16 @@ pub struct Agreement {
     /// bidir found a hit where the driver found none, and the other way round.
     pub only_bidir: u64,
     pub only_driver: u64,
-    /// Both hit, different triangles at different distances.
+    /// Both hit, different triangles at different distances; in how many of those bidir's
+    /// hit is the nearer.
     pub different: u64,
+    pub bidir_nearer: u64,
+    /// The first few disagreeing rays (indices into the ray buffer), to look at.
+    pub examples: Vec<u32>,
 }
+
+/// Disagreeing rays `compare` keeps as examples.
+pub const EXAMPLES: usize = 4;
 
 impl Agreement {
     pub fn fraction(&self) -> f64 {
@@ -44,21 +51,32 @@ pub const SAME_DISTANCE: f32 = 1e-4;
 /// index), `theirs` in the scene's order. Any-hit queries compare the verdict alone.
 pub fn compare(ours: &[GpuHit], theirs: &[GpuHit], tri_ids: &[u32], any_hit: bool) -> Agreement {
     let mut a = Agreement { rays: ours.len().min(theirs.len()) as u64, ..Default::default() };
-    for (o, t) in ours.iter().zip(theirs) {
-        match (o.tri != NO_HIT, t.tri != NO_HIT) {
-            (false, false) => a.agree += 1,
-            (true, false) => a.only_bidir += 1,
-            (false, true) => a.only_driver += 1,
-            (true, true) if any_hit => a.agree += 1,
+    for (i, (o, t)) in ours.iter().zip(theirs).enumerate() {
+        let agree = match (o.tri != NO_HIT, t.tri != NO_HIT) {
+            (false, false) => true,
+            (true, false) => {
+                a.only_bidir += 1;
+                false
+            }
+            (false, true) => {
+                a.only_driver += 1;
+                false
+            }
+            (true, true) if any_hit => true,
             (true, true) => {
                 let same_tri = tri_ids.get(o.tri as usize) == Some(&t.tri);
                 let close = (o.t - t.t).abs() <= SAME_DISTANCE * o.t.abs().max(t.t.abs()).max(1e-3);
-                if same_tri || close {
-                    a.agree += 1;
-                } else {
+                if !(same_tri || close) {
                     a.different += 1;
+                    a.bidir_nearer += (o.t < t.t) as u64;
                 }
+                same_tri || close
             }
+        };
+        if agree {
+            a.agree += 1;
+        } else if a.examples.len() < EXAMPLES {
+            a.examples.push(i as u32);
         }
     }
     a
@@ -135,10 +153,13 @@ mod tests {
             hit(7.0, 3),
         ];
         let a = compare(&ours, &theirs, &ids, false);
-        assert_eq!(a, Agreement { rays: 7, agree: 4, only_bidir: 1, only_driver: 1, different: 1 });
+        assert_eq!(
+            a,
+            Agreement { rays: 7, agree: 4, only_bidir: 1, only_driver: 1, different: 1, bidir_nearer: 1, examples: vec![2, 4, 5] }
+        );
         // Any-hit queries: only the verdict counts.
         let a = compare(&ours, &theirs, &ids, true);
-        assert_eq!(a, Agreement { rays: 7, agree: 5, only_bidir: 1, only_driver: 1, different: 0 });
+        assert_eq!(a, Agreement { rays: 7, agree: 5, only_bidir: 1, only_driver: 1, different: 0, bidir_nearer: 0, examples: vec![4, 5] });
         assert!((a.fraction() - 5.0 / 7.0).abs() < 1e-12);
     }
 }

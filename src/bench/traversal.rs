@@ -56,6 +56,8 @@ pub struct Options {
     pub postpone: bool,
     /// Binary layouts: the stack's top in registers, the rest in shared memory.
     pub short_stack: bool,
+    /// Binary layouts: the slab test on the distances' bits as integers (default) or floats.
+    pub int_slabs: bool,
     /// Rays each invocation traces (one-invocation-per-ray kernels; default 1).
     pub rays_per_invocation: u32,
     /// Sort shadow and diffuse rays by direction octant and origin cell before tracing
@@ -81,6 +83,7 @@ impl Default for Options {
             speculative: true,
             postpone: false,
             short_stack: false,
+            int_slabs: true,
             rays_per_invocation: 1,
             sort: false,
             workgroup_size: crate::gpu::abi::TRACE_WG_SIZE,
@@ -116,6 +119,9 @@ pub struct DriverKindResult {
     pub mrays_per_s: f64,
     pub hit_fraction: f64,
     pub agreement: Agreement,
+    /// The example disagreeing rays of `agreement`: the ray, bidir's hit (triangle as the
+    /// scene numbers it) and the driver's.
+    pub examples: Vec<(crate::gpu::abi::GpuRay, crate::gpu::abi::GpuHit, crate::gpu::abi::GpuHit)>,
 }
 
 /// The whole report.
@@ -133,6 +139,7 @@ pub struct Report {
     pub speculative: bool,
     pub postpone: bool,
     pub short_stack: bool,
+    pub int_slabs: bool,
     pub rays_per_invocation: u32,
     pub sort: bool,
     pub workgroup_size: u32,
@@ -196,6 +203,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     trace_opts.speculative = opts.speculative;
     trace_opts.postpone = opts.postpone;
     trace_opts.short_stack = opts.short_stack;
+    trace_opts.int_slabs = opts.int_slabs;
     trace_opts.rays_per_invocation = opts.rays_per_invocation;
     trace_opts.workgroup_size = opts.workgroup_size;
     trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
@@ -302,11 +310,24 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
                 let theirs: Vec<crate::gpu::abi::GpuHit> = ctx.read_buffer(&driver_hits)?;
                 let theirs = &theirs[..count as usize];
                 let med = median(&times);
+                let agreement = compare(&h[..count as usize], theirs, &bvh.tri_ids, any_hit);
+                let mut examples = Vec::new();
+                if !agreement.examples.is_empty() {
+                    let all: Vec<crate::gpu::abi::GpuRay> = ctx.read_buffer(rays)?;
+                    for &i in &agreement.examples {
+                        let mut ours = h[i as usize];
+                        if let Some(&id) = bvh.tri_ids.get(ours.tri as usize) {
+                            ours.tri = id;
+                        }
+                        examples.push((all[i as usize], ours, theirs[i as usize]));
+                    }
+                }
                 Some(DriverKindResult {
                     median_ms: med,
                     mrays_per_s: real as f64 / (med * 1e-3) / 1e6,
                     hit_fraction: theirs.iter().filter(|x| x.tri != crate::gpu::abi::NO_HIT).count() as f64 / real as f64,
-                    agreement: compare(&h[..count as usize], theirs, &bvh.tri_ids, any_hit),
+                    agreement,
+                    examples,
                     times_ms: times,
                 })
             }
@@ -336,6 +357,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         short_stack: opts.short_stack,
+        int_slabs: opts.int_slabs && opts.build.layout != BvhLayout::Cwbvh,
         rays_per_invocation: opts.rays_per_invocation,
         sort: opts.sort,
         workgroup_size: opts.workgroup_size,
@@ -368,6 +390,7 @@ impl Report {
             ("speculative", Json::Bool(self.speculative)),
             ("postpone", Json::Bool(self.postpone)),
             ("short_stack", Json::Bool(self.short_stack)),
+            ("int_slabs", Json::Bool(self.int_slabs)),
             ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
             ("sort", Json::Bool(self.sort)),
             ("workgroup_size", Json::Int(self.workgroup_size as i64)),
@@ -421,6 +444,7 @@ impl Report {
                                             ("only_bidir", Json::Int(d.agreement.only_bidir as i64)),
                                             ("only_driver", Json::Int(d.agreement.only_driver as i64)),
                                             ("different", Json::Int(d.agreement.different as i64)),
+                                            ("bidir_nearer", Json::Int(d.agreement.bidir_nearer as i64)),
                                             ("times_ms", Json::Arr(d.times_ms.iter().map(|&t| Json::Num(t)).collect())),
                                         ]),
                                     },
@@ -444,6 +468,7 @@ impl Report {
                 + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
                 + if self.postpone { ", triangle postponing" } else { "" }
                 + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
+                + if self.layout != BvhLayout::Cwbvh && !self.int_slabs { ", float slab test" } else { "" }
                 + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
                 + if self.sort { ", secondary rays sorted (octant, origin cell)" } else { "" }
                 + &format!(", workgroups of {}", self.workgroup_size),
@@ -499,9 +524,32 @@ impl Report {
                 let a = &d.agreement;
                 if a.agree < a.rays {
                     println!(
-                        "         disagreements: {} hit by bidir only, {} by the driver only, {} different triangles at different distances",
-                        a.only_bidir, a.only_driver, a.different
+                        "         disagreements: {} hit by bidir only, {} by the driver only, {} different triangles at different distances ({} of them nearer for bidir)",
+                        a.only_bidir, a.only_driver, a.different, a.bidir_nearer
                     );
+                    let tri = |h: &crate::gpu::abi::GpuHit| {
+                        if h.tri == crate::gpu::abi::NO_HIT {
+                            "none".to_string()
+                        } else {
+                            format!("{} at t {:e}", h.tri, h.t)
+                        }
+                    };
+                    for (ray, ours, theirs) in &d.examples {
+                        let (o, dir) = (ray.origin, ray.dir);
+                        println!(
+                            "         ray o ({:e}, {:e}, {:e}) d ({:e}, {:e}, {:e}) t ({:e}, {:e}): bidir {}, driver {}",
+                            o.x,
+                            o.y,
+                            o.z,
+                            dir.x,
+                            dir.y,
+                            dir.z,
+                            o.w,
+                            dir.w,
+                            tri(ours),
+                            tri(theirs)
+                        );
+                    }
                 }
             }
         }
