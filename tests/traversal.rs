@@ -50,6 +50,7 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
         BvhLayout::Cwbvh => {
             v.push(("postponing", TraceOptions { postpone: true, ..base }));
             v.push(("postponing, persistent 3 groups", TraceOptions { postpone: true, persistent: Some(3), ..base }));
+            v.push(("float slab test", TraceOptions { int_slabs: false, ..base }));
         }
     }
     v

@@ -56,6 +56,10 @@ bool test_leaf_triangle(PreparedRay pr, uint i, inout TraceHit hit, inout uvec2 
     return true;
 }
 
+// 1 (default): the slab tests' minima and maxima on the distances' bits as signed integers
+// (see trace_ray and cwbvh_intersect_children); 0: as floats. The same boxes are hit either way.
+layout(constant_id = SPEC_INT_SLABS) const uint INT_SLABS = 1u;
+
 #ifdef TRAVERSE_CWBVH
 #include "traverse_cwbvh.glsl"
 #else
@@ -69,9 +73,6 @@ BvhNode fetch_node(int node) {
 }
 #endif
 layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
-// 1 (default): the slab test's minima and maxima on the distances' bits as integers (below);
-// 0: as floats. The same boxes are hit either way.
-layout(constant_id = SPEC_INT_SLABS) const uint INT_SLABS = 1u;
 
 #ifdef TRAVERSE_SHORT_STACK
 #include "traverse_short_stack.glsl"

@@ -63,8 +63,17 @@ uint cwbvh_intersect_children(CwbvhNode n, vec3 o, vec3 idir, bvec3 neg, float t
             float tx1 = float((xf >> sh) & 0xffu) * scale.x + org_far.x;
             float ty1 = float((yf >> sh) & 0xffu) * scale.y + org_far.y;
             float tz1 = float((zf >> sh) & 0xffu) * scale.z + org_far.z;
-            float t0 = max(max(tx0, ty0), max(tz0, tmin));
-            float t1 = min(min(tx1, ty1), min(tz1, tmax));
+            float t0, t1;
+            if (INT_SLABS != 0u) {
+                // On the bits as signed integers, as in the binary kernel: tmin and tmax are
+                // not negative, so a negative distance loses to tmin in t0 and rejects the
+                // box in t1 whichever the integer order picks.
+                t0 = intBitsToFloat(max(max(floatBitsToInt(tx0), floatBitsToInt(ty0)), max(floatBitsToInt(tz0), floatBitsToInt(tmin))));
+                t1 = intBitsToFloat(min(min(floatBitsToInt(tx1), floatBitsToInt(ty1)), min(floatBitsToInt(tz1), floatBitsToInt(tmax))));
+            } else {
+                t0 = max(max(tx0, ty0), max(tz0, tmin));
+                t1 = min(min(tx1, ty1), min(tz1, tmax));
+            }
             if (t0 <= t1) {
                 hits |= ((child_bits4 >> sh) & 0xffu) << ((bit_index4 >> sh) & 0xffu);
             }

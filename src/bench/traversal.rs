@@ -56,7 +56,7 @@ pub struct Options {
     pub postpone: bool,
     /// Binary layouts: the stack's top in registers, the rest in shared memory.
     pub short_stack: bool,
-    /// Binary layouts: the slab test on the distances' bits as integers (default) or floats.
+    /// The slab tests on the distances' bits as integers (default) or floats.
     pub int_slabs: bool,
     /// Rays each invocation traces (one-invocation-per-ray kernels; default 1).
     pub rays_per_invocation: u32,
@@ -357,7 +357,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         short_stack: opts.short_stack,
-        int_slabs: opts.int_slabs && opts.build.layout != BvhLayout::Cwbvh,
+        int_slabs: opts.int_slabs,
         rays_per_invocation: opts.rays_per_invocation,
         sort: opts.sort,
         workgroup_size: opts.workgroup_size,
@@ -468,7 +468,7 @@ impl Report {
                 + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
                 + if self.postpone { ", triangle postponing" } else { "" }
                 + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
-                + if self.layout != BvhLayout::Cwbvh && !self.int_slabs { ", float slab test" } else { "" }
+                + if !self.int_slabs { ", float slab test" } else { "" }
                 + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
                 + if self.sort { ", secondary rays sorted (octant, origin cell)" } else { "" }
                 + &format!(", workgroups of {}", self.workgroup_size),

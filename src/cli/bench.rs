@@ -93,8 +93,8 @@ pub struct TraversalArgs {
     /// in workgroup shared memory instead of local memory.
     #[arg(long)]
     pub short_stack: bool,
-    /// Binary layouts: take the slab test's minima and maxima as floats instead of on the
-    /// distances' bits as signed integers (the default; the same boxes are hit either way).
+    /// Take the slab tests' minima and maxima as floats instead of on the distances' bits as
+    /// signed integers (the default; the same boxes are hit either way).
     #[arg(long)]
     pub float_slabs: bool,
     /// Rays each invocation traces, strided by the launch size (not with --persistent).
@@ -165,9 +165,6 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     }
     if a.short_stack && (a.alpha || a.bvh == bidir::bvh::BvhLayout::Cwbvh) {
         anyhow::bail!("--short-stack: only with the binary layouts (--bvh bvh2 | bvh2q) and without --alpha");
-    }
-    if a.float_slabs && a.bvh == bidir::bvh::BvhLayout::Cwbvh {
-        anyhow::bail!("--float-slabs: only with the binary layouts (--bvh bvh2 | bvh2q)");
     }
     if !(1..=64).contains(&a.rays_per_invocation) || (a.rays_per_invocation > 1 && (a.persistent || a.persistent_groups.is_some())) {
         anyhow::bail!("--rays-per-invocation {}: must be in 1..=64, and 1 with --persistent", a.rays_per_invocation);

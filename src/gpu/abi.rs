@@ -284,8 +284,8 @@ gpu_consts! {
     /// Trace kernels (not persistent): rays each invocation traces, strided by the launch's
     /// invocation count (default 1). Numbered apart from the scene features' ids.
     pub const SPEC_RAYS_PER_INVOCATION: u32 = 32;
-    /// Binary BVH traversal: 1 (default) takes the slab test's minima and maxima on the
-    /// distances' bits as signed integers (glsl/common/traverse.glsl), 0 as floats.
+    /// BVH traversal: 1 (default) takes the slab tests' minima and maxima on the distances'
+    /// bits as signed integers (glsl/common/traverse.glsl, traverse_cwbvh.glsl), 0 as floats.
     pub const SPEC_INT_SLABS: u32 = 33;
     /// First-hit pass: 1 when an AOV (albedo, normal, depth) is asked for; 0 when only the
     /// EXR's alpha is, so the pass traces each camera ray as an any-hit ray and stops there.

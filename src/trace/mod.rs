@@ -47,8 +47,8 @@ pub struct TraceOptions {
     /// Binary layouts, geometry only: the stack's top four entries in registers, the rest in
     /// workgroup shared memory (glsl/common/traverse_short_stack.glsl) instead of local memory.
     pub short_stack: bool,
-    /// Binary layouts: the slab test's minima and maxima on the distances' bits as integers
-    /// (SPEC_INT_SLABS; the default), or as floats.
+    /// The slab tests' minima and maxima on the distances' bits as integers (SPEC_INT_SLABS;
+    /// the default), or as floats.
     pub int_slabs: bool,
     /// Rays each invocation traces (not persistent; 1 by default): SPEC_RAYS_PER_INVOCATION.
     pub rays_per_invocation: u32,
@@ -144,12 +144,10 @@ impl Tracer {
         let mut trace_specs = base.to_vec();
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
         match opts.layout {
-            BvhLayout::Bvh2 | BvhLayout::Bvh2q => {
-                trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 });
-                trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
-            }
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
             BvhLayout::Cwbvh => trace_specs.push(Spec { id: abi::SPEC_CWBVH_POSTPONE, value: opts.postpone as u32 }),
         }
+        trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
         if opts.rays_per_invocation != 1 {
             if opts.persistent.is_some() || opts.rays_per_invocation == 0 {
                 let msg = format!("{} rays per invocation: 1 with persistent threads, at least 1 otherwise", opts.rays_per_invocation);
