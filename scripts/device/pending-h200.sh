@@ -9,7 +9,7 @@
 #
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
-# join-default; in session 8: driver-rt. Rerun `final` against the commit that changes a default, with BASE = the
+# join-default; in session 8: driver-rt, int-slabs (as separate calls then). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -243,5 +243,32 @@ driver-rt)
   echo "== ncu on a Vulkan compute kernel"
   timeout -k 5 60 ncu --clock-control none --launch-count 2 "$B" bench traversal --rays primary --warmup 0 --reps 5 2>&1 | tail -25
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt" >&2; exit 2 ;;
+int-slabs)
+  # #17 (session 8): the slab tests on the distances' bits as integers (this commit's
+  # default) against floats (--float-slabs for bench traversal; BASE = a build of the commit
+  # before for the integrators), interleaved; the images must stay bit-identical.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for c in "--float-slabs" "" "--bvh cwbvh --float-slabs" "--bvh cwbvh"; do
+      echo "== sponza $c"
+      $T "$B" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  for i in bdpt pt-nee pt; do
+    for b in "$BASE" "$B" "$BASE" "$B"; do
+      echo "== $(basename "$b") cornell $i"
+      $T "$b" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples"
+    done
+  done
+  for i in pt-nee bdpt; do
+    for b in "$BASE" "$B"; do
+      echo "== $(basename "$b") sponza $i"
+      $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+    done
+  done
+  for b in "$BASE" "$B"; do $T "$b" render $CB --integrator bdpt --spp 16 -o "/tmp/$(basename "$b").exr" 2>&1 | tail -1; done
+  "$B" diff "/tmp/$(basename "$B").exr" "/tmp/$(basename "$BASE").exr" 2>&1 | head -2
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs" >&2; exit 2 ;;
 esac
