@@ -2,15 +2,32 @@
 //! pipeline (VK_KHR_ray_tracing_pipeline, over acceleration structures the driver builds from
 //! the scene's triangles), timed the same way, and its hits compared with bidir's.
 
-use crate::gpu::abi::{self, GpuHit, NO_HIT};
+use super::json::Json;
+use crate::gpu::abi::{self, GpuHit, GpuRay, NO_HIT};
 use crate::gpu::kernels;
-use crate::vk::{Buffer, Context, DriverTracer, RtShaders, Timer, VkError};
+use crate::vk::{Buffer, Context, DriverTracer, Memory, RtShaders, Timer, VkError};
 
-/// The driver's pipeline over one scene.
+/// The driver's pipeline over one scene, with its own hit buffer and timer.
 pub struct Driver {
     tracer: DriverTracer,
+    hits: Buffer,
+    timer: Timer,
+    /// GPU time of the bottom-level build (ms) and its bytes.
     pub build_ms: f64,
     pub bytes: u64,
+}
+
+/// One ray kind through the driver's ray-tracing pipeline.
+#[derive(Clone, Debug)]
+pub struct DriverKindResult {
+    pub times_ms: Vec<f64>,
+    pub median_ms: f64,
+    pub mrays_per_s: f64,
+    pub hit_fraction: f64,
+    pub agreement: Agreement,
+    /// The example disagreeing rays of `agreement`: the ray, bidir's hit (triangle as the
+    /// scene numbers it) and the driver's.
+    pub examples: Vec<(GpuRay, GpuHit, GpuHit)>,
 }
 
 /// How the driver's hits compare with bidir's, ray by ray.
@@ -83,8 +100,9 @@ pub fn compare(ours: &[GpuHit], theirs: &[GpuHit], tri_ids: &[u32], any_hit: boo
 }
 
 impl Driver {
-    /// Builds the driver's acceleration structures over the scene's triangles and its pipeline.
-    pub fn new(ctx: &Context, positions: &[glam::Vec3], triangles: &[[u32; 3]]) -> Result<Driver, VkError> {
+    /// Builds the driver's acceleration structures over the scene's triangles and its
+    /// pipeline, for launches of up to `max_rays` rays.
+    pub fn new(ctx: &Context, positions: &[glam::Vec3], triangles: &[[u32; 3]], max_rays: u32) -> Result<Driver, VkError> {
         let shaders = RtShaders {
             raygen: &kernels::RT_TRACE_RGEN,
             miss: &kernels::RT_TRACE_RMISS,
@@ -96,38 +114,134 @@ impl Driver {
         };
         let points: Vec<[f32; 3]> = positions.iter().map(|p| p.to_array()).collect();
         let tracer = ctx.create_driver_tracer(&shaders, &points, triangles)?;
-        Ok(Driver { build_ms: tracer.blas_build_ms(), bytes: tracer.blas_bytes(), tracer })
+        let hits = ctx.create_buffer("bench.driver_hits", max_rays as u64 * std::mem::size_of::<GpuHit>() as u64, Memory::Device)?;
+        let timer = ctx.create_timer("bench.driver_timer", 2)?;
+        Ok(Driver { build_ms: tracer.blas_build_ms(), bytes: tracer.blas_bytes(), tracer, hits, timer })
     }
 
-    /// Traces `count` rays `reps` times after `warmup` untimed runs; the trace's GPU times (ms).
+    /// Traces the first `count` rays of `rays` `reps` times after `warmup` untimed runs (GPU
+    /// timestamps around each launch) and compares the hits with `ours` (bidir's, leaf order:
+    /// `tri_ids` maps them to the scene's triangles); `real` rays count for the rate.
     #[allow(clippy::too_many_arguments)]
-    pub fn time(
+    pub fn measure(
         &self,
         ctx: &Context,
-        timer: &Timer,
         rays: &Buffer,
-        hits: &Buffer,
         count: u32,
+        real: u32,
         any_hit: bool,
+        ours: &[GpuHit],
+        tri_ids: &[u32],
         warmup: usize,
         reps: usize,
-    ) -> Result<Vec<f64>, VkError> {
+    ) -> Result<DriverKindResult, VkError> {
         let push = abi::RtTracePush { count, any_hit: any_hit as u32, ..Default::default() };
         let mut times = Vec::new();
         for rep in 0..warmup + reps {
             ctx.submit("driver trace", |rec| {
-                rec.reset_timer(timer);
-                rec.timestamp(timer, 1);
-                rec.trace_rays_driver(&self.tracer, rays, hits, bytemuck::bytes_of(&push), count)?;
-                rec.timestamp(timer, 2);
+                rec.reset_timer(&self.timer);
+                rec.timestamp(&self.timer, 0);
+                rec.trace_rays_driver(&self.tracer, rays, &self.hits, bytemuck::bytes_of(&push), count)?;
+                rec.timestamp(&self.timer, 1);
                 Ok(())
             })?;
             if rep >= warmup {
-                times.push(timer.elapsed_ns(1, 2)? * 1e-6);
+                times.push(self.timer.elapsed_ns(0, 1)? * 1e-6);
             }
         }
-        Ok(times)
+        let theirs: Vec<GpuHit> = ctx.read_buffer(&self.hits)?;
+        let (ours, theirs) = (&ours[..count as usize], &theirs[..count as usize]);
+        let agreement = compare(ours, theirs, tri_ids, any_hit);
+        let mut examples = Vec::new();
+        if !agreement.examples.is_empty() {
+            let all: Vec<GpuRay> = ctx.read_buffer(rays)?;
+            for &i in &agreement.examples {
+                let mut mine = ours[i as usize];
+                if let Some(&id) = tri_ids.get(mine.tri as usize) {
+                    mine.tri = id;
+                }
+                examples.push((all[i as usize], mine, theirs[i as usize]));
+            }
+        }
+        let median_ms = super::median(&times);
+        Ok(DriverKindResult {
+            median_ms,
+            mrays_per_s: real as f64 / (median_ms * 1e-3) / 1e6,
+            hit_fraction: theirs.iter().filter(|x| x.tri != NO_HIT).count() as f64 / real as f64,
+            agreement,
+            examples,
+            times_ms: times,
+        })
     }
+}
+
+impl DriverKindResult {
+    pub fn to_json(&self) -> Json {
+        let a = &self.agreement;
+        Json::obj(vec![
+            ("median_ms", Json::Num(self.median_ms)),
+            ("mrays_per_s", Json::Num(self.mrays_per_s)),
+            ("hit_fraction", Json::Num(self.hit_fraction)),
+            ("agree_fraction", Json::Num(a.fraction())),
+            ("only_bidir", Json::Int(a.only_bidir as i64)),
+            ("only_driver", Json::Int(a.only_driver as i64)),
+            ("different", Json::Int(a.different as i64)),
+            ("bidir_nearer", Json::Int(a.bidir_nearer as i64)),
+            ("times_ms", Json::Arr(self.times_ms.iter().map(|&t| Json::Num(t)).collect())),
+        ])
+    }
+
+    /// The row of one ray kind (`bidir_mrays_per_s`: bidir's rate for the ratio), then the
+    /// disagreements and their example rays, if any.
+    pub fn print(&self, kind: &str, rays: u32, bidir_mrays_per_s: f64) {
+        println!(
+            "{:<8} {:>10} {:>10.3} {:>12.1} {:>18.2} {:>6.1} {:>9.3}",
+            kind,
+            rays,
+            self.median_ms,
+            self.mrays_per_s,
+            bidir_mrays_per_s / self.mrays_per_s,
+            100.0 * self.hit_fraction,
+            100.0 * self.agreement.fraction()
+        );
+        let a = &self.agreement;
+        if a.agree == a.rays {
+            return;
+        }
+        println!(
+            "         disagreements: {} hit by bidir only, {} by the driver only, {} different triangles at different distances ({} of them nearer for bidir)",
+            a.only_bidir, a.only_driver, a.different, a.bidir_nearer
+        );
+        let tri = |h: &GpuHit| if h.tri == NO_HIT { "none".to_string() } else { format!("{} at t {:e}", h.tri, h.t) };
+        for (ray, ours, theirs) in &self.examples {
+            let (o, d) = (ray.origin, ray.dir);
+            println!(
+                "         ray o ({:e}, {:e}, {:e}) d ({:e}, {:e}, {:e}) t ({:e}, {:e}): bidir {}, driver {}",
+                o.x,
+                o.y,
+                o.z,
+                d.x,
+                d.y,
+                d.z,
+                o.w,
+                d.w,
+                tri(ours),
+                tri(theirs)
+            );
+        }
+    }
+}
+
+/// The header of the driver's rows: its build, then the columns.
+pub fn print_header(build_ms: f64, bytes: u64) {
+    println!(
+        "driver's ray-tracing pipeline (VK_KHR_ray_tracing_pipeline): acceleration structure built in {build_ms:.1} ms (GPU), {:.1} MiB",
+        bytes as f64 / (1 << 20) as f64
+    );
+    println!(
+        "{:<8} {:>10} {:>10} {:>12} {:>18} {:>6} {:>9}",
+        "rays", "count", "median ms", "Mrays/s", "bidir / driver", "hit %", "agree %"
+    );
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! cosine-distributed about the geometric normal at each primary hit), then only the
 //! traversal kernel timed with GPU timestamps: warm-up runs, then repetitions, median.
 
-use super::driver_rt::{compare, Agreement, Driver};
+use super::driver_rt::{Driver, DriverKindResult};
 use super::median;
 use crate::bvh::BvhError;
 use crate::bvh::{BuildOptions, Bvh, BvhLayout, TriTest};
@@ -109,19 +109,6 @@ pub struct KindResult {
     pub hit_fraction: f64,
     /// The same rays through the driver's ray-tracing pipeline (`Options::driver_rt`).
     pub driver: Option<DriverKindResult>,
-}
-
-/// One ray kind through the driver's ray-tracing pipeline.
-#[derive(Clone, Debug)]
-pub struct DriverKindResult {
-    pub times_ms: Vec<f64>,
-    pub median_ms: f64,
-    pub mrays_per_s: f64,
-    pub hit_fraction: f64,
-    pub agreement: Agreement,
-    /// The example disagreeing rays of `agreement`: the ray, bidir's hit (triangle as the
-    /// scene numbers it) and the driver's.
-    pub examples: Vec<(crate::gpu::abi::GpuRay, crate::gpu::abi::GpuHit, crate::gpu::abi::GpuHit)>,
 }
 
 /// The whole report.
@@ -241,8 +228,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let stats = ctx.create_buffer("bench.stats", 8, Memory::Device)?;
     let timer = ctx.create_timer("bench.timer", 3)?;
     let sorter = if opts.sort { Some(RaySorter::new(ctx, n)?) } else { None };
-    let driver = if opts.driver_rt { Some(Driver::new(ctx, positions, triangles)?) } else { None };
-    let driver_hits = ctx.create_buffer("bench.driver_hits", if driver.is_some() { n as u64 * 16 } else { 16 }, Memory::Device)?;
+    let driver = if opts.driver_rt { Some(Driver::new(ctx, positions, triangles, n)?) } else { None };
     let sorted = ctx.create_buffer("bench.sorted_rays", if opts.sort { ray_bytes } else { 32 }, Memory::Device)?;
     let order = ctx.create_buffer("bench.sort_order", if opts.sort { n as u64 * 4 } else { 4 }, Memory::Device)?;
 
@@ -304,33 +290,8 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         // Primary rays of edge tiles outside the image (none at 1920x1080) are not counted.
         let real = if kind == RayKind::Primary { pixels } else { count };
         let driver = match &driver {
+            Some(d) => Some(d.measure(ctx, rays, count, real, any_hit, &h, &bvh.tri_ids, opts.warmup, opts.repetitions)?),
             None => None,
-            Some(d) => {
-                let times = d.time(ctx, &timer, rays, &driver_hits, count, any_hit, opts.warmup, opts.repetitions)?;
-                let theirs: Vec<crate::gpu::abi::GpuHit> = ctx.read_buffer(&driver_hits)?;
-                let theirs = &theirs[..count as usize];
-                let med = median(&times);
-                let agreement = compare(&h[..count as usize], theirs, &bvh.tri_ids, any_hit);
-                let mut examples = Vec::new();
-                if !agreement.examples.is_empty() {
-                    let all: Vec<crate::gpu::abi::GpuRay> = ctx.read_buffer(rays)?;
-                    for &i in &agreement.examples {
-                        let mut ours = h[i as usize];
-                        if let Some(&id) = bvh.tri_ids.get(ours.tri as usize) {
-                            ours.tri = id;
-                        }
-                        examples.push((all[i as usize], ours, theirs[i as usize]));
-                    }
-                }
-                Some(DriverKindResult {
-                    median_ms: med,
-                    mrays_per_s: real as f64 / (med * 1e-3) / 1e6,
-                    hit_fraction: theirs.iter().filter(|x| x.tri != crate::gpu::abi::NO_HIT).count() as f64 / real as f64,
-                    agreement,
-                    examples,
-                    times_ms: times,
-                })
-            }
         };
         results.push(KindResult {
             kind,
@@ -432,23 +393,7 @@ impl Report {
                                 ("tris_per_ray", Json::Num(r.tris_per_ray)),
                                 ("hit_fraction", Json::Num(r.hit_fraction)),
                                 ("times_ms", Json::Arr(r.times_ms.iter().map(|&t| Json::Num(t)).collect())),
-                                (
-                                    "driver_rt",
-                                    match &r.driver {
-                                        None => Json::Null,
-                                        Some(d) => Json::obj(vec![
-                                            ("median_ms", Json::Num(d.median_ms)),
-                                            ("mrays_per_s", Json::Num(d.mrays_per_s)),
-                                            ("hit_fraction", Json::Num(d.hit_fraction)),
-                                            ("agree_fraction", Json::Num(d.agreement.fraction())),
-                                            ("only_bidir", Json::Int(d.agreement.only_bidir as i64)),
-                                            ("only_driver", Json::Int(d.agreement.only_driver as i64)),
-                                            ("different", Json::Int(d.agreement.different as i64)),
-                                            ("bidir_nearer", Json::Int(d.agreement.bidir_nearer as i64)),
-                                            ("times_ms", Json::Arr(d.times_ms.iter().map(|&t| Json::Num(t)).collect())),
-                                        ]),
-                                    },
-                                ),
+                                ("driver_rt", r.driver.as_ref().map_or(Json::Null, DriverKindResult::to_json)),
                             ])
                         })
                         .collect(),
@@ -501,55 +446,10 @@ impl Report {
             );
         }
         if let Some((ms, bytes)) = self.driver_build {
-            println!(
-                "driver's ray-tracing pipeline (VK_KHR_ray_tracing_pipeline): acceleration structure built in {ms:.1} ms (GPU), {:.1} MiB",
-                bytes as f64 / (1 << 20) as f64
-            );
-            println!(
-                "{:<8} {:>10} {:>10} {:>12} {:>18} {:>6} {:>9}",
-                "rays", "count", "median ms", "Mrays/s", "bidir / driver", "hit %", "agree %"
-            );
+            super::driver_rt::print_header(ms, bytes);
             for r in &self.results {
-                let Some(d) = &r.driver else { continue };
-                println!(
-                    "{:<8} {:>10} {:>10.3} {:>12.1} {:>18.2} {:>6.1} {:>9.3}",
-                    r.kind.name(),
-                    r.rays,
-                    d.median_ms,
-                    d.mrays_per_s,
-                    r.mrays_per_s / d.mrays_per_s,
-                    100.0 * d.hit_fraction,
-                    100.0 * d.agreement.fraction()
-                );
-                let a = &d.agreement;
-                if a.agree < a.rays {
-                    println!(
-                        "         disagreements: {} hit by bidir only, {} by the driver only, {} different triangles at different distances ({} of them nearer for bidir)",
-                        a.only_bidir, a.only_driver, a.different, a.bidir_nearer
-                    );
-                    let tri = |h: &crate::gpu::abi::GpuHit| {
-                        if h.tri == crate::gpu::abi::NO_HIT {
-                            "none".to_string()
-                        } else {
-                            format!("{} at t {:e}", h.tri, h.t)
-                        }
-                    };
-                    for (ray, ours, theirs) in &d.examples {
-                        let (o, dir) = (ray.origin, ray.dir);
-                        println!(
-                            "         ray o ({:e}, {:e}, {:e}) d ({:e}, {:e}, {:e}) t ({:e}, {:e}): bidir {}, driver {}",
-                            o.x,
-                            o.y,
-                            o.z,
-                            dir.x,
-                            dir.y,
-                            dir.z,
-                            o.w,
-                            dir.w,
-                            tri(ours),
-                            tri(theirs)
-                        );
-                    }
+                if let Some(d) = &r.driver {
+                    d.print(r.kind.name(), r.rays, r.mrays_per_s);
                 }
             }
         }
