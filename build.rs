@@ -20,9 +20,11 @@ mod sobol;
 /// (the ABI layout test).
 const UNOPTIMISED: &[&str] = &["abi_layout"];
 
-/// Integrator kernels also compiled with `TRAVERSE_CWBVH` defined, as `<stem>_cwbvh`: the same
-/// kernel traversing the compressed wide BVH (glsl/common/traverse_cwbvh.glsl), which the
-/// renderer binds on devices where it traces faster (`render::default_bvh_layout`).
+/// Integrator kernels also compiled with `TRAVERSE_CWBVH` defined, as `<stem>_cwbvh`, and with
+/// `TRAVERSE_BVH4`, as `<stem>_bvh4`: the same kernel traversing the compressed wide BVH
+/// (glsl/common/traverse_cwbvh.glsl) or the 4-wide one (traverse_bvh4.glsl), which the
+/// renderer binds where they trace faster (`render::default_bvh_layout`). Each gets a
+/// `<STEM>_FORMS: LayoutForms` naming all three.
 const WIDE_VARIANTS: &[&str] = &["pt", "bdpt_light", "bdpt_camera", "first_hit"];
 
 fn main() {
@@ -63,8 +65,12 @@ fn main() {
     fs::create_dir_all(&spv_dir).unwrap();
     let builds = kernels.iter().flat_map(|path| {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        let wide = WIDE_VARIANTS.contains(&stem.as_str()).then(|| (path, format!("{stem}_cwbvh"), Some("TRAVERSE_CWBVH")));
-        std::iter::once((path, stem, None)).chain(wide)
+        let forms = if WIDE_VARIANTS.contains(&stem.as_str()) {
+            vec![(path, format!("{stem}_cwbvh"), Some("TRAVERSE_CWBVH")), (path, format!("{stem}_bvh4"), Some("TRAVERSE_BVH4"))]
+        } else {
+            Vec::new()
+        };
+        std::iter::once((path, stem, None)).chain(forms)
     });
     for (path, stem, define) in builds {
         match compile(
@@ -105,6 +111,12 @@ fn main() {
     if failed {
         eprintln!("error: GLSL compilation failed (messages above: file:line: error)");
         std::process::exit(1);
+    }
+    for stem in WIDE_VARIANTS {
+        let up = stem.to_uppercase();
+        table += &format!(
+            "/// `{stem}` built for each BVH layout the integrators traverse.\npub const {up}_FORMS: LayoutForms = LayoutForms {{ bvh2: &{up}, cwbvh: &{up}_CWBVH, bvh4: &{up}_BVH4 }};\n"
+        );
     }
     table += &format!("/// Every kernel, for tools that list or validate them.\npub const ALL: &[KernelSource] = &[{}];\n", all.join(", "));
     write_if_changed(&out.join("kernels.rs"), table.as_bytes());

@@ -47,6 +47,11 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
         }
         // The binary loop on decoded nodes: its variants are the exact layout's.
         BvhLayout::Bvh2q => v.truncate(1),
+        BvhLayout::Bvh4 => {
+            v.truncate(2);
+            v.push(("not speculative", TraceOptions { speculative: false, ..base }));
+            v.push(("float slab test", TraceOptions { int_slabs: false, ..base }));
+        }
         BvhLayout::Cwbvh => {
             v.push(("postponing", TraceOptions { postpone: true, ..base }));
             v.push(("postponing, persistent 3 groups", TraceOptions { postpone: true, persistent: Some(3), ..base }));
@@ -64,13 +69,18 @@ type Reference = (Vec<Option<(u32, TriHit)>>, Vec<bool>);
 /// binary layout (same tree as the exact one, same kernel loop: only the node fetch differs)
 /// is checked once per scene (watertight test, pre-splits: the deeper tree), against the
 /// binary layout's reference (the CPU time and the variants of the loop are not spent twice).
+/// The 4-wide layout (the binary tree collapsed, same leaves) is checked for every build
+/// against the binary layout's reference too.
 fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]], rays: &[GpuRay], opts: BuildOptions) -> (usize, usize) {
     let (a, reference) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2, ..opts }, None);
     let (b, _) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Cwbvh, ..opts }, None);
     assert_eq!(a, b, "{name}: the binary and wide layouts' CPU references disagree on hits");
     if opts.tri_test == TriTest::Watertight && opts.pre_split {
-        check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2q, ..opts }, Some(reference));
+        check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2q, ..opts }, Some(reference.clone()));
     }
+    // The 4-wide layout: the binary tree's leaves under other inner nodes, its own loop.
+    let (c, _) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh4, ..opts }, Some(reference));
+    assert_eq!(a, c, "{name}: the binary and 4-wide layouts disagree on hits");
     a
 }
 
@@ -272,6 +282,7 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
         (TriTest::Woop, BvhLayout::Bvh2),
         (TriTest::Watertight, BvhLayout::Cwbvh),
         (TriTest::Watertight, BvhLayout::Bvh2q),
+        (TriTest::Watertight, BvhLayout::Bvh4),
     ] {
         let bvh = Bvh::build(&p, &t, &BuildOptions { tri_test: test, layout, ..Default::default() }).unwrap();
         let g = GpuBvh::upload(&ctx, &bvh).unwrap();
@@ -298,6 +309,7 @@ fn watertight_test_leaks_no_ray_through_shared_edges() {
     assert_eq!(leaks[0], 0, "watertight test leaked rays through shared edges");
     assert_eq!(leaks[2], 0, "watertight test leaked rays through shared edges (compressed wide BVH)");
     assert_eq!(leaks[3], 0, "watertight test leaked rays through shared edges (quantised binary BVH)");
+    assert_eq!(leaks[4], 0, "watertight test leaked rays through shared edges (4-wide BVH)");
     finish(ctx);
 }
 
@@ -472,6 +484,7 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         (TriTest::Woop, BvhLayout::Bvh2),
         (TriTest::Watertight, BvhLayout::Cwbvh),
         (TriTest::Watertight, BvhLayout::Bvh2q),
+        (TriTest::Watertight, BvhLayout::Bvh4),
     ] {
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, layout, ..Default::default() }).unwrap();
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);

@@ -8,7 +8,8 @@
 // buffers at BIND_NODES / BIND_TRIS. With TRAVERSE_CWBVH defined before inclusion, the nodes
 // are compressed 8-wide ones and trace_ray is the one of traverse_cwbvh.glsl; with
 // TRAVERSE_BVH2Q, they are quantised binary ones, decoded by traverse_bvh2q.glsl's fetch_node.
-// With TRAVERSE_SHORT_STACK (trace kernels only: it declares workgroup shared memory), the
+// With TRAVERSE_BVH4, they are 4-wide ones and trace_ray is traverse_bvh4.glsl's (the same
+// stack and speculative loop). With TRAVERSE_SHORT_STACK (trace kernels only: it declares workgroup shared memory), the
 // binary traversal's stack is traverse_short_stack.glsl's.
 #ifndef BIDIR_TRAVERSE_GLSL
 #define BIDIR_TRAVERSE_GLSL
@@ -64,9 +65,9 @@ layout(constant_id = SPEC_INT_SLABS) const uint INT_SLABS = 1u;
 #include "traverse_cwbvh.glsl"
 #else
 
-#ifdef TRAVERSE_BVH2Q
+#if defined(TRAVERSE_BVH2Q)
 #include "traverse_bvh2q.glsl"
-#else
+#elif !defined(TRAVERSE_BVH4)
 layout(std430, binding = BIND_NODES) readonly buffer BvhNodes { BvhNode bvh_nodes[]; };
 BvhNode fetch_node(int node) {
     return bvh_nodes[node];
@@ -86,6 +87,10 @@ layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
 #define TRAVERSAL_STACK_PUSH(x) stack[++sp] = (x)
 #define TRAVERSAL_STACK_POP() stack[sp--]
 #endif
+
+#ifdef TRAVERSE_BVH4
+#include "traverse_bvh4.glsl"
+#else
 
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
@@ -172,6 +177,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     }
     return hit;
 }
+#endif // TRAVERSE_BVH4
 
 #endif // TRAVERSE_CWBVH
 #endif

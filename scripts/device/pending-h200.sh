@@ -270,5 +270,56 @@ int-slabs)
   for b in "$BASE" "$B"; do $T "$b" render $CB --integrator bdpt --spp 16 -o "/tmp/$(basename "$b").exr" 2>&1 | tail -1; done
   "$B" diff "/tmp/$(basename "$B").exr" "/tmp/$(basename "$BASE").exr" 2>&1 | head -2
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs" >&2; exit 2 ;;
+bvh4)
+  # #17 (session 9): the binary tree collapsed to 4-wide nodes of full-precision boxes
+  # (--bvh bvh4) against bvh2 and cwbvh, interleaved, then its options once each.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for c in "--bvh bvh2" "--bvh bvh4" "--bvh cwbvh" "--bvh bvh4 --float-slabs"; do
+      echo "== sponza $c"
+      $T "$B" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register|nodes of"
+    done
+  done
+  for c in "--bvh bvh4 --no-speculative" "--bvh bvh4 --leaf-size 2" "--bvh bvh4 --leaf-size 8" "--bvh bvh4 --quality 3" \
+           "--bvh bvh4 --tri-test woop --quality 3" "--bvh cwbvh --tri-test woop --quality 3" "--bvh bvh4 --persistent"; do
+    echo "== sponza $c"
+    $T "$B" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register|nodes of"
+  done
+  for c in "--bvh bvh2" "--bvh bvh4" "--bvh cwbvh"; do
+    echo "== cornell 1920x1080 $c"
+    $T "$B" bench traversal --width 1920 --height 1080 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+  done
+  ;;
+bvh4-int)
+  # #16/#17 (session 9): the integrators over the 4-wide BVH (--bvh bvh4) against the
+  # layouts they use now, interleaved; then the 4-wide tree's leaf size and build quality.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for l in cwbvh bvh4 bvh2; do
+      echo "== cornell pt-nee --bvh $l"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --bvh $l 2>&1 | grep -E "Msamples"
+    done
+    for l in bvh2 bvh4; do
+      echo "== cornell bdpt --bvh $l"; $T "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --bvh $l 2>&1 | grep -E "Msamples"
+    done
+  done
+  for l in cwbvh bvh4; do
+    echo "== cornell pt --bvh $l"; $T "$B" bench render $CB --integrator pt --spp 1024 --warmup 2 --runs 5 --bvh $l 2>&1 | grep -E "Msamples"
+  done
+  for i in pt-nee bdpt; do
+    for l in bvh2 bvh4 cwbvh bvh4; do
+      echo "== sponza $i --bvh $l"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples"
+    done
+    for l in bvh2 bvh4 bvh2 bvh4; do
+      echo "== caustic $i --bvh $l"; $T "$B" bench render $CAU --integrator $i --spp 256 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples"
+    done
+  done
+  for c in "--leaf-size 2" "--leaf-size 3" "--leaf-size 2 --quality 3" "--leaf-size 3 --quality 3" "--leaf-size 4"; do
+    echo "== sponza --bvh bvh4 $c"
+    $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |nodes of"
+  done
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int" >&2; exit 2 ;;
 esac

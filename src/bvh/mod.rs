@@ -15,11 +15,12 @@ mod cpu;
 pub mod intersect;
 mod layout;
 mod quant;
+mod wide4;
 
 pub use cpu::CpuTracer;
 pub use intersect::TriTest;
 
-use crate::gpu::abi::{self, BvhNode, CwbvhNode, GpuTri, QuantNode};
+use crate::gpu::abi::{self, Bvh4Node, BvhNode, CwbvhNode, GpuTri, QuantNode};
 
 /// The node layout the GPU traverses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,6 +34,9 @@ pub enum BvhLayout {
     /// The binary layout with each node quantised to 32 bytes (`QuantNode`: child boxes in 8
     /// bits per plane relative to the node's box), same tree and leaves as `Bvh2`.
     Bvh2q,
+    /// The binary tree collapsed to 4 children per node (`Bvh4Node`: full-precision boxes,
+    /// 128 bytes), same leaves and triangles as `Bvh2`.
+    Bvh4,
 }
 
 impl BvhLayout {
@@ -41,6 +45,7 @@ impl BvhLayout {
             BvhLayout::Bvh2 => "bvh2",
             BvhLayout::Cwbvh => "cwbvh",
             BvhLayout::Bvh2q => "bvh2q",
+            BvhLayout::Bvh4 => "bvh4",
         }
     }
 
@@ -50,6 +55,7 @@ impl BvhLayout {
             BvhLayout::Bvh2 => std::mem::size_of::<BvhNode>(),
             BvhLayout::Cwbvh => std::mem::size_of::<CwbvhNode>(),
             BvhLayout::Bvh2q => std::mem::size_of::<QuantNode>(),
+            BvhLayout::Bvh4 => std::mem::size_of::<Bvh4Node>(),
         }
     }
 }
@@ -61,7 +67,8 @@ impl std::str::FromStr for BvhLayout {
             "bvh2" => Ok(BvhLayout::Bvh2),
             "cwbvh" => Ok(BvhLayout::Cwbvh),
             "bvh2q" => Ok(BvhLayout::Bvh2q),
-            _ => Err(format!("unknown BVH layout {s:?}: expected bvh2 | cwbvh | bvh2q")),
+            "bvh4" => Ok(BvhLayout::Bvh4),
+            _ => Err(format!("unknown BVH layout {s:?}: expected bvh2 | cwbvh | bvh2q | bvh4")),
         }
     }
 }
@@ -114,6 +121,8 @@ pub struct Bvh {
     pub wide_nodes: Vec<CwbvhNode>,
     /// Nodes of the quantised binary layout; the root is node 0 (empty for other layouts).
     pub quant_nodes: Vec<QuantNode>,
+    /// Nodes of the 4-wide layout; the root is node 0 (empty for other layouts).
+    pub bvh4_nodes: Vec<Bvh4Node>,
     /// Triangles in leaf order.
     pub tris: Vec<GpuTri>,
     /// Original triangle index of each entry of `tris`.
@@ -159,7 +168,7 @@ impl Bvh {
         };
         params.pre_split = opts.pre_split;
         params.max_prims_per_leaf = match opts.layout {
-            BvhLayout::Bvh2 | BvhLayout::Bvh2q => opts.max_leaf_tris.clamp(1, abi::LEAF_MAX_TRIS),
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q | BvhLayout::Bvh4 => opts.max_leaf_tris.clamp(1, abi::LEAF_MAX_TRIS),
             // The wide conversion chooses its own leaves (SAH) from single-triangle ones.
             BvhLayout::Cwbvh => 1,
         };
@@ -169,6 +178,7 @@ impl Bvh {
             BvhLayout::Bvh2 => layout::convert(bvh2, positions, triangles, opts.tri_test)?,
             BvhLayout::Cwbvh => layout::convert_wide(bvh2, positions, triangles, opts.tri_test, opts.max_leaf_tris.clamp(1, 3))?,
             BvhLayout::Bvh2q => quant::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
+            BvhLayout::Bvh4 => wide4::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
         };
         bvh.build_time = start.elapsed();
         Ok(bvh)
@@ -184,10 +194,11 @@ impl Bvh {
         std::mem::size_of_val(self.nodes.as_slice())
             + std::mem::size_of_val(self.wide_nodes.as_slice())
             + std::mem::size_of_val(self.quant_nodes.as_slice())
+            + std::mem::size_of_val(self.bvh4_nodes.as_slice())
     }
 
     /// Nodes of the layout built.
     pub fn node_count(&self) -> usize {
-        self.nodes.len() + self.wide_nodes.len() + self.quant_nodes.len()
+        self.nodes.len() + self.wide_nodes.len() + self.quant_nodes.len() + self.bvh4_nodes.len()
     }
 }

@@ -60,7 +60,8 @@ pub struct TraversalArgs {
     #[arg(long, default_value_t = 2)]
     pub quality: u32,
     /// BVH node layout: bvh2 (binary, Aila & Laine) | cwbvh (compressed 8-wide, Ylitie et al.
-    /// 2017; leaves of at most 3 triangles) | bvh2q (binary, 32-byte quantised nodes).
+    /// 2017; leaves of at most 3 triangles) | bvh2q (binary, 32-byte quantised nodes) | bvh4
+    /// (the binary tree collapsed to 4-wide nodes of full-precision boxes).
     #[arg(long, default_value = "bvh2")]
     pub bvh: bidir::bvh::BvhLayout,
     /// Most triangles per leaf (1..=16; 1..=3 with --bvh cwbvh) [default: 4; 3 with cwbvh].
@@ -163,7 +164,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     if !(1..=most).contains(&leaf_size) {
         anyhow::bail!("--leaf-size {leaf_size}: must be in 1..={most} (with --bvh {})", a.bvh.name());
     }
-    if a.short_stack && (a.alpha || a.bvh == bidir::bvh::BvhLayout::Cwbvh) {
+    if a.short_stack && (a.alpha || !matches!(a.bvh, bidir::bvh::BvhLayout::Bvh2 | bidir::bvh::BvhLayout::Bvh2q)) {
         anyhow::bail!("--short-stack: only with the binary layouts (--bvh bvh2 | bvh2q) and without --alpha");
     }
     if !(1..=64).contains(&a.rays_per_invocation) || (a.rays_per_invocation > 1 && (a.persistent || a.persistent_groups.is_some())) {

@@ -13,6 +13,10 @@ pub struct InfoArgs {
     /// memory (VK_KHR_pipeline_executable_properties, where the driver offers it)
     #[arg(long)]
     pub kernels: bool,
+    /// With --kernels: the BVH layout to compile them for, bvh2 | cwbvh | bvh4 [default: each
+    /// integrator's own, as `render --bvh auto` picks it]
+    #[arg(long, requires = "kernels")]
+    pub bvh: Option<bidir::bvh::BvhLayout>,
     #[command(flatten)]
     pub scene: SceneArgs,
 }
@@ -23,7 +27,7 @@ fn gib(bytes: u64) -> String {
 
 pub fn run(args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if args.kernels {
-        return super::info_kernels::run(&args.scene, opts);
+        return super::info_kernels::run(&args.scene, args.bvh, opts);
     }
     if let Some(p) = args.scene.scene.as_ref().filter(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"))) {
         return super::merge::info(p);

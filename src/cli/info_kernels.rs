@@ -6,7 +6,7 @@ use super::scene_args::SceneArgs;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::vk::{Context, ContextOptions};
 
-pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+pub fn run(scene_args: &SceneArgs, layout: Option<bidir::bvh::BvhLayout>, opts: &ContextOptions) -> anyhow::Result<()> {
     let loaded = scene_args.load()?;
     let mut opts = opts.clone();
     opts.kernel_statistics = true;
@@ -16,8 +16,8 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
         println!("  the driver does not offer VK_KHR_pipeline_executable_properties: no kernel statistics");
         return Ok(());
     }
-    // Each integrator over the BVH layout it renders with by default (`--bvh auto`); the BVH is
-    // rebuilt only where that layout changes.
+    // Each integrator over `layout`, or the BVH layout it renders with by default (`--bvh
+    // auto`); the BVH is rebuilt only where that layout changes.
     let integrators = [
         Integrator::Pt,
         Integrator::PtNee,
@@ -26,13 +26,16 @@ pub fn run(scene_args: &SceneArgs, opts: &ContextOptions) -> anyhow::Result<()> 
         Integrator::Vcm(bidir::render::vcm::VcmMode::FULL),
         Integrator::Vcm(bidir::render::vcm::VcmMode::MERGE_ALL),
     ];
-    let mut r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, RenderSettings::new(integrators[0]))?;
+    let mut settings = RenderSettings::new(integrators[0]);
+    settings.bvh_layout = layout;
+    let mut r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, settings)?;
     for integrator in integrators {
         r.switch_integrator(&loaded.scene, &loaded.camera, integrator)?;
         for kernel in r.kernels() {
             let stats = kernel.statistics()?;
             let line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
-            println!("{} / {} ({} statistics): {}", integrator.name(), kernel.name(), stats.len(), line.join("; "));
+            let bvh = r.settings().bvh.layout.name();
+            println!("{} / {} over {bvh} ({} statistics): {}", integrator.name(), kernel.name(), stats.len(), line.join("; "));
         }
     }
     Ok(())

@@ -78,8 +78,9 @@ pub struct SettingsArgs {
     pub tri_test: TriTest,
     /// BVH layout the integrators traverse: auto (the faster one for the device, integrator
     /// and scene: cwbvh on CPU devices such as lavapipe and for pt/pt-nee on GPUs in scenes
-    /// with only diffuse surfaces, bvh2 otherwise) | bvh2 | cwbvh.
-    #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh")]
+    /// with only diffuse surfaces, bvh2 otherwise) | bvh2 | cwbvh | bvh4 (4-wide, full-precision
+    /// boxes).
+    #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh|bvh4")]
     pub bvh: String,
     /// BVH build quality, obvhs's preset 0 (fastest build) .. 4 (slowest build, fewest nodes
     /// visited per ray); the image is the same.
@@ -128,7 +129,8 @@ impl SettingsArgs {
             "auto" => None,
             "bvh2" => Some(bidir::bvh::BvhLayout::Bvh2),
             "cwbvh" => Some(bidir::bvh::BvhLayout::Cwbvh),
-            other => bail!("--bvh {other}: the integrators traverse auto | bvh2 | cwbvh (bvh2q is for `bidir bench traversal`)"),
+            "bvh4" => Some(bidir::bvh::BvhLayout::Bvh4),
+            other => bail!("--bvh {other}: the integrators traverse auto | bvh2 | cwbvh | bvh4 (bvh2q is for `bidir bench traversal`)"),
         };
         s.all_material_code = self.all_features;
         s.path_regeneration = match self.path_regeneration.as_str() {

@@ -61,6 +61,8 @@ gpu_consts! {
     pub const BVH_LAYOUT_CWBVH: u32 = 1;
     /// The binary layout with 32-byte quantised nodes (`QuantNode`).
     pub const BVH_LAYOUT_BVH2Q: u32 = 2;
+    /// The 4-wide layout with full-precision boxes (`Bvh4Node`).
+    pub const BVH_LAYOUT_BVH4: u32 = 3;
     /// `QuantNode::exps_left` bits 24..32: 0 when child 0 is the inner node after this one,
     /// else child 0 is a leaf of that many triangles ending where child 1's leaf begins.
     pub const QUANT_LEFT_SHIFT: u32 = 24;
@@ -363,6 +365,19 @@ gpu_structs! {
         pub qz: u32,
         /// Child 1: >= 0 an inner node index, < 0 a leaf pointer (see LEAF_FIRST_BITS).
         pub child1: i32,
+    }
+
+    /// A 4-wide BVH node with full-precision child boxes (the binary tree collapsed, see
+    /// `bvh::wide4`), in 128 bytes: one cache line. `planes[2 a]` holds the four children's
+    /// lower bounds on axis a (x, y, z), `planes[2 a + 1]` their upper bounds, so a ray reads
+    /// its near planes at `2 a + (d[a] < 0)` and its far ones at `2 a + 1 - (d[a] < 0)`.
+    /// An empty slot has lower bounds +inf and upper bounds -inf, so every ray misses it.
+    pub struct Bvh4Node (128 bytes) {
+        pub planes: [Vec4; 6],
+        /// Child pointers like `BvhNode::children` (>= 0 inner node, < 0 leaf); 0 in empty
+        /// slots (never followed).
+        pub children: IVec4,
+        pub reserved: UVec4,
     }
 
     /// Push constants of the ray sort kernels: the grid of origin cells over the scene bounds.

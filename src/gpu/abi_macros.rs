@@ -15,6 +15,7 @@ glsl_type! {
     glam::Vec2 => "vec2", glam::Vec3 => "vec3", glam::Vec4 => "vec4",
     glam::UVec2 => "uvec2", glam::UVec3 => "uvec3", glam::UVec4 => "uvec4",
     glam::IVec2 => "ivec2", glam::IVec4 => "ivec4", glam::Mat4 => "mat4",
+    [glam::Vec4; 6] => "vec4[6]",
 }
 
 /// One field of a shared struct as the Rust compiler laid it out.

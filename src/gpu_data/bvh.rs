@@ -2,11 +2,12 @@
 
 use crate::bvh::{Bvh, BvhLayout, TriTest};
 use crate::gpu::abi;
+use crate::gpu::kernels::LayoutForms;
 use crate::vk::{Bind, Buffer, Context, KernelSource, Result};
 
 /// A BVH in GPU memory.
 pub struct GpuBvh {
-    /// `BvhNode`s, `CwbvhNode`s or `QuantNode`s, as `layout` says.
+    /// `BvhNode`s, `CwbvhNode`s, `QuantNode`s or `Bvh4Node`s, as `layout` says.
     pub nodes: Buffer,
     pub tris: Buffer,
     pub tri_test: TriTest,
@@ -20,6 +21,7 @@ impl GpuBvh {
             BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
             BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
             BvhLayout::Bvh2q => ctx.upload_buffer("bvh.quant_nodes", &bvh.quant_nodes)?,
+            BvhLayout::Bvh4 => ctx.upload_buffer("bvh.bvh4_nodes", &bvh.bvh4_nodes)?,
         };
         Ok(GpuBvh {
             nodes,
@@ -30,13 +32,15 @@ impl GpuBvh {
         })
     }
 
-    /// The variant of an integrator kernel that traverses this BVH's layout: `bvh2` is built
-    /// from the kernel's source as it is, `cwbvh` with `TRAVERSE_CWBVH` (build.rs). The
-    /// renderer builds only these two layouts (`render::check_layout`).
-    pub fn kernel(&self, bvh2: &'static KernelSource, cwbvh: &'static KernelSource) -> &'static KernelSource {
+    /// The form of an integrator kernel that traverses this BVH's layout: `bvh2` is built
+    /// from the kernel's source as it is, `cwbvh` with `TRAVERSE_CWBVH`, `bvh4` with
+    /// `TRAVERSE_BVH4` (build.rs). The renderer builds only these three layouts
+    /// (`render::check_layout`).
+    pub fn kernel(&self, forms: &LayoutForms) -> &'static KernelSource {
         match self.layout {
-            BvhLayout::Cwbvh => cwbvh,
-            BvhLayout::Bvh2 | BvhLayout::Bvh2q => bvh2,
+            BvhLayout::Cwbvh => forms.cwbvh,
+            BvhLayout::Bvh4 => forms.bvh4,
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q => forms.bvh2,
         }
     }
 

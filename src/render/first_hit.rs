@@ -27,7 +27,7 @@ impl FirstHitPass {
         specs.push(sampler.spec());
         let any_aov = aovs.albedo || aovs.normal || aovs.depth;
         specs.push(Spec { id: abi::SPEC_FIRST_HIT_AOVS, value: any_aov as u32 });
-        let kernel = ctx.create_kernel(scene.bvh.kernel(&kernels::FIRST_HIT, &kernels::FIRST_HIT_CWBVH), &specs)?;
+        let kernel = ctx.create_kernel(scene.bvh.kernel(&kernels::FIRST_HIT_FORMS), &specs)?;
         let pass = FirstHitPass { kernel, sums: Self::sums_buffer(ctx, width, height)?, width, height, aovs };
         pass.clear(ctx)?;
         Ok(pass)

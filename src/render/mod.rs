@@ -301,14 +301,14 @@ const TARGET_INVOCATIONS: u64 = 1 << 18;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
 const SLICED_STORE_BYTES: u64 = 1 << 30;
 
-/// The integrator kernels are built for the binary BVH of 64-byte nodes and the compressed
-/// wide BVH (build.rs, `WIDE_VARIANTS`): quantised nodes would be read as one of those and the
-/// image would be quietly wrong.
+/// The integrator kernels are built for the binary BVH of 64-byte nodes, the compressed
+/// wide BVH and the 4-wide one (build.rs, `WIDE_VARIANTS`): quantised nodes would be read as
+/// one of those and the image would be quietly wrong.
 fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
     match layout {
-        BvhLayout::Bvh2 | BvhLayout::Cwbvh => Ok(()),
+        BvhLayout::Bvh2 | BvhLayout::Cwbvh | BvhLayout::Bvh4 => Ok(()),
         other => Err(RenderError::Unsupported(format!(
-            "the integrators traverse bvh2 or cwbvh; the '{}' layout is for `bidir bench traversal --bvh {}`",
+            "the integrators traverse bvh2, cwbvh or bvh4; the '{}' layout is for `bidir bench traversal --bvh {}`",
             other.name(),
             other.name()
         ))),

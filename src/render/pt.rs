@@ -15,7 +15,7 @@ impl PathTracer {
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(sampler.spec());
         specs.push(Spec { id: abi::SPEC_PATH_REGENERATION, value: regenerate as u32 });
-        Ok(PathTracer { kernel: ctx.create_kernel(scene.bvh.kernel(&kernels::PT, &kernels::PT_CWBVH), &specs)? })
+        Ok(PathTracer { kernel: ctx.create_kernel(scene.bvh.kernel(&kernels::PT_FORMS), &specs)? })
     }
 
     /// Records one pass: `push.spp` samples for every pixel.

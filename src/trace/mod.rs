@@ -144,7 +144,9 @@ impl Tracer {
         let mut trace_specs = base.to_vec();
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
         match opts.layout {
-            BvhLayout::Bvh2 | BvhLayout::Bvh2q => trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 }),
+            BvhLayout::Bvh2 | BvhLayout::Bvh2q | BvhLayout::Bvh4 => {
+                trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 })
+            }
             BvhLayout::Cwbvh => trace_specs.push(Spec { id: abi::SPEC_CWBVH_POSTPONE, value: opts.postpone as u32 }),
         }
         trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
@@ -184,11 +186,13 @@ impl Tracer {
                     BvhLayout::Bvh2 => &kernels::TRACE_ALPHA,
                     BvhLayout::Cwbvh => &kernels::TRACE_ALPHA_CWBVH,
                     BvhLayout::Bvh2q => &kernels::TRACE_ALPHA_BVH2Q,
+                    BvhLayout::Bvh4 => &kernels::TRACE_ALPHA_BVH4,
                 }
             }
             (None, BvhLayout::Bvh2) => &kernels::TRACE,
             (None, BvhLayout::Cwbvh) => &kernels::TRACE_CWBVH,
             (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
+            (None, BvhLayout::Bvh4) => &kernels::TRACE_BVH4,
         };
         let with = |id, value| {
             let mut s = trace_specs.clone();

@@ -1,0 +1,106 @@
+// 4-wide BVH traversal over full-precision boxes (Bvh4Node in src/gpu/abi.rs, built by
+// src/bvh/wide4.rs from the binary tree). Included by traverse.glsl when TRAVERSE_BVH4 is
+// defined; same interface as its binary trace_ray, same speculative while-while structure
+// (Aila & Laine 2009) and leaf pointers: only the node step differs.
+//
+// Node step: a ray reads each axis' near planes of the four children at 2 a + (d[a] < 0) and
+// the far ones at 2 a + 1 - (d[a] < 0), so the slab test needs no min/max per plane pair; an
+// empty slot (lower +inf, upper -inf) gets near +inf and far -inf and is never hit. The hit
+// children are ordered by entry distance with a five-comparator sorting network on keys that
+// hold the distance's bits with the child's slot in the two lowest (distances are not
+// negative, so their bits sort as unsigned integers; the two bits only break near-ties). The
+// nearest is visited next, the others pushed far to near.
+
+layout(std430, binding = BIND_NODES) readonly buffer Bvh4Nodes { Bvh4Node bvh4_nodes[]; };
+
+// Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts 4-wide
+// nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
+TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+    PreparedRay pr = prepare_ray(o, d, tmin);
+    vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
+    vec3 idir = 1.0 / dd;
+    vec3 ood = o * idir;
+    uint nx = dd.x < 0.0 ? 1u : 0u;
+    uint ny = dd.y < 0.0 ? 3u : 2u;
+    uint nz = dd.z < 0.0 ? 5u : 4u;
+
+    TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
+    TRAVERSAL_STACK_INIT();
+    int node = 0;   // root
+    int leaf = 0;   // postponed leaf (< 0), none if >= 0
+
+    while (node != int(TRAVERSAL_SENTINEL)) {
+        // Inner nodes: descend until this lane holds a leaf and every active lane does.
+        while (uint(node) < TRAVERSAL_SENTINEL) {
+            if (TRAVERSAL_STATS != 0u) {
+                stats.x++;
+            }
+            vec4 near_x = bvh4_nodes[node].planes[nx] * idir.x - ood.x;
+            vec4 far_x = bvh4_nodes[node].planes[nx ^ 1u] * idir.x - ood.x;
+            vec4 near_y = bvh4_nodes[node].planes[ny] * idir.y - ood.y;
+            vec4 far_y = bvh4_nodes[node].planes[ny ^ 1u] * idir.y - ood.y;
+            vec4 near_z = bvh4_nodes[node].planes[nz] * idir.z - ood.z;
+            vec4 far_z = bvh4_nodes[node].planes[nz ^ 1u] * idir.z - ood.z;
+            ivec4 children = bvh4_nodes[node].children;
+            vec4 t_near, t_far;
+            if (INT_SLABS != 0u) {
+                // On the bits as signed integers, as in the binary kernel: tmin and hit.t are
+                // not negative, so a negative distance loses to tmin in t_near and rejects the
+                // box in t_far whichever the integer order picks.
+                ivec4 lo = ivec4(floatBitsToInt(tmin)), hi = ivec4(floatBitsToInt(hit.t));
+                t_near = intBitsToFloat(max(max(floatBitsToInt(near_x), floatBitsToInt(near_y)), max(floatBitsToInt(near_z), lo)));
+                t_far = intBitsToFloat(min(min(floatBitsToInt(far_x), floatBitsToInt(far_y)), min(floatBitsToInt(far_z), hi)));
+            } else {
+                t_near = max(max(near_x, near_y), max(near_z, vec4(tmin)));
+                t_far = min(min(far_x, far_y), min(far_z, vec4(hit.t)));
+            }
+            bvec4 hit4 = lessThanEqual(t_near, t_far * BOX_EXIT_SCALE);
+            uvec4 key = mix(uvec4(0xffffffffu), (floatBitsToUint(t_near) & ~3u) | uvec4(0u, 1u, 2u, 3u), hit4);
+            // Sorting network (0,1) (2,3) (0,2) (1,3) (1,2): k0 nearest .. k3 farthest.
+            uint a = min(key.x, key.y), b = max(key.x, key.y);
+            uint c = min(key.z, key.w), e = max(key.z, key.w);
+            uint k0 = min(a, c), k3 = max(b, e);
+            uint f = max(a, c), g = min(b, e);
+            uint k1 = min(f, g), k2 = max(f, g);
+            if (k0 == 0xffffffffu) {
+                node = TRAVERSAL_STACK_POP();
+            } else {
+                node = children[k0 & 3u];
+                if (k3 != 0xffffffffu) {
+                    TRAVERSAL_STACK_PUSH(children[k3 & 3u]);
+                }
+                if (k2 != 0xffffffffu) {
+                    TRAVERSAL_STACK_PUSH(children[k2 & 3u]);
+                }
+                if (k1 != 0xffffffffu) {
+                    TRAVERSAL_STACK_PUSH(children[k1 & 3u]);
+                }
+            }
+            // Postpone a leaf and keep descending (speculative traversal).
+            if (node < 0 && leaf >= 0) {
+                leaf = node;
+                node = TRAVERSAL_STACK_POP();
+            }
+            if (SPECULATIVE != 0u ? subgroupAll(leaf < 0) : leaf < 0) {
+                break;
+            }
+        }
+        // Leaves: this lane's postponed leaf, then `node` if it is a leaf too.
+        while (leaf < 0) {
+            uint first = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);
+            uint count = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;
+            for (uint i = first; i < first + count; i++) {
+                if (test_leaf_triangle(pr, i, hit, stats) && any_hit) {
+                    return hit;
+                }
+            }
+            leaf = node;
+            if (node < 0) {
+                node = TRAVERSAL_STACK_POP();
+            }
+        }
+    }
+    return hit;
+}
