@@ -101,3 +101,41 @@ fn four_wide_bvh_gives_the_binary_bvhs_image() {
     }
     finish(ctx);
 }
+
+/// `RenderSettings::count_traversal` (`bench render --count`): the integrator kernels count
+/// what they trace. Every sample traces at least its camera ray and, with paths of at most 3
+/// bounces, at most 3 extension and 3 shadow rays (pt-nee), plus up to 3 connections and a
+/// light path of its own (BDPT); every ray visits at least the root; off, nothing is counted.
+#[test]
+fn traversal_counts_are_plausible_and_off_by_default() {
+    let ctx = gpu();
+    let scene = Scene::builtin_cornell_box();
+    let mut camera = scene.cameras[0].clone();
+    camera.width = 16;
+    camera.height = 16;
+    for (integrator, most_per_sample) in [(Integrator::PtNee, 7.0), (Integrator::Bdpt(Join::DEFAULT), 19.0)] {
+        for count in [false, true] {
+            let mut settings = RenderSettings::new(integrator);
+            settings.max_depth = 3;
+            settings.count_traversal = count;
+            let mut r = Renderer::new(&ctx, &scene, &camera, settings).unwrap();
+            r.render_spp(8, |_| {}).unwrap();
+            let [rays, nodes, tris] = r.traversal_counts().unwrap();
+            let samples = (16 * 16 * 8) as f64;
+            if !count {
+                assert_eq!([rays, nodes, tris], [0, 0, 0], "{}: counted without count_traversal", integrator.name());
+                continue;
+            }
+            let per_sample = rays as f64 / samples;
+            eprintln!(
+                "{}: {per_sample:.2} rays/sample, {:.2} nodes/ray, {:.2} triangles/ray",
+                integrator.name(),
+                nodes as f64 / rays as f64,
+                tris as f64 / rays as f64
+            );
+            assert!((1.0..=most_per_sample).contains(&per_sample), "{}: {per_sample} rays per sample", integrator.name());
+            assert!(nodes >= rays && tris > 0, "{}: {nodes} nodes, {tris} triangles for {rays} rays", integrator.name());
+        }
+    }
+    finish(ctx);
+}

@@ -20,6 +20,17 @@ layout(std430, binding = BIND_TRIS) readonly buffer BvhTris { GpuTri bvh_tris[];
 
 layout(constant_id = SPEC_STATS) const uint TRAVERSAL_STATS = 0u;
 
+// This invocation's rays (x), node visits (y) and triangle tests (z) over every trace_ray
+// call, when TRAVERSAL_STATS is set; the integrator kernels add them to the render stats at
+// their end (ADD_TRAVERSAL_COUNTS), the trace kernels count through their `stats` instead.
+uvec3 traversal_counts = uvec3(0u);
+#define ADD_TRAVERSAL_COUNTS(stats_buffer)                                                         \
+    if (TRAVERSAL_STATS != 0u) {                                                                   \
+        atomicAdd(stats_buffer[STAT_RAYS], traversal_counts.x);                                    \
+        atomicAdd(stats_buffer[STAT_NODES], traversal_counts.y);                                   \
+        atomicAdd(stats_buffer[STAT_TRIS], traversal_counts.z);                                    \
+    }
+
 // Slightly widens a box's exit distance so rounding in the slab test never culls a box the
 // ray touches (cf. Ize 2013, "Robust BVH Ray Traversal").
 const float BOX_EXIT_SCALE = 1.0000004;
@@ -42,6 +53,7 @@ struct TraceHit {
 bool test_leaf_triangle(PreparedRay pr, uint i, inout TraceHit hit, inout uvec2 stats) {
     if (TRAVERSAL_STATS != 0u) {
         stats.y++;
+        traversal_counts.z++;
     }
     float t;
     vec2 bary;
@@ -96,6 +108,9 @@ layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
 TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
     PreparedRay pr = prepare_ray(o, d, tmin);
+    if (TRAVERSAL_STATS != 0u) {
+        traversal_counts.x++;
+    }
     // Reciprocal direction with zero components replaced by tiny ones of the same sign.
     vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
@@ -114,6 +129,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             BvhNode n = fetch_node(node);
             if (TRAVERSAL_STATS != 0u) {
                 stats.x++;
+                traversal_counts.y++;
             }
             vec4 t0xy = vec4(n.c0_xy.xy * idir.x, n.c0_xy.zw * idir.y) - ood.xxyy;
             vec4 t1xy = vec4(n.c1_xy.xy * idir.x, n.c1_xy.zw * idir.y) - ood.xxyy;

@@ -17,6 +17,9 @@ layout(std430, binding = BIND_NODES) readonly buffer Bvh4Nodes { Bvh4Node bvh4_n
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
 TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
     PreparedRay pr = prepare_ray(o, d, tmin);
+    if (TRAVERSAL_STATS != 0u) {
+        traversal_counts.x++;
+    }
     vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
@@ -36,6 +39,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
         while (uint(node) < TRAVERSAL_SENTINEL) {
             if (TRAVERSAL_STATS != 0u) {
                 stats.x++;
+                traversal_counts.y++;
             }
             vec4 near_x = bvh4_nodes[node].planes[nx] * idir.x - ood.x;
             vec4 far_x = bvh4_nodes[node].planes[nx ^ 1u] * idir.x - ood.x;

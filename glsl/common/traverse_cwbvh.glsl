@@ -86,6 +86,9 @@ uint cwbvh_intersect_children(CwbvhNode n, vec3 o, vec3 idir, bvec3 neg, float t
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
 TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
     PreparedRay pr = prepare_ray(o, d, tmin);
+    if (TRAVERSAL_STATS != 0u) {
+        traversal_counts.x++;
+    }
     vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
@@ -115,6 +118,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             CwbvhNode n = cwbvh_nodes[child];
             if (TRAVERSAL_STATS != 0u) {
                 stats.x++;
+                traversal_counts.y++;
             }
             uint hits = cwbvh_intersect_children(n, o, idir, neg, tmin, hit.t, oct_inv4);
             node_group = uvec2(n.meta.x, (hits & 0xff000000u) | (n.p_e.w >> 24));

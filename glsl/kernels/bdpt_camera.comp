@@ -411,4 +411,5 @@ void main() {
     } else {
         slices_out[slice * pixels + pixel] = add;
     }
+    ADD_TRAVERSAL_COUNTS(render_stats);
 }

@@ -310,4 +310,5 @@ void main() {
     }
     light_counts[path] = uvec2(stored, seen);
     lvc_offsets[path] = stored;
+    ADD_TRAVERSAL_COUNTS(render_stats);
 }

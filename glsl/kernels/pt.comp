@@ -333,4 +333,5 @@ void main() {
     if (sums.bad > 0u) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], sums.bad);
     }
+    ADD_TRAVERSAL_COUNTS(render_stats);
 }

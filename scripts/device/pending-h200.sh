@@ -321,5 +321,42 @@ bvh4-int)
     $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |nodes of"
   done
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int" >&2; exit 2 ;;
+glossy-layout)
+  # #16 (session 9): pt and pt-nee over the binary and the compressed wide BVH in scenes with
+  # GGX lobes but no mirror or glass (the default picks bvh2 there), interleaved. Needs
+  # .device/scenes/gltf/{DamagedHelmet,MetalRoughSpheresNoTextures}.glb.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  ROUGH="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for i in pt-nee pt; do
+    for l in bvh2 cwbvh bvh2 cwbvh; do
+      echo "== sponza $i --bvh $l"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples"
+      echo "== rough-cornell $i --bvh $l"; $T "$B" bench render $ROUGH --integrator $i --spp 256 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples"
+      for m in DamagedHelmet MetalRoughSpheresNoTextures; do
+        echo "== $m $i --bvh $l"; $T "$B" bench render .device/scenes/gltf/$m.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --integrator $i --spp 256 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  for l in bvh2 cwbvh; do
+    timeout -k 5 90 "$B" info --kernels --bvh $l "$SP" --sponza-sun-sky 2>&1 | grep -E "^pt" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  done
+  ;;
+counts)
+  # #16 (session 9): what the integrator kernels trace per sample (`bench render --count`) and
+  # the rate that makes at their timed speed, beside the trace kernel's own on the same scene.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 90"
+  for i in pt pt-nee bdpt; do
+    echo "== cornell $i"; $T "$B" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 --count 2>&1 | grep -E "Msamples|traversal|^(pt|bdpt)"
+  done
+  for i in pt-nee bdpt; do
+    echo "== sponza $i"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 --count 2>&1 | grep -E "Msamples|traversal|^(pt|bdpt)"
+  done
+  echo "== sponza pt-nee --bvh bvh2"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --count --bvh bvh2 2>&1 | grep -E "Msamples|traversal"
+  echo "== sponza trace kernels 640x360 (bvh2, cwbvh)"
+  for l in bvh2 cwbvh; do $T "$B" bench traversal "$SP" --camera CameraMain --width 640 --height 360 --bvh $l 2>&1 | grep -E "^(primary|shadow|diffuse) "; done
+  echo "== cornell trace kernels 256x256 (cwbvh, bvh2)"
+  for l in cwbvh bvh2; do $T "$B" bench traversal --width 256 --height 256 --bvh $l 2>&1 | grep -E "^(primary|shadow|diffuse) "; done
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts" >&2; exit 2 ;;
 esac

@@ -18,7 +18,23 @@ pub struct Options {
     pub warmup: usize,
     /// Timed runs; medians are reported.
     pub runs: usize,
+    /// Render once more with the kernels counting rays, node visits and triangle tests
+    /// (`RenderSettings::count_traversal`; not timed).
+    pub count: bool,
 }
+
+/// What the integrator kernels traced in the counting render.
+#[derive(Clone, Copy, Debug)]
+pub struct TraversalCounts {
+    /// Samples (pixels x spp) of the counting render.
+    pub samples: u64,
+    pub rays: u64,
+    pub nodes: u64,
+    pub tris: u64,
+}
+
+/// Most samples a counting render takes (it is untimed, and slower than a plain one).
+const COUNT_SAMPLES: u64 = 1 << 21;
 
 /// One kernel's share of a run.
 #[derive(Clone, Debug)]
@@ -46,6 +62,7 @@ pub struct Report {
     pub kernels: Vec<KernelRow>,
     /// Dispatches not timed (more than a submission's timestamps).
     pub untimed: u64,
+    pub counts: Option<TraversalCounts>,
 }
 
 impl Report {
@@ -81,6 +98,19 @@ impl Report {
         if self.untimed > 0 {
             println!("({} dispatches were not timed: a submission held more than the profiler's timestamps)", self.untimed);
         }
+        if let Some(c) = self.counts {
+            let per_sample = c.rays as f64 / c.samples as f64;
+            let samples_per_s = self.msamples_per_s() * 1e6;
+            println!(
+                "traversal ({} samples counted): {:.2} rays/sample, {:.1} nodes/ray, {:.1} triangles/ray; at the timed rate {:.3} Grays/s, {:.1} G node visits/s",
+                c.samples,
+                per_sample,
+                c.nodes as f64 / c.rays.max(1) as f64,
+                c.tris as f64 / c.rays.max(1) as f64,
+                per_sample * samples_per_s / 1e9,
+                c.nodes as f64 / c.samples as f64 * samples_per_s / 1e9
+            );
+        }
     }
 
     pub fn to_json(&self) -> Json {
@@ -93,6 +123,18 @@ impl Report {
             ("gpu_ms", Json::Num(self.gpu_ms)),
             ("wall_ms", Json::Num(self.wall_ms)),
             ("msamples_per_s", Json::Num(self.msamples_per_s())),
+            (
+                "traversal_counts",
+                match self.counts {
+                    None => Json::Null,
+                    Some(c) => Json::obj(vec![
+                        ("samples", Json::Int(c.samples as i64)),
+                        ("rays", Json::Int(c.rays as i64)),
+                        ("nodes", Json::Int(c.nodes as i64)),
+                        ("tris", Json::Int(c.tris as i64)),
+                    ]),
+                },
+            ),
             (
                 "kernels",
                 Json::Arr(
@@ -116,6 +158,7 @@ impl Report {
 /// the timed runs' medians. Leaves profiling off.
 pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings, o: &Options) -> Result<Report, RenderError> {
     let integrator = settings.integrator.name();
+    let count_settings = RenderSettings { count_traversal: true, ..settings.clone() };
     let mut r = Renderer::new(ctx, scene, camera, settings)?;
     let kernel_form = crate::render::kernel_form(r.settings());
     let spp = o.spp.max(1);
@@ -149,15 +192,37 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
     let mut kernels: Vec<KernelRow> =
         per_kernel.into_iter().map(|(name, (ms, dispatches))| KernelRow { name, ms: super::median(&ms), dispatches }).collect();
     kernels.sort_by(|a, b| b.ms.total_cmp(&a.ms));
+    let pixels = camera.width as u64 * camera.height as u64;
+    let counts = if o.count {
+        drop(r);
+        let mut c = Renderer::new(ctx, scene, camera, count_settings)?;
+        let count_spp = (COUNT_SAMPLES / pixels.max(1)).clamp(1, spp as u64) as u32;
+        // One sample per pixel at a time, the 32-bit counters read after each: their
+        // increments stay exact (wrapping differences) unless one pass visits 2^32 nodes.
+        let (mut totals, mut last) = ([0u64; 3], [0u32; 3]);
+        for total_spp in 1..=count_spp {
+            c.render_spp(total_spp, |_| {})?;
+            let now = c.traversal_counts()?;
+            for k in 0..3 {
+                totals[k] += now[k].wrapping_sub(last[k]) as u64;
+            }
+            last = now;
+        }
+        let [rays, nodes, tris] = totals;
+        Some(TraversalCounts { samples: pixels * count_spp as u64, rays, nodes, tris })
+    } else {
+        None
+    };
     Ok(Report {
         device: ctx.info().name.clone(),
         integrator,
         kernel_form,
-        pixels: camera.width as u64 * camera.height as u64,
+        pixels,
         spp,
         gpu_ms: super::median(&gpu),
         wall_ms: super::median(&wall),
         kernels,
         untimed,
+        counts,
     })
 }

@@ -32,6 +32,11 @@ pub struct RenderBenchArgs {
     /// Timed runs (the median is reported).
     #[arg(long, default_value_t = 5)]
     pub runs: usize,
+    /// Then render once more (untimed, at most 2^21 samples) with the kernels counting the rays
+    /// they trace, their node visits and triangle tests, and print them per sample and at the
+    /// timed rate.
+    #[arg(long)]
+    pub count: bool,
     /// Also run the first-hit pass that writing an EXR adds: `alpha` (the EXR's alpha alone),
     /// or alpha and the AOVs named, as `--aov` takes them (`albedo,normal,depth`).
     #[arg(long, value_name = "alpha|AOVS")]
@@ -140,7 +145,7 @@ fn render_cmd(a: &RenderBenchArgs, opts: &ContextOptions) -> anyhow::Result<()> 
     super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
-    let o = bidir::bench::render::Options { spp: a.spp, warmup: a.warmup, runs: a.runs.max(1) };
+    let o = bidir::bench::render::Options { spp: a.spp, warmup: a.warmup, runs: a.runs.max(1), count: a.count };
     let report = bidir::bench::render::run(&ctx, &loaded.scene, &loaded.camera, settings, &o)?;
     report.print();
     if let Some(path) = &a.json {

@@ -77,9 +77,9 @@ pub struct SettingsArgs {
     #[arg(long, default_value = "watertight")]
     pub tri_test: TriTest,
     /// BVH layout the integrators traverse: auto (the faster one for the device, integrator
-    /// and scene: cwbvh on CPU devices such as lavapipe and for pt/pt-nee on GPUs in scenes
-    /// with only diffuse surfaces, bvh2 otherwise) | bvh2 | cwbvh | bvh4 (4-wide, full-precision
-    /// boxes).
+    /// and scene: cwbvh on CPU devices such as lavapipe, on GPUs for pt in scenes with only
+    /// diffuse surfaces and for pt-nee in scenes without mirrors or glass; bvh2 otherwise) |
+    /// bvh2 | cwbvh | bvh4 (4-wide, full-precision boxes).
     #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh|bvh4")]
     pub bvh: String,
     /// BVH build quality, obvhs's preset 0 (fastest build) .. 4 (slowest build, fewest nodes

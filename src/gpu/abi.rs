@@ -167,6 +167,11 @@ gpu_consts! {
     pub const TEXTURE_SRGB: u32 = 1;
     /// Counters in the render stats buffer.
     pub const STAT_NAN_SAMPLES: u32 = 0;
+    /// With SPEC_STATS set in an integrator kernel (`RenderSettings::count_traversal`): rays
+    /// traced, inner nodes visited and triangles tested (32-bit: count a few million samples).
+    pub const STAT_RAYS: u32 = 1;
+    pub const STAT_NODES: u32 = 2;
+    pub const STAT_TRIS: u32 = 3;
     pub const STAT_COUNT: u32 = 4;
 
     // ---- Specialisation-constant ids ----------------------------------------------------

@@ -143,6 +143,7 @@ impl Bdpt {
         }
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
+        specs.push(Spec { id: abi::SPEC_STATS, value: settings.count_traversal as u32 });
         specs.push(sampler.spec());
         let capacity = paths.saturating_mul(light_path_len);
         if let Some(v) = vcm {

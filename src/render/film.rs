@@ -126,6 +126,12 @@ impl Film {
         )
     }
 
+    /// Rays, node visits and triangle tests counted by the integrator kernels (STAT_RAYS..).
+    pub fn traversal_counts(&self, ctx: &Context) -> Result<[u32; 3]> {
+        let s = ctx.read_buffer::<u32>(&self.stats)?;
+        Ok([s[abi::STAT_RAYS as usize], s[abi::STAT_NODES as usize], s[abi::STAT_TRIS as usize]])
+    }
+
     pub fn nan_samples(&self, ctx: &Context) -> Result<u32> {
         Ok(ctx.read_buffer::<u32>(&self.stats)?[abi::STAT_NAN_SAMPLES as usize])
     }

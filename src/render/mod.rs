@@ -209,6 +209,9 @@ pub struct RenderSettings {
     /// (`--path-regeneration`); `None` takes [`default_path_regeneration`]. Either gives the
     /// same image.
     pub path_regeneration: Option<bool>,
+    /// Count the rays the integrator kernels trace, their node visits and triangle tests
+    /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
+    pub count_traversal: bool,
 }
 
 impl RenderSettings {
@@ -243,6 +246,7 @@ impl RenderSettings {
             vcm_radius: vcm::VcmRadius::default(),
             vcm_alpha: 0.75,
             path_regeneration: None,
+            count_traversal: false,
         }
     }
 }
@@ -317,20 +321,27 @@ fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
 
 /// The BVH layout `integrator` traces fastest on a device for a scene with `features`,
 /// measured with `bidir bench render` (NVIDIA H200 and llvmpipe; docs/results.md, "Cornell
-/// box, session 6"): the compressed wide BVH on CPU devices (fewer, wider node
-/// visits suit llvmpipe's SIMD lanes); on GPUs the wide BVH for the path tracers where the
-/// scene has only diffuse surfaces (Cornell box pt-nee 693 against 606 Msamples/s over the
-/// binary BVH), the binary one where it has mirrors, glass or GGX lobes (their larger kernels
-/// reached 96 registers over the wide BVH: caustic scene pt-nee 314-412 against 385-490) and
-/// for BDPT and VCM (their camera pass was 13-24 % slower over the wide BVH).
+/// box, session 6" and "Which BVH the path tracers take in glossy scenes"): the compressed wide
+/// BVH on CPU devices (fewer, wider node visits suit llvmpipe's SIMD lanes); on GPUs the wide
+/// BVH for the path tracers where the scene has only diffuse surfaces (Cornell box pt-nee 693
+/// against 606 Msamples/s over the binary BVH) and for pt-nee also where it has GGX lobes but
+/// no mirror or glass (session 9: Sponza +6 %, DamagedHelmet +8-17 %, MetalRoughSpheres +7 %),
+/// the binary one where it has mirrors or glass (their larger kernels reached 96 registers
+/// over the wide BVH: caustic scene pt-nee 314-412 against 385-490; rough Cornell -7 %), for
+/// pt in glossy scenes (Sponza -10 % over the wide BVH) and for BDPT and VCM (their camera
+/// pass was 13-24 % slower over the wide BVH; Sponza bdpt 549 against 644 ms).
+/// The 4-wide BVH (`bvh4`) is never the default: it traces standalone rays fastest
+/// but made every integrator kernel slower (more registers; docs/traversal.md).
 /// [`Renderer::switch_integrator`] rebuilds the renderer where a switch changes this choice.
 pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
     if on_cpu {
         return BvhLayout::Cwbvh;
     }
-    let only_diffuse = !(features.mirror || features.glass || features.glossy || features.rough_glass);
+    let no_specular = !(features.mirror || features.glass || features.rough_glass);
+    let only_diffuse = no_specular && !features.glossy;
     match integrator {
-        Integrator::Pt | Integrator::PtNee if only_diffuse => BvhLayout::Cwbvh,
+        Integrator::Pt if only_diffuse => BvhLayout::Cwbvh,
+        Integrator::PtNee if no_specular => BvhLayout::Cwbvh,
         _ => BvhLayout::Bvh2,
     }
 }
@@ -416,7 +427,7 @@ fn build_kernels(
         Integrator::Pt | Integrator::PtNee => {
             // Resolved by `Renderer::new` (`None` only where kernels are built without it).
             let regenerate = settings.path_regeneration.unwrap_or(true);
-            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings.sampler, regenerate)?)
+            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings, regenerate)?)
         }
         Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
         Integrator::Vcm(mode) => {
@@ -734,6 +745,12 @@ impl Renderer {
     }
 
     /// Samples that came out NaN or infinite and were dropped.
+    /// Rays traced, inner nodes visited and triangles tested by the integrator kernels since
+    /// the film was last cleared: zeros unless `RenderSettings::count_traversal` is set.
+    pub fn traversal_counts(&self) -> Result<[u32; 3], RenderError> {
+        Ok(self.film.traversal_counts(&self.ctx)?)
+    }
+
     pub fn nan_samples(&self) -> Result<u32, RenderError> {
         Ok(self.film.nan_samples(&self.ctx)?)
     }
@@ -753,10 +770,17 @@ mod default_tests {
         let rough = SceneFeatures { glossy: true, glass: true, rough_glass: true, ..diffuse };
         let textured_ggx = SceneFeatures { glossy: true, textures: true, uvs: true, normals: true, ..diffuse };
         let (cw, b2) = (BvhLayout::Cwbvh, BvhLayout::Bvh2);
-        let gpu = [(diffuse, cw, true), (glass, b2, false), (mirror_glass, b2, false), (rough, b2, true), (textured_ggx, b2, true)];
-        for (f, layout, regen) in gpu {
-            assert_eq!(default_bvh_layout(false, Integrator::PtNee, &f), layout, "{f:?}");
-            assert_eq!(default_bvh_layout(false, Integrator::Pt, &f), layout, "{f:?}");
+        // (features, pt-nee's layout, pt's layout, path regeneration)
+        let gpu = [
+            (diffuse, cw, cw, true),
+            (glass, b2, b2, false),
+            (mirror_glass, b2, b2, false),
+            (rough, b2, b2, true),
+            (textured_ggx, cw, b2, true),
+        ];
+        for (f, pt_nee, pt, regen) in gpu {
+            assert_eq!(default_bvh_layout(false, Integrator::PtNee, &f), pt_nee, "{f:?}");
+            assert_eq!(default_bvh_layout(false, Integrator::Pt, &f), pt, "{f:?}");
             assert_eq!(default_path_regeneration(false, &f), regen, "{f:?}");
             // BDPT and VCM stay on the binary BVH on GPUs; CPU devices take the wide one and
             // regenerate everywhere.

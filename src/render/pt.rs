@@ -9,9 +9,11 @@ pub struct PathTracer {
 }
 
 impl PathTracer {
-    pub fn new(ctx: &Context, scene: &GpuScene, nee: bool, sampler: super::Sampler, regenerate: bool) -> Result<PathTracer> {
+    pub fn new(ctx: &Context, scene: &GpuScene, nee: bool, settings: &super::RenderSettings, regenerate: bool) -> Result<PathTracer> {
+        let sampler = settings.sampler;
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
+        specs.push(Spec { id: abi::SPEC_STATS, value: settings.count_traversal as u32 });
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(sampler.spec());
         specs.push(Spec { id: abi::SPEC_PATH_REGENERATION, value: regenerate as u32 });
