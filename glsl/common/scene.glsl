@@ -183,7 +183,16 @@ Surface surface_at(vec3 o, vec3 d, TraceHit h) {
 // largest coordinate involved), so the target's own surface never counts as an occluder —
 // the offset alone is too small there when b lies near a coordinate plane through the
 // origin (offset_ray_origin's absolute branch) and the ray comes from far away.
-bool visible_between(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
+//
+// The *_shadow_ray functions build a shadow ray and shadow_ray_clear traces it, so an
+// integrator may trace it later (pt.comp); the *_visible functions do both at once.
+struct ShadowRay {
+    vec3 o;
+    vec3 d;
+    float tmax; // < 0: a segment too short to hold an occluder, unoccluded without a trace
+};
+
+ShadowRay shadow_ray_between(vec3 a, vec3 na, vec3 b, vec3 nb) {
     vec3 o = offset_ray_origin(a, na);
     vec3 target = offset_ray_origin(b, nb);
     vec3 v = target - o;
@@ -191,9 +200,17 @@ bool visible_between(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
     vec3 m = max(abs(o), abs(target));
     float slack = max(m.x, max(m.y, m.z)) * (32.0 / 8388608.0);
     if (len <= slack) {
-        return true;
+        return ShadowRay(o, v, -1.0);
     }
-    return trace_ray(o, v / len, 0.0, len - slack, true, stats).prim == NO_HIT;
+    return ShadowRay(o, v / len, len - slack);
+}
+
+bool shadow_ray_clear(ShadowRay r, inout uvec2 stats) {
+    return r.tmax < 0.0 || trace_ray(r.o, r.d, 0.0, r.tmax, true, stats).prim == NO_HIT;
+}
+
+bool visible_between(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
+    return shadow_ray_clear(shadow_ray_between(a, na, b, nb), stats);
 }
 
 vec3 material_albedo(GpuMaterial m, vec2 uv) {

@@ -22,6 +22,7 @@
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
 layout(constant_id = SPEC_PATH_REGENERATION) const uint PATH_REGENERATION = 1u;
+layout(constant_id = SPEC_ONE_TRACE) const uint ONE_TRACE = 1u;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { PtPush pc; };
@@ -47,6 +48,14 @@ struct PathState {
     float prev_pdf_w;    // solid-angle pdf of the last non-delta bounce
     uint depth;          // vertices so far, the one the next segment finds included
     vec3 sigma_near;     // sigma_a where the next segment leaves its surface (volume.glsl)
+    // pt-nee with ONE_TRACE: the light sample's shadow ray, traced by the step after the one
+    // that drew it from `o` (the surface point it leaves, where the path also continues):
+    // its direction and length (> 0: pending), what it adds if unoccluded, and whether the
+    // path ends after it.
+    vec3 shadow_d;
+    float shadow_tmax;
+    vec3 shadow_contrib;
+    bool ended;
 };
 
 // A new path through image position `pixel` (pixels, row 0 on top); `rng` has drawn its jitter.
@@ -63,19 +72,56 @@ PathState path_start(vec2 pixel, inout Rng rng) {
     path.prev_pdf_w = 0.0;
     path.depth = 1u;
     path.sigma_near = vec3(0.0);
+    path.shadow_d = vec3(0.0);
+    path.shadow_tmax = 0.0;
+    path.shadow_contrib = vec3(0.0);
+    path.ended = false;
     return path;
 }
 
-// The path ends here: its radiance is final.
+// The path ends here: its radiance is final once a pending shadow ray is traced.
 #define PATH_END \
     { \
         path.radiance = radiance; \
-        return false; \
+        path.ended = true; \
+        return ONE_TRACE != 0u && NEE != 0u && path.shadow_tmax > 0.0; \
     }
 
-// Traces `path`'s next segment and scatters at what it finds; false when the path ends.
+// A light sample's contribution `contrib` if the shadow ray `r` (from the offset surface
+// point the path continues from) is clear: with ONE_TRACE pending for the next step's trace
+// unless `r` is too short to hold an occluder, else traced here.
+void add_if_clear(inout PathState path, ShadowRay r, vec3 contrib, inout vec3 radiance, inout uvec2 stats) {
+    if (ONE_TRACE == 0u) {
+        if (shadow_ray_clear(r, stats)) {
+            radiance += contrib;
+        }
+    } else if (r.tmax > 0.0) {
+        path.o = r.o;
+        path.shadow_d = r.d;
+        path.shadow_tmax = r.tmax;
+        path.shadow_contrib = contrib;
+    } else {
+        radiance += contrib;
+    }
+}
+
+// One step of `path`: the pending shadow ray if there is one, else the next segment and the
+// scattering at what it finds (which may leave a shadow ray pending); false when the path
+// has ended. Both rays go through the one trace_ray call here: the traversal is inlined
+// once, and lanes of a subgroup tracing either kind run it together (the extension and the
+// shadow ray used to be two call sites, run one after the other). The random numbers and the
+// order of the sums are those of tracing the shadow ray where it is drawn.
 bool path_bounce(inout PathState path, inout Rng rng) {
     uvec2 stats = uvec2(0u);
+    bool shadow = ONE_TRACE != 0u && NEE != 0u && path.shadow_tmax > 0.0;
+    TraceHit h = trace_ray(path.o, shadow ? path.shadow_d : path.d, 0.0, shadow ? path.shadow_tmax : 3.0e38, shadow, stats);
+    if (shadow) {
+        if (h.prim == NO_HIT) {
+            path.radiance += path.shadow_contrib;
+        }
+        path.shadow_tmax = 0.0;
+        return !path.ended;
+    }
     vec3 o = path.o;
     vec3 d = path.d;
     vec3 throughput = path.throughput;
@@ -85,7 +131,6 @@ bool path_bounce(inout PathState path, inout Rng rng) {
     uint depth = path.depth;
     vec3 sigma_near = path.sigma_near;
 
-    TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
     if (h.prim == NO_HIT) {
         // The environment, weighted against sampling it as a light (pt-nee).
         if (HAS_ENV != 0u) {
@@ -177,8 +222,8 @@ bool path_bounce(inout PathState path, inout Rng rng) {
                 float pdf_fwd_w, pdf_rev_w;
                 vec3 f = continuous_eval(c, ns_f, -d, ps.w, pdf_fwd_w, pdf_rev_w);
                 vec3 contrib = throughput * volume_transmittance(sigma_in, ps.dist) * (f / c.pick) * ps.li * (cos_s / (env.punctual_pick * ps.pick));
-                if (max3(contrib) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
-                    radiance += contrib;
+                if (max3(contrib) > 0.0) {
+                    add_if_clear(path, punctual_shadow_ray(s.p, ng_f, ps), contrib, radiance, stats);
                 }
             }
         } else if (env_light) {
@@ -190,8 +235,8 @@ bool path_bounce(inout PathState path, inout Rng rng) {
                 vec3 f = continuous_eval(c, ns_f, -d, es.w, pdf_fwd_w, pdf_rev_w);
                 float w = power_heuristic(pdf_light_w, pdf_fwd_w / c.pick);
                 vec3 contrib = throughput * volume_transmittance(sigma_in, 3.0e38) * (f / c.pick) * es.le * (cos_s * w / pdf_light_w);
-                if (max3(contrib) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
-                    radiance += contrib;
+                if (max3(contrib) > 0.0) {
+                    add_if_clear(path, env_shadow_ray(s.p, ng_f, es.w), contrib, radiance, stats);
                 }
             }
         } else if (nee) {
@@ -210,8 +255,8 @@ bool path_bounce(inout PathState path, inout Rng rng) {
                 // The shadow ray leaves on the side the path arrived on and reaches the
                 // emitter's front: only this end can lie inside a volume.
                 vec3 contrib = throughput * volume_transmittance(sigma_in, dist) * (f / c.pick) * light_sample_radiance(ls) * (cos_s * w / pdf_light_w);
-                if (max3(contrib) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
-                    radiance += contrib;
+                if (max3(contrib) > 0.0) {
+                    add_if_clear(path, shadow_ray_between(s.p, ng_f, ls.p, ls.n), contrib, radiance, stats);
                 }
             }
         }

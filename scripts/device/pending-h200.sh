@@ -358,5 +358,49 @@ counts)
   echo "== cornell trace kernels 256x256 (cwbvh, bvh2)"
   for l in cwbvh bvh2; do $T "$B" bench traversal --width 256 --height 256 --bvh $l 2>&1 | grep -E "^(primary|shadow|diffuse) "; done
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts" >&2; exit 2 ;;
+no-shadow)
+  # #16 (session 9): what the shadow rays of NEE and BDPT's connections cost inside the
+  # megakernels. EXP = a build of this commit with visible_between (glsl/common/scene.glsl)
+  # returning true before its trace (a measurement only: the image is wrong).
+  EXP=${EXP:-$PWD/.device/bidir-exp}
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 90"
+  for b in "$B" "$EXP" "$B" "$EXP"; do
+    for i in pt-nee bdpt; do
+      echo "== $(basename "$b") cornell $i"; $T "$b" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples|^(pt|bdpt)"
+      echo "== $(basename "$b") sponza $i"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples|^(pt|bdpt)"
+    done
+  done
+  for i in pt-nee bdpt; do
+    echo "== exp counts cornell $i"; $T "$EXP" bench render $CB --integrator $i --spp 64 --warmup 0 --runs 1 --count 2>&1 | grep -E "traversal"
+    echo "== exp counts sponza $i"; $T "$EXP" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 8 --warmup 0 --runs 1 --count 2>&1 | grep -E "traversal"
+  done
+  timeout -k 5 90 "$EXP" info --kernels "$SP" --sponza-sun-sky 2>&1 | grep -E "^(pt|bdpt)" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  timeout -k 5 90 "$B" info --kernels "$SP" --sponza-sun-sky 2>&1 | grep -E "^(pt|bdpt)" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  ;;
+one-trace)
+  # #16 (session 9): pt-nee with the extension and the shadow ray through one trace_ray call
+  # (NEW) against BASE, interleaved, on the scenes of every light kind.
+  NEW=${NEW:-$PWD/.device/bidir-new}
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  ROUGH="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  T="timeout -k 5 90"
+  for b in "$BASE" "$NEW" "$BASE" "$NEW"; do
+    n=$(basename "$b")
+    echo "== $n cornell"; $T "$b" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples"
+    echo "== $n cornell bvh2"; $T "$b" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --bvh bvh2 2>&1 | grep -E "Msamples"
+    echo "== $n sponza"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+    echo "== $n caustic"; $T "$b" bench render $CAU --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+    [ -n "${QUICK:-}" ] || { echo "== $n rough"; $T "$b" bench render $ROUGH --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"; }
+  done
+  for b in "$BASE" "$NEW"; do
+    echo "== $(basename "$b") kernels"
+    timeout -k 5 60 "$b" info --kernels 2>&1 | grep -E "^pt-nee" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+    timeout -k 5 90 "$b" info --kernels "$SP" --sponza-sun-sky 2>&1 | grep -E "^pt-nee" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  done
+  for b in "$BASE" "$NEW"; do $T "$b" render $CB --integrator pt-nee --spp 64 -o "/tmp/$(basename "$b").exr" 2>&1 | tail -1; done
+  "$NEW" diff "/tmp/$(basename "$NEW").exr" "/tmp/$(basename "$BASE").exr" 2>&1 | head -3
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace" >&2; exit 2 ;;
 esac

@@ -10,9 +10,9 @@ use std::path::PathBuf;
 #[derive(clap::Subcommand, Debug)]
 pub enum BenchCommand {
     /// Traversal speed: primary, shadow and diffuse rays, GPU-timed.
-    Traversal(TraversalArgs),
+    Traversal(Box<TraversalArgs>),
     /// Where a render's GPU time goes: per-kernel GPU timestamps over repeated renders.
-    Render(RenderBenchArgs),
+    Render(Box<RenderBenchArgs>),
 }
 
 #[derive(clap::Args, Debug)]

@@ -95,6 +95,12 @@ pub struct SettingsArgs {
     /// for scenes with smooth mirrors or glass (the faster there, measured on the H200).
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub path_regeneration: String,
+    /// pt-nee: trace each light sample's shadow ray in the next step, through the same trace
+    /// call as the path's extension rays (on), or where it is drawn (off); the image is the
+    /// same. auto: on GPUs, except over the compressed wide BVH in scenes with only diffuse
+    /// surfaces (the faster, measured on the H200); off on CPU devices such as lavapipe.
+    #[arg(long, default_value = "auto", value_name = "auto|on|off")]
+    pub one_trace: String,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
     /// diagonal (0.001), or a length in scene units with the suffix u (0.02u).
     #[arg(long, default_value = "0.001", value_name = "R")]
@@ -138,6 +144,12 @@ impl SettingsArgs {
             "on" => Some(true),
             "off" => Some(false),
             other => bail!("--path-regeneration {other}: auto | on | off"),
+        };
+        s.one_trace = match self.one_trace.as_str() {
+            "auto" => None,
+            "on" => Some(true),
+            "off" => Some(false),
+            other => bail!("--one-trace {other}: auto | on | off"),
         };
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;

@@ -302,6 +302,9 @@ gpu_consts! {
     /// The two give the same image; which is faster depends on device and scene
     /// (`render::default_path_regeneration`).
     pub const SPEC_PATH_REGENERATION: u32 = 51;
+    /// pt-nee: 1 traces the light sample's shadow ray in the step after the one that drew it,
+    /// through the same trace_ray call as the extension ray; 0 where it is drawn (a second call).
+    pub const SPEC_ONE_TRACE: u32 = 52;
 }
 
 gpu_structs! {

@@ -209,6 +209,10 @@ pub struct RenderSettings {
     /// (`--path-regeneration`); `None` takes [`default_path_regeneration`]. Either gives the
     /// same image.
     pub path_regeneration: Option<bool>,
+    /// pt-nee: trace the light sample's shadow ray in the step after the one that drew it,
+    /// through the same call as the extension rays (`--one-trace`); `None` takes
+    /// [`default_one_trace`]. Either gives the same image.
+    pub one_trace: Option<bool>,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
     pub count_traversal: bool,
@@ -246,6 +250,7 @@ impl RenderSettings {
             vcm_radius: vcm::VcmRadius::default(),
             vcm_alpha: 0.75,
             path_regeneration: None,
+            one_trace: None,
             count_traversal: false,
         }
     }
@@ -356,6 +361,20 @@ pub fn default_path_regeneration(on_cpu: bool, features: &SceneFeatures) -> bool
     on_cpu || !smooth_specular
 }
 
+/// Whether pt-nee traces its shadow rays through the extension rays' trace call, in the step
+/// after the one that drew them (the image is the same either way): on GPUs, except over
+/// the compressed wide BVH in scenes with only diffuse surfaces, where the extra steps cost
+/// more than the shared traversal saves. NVIDIA H200, `bench render`, Msamples/s, two runs
+/// (docs/results.md, "One trace call for extension and shadow rays"): Cornell box over bvh2
+/// 631-638 against 534-537, over cwbvh 661-668 against 698-703; Sponza (cwbvh) 76.2-76.4
+/// against 72.4-72.5; caustic scene (bvh2) 584-590 against 541-543. Off on CPU devices
+/// (llvmpipe, Cornell box over cwbvh: 25-30 % slower on; DamagedHelmet: within its spread).
+pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatures) -> bool {
+    let only_diffuse = !(features.mirror || features.glass || features.glossy || features.rough_glass);
+    let wide_diffuse = layout == BvhLayout::Cwbvh && only_diffuse;
+    !(on_cpu || wide_diffuse)
+}
+
 /// How the kernels of `settings` run, for logs and image metadata (neither changes the image):
 /// the BVH layout, and for pt/pt-nee whether paths are regenerated.
 pub fn kernel_form(settings: &RenderSettings) -> String {
@@ -427,7 +446,8 @@ fn build_kernels(
         Integrator::Pt | Integrator::PtNee => {
             // Resolved by `Renderer::new` (`None` only where kernels are built without it).
             let regenerate = settings.path_regeneration.unwrap_or(true);
-            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings, regenerate)?)
+            let one_trace = settings.one_trace.unwrap_or_else(|| default_one_trace(on_cpu(ctx), scene.bvh.layout, &scene.features));
+            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings, regenerate, one_trace)?)
         }
         Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
         Integrator::Vcm(mode) => {
@@ -788,6 +808,11 @@ mod default_tests {
             assert_eq!(default_bvh_layout(false, Integrator::Vcm(vcm::VcmMode::FULL), &f), b2);
             assert_eq!(default_bvh_layout(true, Integrator::Bdpt(Join::Full), &f), cw);
             assert!(default_path_regeneration(true, &f));
+            // One trace call for pt-nee's two rays: on GPUs but over the wide BVH in diffuse
+            // scenes; never on CPU devices.
+            assert_eq!(default_one_trace(false, BvhLayout::Cwbvh, &f), f != diffuse, "{f:?}");
+            assert!(default_one_trace(false, BvhLayout::Bvh2, &f));
+            assert!(!default_one_trace(true, BvhLayout::Cwbvh, &f));
         }
     }
 }

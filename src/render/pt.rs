@@ -9,7 +9,14 @@ pub struct PathTracer {
 }
 
 impl PathTracer {
-    pub fn new(ctx: &Context, scene: &GpuScene, nee: bool, settings: &super::RenderSettings, regenerate: bool) -> Result<PathTracer> {
+    pub fn new(
+        ctx: &Context,
+        scene: &GpuScene,
+        nee: bool,
+        settings: &super::RenderSettings,
+        regenerate: bool,
+        one_trace: bool,
+    ) -> Result<PathTracer> {
         let sampler = settings.sampler;
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
@@ -17,6 +24,7 @@ impl PathTracer {
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(sampler.spec());
         specs.push(Spec { id: abi::SPEC_PATH_REGENERATION, value: regenerate as u32 });
+        specs.push(Spec { id: abi::SPEC_ONE_TRACE, value: one_trace as u32 });
         Ok(PathTracer { kernel: ctx.create_kernel(scene.bvh.kernel(&kernels::PT_FORMS), &specs)? })
     }
 
