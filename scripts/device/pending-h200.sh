@@ -402,5 +402,34 @@ one-trace)
   for b in "$BASE" "$NEW"; do $T "$b" render $CB --integrator pt-nee --spp 64 -o "/tmp/$(basename "$b").exr" 2>&1 | tail -1; done
   "$NEW" diff "/tmp/$(basename "$NEW").exr" "/tmp/$(basename "$BASE").exr" 2>&1 | head -3
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace" >&2; exit 2 ;;
+bdpt-one-trace)
+  # #16 (session 9): BDPT's camera pass with its shadow rays through the extension rays'
+  # trace call (--one-trace on) against off, interleaved, in one binary.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for o in off on; do
+      echo "== cornell bdpt --one-trace $o"; $T "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --one-trace $o 2>&1 | grep -E "Msamples|^bdpt_"
+      echo "== sponza bdpt --one-trace $o"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --one-trace $o 2>&1 | grep -E "Msamples|^bdpt_"
+      echo "== caustic bdpt --one-trace $o"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --one-trace $o 2>&1 | grep -E "Msamples"
+    done
+  done
+  for o in off on; do
+    $T "$B" render $CB --integrator bdpt --spp 64 --one-trace $o -o "/tmp/bdpt-$o.exr" 2>&1 | tail -1
+  done
+  "$B" diff /tmp/bdpt-on.exr /tmp/bdpt-off.exr 2>&1 | head -3
+  ;;
+final9)
+  # Session 9's defaults on the Cornell box and Sponza (against the session's figures).
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for i in pt-nee bdpt; do
+      echo "== cornell $i"; $T "$B" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples"
+    done
+    echo "== sponza pt-nee"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+  done
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace|bdpt-one-trace|final9" >&2; exit 2 ;;
 esac
