@@ -176,8 +176,7 @@ fn pt_nee_and_every_bdpt_join_agree_under_spot_point_and_directional_lights() {
 
 /// All three kinds of light at once (light sampling picks each with probability 1/3): the
 /// punctual lights, an emissive quad and a dim uniform environment.
-#[test]
-fn pt_nee_and_bdpt_agree_with_every_kind_of_light() {
+fn every_kind_of_light_scene() -> Scene {
     let mut scene = lit_box_scene();
     let quad = bidir::scene::QuadLight::new(
         Vec3::new(-0.9, 0.6, -0.9),
@@ -188,6 +187,12 @@ fn pt_nee_and_bdpt_agree_with_every_kind_of_light() {
     .unwrap();
     scene.add_quad_light(&quad, "quad");
     scene.environment = Some(bidir::scene::Environment::uniform(Vec3::new(0.2, 0.25, 0.35)));
+    scene
+}
+
+#[test]
+fn pt_nee_and_bdpt_agree_with_every_kind_of_light() {
+    let scene = every_kind_of_light_scene();
     check_agreement("punctual + quad + environment", &scene, &[Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(0))]);
 }
 
@@ -242,16 +247,7 @@ fn check_agreement(what: &str, scene: &Scene, integrators: &[Integrator]) {
 /// (On CPU devices such as lavapipe the default is off, so the reference tests run that form.)
 #[test]
 fn one_trace_gives_the_same_image_with_every_kind_of_light() {
-    let mut scene = lit_box_scene();
-    let quad = bidir::scene::QuadLight::new(
-        Vec3::new(-0.9, 0.6, -0.9),
-        Vec3::new(0.0, 0.0, 0.5),
-        Vec3::new(0.5, -0.2, 0.0),
-        Vec3::new(4.0, 3.0, 1.5),
-    )
-    .unwrap();
-    scene.add_quad_light(&quad, "quad");
-    scene.environment = Some(bidir::scene::Environment::uniform(Vec3::new(0.2, 0.25, 0.35)));
+    let scene = every_kind_of_light_scene();
     let ctx = gpu();
     let image = |one_trace: bool| {
         let mut settings = RenderSettings::new(Integrator::PtNee);
