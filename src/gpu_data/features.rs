@@ -92,6 +92,17 @@ impl SceneFeatures {
         }
     }
 
+    /// Smooth mirrors, glass or rough glass: delta or transmissive lobes, whose code makes the
+    /// kernels larger (the BVH-layout and one-trace defaults in `render` turn on it).
+    pub fn has_specular(&self) -> bool {
+        self.mirror || self.glass || self.rough_glass
+    }
+
+    /// Only diffuse surfaces: no specular lobe and no GGX one.
+    pub fn only_diffuse(&self) -> bool {
+        !self.has_specular() && !self.glossy
+    }
+
     pub fn specs(&self) -> Vec<Spec> {
         vec![
             Spec { id: abi::SPEC_HAS_NORMALS, value: self.normals as u32 },

@@ -342,11 +342,9 @@ pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &Scene
     if on_cpu {
         return BvhLayout::Cwbvh;
     }
-    let no_specular = !(features.mirror || features.glass || features.rough_glass);
-    let only_diffuse = no_specular && !features.glossy;
     match integrator {
-        Integrator::Pt if only_diffuse => BvhLayout::Cwbvh,
-        Integrator::PtNee if no_specular => BvhLayout::Cwbvh,
+        Integrator::Pt if features.only_diffuse() => BvhLayout::Cwbvh,
+        Integrator::PtNee if !features.has_specular() => BvhLayout::Cwbvh,
         _ => BvhLayout::Bvh2,
     }
 }
@@ -370,8 +368,7 @@ pub fn default_path_regeneration(on_cpu: bool, features: &SceneFeatures) -> bool
 /// against 72.4-72.5; caustic scene (bvh2) 584-590 against 541-543. Off on CPU devices
 /// (llvmpipe, Cornell box over cwbvh: 25-30 % slower on; DamagedHelmet: within its spread).
 pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatures) -> bool {
-    let only_diffuse = !(features.mirror || features.glass || features.glossy || features.rough_glass);
-    let wide_diffuse = layout == BvhLayout::Cwbvh && only_diffuse;
+    let wide_diffuse = layout == BvhLayout::Cwbvh && features.only_diffuse();
     !(on_cpu || wide_diffuse)
 }
 
