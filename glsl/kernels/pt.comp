@@ -23,10 +23,18 @@ layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
 layout(constant_id = SPEC_PATH_REGENERATION) const uint PATH_REGENERATION = 1u;
 layout(constant_id = SPEC_ONE_TRACE) const uint ONE_TRACE = 1u;
+layout(constant_id = SPEC_SHADOW_QUEUE) const uint SHADOW_QUEUE = 0u;
+layout(constant_id = SPEC_SHADOW_SUSPEND) const uint SHADOW_SUSPEND = 0u;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { PtPush pc; };
-layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[]; };
+layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
+layout(std430, binding = BIND_SHADOW_QUEUE) writeonly buffer ShadowQueue { QueuedShadow shadow_queue[]; };
+layout(std430, binding = BIND_SHADOW_COUNTS) writeonly buffer ShadowCounts { uint shadow_counts[]; };
+layout(std430, binding = BIND_PT_SUSPENDED) buffer Suspended { PtSuspended suspended[]; };
+
+// pt-nee with SHADOW_QUEUE: shadow rays this invocation has queued for shadow_queue.comp.
+uint shadow_queued = 0u;
 
 // Power heuristic with beta = 2 for two strategies.
 float power_heuristic(float pdf_a, float pdf_b) {
@@ -88,10 +96,21 @@ PathState path_start(vec2 pixel, inout Rng rng) {
     }
 
 // A light sample's contribution `contrib` if the shadow ray `r` (from the offset surface
-// point the path continues from) is clear: with ONE_TRACE pending for the next step's trace
-// unless `r` is too short to hold an occluder, else traced here.
+// point the path continues from) is clear: with SHADOW_QUEUE queued for shadow_queue.comp
+// while this invocation has slots left; else with ONE_TRACE pending for the next step's
+// trace unless `r` is too short to hold an occluder, else traced here.
 void add_if_clear(inout PathState path, ShadowRay r, vec3 contrib, inout vec3 radiance, inout uvec2 stats) {
-    if (ONE_TRACE == 0u) {
+    // With SHADOW_SUSPEND a slot is always free (main() stops before a bounce that could find
+    // none), so this kernel holds no shadow-ray traversal; a segment too short to hold an
+    // occluder (tmax <= 0, or NaN) counts as clear, as shadow_ray_clear has it.
+    if (SHADOW_QUEUE != 0u && r.tmax > 0.0 && (SHADOW_SUSPEND != 0u || shadow_queued < SHADOW_QUEUE)) {
+        uint invocations = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+        shadow_queue[shadow_queued * invocations + gl_GlobalInvocationID.x] =
+            QueuedShadow(vec4(r.o, r.tmax), vec4(r.d, uintBitsToFloat(blend_seed)), vec4(contrib, 0.0));
+        shadow_queued++;
+    } else if (SHADOW_QUEUE != 0u && SHADOW_SUSPEND != 0u) {
+        radiance += contrib;
+    } else if (ONE_TRACE == 0u) {
         if (shadow_ray_clear(r, stats)) {
             radiance += contrib;
         }
@@ -342,7 +361,65 @@ void main() {
     vec2 xy = vec2(px);
     PixelSums sums = PixelSums(vec3(0.0), 0.0, 0u);
     Rng rng;
-    if (PATH_REGENERATION != 0u) {
+    if (SHADOW_QUEUE != 0u) {
+        // The shadow-ray queue: a pass is several launches, the host running shadow_queue.comp
+        // after each. Launch c renders the invocation's samples below pc.spp (the host raises
+        // it launch by launch, the last one to the pass's count), regenerating as below, from
+        // where the launch before stopped: at a sample not yet started (PT_NEXT), or (with
+        // SHADOW_SUSPEND) before a bounce that found every queue slot taken, the path left in
+        // `suspended` (PT_SUSPENDED). The pass clears `suspended` (PT_FRESH: sample `slice`
+        // next) and the slices, and every launch adds its sums to them.
+        uint g = gl_GlobalInvocationID.x;
+        PtSuspended st = suspended[g];
+        uint status = st.rng_status.w;
+        uint s = status == PT_FRESH ? slice : floatBitsToUint(st.sigma_sample.w);
+        shadow_counts[g] = 0u;
+        if (status != PT_SUSPENDED && s >= pc.spp) {
+            return; // done, or nothing more in this launch
+        }
+        PathState path;
+        if (status == PT_SUSPENDED) {
+            rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
+            path = PathState(st.o_depth.xyz, st.d_pdf.xyz, st.throughput_specular.xyz, st.radiance_seed.xyz,
+                st.throughput_specular.w != 0.0, st.d_pdf.w, floatBitsToUint(st.o_depth.w), st.sigma_sample.xyz,
+                vec3(0.0), 0.0, vec3(0.0), false);
+            blend_seed = floatBitsToUint(st.radiance_seed.w);
+        } else {
+            path = sample_start(image_pixel, s, xy, rng);
+        }
+        status = PT_NEXT;
+        for (;;) {
+            if (SHADOW_SUSPEND != 0u && shadow_queued >= SHADOW_QUEUE) {
+                status = PT_SUSPENDED;
+                break;
+            }
+            if (path_bounce(path, rng)) {
+                continue;
+            }
+            add_sample(sums, path.radiance);
+            s += slices;
+            if (s >= pc.spp) {
+                break;
+            }
+            path = sample_start(image_pixel, s, xy, rng);
+        }
+        if (status == PT_SUSPENDED) {
+            suspended[g] = PtSuspended(vec4(path.o, uintBitsToFloat(path.depth)), vec4(path.d, path.prev_pdf_w),
+                vec4(path.throughput, path.specular ? 1.0 : 0.0), vec4(path.radiance, uintBitsToFloat(blend_seed)),
+                vec4(path.sigma_near, uintBitsToFloat(s)), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        } else {
+            suspended[g].sigma_sample.w = uintBitsToFloat(s);
+            suspended[g].rng_status.w = PT_NEXT;
+        }
+        shadow_counts[g] = shadow_queued;
+        if (sums.count > 0.0) {
+            if (slices == 1u) {
+                accum[pixel] += vec4(sums.sum, sums.count);
+            } else {
+                slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel] += vec4(sums.sum, sums.count);
+            }
+        }
+    } else if (PATH_REGENERATION != 0u) {
         // One loop of bounces: where a path ends, the invocation's next sample starts
         // (Novak, Havran & Dachsbacher 2010), so a subgroup's lanes do not wait for its
         // longest path while they have samples left.
@@ -370,10 +447,12 @@ void main() {
             add_sample(sums, path.radiance);
         }
     }
-    if (slices == 1u) {
-        accum[pixel] += vec4(sums.sum, sums.count);
-    } else {
-        slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel] = vec4(sums.sum, sums.count);
+    if (SHADOW_QUEUE == 0u) { // (the queue's launches added theirs above)
+        if (slices == 1u) {
+            accum[pixel] += vec4(sums.sum, sums.count);
+        } else {
+            slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel] = vec4(sums.sum, sums.count);
+        }
     }
     if (sums.bad > 0u) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], sums.bad);

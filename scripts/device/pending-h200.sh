@@ -431,5 +431,120 @@ final9)
     echo "== sponza pt-nee"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
   done
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace|bdpt-one-trace|final9" >&2; exit 2 ;;
+shadow-queue)
+  # #16 (session 10): pt-nee's shadow rays queued for their own kernel (--shadow-queue
+  # SLOTS/SAMPLES) against none, one binary, interleaved.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for q in ${QUEUES:-off 64/8 64/16 128/16 128/32 32/4}; do
+      echo "== cornell --shadow-queue $q"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "Msamples"
+    done
+    echo "== cornell --one-trace on --shadow-queue 64/8"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --one-trace on --shadow-queue 64/8 2>&1 | grep -E "Msamples"
+    for q in off ${SPQ:-64/8 128/16}; do
+      echo "== sponza --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+      echo "== caustic --shadow-queue $q"; $T "$B" bench render $CAU --integrator pt-nee --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+    done
+  done
+  timeout -k 5 60 "$B" info --kernels --shadow-queue 64 2>&1 | grep -E "^pt-nee|shadow" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  timeout -k 5 90 "$B" info --kernels "$SP" --sponza-sun-sky --shadow-queue 64 2>&1 | grep -E "^pt-nee|shadow" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  for q in off 64/8; do $T "$B" render $CB --integrator pt-nee --spp 64 --shadow-queue $q -o "/tmp/sq-${q%/*}.exr" 2>&1 | tail -1; done
+  "$B" diff /tmp/sq-off.exr /tmp/sq-64.exr 2>&1 | head -3
+  ;;
+queue-exp)
+  # #16 (session 10): where the shadow-ray queue's time goes (per-kernel times), and what the
+  # megakernel would gain without its fallback trace (DROP: a measurement-only build that
+  # drops shadow rays finding the queue full: biased, never committed).
+  DROP=${DROP:-$PWD/.device/bidir-drop}
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^pt|^shadow"
+  for b in "$B" "$DROP"; do
+    n=$(basename "$b")
+    for q in off 128/16; do
+      echo "== $n cornell --shadow-queue $q"; $T "$b" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    for o in on off; do
+      echo "== $n sponza --one-trace $o --shadow-queue 128/16"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --one-trace $o --shadow-queue 128/16 2>&1 | grep -E "$K"
+      echo "== $n caustic --one-trace $o --shadow-queue 128/16"; $T "$b" bench render $CAU --integrator pt-nee --spp 256 --warmup 1 --runs 3 --one-trace $o --shadow-queue 128/16 2>&1 | grep -E "$K"
+    done
+    timeout -k 5 60 "$b" info --kernels --shadow-queue 128 2>&1 | grep -E "^pt-nee" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+    timeout -k 5 90 "$b" info --kernels "$SP" --sponza-sun-sky --shadow-queue 128 2>&1 | grep -E "^pt-nee" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  done
+  echo "== sponza --shadow-queue off"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --shadow-queue off 2>&1 | grep -E "$K"
+  echo "== sponza counts"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 4 --warmup 0 --runs 1 --count 2>&1 | grep -E "traversal"
+  ;;
+queue-suspend)
+  # #16 (session 10): the shadow-ray queue with paths paused where the slots are full
+  # (--shadow-queue SLOTS/SAMPLES) against none, one binary, per-kernel times.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^pt|^shadow"
+  for r in 1 2; do
+    for q in ${QUEUES:-off 64/8 128/16 128/32 256/32 256/64}; do
+      echo "== cornell --shadow-queue $q"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    for q in off ${SPQ:-128/16 256/32 128/8}; do
+      echo "== sponza --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+      echo "== caustic --shadow-queue $q"; $T "$B" bench render $CAU --integrator pt-nee --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+  done
+  timeout -k 5 60 "$B" info --kernels --shadow-queue 128 2>&1 | grep -E "^pt-nee" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  timeout -k 5 90 "$B" info --kernels "$SP" --sponza-sun-sky --shadow-queue 128 2>&1 | grep -E "^pt-nee" | sed -E 's/Local Memory Size [0-9]+; //; s/ \([0-9]+ statistics\)//'
+  for q in off 128; do $T "$B" render $CB --integrator pt-nee --spp 64 --shadow-queue $q -o "/tmp/sq-$q.exr" 2>&1 | tail -1; done
+  "$B" diff /tmp/sq-off.exr /tmp/sq-128.exr 2>&1 | head -3
+  ;;
+queue-final)
+  # #16 (session 10): the shadow-ray queue with a finishing launch; NOSUSP: a measurement-only
+  # build whose queue launches never pause (the finishing kernel, with its second traversal,
+  # for every launch).
+  NOSUSP=${NOSUSP:-$PWD/.device/bidir-nosusp}
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^pt|^shadow"
+  for r in 1 2; do
+    for q in off 128/16 256/32 64/8; do
+      echo "== cornell --shadow-queue $q"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    echo "== nosusp cornell --shadow-queue 128/16"; $T "$NOSUSP" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --shadow-queue 128/16 2>&1 | grep -E "$K"
+    for q in off 128/16 128/8 256/32; do
+      echo "== sponza --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    echo "== nosusp sponza --shadow-queue 128/16"; $T "$NOSUSP" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --shadow-queue 128/16 2>&1 | grep -E "$K"
+    for q in off 128/16; do
+      echo "== caustic --shadow-queue $q"; $T "$B" bench render $CAU --integrator pt-nee --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+      echo "== caustic bvh2-regen --shadow-queue $q"; $T "$B" bench render $CAU --integrator pt-nee --spp 256 --warmup 1 --runs 3 --path-regeneration on --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+  done
+  ;;
+queue-defaults)
+  # #16 (session 10): the shadow-ray queue's shapes and the default (auto) against none, with
+  # the slots the memory budget allows printed in the kernel form. glTF models as glossy-layout.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^pt|^shadow"
+  "$B" info 2>&1 | grep -E "limits|heap" | head -3
+  for r in 1 2; do
+    for q in off auto 128/16/pause 192/24 64/16; do
+      echo "== cornell --shadow-queue $q"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    for q in off auto 128/16 96/12/pause 192/24/pause; do
+      echo "== sponza --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    for m in DamagedHelmet MetalRoughSpheresNoTextures; do
+      for q in off auto; do
+        echo "== $m --shadow-queue $q"; $T "$B" bench render .device/scenes/gltf/$m.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --integrator pt-nee --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+      done
+    done
+    echo "== caustic auto"; $T "$B" bench render $CAU --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+  done
+  for q in off auto; do $T "$B" render $CB --integrator pt-nee --spp 64 --shadow-queue $q -o "/tmp/sq-$q.exr" 2>&1 | tail -1; done
+  "$B" diff /tmp/sq-off.exr /tmp/sq-auto.exr 2>&1 | head -3
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace|bdpt-one-trace|final9|shadow-queue|queue-exp|queue-suspend|queue-final|queue-defaults" >&2; exit 2 ;;
 esac

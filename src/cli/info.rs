@@ -17,6 +17,9 @@ pub struct InfoArgs {
     /// integrator's own, as `render --bvh auto` picks it]
     #[arg(long, requires = "kernels")]
     pub bvh: Option<bidir::bvh::BvhLayout>,
+    /// With --kernels: pt-nee's shadow-ray queue as `render --shadow-queue` takes it
+    #[arg(long, requires = "kernels", default_value = "auto", value_name = "auto|off|SLOTS[/SAMPLES][/pause]")]
+    pub shadow_queue: String,
     #[command(flatten)]
     pub scene: SceneArgs,
 }
@@ -27,7 +30,7 @@ fn gib(bytes: u64) -> String {
 
 pub fn run(args: &InfoArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     if args.kernels {
-        return super::info_kernels::run(&args.scene, args.bvh, opts);
+        return super::info_kernels::run(&args.scene, args.bvh, super::settings_args::parse_shadow_queue(&args.shadow_queue)?, opts);
     }
     if let Some(p) = args.scene.scene.as_ref().filter(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"))) {
         return super::merge::info(p);

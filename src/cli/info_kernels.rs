@@ -6,7 +6,12 @@ use super::scene_args::SceneArgs;
 use bidir::render::{Integrator, Join, RenderSettings, Renderer};
 use bidir::vk::{Context, ContextOptions};
 
-pub fn run(scene_args: &SceneArgs, layout: Option<bidir::bvh::BvhLayout>, opts: &ContextOptions) -> anyhow::Result<()> {
+pub fn run(
+    scene_args: &SceneArgs,
+    layout: Option<bidir::bvh::BvhLayout>,
+    shadow_queue: Option<Option<bidir::render::ShadowQueue>>,
+    opts: &ContextOptions,
+) -> anyhow::Result<()> {
     let loaded = scene_args.load()?;
     let mut opts = opts.clone();
     opts.kernel_statistics = true;
@@ -28,6 +33,7 @@ pub fn run(scene_args: &SceneArgs, layout: Option<bidir::bvh::BvhLayout>, opts: 
     ];
     let mut settings = RenderSettings::new(integrators[0]);
     settings.bvh_layout = layout;
+    settings.shadow_queue = shadow_queue;
     let mut r = Renderer::new(&ctx, &loaded.scene, &loaded.camera, settings)?;
     for integrator in integrators {
         r.switch_integrator(&loaded.scene, &loaded.camera, integrator)?;

@@ -101,6 +101,14 @@ pub struct SettingsArgs {
     /// surfaces (the faster, measured on the H200); off on CPU devices such as lavapipe.
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub one_trace: String,
+    /// pt-nee: queue each light sample's shadow ray for a kernel of its own that traces them
+    /// after the path tracer's, SLOTS per thread; a pass launches the path tracer once per
+    /// SAMPLES samples per thread (default SLOTS / 8). A thread whose slots are full traces the
+    /// ray itself, or with /pause stops its path until the next launch. The image is the same
+    /// up to the order of float sums. auto: on GPUs where the scene has no mirror or glass
+    /// (192/24, with /pause where it has glossy surfaces), off on CPU devices.
+    #[arg(long, default_value = "auto", value_name = "auto|off|SLOTS[/SAMPLES][/pause]")]
+    pub shadow_queue: String,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
     /// diagonal (0.001), or a length in scene units with the suffix u (0.02u).
     #[arg(long, default_value = "0.001", value_name = "R")]
@@ -151,8 +159,38 @@ impl SettingsArgs {
             "off" => Some(false),
             other => bail!("--one-trace {other}: auto | on | off"),
         };
+        s.shadow_queue = parse_shadow_queue(&self.shadow_queue)?;
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;
         Ok(s)
     }
+}
+
+/// `--shadow-queue auto|off|SLOTS[/SAMPLES][/pause]`.
+pub(crate) fn parse_shadow_queue(v: &str) -> anyhow::Result<Option<Option<bidir::render::ShadowQueue>>> {
+    let bad = || {
+        anyhow::anyhow!(
+            "--shadow-queue {v}: auto | off | SLOTS[/SAMPLES][/pause] (queue slots per thread, samples per thread in a launch, \
+             paths pause where the slots are full; e.g. 128/16/pause)"
+        )
+    };
+    Ok(match v {
+        "auto" => None,
+        "off" => Some(None),
+        _ => {
+            let (v, pause) = match v.strip_suffix("/pause") {
+                Some(rest) => (rest, true),
+                None => (v, false),
+            };
+            let (slots, samples) = match v.split_once('/') {
+                Some((a, b)) => (a.parse::<u32>().map_err(|_| bad())?, Some(b.parse::<u32>().map_err(|_| bad())?)),
+                None => (v.parse::<u32>().map_err(|_| bad())?, None),
+            };
+            let chunk_samples = samples.unwrap_or((slots / 8).max(1));
+            if slots == 0 || chunk_samples == 0 {
+                return Err(bad());
+            }
+            Some(Some(bidir::render::ShadowQueue { slots, chunk_samples, pause }))
+        }
+    })
 }

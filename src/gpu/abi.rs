@@ -305,6 +305,27 @@ gpu_consts! {
     /// pt-nee: 1 traces the light sample's shadow ray in the step after the one that drew it,
     /// through the same trace_ray call as the extension ray; 0 where it is drawn (a second call).
     pub const SPEC_ONE_TRACE: u32 = 52;
+    /// pt-nee: shadow-ray slots per invocation in BIND_SHADOW_QUEUE (0: no queue). The
+    /// megakernel queues its light samples' shadow rays there and `shadow_queue.comp` traces
+    /// them after it (docs/integrators.md, "Shadow-ray queue").
+    pub const SPEC_SHADOW_QUEUE: u32 = 53;
+    /// The queued shadow rays (`QueuedShadow`), slot j of invocation i at j x invocations + i.
+    pub const BIND_SHADOW_QUEUE: u32 = 36;
+    /// Per invocation of the megakernel, the shadow rays it queued (uint).
+    pub const BIND_SHADOW_COUNTS: u32 = 37;
+    /// pt-nee with the queue: 1 makes the megakernel stop where its invocation's queue slots
+    /// are full, leaving its path in BIND_PT_SUSPENDED for the next launch to resume (no
+    /// shadow ray is traced in it); 0 (the pass's last launch) finishes every path, tracing a
+    /// shadow ray itself where the slots are full.
+    pub const SPEC_SHADOW_SUSPEND: u32 = 54;
+    /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`).
+    pub const BIND_PT_SUSPENDED: u32 = 38;
+    /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
+    /// buffer: its first sample is next), has a path suspended, or starts sample
+    /// `sigma_sample.w` next.
+    pub const PT_FRESH: u32 = 0;
+    pub const PT_SUSPENDED: u32 = 1;
+    pub const PT_NEXT: u32 = 2;
 }
 
 gpu_structs! {
@@ -649,6 +670,34 @@ gpu_structs! {
         /// Sample slices: invocations per pixel, each taking every slices-th sample of the
         /// pass into its own slice of BIND_SLICES (1: one invocation adds into the film).
         pub slices: u32,
+    }
+
+    /// A shadow ray pt-nee's megakernel queued for `shadow_queue.comp`: from `origin_tmax.xyz`
+    /// along `dir.xyz` up to `origin_tmax.w`; `dir.w` holds the path's stochastic-opacity seed
+    /// (its bits), `contrib.rgb` what the sample gains if nothing is in the way.
+    pub struct QueuedShadow (48 bytes) {
+        pub origin_tmax: Vec4,
+        pub dir: Vec4,
+        pub contrib: Vec4,
+    }
+
+    /// pt-nee's path of one invocation between the launches of a pass (the shadow-ray queue):
+    /// pt.comp's `PathState` without a pending shadow ray, the sample it belongs to and the
+    /// random-number state.
+    pub struct PtSuspended (96 bytes) {
+        /// Origin, then the vertex count (bits).
+        pub o_depth: Vec4,
+        /// Direction, then the solid-angle pdf of the last non-delta bounce.
+        pub d_pdf: Vec4,
+        /// Throughput, then 1 if the last bounce was a delta lobe.
+        pub throughput_specular: Vec4,
+        /// The estimate so far, then the stochastic-opacity seed (bits).
+        pub radiance_seed: Vec4,
+        /// sigma_a where the next segment leaves its surface, then the sample index (bits): the
+        /// suspended path's, or the next one to start.
+        pub sigma_sample: Vec4,
+        /// The random-number state (state, index, dim), then PT_FRESH / PT_SUSPENDED / PT_NEXT.
+        pub rng_status: UVec4,
     }
 
     /// A stored light-subpath vertex (a diffuse-capable hit), for BDPT connections. MIS

@@ -31,7 +31,7 @@ pub use film::Film;
 pub use gpu_scene::GpuScene;
 pub use integrator::{IntegratorKernels, PassInputs};
 pub use pacing::PassModel;
-pub use pt::PathTracer;
+pub use pt::{PathTracer, ShadowQueue};
 pub use stop::{request_stop, stop_requested};
 pub use tonemap::{Tonemap, TonemapSettings};
 
@@ -213,6 +213,10 @@ pub struct RenderSettings {
     /// through the same call as the extension rays (`--one-trace`); `None` takes
     /// [`default_one_trace`]. Either gives the same image.
     pub one_trace: Option<bool>,
+    /// pt-nee: queue the light samples' shadow rays for a kernel of their own
+    /// (`--shadow-queue`); `None` takes [`default_shadow_queue`], `Some(None)` is off. The
+    /// image is the same up to the order of float sums.
+    pub shadow_queue: Option<Option<ShadowQueue>>,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
     pub count_traversal: bool,
@@ -251,6 +255,7 @@ impl RenderSettings {
             vcm_alpha: 0.75,
             path_regeneration: None,
             one_trace: None,
+            shadow_queue: None,
             count_traversal: false,
         }
     }
@@ -372,11 +377,49 @@ pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatur
     !(on_cpu || wide_diffuse)
 }
 
+/// pt-nee's shadow-ray queue by default (`ShadowQueue`): on GPUs over the compressed wide BVH
+/// (scenes without mirrors or glass), 192 slots and 24 samples per launch, paths pausing for a
+/// full queue where the scene has glossy surfaces (the megakernel that traces a shadow ray
+/// itself where the slots are full held 96 registers on Sponza against 80; on the diffuse
+/// Cornell box the pausing one was the slower, 785 against 824 Msamples/s); none over the
+/// binary BVH (caustic scene 490 against 581) nor on CPU devices (llvmpipe: a 128x128 render
+/// of 48 samples per pixel took 1.27x the time, its two more kernels' compile included).
+/// NVIDIA H200, `bench render`, two runs (docs/results.md, "A queue for the shadow rays"):
+/// Cornell box 844-845 against 701-710 Msamples/s, Sponza 81.7-81.8 against 76.5-76.7,
+/// DamagedHelmet 709-719 against 680-693 (at 128/16), MetalRoughSpheres 817-819 against 819-832.
+pub fn default_shadow_queue(on_cpu: bool, layout: BvhLayout, features: &SceneFeatures) -> Option<ShadowQueue> {
+    if on_cpu || layout != BvhLayout::Cwbvh {
+        return None;
+    }
+    Some(ShadowQueue { slots: 192, chunk_samples: 24, pause: !features.only_diffuse() })
+}
+
+/// pt-nee's shadow-ray queue for a film of `pixels` pixels in `slices` slices: `--shadow-queue`
+/// or the default, with fewer slots where they would not fit in `pt::shadow_queue_budget`.
+fn resolve_shadow_queue(
+    ctx: &Context,
+    settings: &RenderSettings,
+    features: &SceneFeatures,
+    layout: BvhLayout,
+    pixels: u32,
+    slices: u32,
+) -> Option<ShadowQueue> {
+    if settings.integrator != Integrator::PtNee {
+        return None;
+    }
+    let queue = settings.shadow_queue.unwrap_or_else(|| default_shadow_queue(on_cpu(ctx), layout, features));
+    queue.and_then(|q| q.fit(pixels as u64 * slices as u64, pt::shadow_queue_budget(ctx)))
+}
+
 /// How the kernels of `settings` run, for logs and image metadata (neither changes the image):
 /// the BVH layout, and for pt/pt-nee whether paths are regenerated.
 pub fn kernel_form(settings: &RenderSettings) -> String {
     let layout = settings.bvh.layout.name();
     match (settings.integrator, settings.path_regeneration) {
+        (Integrator::PtNee, Some(r)) if matches!(settings.shadow_queue, Some(Some(_))) => {
+            let q = settings.shadow_queue.flatten().expect("matched");
+            format!("{layout}, path regeneration {}, shadow queue {q}", if r { "on" } else { "off" })
+        }
         (Integrator::Pt | Integrator::PtNee, Some(r)) => format!("{layout}, path regeneration {}", if r { "on" } else { "off" }),
         _ => layout.to_string(),
     }
@@ -444,7 +487,8 @@ fn build_kernels(
             // Resolved by `Renderer::new` (`None` only where kernels are built without it).
             let regenerate = settings.path_regeneration.unwrap_or(true);
             let one_trace = settings.one_trace.unwrap_or_else(|| default_one_trace(on_cpu(ctx), scene.bvh.layout, &scene.features));
-            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings, regenerate, one_trace)?)
+            let queue = resolve_shadow_queue(ctx, settings, &scene.features, scene.bvh.layout, pixels, slices);
+            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings, regenerate, one_trace, queue)?)
         }
         Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
         Integrator::Vcm(mode) => {
@@ -481,6 +525,11 @@ impl Renderer {
         let window = window(&settings, camera)?;
         let pixels = camera.width * camera.height;
         let slices = sample_slices(ctx, &settings, slice_pixels(&settings, pixels, window));
+        // Resolved here too, so `settings()` says what runs (and the queue's slots that fit).
+        if settings.integrator == Integrator::PtNee {
+            let queue = resolve_shadow_queue(ctx, &settings, &gscene.features, gscene.bvh.layout, pixels, slices);
+            settings.shadow_queue = Some(queue);
+        }
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
         let film = Film::new(ctx, window.width(), window.height(), kernels.splats(), slices)?;
         let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
@@ -810,6 +859,25 @@ mod default_tests {
             assert_eq!(default_one_trace(false, BvhLayout::Cwbvh, &f), f != diffuse, "{f:?}");
             assert!(default_one_trace(false, BvhLayout::Bvh2, &f));
             assert!(!default_one_trace(true, BvhLayout::Cwbvh, &f));
+            // pt-nee's shadow-ray queue: on GPUs over the wide BVH (pausing paths but in
+            // diffuse scenes), never over the binary one nor on CPU devices.
+            let queue = default_shadow_queue(false, pt_nee, &f);
+            assert_eq!(queue.is_some(), pt_nee == cw, "{f:?}");
+            assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
+            assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
         }
+    }
+
+    /// The queue takes the slots asked for where they fit the budget, fewer where not, none
+    /// where fewer than a handful would; the budget covers the queue, counts and paused paths.
+    #[test]
+    fn shadow_queue_fits_its_budget() {
+        let q = ShadowQueue { slots: 192, chunk_samples: 24, pause: true };
+        let per_invocation = |slots: u64| slots * 48 + 4 + 96;
+        assert_eq!(q.fit(1000, per_invocation(192) * 1000), Some(q));
+        let fewer = q.fit(1000, per_invocation(100) * 1000 + 47).expect("100 slots fit");
+        assert_eq!((fewer.slots, fewer.chunk_samples, fewer.pause), (100, 24, true));
+        assert_eq!(q.fit(1000, per_invocation(3) * 1000), None);
+        assert_eq!(q.fit(1000, per_invocation(4) * 1000).map(|q| q.slots), Some(4));
     }
 }
