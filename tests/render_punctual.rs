@@ -263,3 +263,32 @@ fn one_trace_gives_the_same_image_with_every_kind_of_light() {
     assert_eq!(same, on.len(), "{} of {} values differ", on.len() - same, on.len());
     finish(ctx);
 }
+
+/// The shadow-ray queue (`RenderSettings::shadow_queue`) with every kind of light at once
+/// (each builds its shadow ray its own way, and BDPT's connections theirs): pt-nee's, BDPT's
+/// and VCM's camera pass give the same image with and without it, up to the order of the float
+/// sums (and BDPT's light-tracing splats, whose atomic adds land in any order either way): to
+/// 1e-5 of each value. Few slots, so some rays are queued and the rest traced in place.
+#[test]
+fn shadow_queue_gives_the_same_image_with_every_kind_of_light() {
+    use bidir::render::ShadowQueue;
+    let scene = every_kind_of_light_scene();
+    let ctx = gpu();
+    let vcm = Integrator::Vcm(bidir::render::vcm::VcmMode::FULL);
+    for (integrator, spp) in [(Integrator::PtNee, 8), (Integrator::Bdpt(Join::DEFAULT), 4), (vcm, 4)] {
+        let image = |queue: Option<ShadowQueue>| {
+            let mut settings = RenderSettings::new(integrator);
+            settings.shadow_queue = Some(queue);
+            settings.pass_target = std::time::Duration::from_secs(3600);
+            let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
+            r.render_spp(spp, |_| {}).unwrap();
+            r.image().unwrap().data
+        };
+        let off = image(None);
+        let queued = image(Some(ShadowQueue { slots: 4, chunk_samples: 2, pause: true }));
+        assert!(off.iter().filter(|&&v| v > 0.0).count() * 2 > off.len(), "a mostly black image");
+        let same = queued.iter().zip(&off).filter(|(a, b)| (*a - *b).abs() <= 1e-5 * b.abs()).count();
+        assert_eq!(same, off.len(), "{}: {} of {} values differ", integrator.name(), off.len() - same, off.len());
+    }
+    finish(ctx);
+}

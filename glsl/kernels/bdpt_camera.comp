@@ -26,6 +26,7 @@
 #include "volume.glsl"
 #include "bdpt.glsl"
 #include "vcm.glsl"
+#include "shadow_queue.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
@@ -57,8 +58,9 @@ vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_re
 // camera vertex, sigma_a on the side it was reached from, d_vcm, d_vc) to light vertex y.
 // Both ends connect on the side their paths arrived on; either may lie inside a volume.
 // vm_camera / vm_light: the merging factor where merging at the camera / light vertex is a
-// strategy of this path, else 0 (vcm.glsl).
-vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, LightVertex y, inout uvec2 stats) {
+// strategy of this path, else 0 (vcm.glsl). Returns `scale` times the contribution where it
+// is added now; 0 where the shadow ray is blocked or queued (shadow_queue.glsl).
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, LightVertex y, vec3 scale, inout uvec2 stats) {
     vec3 v = y.pos - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
@@ -83,10 +85,10 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
         vec3 sigma_y = volume_sigma(materials[y.material], y.back_face != 0u);
         contrib *= volume_transmittance(segment_sigma(sigma, sigma_y), sqrt(dist2));
     }
-    if (max3(contrib) <= 0.0 || !visible_between(p, ng_f, y.pos, y.ng, stats)) {
+    if (max3(contrib) <= 0.0 || !shadow_clear_now(shadow_ray_between(p, ng_f, y.pos, y.ng), scale * contrib, stats)) {
         return vec3(0.0);
     }
-    return contrib;
+    return scale * contrib;
 }
 
 // `path`: the light path of this camera sample (megakernel joins).
@@ -212,7 +214,8 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     vec3 f = continuous_eval(bsdf, ns_f, wo, ps.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_camera = mis(ps.emission_over_direct * cos_s) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * volume_transmittance(sigma_in, ps.dist) * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
-                    if (max3(c) > 0.0 && punctual_visible(s.p, ng_f, ps, stats)) {
+                    if (max3(c) > 0.0
+                        && (SHADOW_QUEUE != 0u ? shadow_clear_now(punctual_shadow_ray(s.p, ng_f, ps), c, stats) : punctual_visible(s.p, ng_f, ps, stats))) {
                         radiance += c;
                     }
                 }
@@ -227,7 +230,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float w_light = mis(bsdf_dir_pdf_w / direct_pdf_w);
                     float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * volume_transmittance(sigma_in, 3.0e38) * f * es.le * (cos_s / (direct_pdf_w * (w_light + 1.0 + w_camera)));
-                    if (max3(c) > 0.0 && env_visible(s.p, ng_f, es.w, stats)) {
+                    if (max3(c) > 0.0 && shadow_clear_now(env_shadow_ray(s.p, ng_f, es.w), c, stats)) {
                         radiance += c;
                     }
                 }
@@ -251,7 +254,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     // The shadow ray leaves on the side the path arrived on and reaches the
                     // emitter's front: only this end can lie inside a volume.
                     vec3 c = beta * volume_transmittance(sigma_in, sqrt(dist2)) * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));
-                    if (max3(c) > 0.0 && visible_between(s.p, ng_f, ls.p, ls.n, stats)) {
+                    if (max3(c) > 0.0 && shadow_clear_now(shadow_ray_between(s.p, ng_f, ls.p, ls.n), c, stats)) {
                         radiance += c;
                     }
                 }
@@ -276,7 +279,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                             continue;
                         }
                         float inv_q = scale * float(c.y) / float(c.x);
-                        radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, y, stats);
+                        radiance += connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, y, beta * inv_q, stats);
                     }
                 }
             } else if (lc.x > 0u) {
@@ -291,7 +294,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                         continue;
                     }
-                    radiance += beta * inv_q * connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, y, stats);
+                    radiance += connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, y, beta * inv_q, stats);
                 }
             }
         }
@@ -405,7 +408,9 @@ void main() {
     if (any(isnan(l)) || any(isinf(l))) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);
         add = vec4(0.0);
+        shadow_queued = 0u; // the dropped sample's queued shadow rays with it
     }
+    shadow_queue_finish(shadow_queued);
     if (samples == 1u) {
         accum[pixel] += add;
     } else {

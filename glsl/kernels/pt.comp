@@ -18,23 +18,18 @@
 #include "env.glsl"
 #include "punctual.glsl"
 #include "volume.glsl"
+#include "shadow_queue.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
 layout(constant_id = SPEC_PATH_REGENERATION) const uint PATH_REGENERATION = 1u;
 layout(constant_id = SPEC_ONE_TRACE) const uint ONE_TRACE = 1u;
-layout(constant_id = SPEC_SHADOW_QUEUE) const uint SHADOW_QUEUE = 0u;
 layout(constant_id = SPEC_SHADOW_SUSPEND) const uint SHADOW_SUSPEND = 0u;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(push_constant) uniform Push { PtPush pc; };
 layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
-layout(std430, binding = BIND_SHADOW_QUEUE) writeonly buffer ShadowQueue { QueuedShadow shadow_queue[]; };
-layout(std430, binding = BIND_SHADOW_COUNTS) writeonly buffer ShadowCounts { uint shadow_counts[]; };
 layout(std430, binding = BIND_PT_SUSPENDED) buffer Suspended { PtSuspended suspended[]; };
-
-// pt-nee with SHADOW_QUEUE: shadow rays this invocation has queued for shadow_queue.comp.
-uint shadow_queued = 0u;
 
 // Power heuristic with beta = 2 for two strategies.
 float power_heuristic(float pdf_a, float pdf_b) {
@@ -100,16 +95,15 @@ PathState path_start(vec2 pixel, inout Rng rng) {
 // while this invocation has slots left; else with ONE_TRACE pending for the next step's
 // trace unless `r` is too short to hold an occluder, else traced here.
 void add_if_clear(inout PathState path, ShadowRay r, vec3 contrib, inout vec3 radiance, inout uvec2 stats) {
-    // With SHADOW_SUSPEND a slot is always free (main() stops before a bounce that could find
-    // none), so this kernel holds no shadow-ray traversal; a segment too short to hold an
-    // occluder (tmax <= 0, or NaN) counts as clear, as shadow_ray_clear has it.
-    if (SHADOW_QUEUE != 0u && r.tmax > 0.0 && (SHADOW_SUSPEND != 0u || shadow_queued < SHADOW_QUEUE)) {
-        uint invocations = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-        shadow_queue[shadow_queued * invocations + gl_GlobalInvocationID.x] =
-            QueuedShadow(vec4(r.o, r.tmax), vec4(r.d, uintBitsToFloat(blend_seed)), vec4(contrib, 0.0));
-        shadow_queued++;
-    } else if (SHADOW_QUEUE != 0u && SHADOW_SUSPEND != 0u) {
-        radiance += contrib;
+    if (SHADOW_QUEUE != 0u && SHADOW_SUSPEND != 0u) {
+        // A slot is always free (main() stops before a bounce that could find none), so this
+        // kernel holds no shadow-ray traversal; a segment too short to hold an occluder
+        // (tmax <= 0, or NaN) is not queued and counts as clear, as shadow_ray_clear has it.
+        if (!queue_shadow(r, contrib)) {
+            radiance += contrib;
+        }
+    } else if (queue_shadow(r, contrib)) {
+        // traced by shadow_queue.comp
     } else if (ONE_TRACE == 0u) {
         if (shadow_ray_clear(r, stats)) {
             radiance += contrib;
@@ -328,13 +322,14 @@ struct PixelSums {
     uint bad;
 };
 
-void add_sample(inout PixelSums px, vec3 l) {
+bool add_sample(inout PixelSums px, vec3 l) {
     if (any(isnan(l)) || any(isinf(l))) {
         px.bad++;
-    } else {
-        px.sum += l;
-        px.count += 1.0;
+        return false;
     }
+    px.sum += l;
+    px.count += 1.0;
+    return true;
 }
 
 // Sample `s` of the pixel: its random numbers and the start of its path.
@@ -373,7 +368,7 @@ void main() {
         PtSuspended st = suspended[g];
         uint status = st.rng_status.w;
         uint s = status == PT_FRESH ? slice : floatBitsToUint(st.sigma_sample.w);
-        shadow_counts[g] = 0u;
+        shadow_queue_finish(0u);
         if (status != PT_SUSPENDED && s >= pc.spp) {
             return; // done, or nothing more in this launch
         }
@@ -388,6 +383,7 @@ void main() {
             path = sample_start(image_pixel, s, xy, rng);
         }
         status = PT_NEXT;
+        uint sample_slots = 0u; // the sample's first slot in this launch
         for (;;) {
             if (SHADOW_SUSPEND != 0u && shadow_queued >= SHADOW_QUEUE) {
                 status = PT_SUSPENDED;
@@ -396,7 +392,10 @@ void main() {
             if (path_bounce(path, rng)) {
                 continue;
             }
-            add_sample(sums, path.radiance);
+            if (!add_sample(sums, path.radiance)) {
+                shadow_queued = sample_slots; // a dropped sample's light samples with it
+            }
+            sample_slots = shadow_queued;
             s += slices;
             if (s >= pc.spp) {
                 break;
@@ -411,7 +410,7 @@ void main() {
             suspended[g].sigma_sample.w = uintBitsToFloat(s);
             suspended[g].rng_status.w = PT_NEXT;
         }
-        shadow_counts[g] = shadow_queued;
+        shadow_queue_finish(shadow_queued);
         if (sums.count > 0.0) {
             if (slices == 1u) {
                 accum[pixel] += vec4(sums.sum, sums.count);

@@ -1,10 +1,11 @@
 #version 460
-// pt-nee's shadow-ray queue (docs/integrators.md, "Shadow-ray queue"): traces the shadow
-// rays pt.comp queued in the pass's chunk and adds the contributions of the clear ones to
-// the pixel sums pt.comp wrote. Invocation i is pt.comp's invocation i (same workgroup size,
-// same launch, same invocation -> slice and pixel mapping) and takes its queue slots in the
-// order they were filled, so the sums are reproducible. The megakernel keeps only the
-// extension ray's traversal; this kernel's is a plain any-hit loop with few live values.
+// The shadow-ray queue (docs/integrators.md, "Shadow-ray queue", glsl/common/shadow_queue.glsl):
+// traces the shadow rays a megakernel launch (pt.comp, bdpt_camera.comp) queued and adds the
+// contributions of the clear ones to the pixel sums it wrote. Invocation i is the
+// megakernel's invocation i (same workgroup size, same launch, same invocation -> slice and
+// pixel mapping) and takes its queue slots in the order they were filled, so the sums are
+// reproducible. The megakernel keeps only the extension ray's traversal; this kernel's is a
+// plain any-hit loop with few live values.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -20,20 +21,21 @@ layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; 
 layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
 layout(std430, binding = BIND_SHADOW_QUEUE) readonly buffer ShadowQueue { QueuedShadow shadow_queue[]; };
 layout(std430, binding = BIND_SHADOW_COUNTS) readonly buffer ShadowCounts { uint shadow_counts[]; };
-layout(push_constant) uniform Push { PtPush pc; };
+layout(push_constant) uniform Push { ShadowQueuePush pc; };
 
 void main() {
-    // pt.comp's mapping: invocation -> (slice, pixel of the camera's window).
-    uint tiles = tiled_count(pc.camera.window_size);
+    // The megakernels' mapping: invocation -> (slice, pixel of the camera's window).
+    uvec2 size = uvec2(pc.width, pc.height);
+    uint tiles = tiled_count(size);
     uint slices = max(pc.slices, 1u);
     uint slice = gl_GlobalInvocationID.x / tiles;
     bool valid;
-    uvec2 wp = tiled_pixel(gl_GlobalInvocationID.x % tiles, pc.camera.window_size, valid);
+    uvec2 wp = tiled_pixel(gl_GlobalInvocationID.x % tiles, size, valid);
     if (!valid || slice >= slices) {
         return;
     }
-    uint pixel = wp.y * pc.camera.window_size.x + wp.x;
-    uint invocations = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    uint pixel = wp.y * size.x + wp.x;
+    uint invocations = gl_NumWorkGroups.x * PT_WG_SIZE; // as shadow_queue.glsl counts them
     uint count = min(shadow_counts[gl_GlobalInvocationID.x], SHADOW_QUEUE);
     uvec2 stats = uvec2(0u);
     vec3 sum = vec3(0.0);
@@ -57,7 +59,7 @@ void main() {
         if (slices == 1u) {
             accum[pixel].rgb += sum;
         } else {
-            slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel].rgb += sum;
+            slices_out[slice * size.x * size.y + pixel].rgb += sum;
         }
     }
     if (bad > 0u) {

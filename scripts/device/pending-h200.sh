@@ -9,7 +9,9 @@
 #
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
-# join-default; in session 8: driver-rt, int-slabs (as separate calls then). Rerun `final` against the commit that changes a default, with BASE = the
+# join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
+# shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2 (the queue's
+# designs one after the other, see docs/results.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -546,5 +548,67 @@ queue-defaults)
   for q in off auto; do $T "$B" render $CB --integrator pt-nee --spp 64 --shadow-queue $q -o "/tmp/sq-$q.exr" 2>&1 | tail -1; done
   "$B" diff /tmp/sq-off.exr /tmp/sq-auto.exr 2>&1 | head -3
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace|bdpt-one-trace|final9|shadow-queue|queue-exp|queue-suspend|queue-final|queue-defaults" >&2; exit 2 ;;
+queue-time)
+  # #16 (session 10): time-budgeted renders of the Cornell box with the shadow-ray queue (the
+  # default) and without, against the sharper reference; then the defaults' rates.
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for q in auto off; do
+      for t in 0.1 1; do
+        echo "== pt-nee --time $t --shadow-queue $q"; $T "$B" render $CB --integrator pt-nee --time $t --shadow-queue $q --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+    done
+  done
+  for i in pt-nee bdpt; do
+    echo "== cornell $i"; $T "$B" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples"
+  done
+  ;;
+bdpt-queue)
+  # #16 (session 10): BDPT's (and VCM's) camera pass with the shadow-ray queue (--shadow-queue
+  # SLOTS) against none; pt-nee's default again; time-budgeted pt-nee renders.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^bdpt|^shadow|^pt"
+  for r in 1 2; do
+    for q in off 8 16 32; do
+      echo "== cornell bdpt --shadow-queue $q"; $T "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    for q in off 16; do
+      echo "== sponza bdpt --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+      echo "== caustic bdpt --shadow-queue $q"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+      echo "== cornell vcm --shadow-queue $q"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+    done
+    echo "== cornell pt-nee auto"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples"
+    echo "== sponza pt-nee auto"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+    for t in 0.1 1; do
+      for q in auto off; do
+        echo "== pt-nee --time $t --shadow-queue $q"; $T "$B" render $CB --integrator pt-nee --time $t --shadow-queue $q --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+    done
+  done
+  for q in off 16; do $T "$B" render $CB --integrator bdpt --spp 64 --shadow-queue $q -o "/tmp/bq-$q.exr" 2>&1 | tail -1; done
+  "$B" diff /tmp/bq-off.exr /tmp/bq-16.exr 2>&1 | head -3
+  ;;
+bdpt-queue2)
+  # #16 (session 10): bdpt-queue's BDPT and VCM half again (its first run carried a build whose
+  # camera pass discarded the queued rays: a mutation test's binary).
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^bdpt|^shadow"
+  for q in off 16; do $T "$B" render $CB --integrator bdpt --spp 64 --shadow-queue $q -o "/tmp/bq-$q.exr" 2>&1 | tail -1; done
+  "$B" diff /tmp/bq-off.exr /tmp/bq-16.exr 2>&1 | head -4
+  for r in 1 2; do
+    for q in off 16 32; do
+      echo "== cornell bdpt --shadow-queue $q"; $T "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+    for q in off 16; do
+      echo "== sponza bdpt --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+      echo "== caustic bdpt --shadow-queue $q"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+      echo "== cornell vcm --shadow-queue $q"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace|bdpt-one-trace|final9|shadow-queue|queue-exp|queue-suspend|queue-final|queue-defaults|queue-time|bdpt-queue|bdpt-queue2" >&2; exit 2 ;;
 esac

@@ -160,7 +160,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
     let integrator = settings.integrator.name();
     let count_settings = RenderSettings { count_traversal: true, ..settings.clone() };
     let mut r = Renderer::new(ctx, scene, camera, settings)?;
-    let kernel_form = crate::render::kernel_form(r.settings());
+    let kernel_form = r.kernel_form();
     let spp = o.spp.max(1);
     for _ in 0..o.warmup {
         r.reset(None)?;

@@ -105,7 +105,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         camera.width,
         camera.height,
         integrator.name(),
-        bidir::render::kernel_form(r.settings())
+        r.kernel_form()
     );
 
     let pixels = settings_window_pixels(&info_settings, &camera);
@@ -150,7 +150,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     let spp = r.samples();
     let range = bidir::imaging::SampleRange { start: info_settings.sample_start, end: info_settings.sample_start + spp };
     let mut info = super::part_args::render_info(&loaded, &info_settings, range, elapsed.as_secs_f64(), &ctx.info().name);
-    info.set(bidir::imaging::part::keys::KERNELS, bidir::render::kernel_form(r.settings()));
+    info.set(bidir::imaging::part::keys::KERNELS, r.kernel_form());
     let crop = info_settings.crop.unwrap_or(imaging::Crop::full(camera.width, camera.height));
     super::part_args::write_outputs(&outputs, &r.sums()?, &img, &info, crop, args.exposure)?;
     println!(

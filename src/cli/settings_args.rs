@@ -101,12 +101,13 @@ pub struct SettingsArgs {
     /// surfaces (the faster, measured on the H200); off on CPU devices such as lavapipe.
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub one_trace: String,
-    /// pt-nee: queue each light sample's shadow ray for a kernel of its own that traces them
-    /// after the path tracer's, SLOTS per thread; a pass launches the path tracer once per
-    /// SAMPLES samples per thread (default SLOTS / 8). A thread whose slots are full traces the
-    /// ray itself, or with /pause stops its path until the next launch. The image is the same
-    /// up to the order of float sums. auto: on GPUs where the scene has no mirror or glass
-    /// (192/24, with /pause where it has glossy surfaces), off on CPU devices.
+    /// Queue the shadow rays of pt-nee's and BDPT's (or VCM's) camera kernel for a kernel of
+    /// their own that traces them after it, SLOTS per thread; pt-nee launches its kernel once
+    /// per SAMPLES samples per thread (default SLOTS / 8). A thread whose slots are full traces
+    /// the ray itself, or (pt-nee) with /pause stops its path until the next launch. The image
+    /// is the same up to the order of float sums. auto: on GPUs, for pt-nee where the scene has
+    /// no mirror or glass (192/24, with /pause where it has glossy surfaces), for BDPT and VCM
+    /// 32 slots; off on CPU devices.
     #[arg(long, default_value = "auto", value_name = "auto|off|SLOTS[/SAMPLES][/pause]")]
     pub shadow_queue: String,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box

@@ -681,6 +681,15 @@ gpu_structs! {
         pub contrib: Vec4,
     }
 
+    /// Push constants of `shadow_queue.comp`: the film (the camera's window) and the sample
+    /// slices of the megakernel launch whose queue it traces (the same invocations).
+    pub struct ShadowQueuePush (16 bytes) {
+        pub width: u32,
+        pub height: u32,
+        pub slices: u32,
+        pub pad: u32,
+    }
+
     /// pt-nee's path of one invocation between the launches of a pass (the shadow-ray queue):
     /// pt.comp's `PathState` without a pending shadow ray, the sample it belongs to and the
     /// random-number state.

@@ -84,6 +84,8 @@ pub struct Bdpt {
     /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list, VCM's
     /// merge grid).
     pub vertex_bytes: u64,
+    /// The camera pass's shadow-ray queue (`--shadow-queue`), if any.
+    queue: Option<(super::shadow_queue::ShadowQueueTracer, super::ShadowQueue)>,
 }
 
 /// What `--integrator vcm` adds to BDPT with the light vertex cache.
@@ -100,7 +102,9 @@ impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together). `vcm`: vertex connection and merging (the light vertex
-    /// cache's join).
+    /// cache's join). `queue`: the camera pass's shadow-ray queue, for launches of up to
+    /// `invocations` invocations.
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         ctx: &Context,
         scene: &GpuScene,
@@ -109,6 +113,8 @@ impl Bdpt {
         join: Join,
         camera_samples: u32,
         vcm: Option<VcmConfig>,
+        queue: Option<super::ShadowQueue>,
+        invocations: u64,
     ) -> Result<Bdpt, RenderError> {
         let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
         let ratio = settings.light_path_ratio;
@@ -189,12 +195,19 @@ impl Bdpt {
             _ => None,
         };
         let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4) + grid.as_ref().map_or(0, |g| g.bytes);
+        let queue = queue
+            .map(|q| {
+                let tracer = super::shadow_queue::ShadowQueueTracer::new(ctx, scene, settings.count_traversal, q.slots, invocations)?;
+                Ok::<_, RenderError>((tracer, q))
+            })
+            .transpose()?;
+        let camera_specs: Vec<Spec> = specs.iter().copied().chain(queue.as_ref().map(|q| q.0.spec())).collect();
         Ok(Bdpt {
             lvc_offsets: ctx.create_buffer("bdpt.lvc_offsets", paths as u64 * 4, Memory::Device)?,
             lvc,
             grid,
             light: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FORMS), &specs)?,
-            camera: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &specs)?,
+            camera: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &camera_specs)?,
             vertices,
             counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
             join,
@@ -202,6 +215,7 @@ impl Bdpt {
             light_paths: per_sample,
             max_camera_samples: camera_samples,
             vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
+            queue,
         })
     }
 
@@ -232,6 +246,10 @@ impl Bdpt {
                 binds.push(Bind::buffer(abi::BIND_MERGE_QUERIES, &self.lvc_offsets));
             }
         }
+        match &self.queue {
+            Some((tracer, _)) => binds.extend(tracer.binds()),
+            None => binds.extend(super::shadow_queue::ShadowQueueTracer::unused_binds(film)),
+        }
         let total = push.light_path_total;
         assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
         rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
@@ -245,6 +263,9 @@ impl Bdpt {
         let samples = push.camera_samples.max(1);
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
         rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])?;
+        if let Some((tracer, _)) = &self.queue {
+            tracer.record(rec, &binds, film, samples, self.camera.groups_for(n))?;
+        }
         if let Some(grid) = &self.grid {
             grid.record_merge(rec, &binds, push, film.width * film.height * samples)?;
         }
@@ -257,6 +278,7 @@ impl IntegratorKernels for Bdpt {
     /// utilities, `compute::Scan`).
     fn kernels(&self) -> Vec<&Kernel> {
         let mut k = vec![&self.light, &self.camera];
+        k.extend(self.queue.as_ref().map(|q| q.0.kernel()));
         if let Some(g) = &self.grid {
             k.extend(g.kernels());
         }
@@ -264,7 +286,11 @@ impl IntegratorKernels for Bdpt {
     }
 
     fn storage_bytes(&self) -> u64 {
-        self.vertex_bytes
+        self.vertex_bytes + self.queue.as_ref().map_or(0, |q| q.0.bytes())
+    }
+
+    fn shadow_queue(&self) -> Option<super::ShadowQueue> {
+        self.queue.as_ref().map(|q| q.1)
     }
 
     fn splats(&self) -> bool {

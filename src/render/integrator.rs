@@ -41,6 +41,10 @@ pub trait IntegratorKernels {
     fn slice_aligned(&self) -> bool {
         false
     }
+    /// The shadow-ray queue its megakernel uses, if any.
+    fn shadow_queue(&self) -> Option<super::ShadowQueue> {
+        None
+    }
     /// Records and submits samples `first..first + spp` of every pixel, added to the film.
     fn pass(&self, ctx: &Context, inputs: &PassInputs, first: u32, spp: u32) -> Result<(), RenderError>;
 }

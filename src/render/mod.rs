@@ -22,6 +22,7 @@ pub mod lights;
 pub mod multi;
 mod pacing;
 mod pt;
+mod shadow_queue;
 mod stop;
 mod tonemap;
 pub mod vcm;
@@ -31,7 +32,8 @@ pub use film::Film;
 pub use gpu_scene::GpuScene;
 pub use integrator::{IntegratorKernels, PassInputs};
 pub use pacing::PassModel;
-pub use pt::{PathTracer, ShadowQueue};
+pub use pt::PathTracer;
+pub use shadow_queue::ShadowQueue;
 pub use stop::{request_stop, stop_requested};
 pub use tonemap::{Tonemap, TonemapSettings};
 
@@ -387,6 +389,16 @@ pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatur
 /// NVIDIA H200, `bench render`, two runs (docs/results.md, "A queue for the shadow rays"):
 /// Cornell box 844-845 against 701-710 Msamples/s, Sponza 81.7-81.8 against 76.5-76.7,
 /// DamagedHelmet 709-719 against 680-693 (at 128/16), MetalRoughSpheres 817-819 against 819-832.
+/// BDPT's and VCM's camera pass: the shadow-ray queue by default on GPUs, 32 slots (one camera
+/// path per thread; what does not fit is traced in place); off on CPU devices. NVIDIA H200,
+/// `bench render`, two runs (docs/results.md, "A queue for the shadow rays"): Cornell box bdpt
+/// 288 against 321 ms per 1024 spp (camera pass 94 + queue 65 against 192 ms; 16 slots: 293),
+/// Sponza 481 against 546 ms per 64 spp (16 slots), caustic scene 89.5 against 95.8 ms, VCM on
+/// the Cornell box 354 against 394 ms (16 slots).
+pub fn default_camera_pass_queue(on_cpu: bool) -> Option<ShadowQueue> {
+    (!on_cpu).then_some(ShadowQueue { slots: 32, chunk_samples: 1, pause: false })
+}
+
 pub fn default_shadow_queue(on_cpu: bool, layout: BvhLayout, features: &SceneFeatures) -> Option<ShadowQueue> {
     if on_cpu || layout != BvhLayout::Cwbvh {
         return None;
@@ -394,21 +406,26 @@ pub fn default_shadow_queue(on_cpu: bool, layout: BvhLayout, features: &SceneFea
     Some(ShadowQueue { slots: 192, chunk_samples: 24, pause: !features.only_diffuse() })
 }
 
-/// pt-nee's shadow-ray queue for a film of `pixels` pixels in `slices` slices: `--shadow-queue`
-/// or the default, with fewer slots where they would not fit in `pt::shadow_queue_budget`.
+/// The shadow-ray queue of `integrator`'s megakernel for launches of `invocations`
+/// invocations: `--shadow-queue` (pt-nee, BDPT and VCM) or the default (pt-nee's only), with
+/// fewer slots where they would not fit in `shadow_queue::budget`.
 fn resolve_shadow_queue(
     ctx: &Context,
     settings: &RenderSettings,
+    integrator: Integrator,
     features: &SceneFeatures,
     layout: BvhLayout,
-    pixels: u32,
-    slices: u32,
+    invocations: u64,
 ) -> Option<ShadowQueue> {
-    if settings.integrator != Integrator::PtNee {
-        return None;
-    }
-    let queue = settings.shadow_queue.unwrap_or_else(|| default_shadow_queue(on_cpu(ctx), layout, features));
-    queue.and_then(|q| q.fit(pixels as u64 * slices as u64, pt::shadow_queue_budget(ctx)))
+    let (queue, fixed) = match integrator {
+        Integrator::Pt => return None,
+        Integrator::PtNee => {
+            let queue = settings.shadow_queue.unwrap_or_else(|| default_shadow_queue(on_cpu(ctx), layout, features));
+            (queue, pt::PAUSED_PATH_BYTES)
+        }
+        Integrator::Bdpt(_) | Integrator::Vcm(_) => (settings.shadow_queue.unwrap_or_else(|| default_camera_pass_queue(on_cpu(ctx))), 0),
+    };
+    queue.and_then(|q| q.fit(invocations, fixed, shadow_queue::budget(ctx)))
 }
 
 /// How the kernels of `settings` run, for logs and image metadata (neither changes the image):
@@ -416,10 +433,6 @@ fn resolve_shadow_queue(
 pub fn kernel_form(settings: &RenderSettings) -> String {
     let layout = settings.bvh.layout.name();
     match (settings.integrator, settings.path_regeneration) {
-        (Integrator::PtNee, Some(r)) if matches!(settings.shadow_queue, Some(Some(_))) => {
-            let q = settings.shadow_queue.flatten().expect("matched");
-            format!("{layout}, path regeneration {}, shadow queue {q}", if r { "on" } else { "off" })
-        }
         (Integrator::Pt | Integrator::PtNee, Some(r)) => format!("{layout}, path regeneration {}", if r { "on" } else { "off" }),
         _ => layout.to_string(),
     }
@@ -472,28 +485,32 @@ fn slice_pixels(settings: &RenderSettings, full_pixels: u32, window: Crop) -> u3
     }
 }
 
-/// The kernels of `integrator` for a film of `pixels` pixels: the integrators' registration.
+/// The kernels of `integrator` for a film of `pixels` pixels (the full image's) showing
+/// `window`: the integrators' registration.
 fn build_kernels(
     ctx: &Context,
     scene: &GpuScene,
     integrator: Integrator,
     pixels: u32,
+    window: Crop,
     settings: &RenderSettings,
     slices: u32,
 ) -> Result<Kernels, RenderError> {
     check_layout(scene.bvh.layout)?;
+    let invocations = shadow_queue::invocations(window.width(), window.height(), slices);
+    let queue = resolve_shadow_queue(ctx, settings, integrator, &scene.features, scene.bvh.layout, invocations);
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => {
             // Resolved by `Renderer::new` (`None` only where kernels are built without it).
             let regenerate = settings.path_regeneration.unwrap_or(true);
             let one_trace = settings.one_trace.unwrap_or_else(|| default_one_trace(on_cpu(ctx), scene.bvh.layout, &scene.features));
-            let queue = resolve_shadow_queue(ctx, settings, &scene.features, scene.bvh.layout, pixels, slices);
-            Box::new(PathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings, regenerate, one_trace, queue)?)
+            let nee = integrator == Integrator::PtNee;
+            Box::new(PathTracer::new(ctx, scene, nee, settings, regenerate, one_trace, queue, invocations)?)
         }
-        Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None)?),
+        Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None, queue, invocations)?),
         Integrator::Vcm(mode) => {
             let config = bdpt::VcmConfig { mode, radius: settings.vcm_radius.resolve(0.0), alpha: settings.vcm_alpha };
-            Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::DEFAULT, slices, Some(config))?)
+            Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::DEFAULT, slices, Some(config), queue, invocations)?)
         }
     })
 }
@@ -525,12 +542,7 @@ impl Renderer {
         let window = window(&settings, camera)?;
         let pixels = camera.width * camera.height;
         let slices = sample_slices(ctx, &settings, slice_pixels(&settings, pixels, window));
-        // Resolved here too, so `settings()` says what runs (and the queue's slots that fit).
-        if settings.integrator == Integrator::PtNee {
-            let queue = resolve_shadow_queue(ctx, &settings, &gscene.features, gscene.bvh.layout, pixels, slices);
-            settings.shadow_queue = Some(queue);
-        }
-        let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, &settings, slices)?;
+        let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, window, &settings, slices)?;
         let film = Film::new(ctx, window.width(), window.height(), kernels.splats(), slices)?;
         let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
         let first_hit = settings
@@ -625,7 +637,7 @@ impl Renderer {
             let slices = sample_slices(&self.ctx, &self.settings, slice_pixels(&self.settings, pixels, window));
             // Path tracers keep their kernels; BDPT's store is sized by the pixel count.
             let kernels = if self.kernels.sized_by_pixels() {
-                Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, &self.settings, slices)?)
+                Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, window, &self.settings, slices)?)
             } else {
                 None
             };
@@ -655,7 +667,7 @@ impl Renderer {
         let (x0, y0) = (self.camera.window_x, self.camera.window_y);
         let window = Crop { x0, y0, x1: x0 + self.film.width, y1: y0 + self.film.height };
         let slices = sample_slices(&self.ctx, &settings, slice_pixels(&settings, pixels, window));
-        let kernels = build_kernels(&self.ctx, &self.scene, integrator, pixels, &settings, slices)?;
+        let kernels = build_kernels(&self.ctx, &self.scene, integrator, pixels, window, &settings, slices)?;
         let film = Film::new(&self.ctx, self.film.width, self.film.height, kernels.splats(), slices)?;
         self.kernels = kernels;
         self.film = film;
@@ -680,6 +692,16 @@ impl Renderer {
         }
         *self = Renderer::new(&self.ctx, scene, camera, self.settings.with_integrator(integrator))?;
         Ok(())
+    }
+
+    /// How the kernels run, for logs and image metadata: [`kernel_form`] of the settings, and
+    /// the shadow-ray queue in use (with the slots that fit).
+    pub fn kernel_form(&self) -> String {
+        match (self.kernels.shadow_queue(), self.settings.integrator) {
+            (Some(q), Integrator::PtNee) => format!("{}, shadow queue {q}", kernel_form(&self.settings)),
+            (Some(q), _) => format!("{}, shadow queue {}", kernel_form(&self.settings), q.slots),
+            (None, _) => kernel_form(&self.settings),
+        }
     }
 
     /// The integrator's kernels (e.g. for their compile statistics, `Kernel::statistics`).
@@ -865,6 +887,9 @@ mod default_tests {
             assert_eq!(queue.is_some(), pt_nee == cw, "{f:?}");
             assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
             assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
+            // BDPT's and VCM's camera pass: on GPUs, never on CPU devices.
+            assert_eq!(default_camera_pass_queue(false).map(|q| q.slots), Some(32));
+            assert_eq!(default_camera_pass_queue(true), None);
         }
     }
 
@@ -873,11 +898,14 @@ mod default_tests {
     #[test]
     fn shadow_queue_fits_its_budget() {
         let q = ShadowQueue { slots: 192, chunk_samples: 24, pause: true };
-        let per_invocation = |slots: u64| slots * 48 + 4 + 96;
-        assert_eq!(q.fit(1000, per_invocation(192) * 1000), Some(q));
-        let fewer = q.fit(1000, per_invocation(100) * 1000 + 47).expect("100 slots fit");
+        let fixed = pt::PAUSED_PATH_BYTES;
+        let per_invocation = |slots: u64| slots * 48 + 4 + fixed;
+        assert_eq!(q.fit(1000, fixed, per_invocation(192) * 1000), Some(q));
+        let fewer = q.fit(1000, fixed, per_invocation(100) * 1000 + 47).expect("100 slots fit");
         assert_eq!((fewer.slots, fewer.chunk_samples, fewer.pause), (100, 24, true));
-        assert_eq!(q.fit(1000, per_invocation(3) * 1000), None);
-        assert_eq!(q.fit(1000, per_invocation(4) * 1000).map(|q| q.slots), Some(4));
+        assert_eq!(q.fit(1000, fixed, per_invocation(3) * 1000), None);
+        assert_eq!(q.fit(1000, fixed, per_invocation(4) * 1000).map(|q| q.slots), Some(4));
+        // BDPT's camera pass needs nothing besides its slots.
+        assert_eq!(q.fit(1000, 0, (192 * 48 + 4) * 1000), Some(q));
     }
 }
