@@ -10,7 +10,7 @@
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
-# shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2 (the queue's
+# shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
 # designs one after the other, see docs/results.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
@@ -610,5 +610,27 @@ bdpt-queue2)
     done
   done
   ;;
-*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace|bdpt-one-trace|final9|shadow-queue|queue-exp|queue-suspend|queue-final|queue-defaults|queue-time|bdpt-queue|bdpt-queue2" >&2; exit 2 ;;
+queue-balanced)
+  # #16 (session 10): the queue's kernel sharing a subgroup's rays over its lanes (B) against
+  # one lane tracing its own queue (LOOP, the commit before), interleaved; the same images.
+  LOOP=${LOOP:-$PWD/.device/bidir-loop}
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^bdpt_camera|^shadow|^pt"
+  for b in "$LOOP" "$B"; do
+    n=$(basename "$b")
+    echo "== $n cornell pt-nee"; $T "$b" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "$K"
+    echo "== $n cornell bdpt"; $T "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --shadow-queue 32 2>&1 | grep -E "$K"
+    echo "== $n sponza bdpt"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --shadow-queue 32 2>&1 | grep -E "$K"
+    echo "== $n sponza pt-nee"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "$K"
+  done
+  echo "== caustic bdpt (auto)"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+  echo "== cornell vcm (auto)"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+  for i in pt-nee bdpt; do
+    for q in off auto; do $T "$B" render $CB --integrator $i --spp 64 --shadow-queue $q -o "/tmp/$i-$q.exr" 2>&1 | tail -1; done
+    "$B" diff "/tmp/$i-off.exr" "/tmp/$i-auto.exr" 2>&1 | head -2
+  done
+  ;;
+*) echo "usage: $0 speed|vcm|rough|trav|defaults|final|light-paths|vcm-first|bvh-quality|bdpt-joins|join-default|driver-rt|int-slabs|bvh4|bvh4-int|glossy-layout|counts|no-shadow|one-trace|bdpt-one-trace|final9|shadow-queue|queue-exp|queue-suspend|queue-final|queue-defaults|queue-time|bdpt-queue|bdpt-queue2|queue-balanced" >&2; exit 2 ;;
 esac

@@ -387,14 +387,15 @@ pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatur
 /// binary BVH (caustic scene 490 against 581) nor on CPU devices (llvmpipe: a 128x128 render
 /// of 48 samples per pixel took 1.27x the time, its two more kernels' compile included).
 /// NVIDIA H200, `bench render`, two runs (docs/results.md, "A queue for the shadow rays"):
-/// Cornell box 844-845 against 701-710 Msamples/s, Sponza 81.7-81.8 against 76.5-76.7,
-/// DamagedHelmet 709-719 against 680-693 (at 128/16), MetalRoughSpheres 817-819 against 819-832.
+/// Cornell box 844-845 against 701-710 Msamples/s, Sponza 81.7-81.8 against 76.5-76.7 (84.9
+/// with the queue's rays shared over the subgroup), DamagedHelmet 709-719 against 680-693 (at
+/// 128/16), MetalRoughSpheres 817-819 against 819-832.
 /// BDPT's and VCM's camera pass: the shadow-ray queue by default on GPUs, 32 slots (one camera
 /// path per thread; what does not fit is traced in place); off on CPU devices. NVIDIA H200,
-/// `bench render`, two runs (docs/results.md, "A queue for the shadow rays"): Cornell box bdpt
-/// 288 against 321 ms per 1024 spp (camera pass 94 + queue 65 against 192 ms; 16 slots: 293),
-/// Sponza 481 against 546 ms per 64 spp (16 slots), caustic scene 89.5 against 95.8 ms, VCM on
-/// the Cornell box 354 against 394 ms (16 slots).
+/// `bench render` (docs/results.md, "A queue for the shadow rays"): Cornell box bdpt 261.5
+/// against 321 ms per 1024 spp (camera pass 94 + queue 38 against 192 ms), Sponza 425.6 against
+/// 546 ms per 64 spp, caustic scene 89.6 against 95.8 ms, VCM on the Cornell box 322 against
+/// 394 ms.
 pub fn default_camera_pass_queue(on_cpu: bool) -> Option<ShadowQueue> {
     (!on_cpu).then_some(ShadowQueue { slots: 32, chunk_samples: 1, pause: false })
 }
