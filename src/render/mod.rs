@@ -408,8 +408,9 @@ pub fn default_shadow_queue(on_cpu: bool, layout: BvhLayout, features: &SceneFea
 }
 
 /// The shadow-ray queue of `integrator`'s megakernel for launches of `invocations`
-/// invocations: `--shadow-queue` (pt-nee, BDPT and VCM) or the default (pt-nee's only), with
-/// fewer slots where they would not fit in `shadow_queue::budget`.
+/// invocations: `--shadow-queue` or the default (`default_shadow_queue` for pt-nee,
+/// `default_camera_pass_queue` for BDPT and VCM), with fewer slots where they would not fit in
+/// `shadow_queue::budget`.
 fn resolve_shadow_queue(
     ctx: &Context,
     settings: &RenderSettings,
