@@ -17,7 +17,7 @@ pub struct InfoArgs {
     /// integrator's own, as `render --bvh auto` picks it]
     #[arg(long, requires = "kernels")]
     pub bvh: Option<bidir::bvh::BvhLayout>,
-    /// With --kernels: pt-nee's shadow-ray queue as `render --shadow-queue` takes it
+    /// With --kernels: the shadow-ray queue as `render --shadow-queue` takes it
     #[arg(long, requires = "kernels", default_value = "auto", value_name = "auto|off|SLOTS[/SAMPLES][/pause]")]
     pub shadow_queue: String,
     #[command(flatten)]

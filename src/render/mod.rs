@@ -215,9 +215,10 @@ pub struct RenderSettings {
     /// through the same call as the extension rays (`--one-trace`); `None` takes
     /// [`default_one_trace`]. Either gives the same image.
     pub one_trace: Option<bool>,
-    /// pt-nee: queue the light samples' shadow rays for a kernel of their own
-    /// (`--shadow-queue`); `None` takes [`default_shadow_queue`], `Some(None)` is off. The
-    /// image is the same up to the order of float sums.
+    /// pt-nee's and BDPT's/VCM's camera pass: queue the shadow rays for a kernel of their own
+    /// (`--shadow-queue`; BDPT and VCM use its slots only); `None` takes
+    /// [`default_shadow_queue`] / [`default_camera_pass_queue`], `Some(None)` is off. The image
+    /// is the same up to the order of float sums.
     pub shadow_queue: Option<Option<ShadowQueue>>,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
@@ -379,6 +380,16 @@ pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatur
     !(on_cpu || wide_diffuse)
 }
 
+/// BDPT's and VCM's camera pass: the shadow-ray queue by default on GPUs, 32 slots (one camera
+/// path per thread; what does not fit is traced in place); off on CPU devices. NVIDIA H200,
+/// `bench render` (docs/results.md, "A queue for the shadow rays"): Cornell box bdpt 261.5
+/// against 321 ms per 1024 spp (camera pass 94 + queue 38 against 192 ms), Sponza 425.6 against
+/// 546 ms per 64 spp, caustic scene 89.6 against 95.8 ms, VCM on the Cornell box 322 against
+/// 394 ms.
+pub fn default_camera_pass_queue(on_cpu: bool) -> Option<ShadowQueue> {
+    (!on_cpu).then_some(ShadowQueue { slots: 32, chunk_samples: 1, pause: false })
+}
+
 /// pt-nee's shadow-ray queue by default (`ShadowQueue`): on GPUs over the compressed wide BVH
 /// (scenes without mirrors or glass), 192 slots and 24 samples per launch, paths pausing for a
 /// full queue where the scene has glossy surfaces (the megakernel that traces a shadow ray
@@ -390,16 +401,6 @@ pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatur
 /// Cornell box 844-845 against 701-710 Msamples/s, Sponza 81.7-81.8 against 76.5-76.7 (84.9
 /// with the queue's rays shared over the subgroup), DamagedHelmet 709-719 against 680-693 (at
 /// 128/16), MetalRoughSpheres 817-819 against 819-832.
-/// BDPT's and VCM's camera pass: the shadow-ray queue by default on GPUs, 32 slots (one camera
-/// path per thread; what does not fit is traced in place); off on CPU devices. NVIDIA H200,
-/// `bench render` (docs/results.md, "A queue for the shadow rays"): Cornell box bdpt 261.5
-/// against 321 ms per 1024 spp (camera pass 94 + queue 38 against 192 ms), Sponza 425.6 against
-/// 546 ms per 64 spp, caustic scene 89.6 against 95.8 ms, VCM on the Cornell box 322 against
-/// 394 ms.
-pub fn default_camera_pass_queue(on_cpu: bool) -> Option<ShadowQueue> {
-    (!on_cpu).then_some(ShadowQueue { slots: 32, chunk_samples: 1, pause: false })
-}
-
 pub fn default_shadow_queue(on_cpu: bool, layout: BvhLayout, features: &SceneFeatures) -> Option<ShadowQueue> {
     if on_cpu || layout != BvhLayout::Cwbvh {
         return None;
@@ -637,7 +638,8 @@ impl Renderer {
         if (camera.width, camera.height) != (self.camera.size.x, self.camera.size.y) {
             let pixels = camera.width * camera.height;
             let slices = sample_slices(&self.ctx, &self.settings, slice_pixels(&self.settings, pixels, window));
-            // Path tracers keep their kernels; BDPT's store is sized by the pixel count.
+            // Path tracers keep their kernels unless their shadow-ray queue is sized by the
+            // film; BDPT's store is sized by the pixel count.
             let kernels = if self.kernels.sized_by_pixels() {
                 Some(build_kernels(&self.ctx, &self.scene, self.settings.integrator, pixels, window, &self.settings, slices)?)
             } else {
