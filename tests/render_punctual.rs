@@ -266,9 +266,10 @@ fn one_trace_gives_the_same_image_with_every_kind_of_light() {
 
 /// The shadow-ray queue (`RenderSettings::shadow_queue`) with every kind of light at once
 /// (each builds its shadow ray its own way, and BDPT's connections theirs): pt-nee's, BDPT's
-/// and VCM's camera pass give the same image with and without it, up to the order of the float
-/// sums (and BDPT's light-tracing splats, whose atomic adds land in any order either way): to
-/// 1e-5 of each value. Few slots, so some rays are queued and the rest traced in place.
+/// and VCM's camera pass, and BDPT's and VCM's light pass (its joins to the camera), give the
+/// same image with and without it, up to the order of the float sums (and of the light-tracing
+/// splats, whose atomic adds land in any order either way): to 1e-5 of each value. Few slots,
+/// so some rays are queued and the rest traced in place.
 #[test]
 fn shadow_queue_gives_the_same_image_with_every_kind_of_light() {
     use bidir::render::ShadowQueue;

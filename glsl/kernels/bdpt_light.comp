@@ -24,6 +24,7 @@
 #include "volume.glsl"
 #include "bdpt.glsl"
 #include "vcm.glsl"
+#include "shadow_queue.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_SPLAT) buffer Splat { float splat[]; };
@@ -61,17 +62,6 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
     if (max3(contrib) <= 0.0) {
         return;
     }
-    vec3 o = offset_ray_origin(p, ng_f);
-    vec3 to = pc.camera.eye.xyz - o;
-    float len = length(to);
-    TraceHit sh = trace_ray(o, to / len, 0.0, len, true, stats);
-    if (sh.prim != NO_HIT) {
-        return;
-    }
-    if (any(isnan(contrib)) || any(isinf(contrib))) {
-        atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);
-        return;
-    }
     // Only the camera's window is on the film.
     uvec2 origin = uvec2(pc.camera.window_x, pc.camera.window_y);
     uvec2 wp = uvec2(raster) - origin;
@@ -79,16 +69,29 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
         return;
     }
     uint pix = wp.y * pc.camera.window_size.x + wp.x;
+    vec3 o = offset_ray_origin(p, ng_f);
+    vec3 to = pc.camera.eye.xyz - o;
+    float len = length(to);
+    ShadowRay ray = ShadowRay(o, to / len, len);
+    // Queued (shadow_queue_splat.comp traces it and splats if clear), or traced here.
+    if (queue_tagged_shadow(ray, contrib, pix)) {
+        return;
+    }
+    TraceHit sh = trace_ray(ray.o, ray.d, 0.0, ray.tmax, true, stats);
+    if (sh.prim != NO_HIT) {
+        return;
+    }
+    if (any(isnan(contrib)) || any(isinf(contrib))) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], 1u);
+        return;
+    }
     atomicAdd(splat[3u * pix + 0u], contrib.r);
     atomicAdd(splat[3u * pix + 1u], contrib.g);
     atomicAdd(splat[3u * pix + 2u], contrib.b);
 }
 
-void main() {
-    uint path = gl_GlobalInvocationID.x;
-    if (path >= pc.light_path_total) {
-        return;
-    }
+// Light path `path`: its vertices to the store, its joins to the camera splatted or queued.
+void light_path(uint path) {
     uvec2 stats = uvec2(0u);
     uint stored = 0u, seen = 0u;
     uint base = path * pc.light_path_len;
@@ -311,4 +314,12 @@ void main() {
     light_counts[path] = uvec2(stored, seen);
     lvc_offsets[path] = stored;
     ADD_TRAVERSAL_COUNTS(render_stats);
+}
+
+void main() {
+    uint path = gl_GlobalInvocationID.x;
+    if (path < pc.light_path_total) {
+        light_path(path);
+    }
+    shadow_queue_finish(shadow_queued);
 }

@@ -1,11 +1,6 @@
 #version 460
-// The shadow-ray queue (docs/integrators.md, "Shadow-ray queue", glsl/common/shadow_queue.glsl):
-// traces the shadow rays a megakernel launch (pt.comp, bdpt_camera.comp) queued and adds the
-// contributions of the clear ones to the pixel sums it wrote. Invocation i is the
-// megakernel's invocation i (same workgroup size, same launch, same invocation -> slice and
-// pixel mapping) and takes its queue slots in the order they were filled, so the sums are
-// reproducible. The megakernel keeps only the extension ray's traversal; this kernel's is a
-// plain any-hit loop with few live values, its rays shared out over the subgroup.
+// The shadow-ray queue after pt.comp and bdpt_camera.comp: traces the shadow rays a launch
+// queued and adds the clear ones to the pixel sums it wrote (glsl/common/shadow_queue_kernel.glsl).
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -13,91 +8,4 @@
 #include "bidir_abi.glsl"
 #include "ray.glsl"
 #include "scene.glsl"
-
-layout(local_size_x = PT_WG_SIZE) in;
-layout(constant_id = SPEC_SHADOW_QUEUE) const uint SHADOW_QUEUE = 1u;
-layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
-layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
-layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
-layout(std430, binding = BIND_SHADOW_QUEUE) readonly buffer ShadowQueue { QueuedShadow shadow_queue[]; };
-layout(std430, binding = BIND_SHADOW_COUNTS) readonly buffer ShadowCounts { uint shadow_counts[]; };
-layout(push_constant) uniform Push { ShadowQueuePush pc; };
-
-// A subgroup's lanes trace the rays of all of them together, a round of gl_SubgroupSize rays
-// at a time (the k-th ray of the subgroup, counting the lanes' queues one after another, goes
-// to lane k mod gl_SubgroupSize), so lanes whose paths queued few rays do not idle behind
-// those that queued many. Per subgroup: which invocation and slot each lane traces this round,
-// and what it found.
-shared uint round_owner[PT_WG_SIZE];
-shared uint round_slot[PT_WG_SIZE];
-shared vec3 round_result[PT_WG_SIZE];
-
-void main() {
-    // The megakernels' mapping: invocation -> (slice, pixel of the camera's window). Every
-    // lane takes part in its subgroup's rounds; one without a pixel brings no rays.
-    uvec2 size = uvec2(pc.width, pc.height);
-    uint tiles = tiled_count(size);
-    uint slices = max(pc.slices, 1u);
-    uint slice = gl_GlobalInvocationID.x / tiles;
-    bool valid;
-    uvec2 wp = tiled_pixel(gl_GlobalInvocationID.x % tiles, size, valid);
-    valid = valid && slice < slices;
-    uint invocations = gl_NumWorkGroups.x * PT_WG_SIZE; // as shadow_queue.glsl counts them
-    uint count = valid ? min(shadow_counts[gl_GlobalInvocationID.x], SHADOW_QUEUE) : 0u;
-    uint first = subgroupExclusiveAdd(count); // this lane's first ray among the subgroup's
-    uint total = subgroupAdd(count);
-    uint base = gl_SubgroupID * gl_SubgroupSize; // the subgroup's part of the shared arrays
-    uint lane = gl_SubgroupInvocationID;
-    uvec2 stats = uvec2(0u);
-    vec3 sum = vec3(0.0);
-    uint bad = 0u;
-    for (uint k0 = 0u; k0 < total; k0 += gl_SubgroupSize) {
-        // This lane's rays in the round [k0, k0 + gl_SubgroupSize), published for the lanes
-        // that trace them.
-        uint lo = max(first, k0);
-        uint hi = min(first + count, k0 + gl_SubgroupSize);
-        for (uint k = lo; k < hi; k++) {
-            round_owner[base + k - k0] = gl_GlobalInvocationID.x;
-            round_slot[base + k - k0] = k - first;
-        }
-        subgroupMemoryBarrierShared();
-        subgroupBarrier();
-        vec3 found = vec3(0.0);
-        if (k0 + lane < total) {
-            QueuedShadow q = shadow_queue[round_slot[base + lane] * invocations + round_owner[base + lane]];
-            if (HAS_ALPHA != 0u) {
-                blend_seed = floatBitsToUint(q.dir.w); // the path's stochastic opacity
-            }
-            if (trace_ray(q.origin_tmax.xyz, q.dir.xyz, 0.0, q.origin_tmax.w, true, stats).prim == NO_HIT) {
-                // A NaN or Inf contribution never reaches the film (the megakernels drop such
-                // samples whole; a queued one is dropped alone), it is counted and reported.
-                if (any(isnan(q.contrib.rgb)) || any(isinf(q.contrib.rgb))) {
-                    bad++;
-                } else {
-                    found = q.contrib.rgb;
-                }
-            }
-        }
-        round_result[base + lane] = found;
-        subgroupMemoryBarrierShared();
-        subgroupBarrier();
-        // The owner adds its rays' findings in slot order (a blocked one adds 0): the sum of
-        // one lane tracing its slots one after another.
-        for (uint k = lo; k < hi; k++) {
-            sum += round_result[base + k - k0];
-        }
-        subgroupBarrier();
-    }
-    if (valid && count > 0u) {
-        uint pixel = wp.y * size.x + wp.x;
-        if (slices == 1u) {
-            accum[pixel].rgb += sum;
-        } else {
-            slices_out[slice * size.x * size.y + pixel].rgb += sum;
-        }
-    }
-    if (bad > 0u) {
-        atomicAdd(render_stats[STAT_NAN_SAMPLES], bad);
-    }
-    ADD_TRAVERSAL_COUNTS(render_stats);
-}
+#include "shadow_queue_kernel.glsl"

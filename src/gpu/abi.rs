@@ -682,7 +682,9 @@ gpu_structs! {
     }
 
     /// Push constants of `shadow_queue.comp`: the film (the camera's window) and the sample
-    /// slices of the megakernel launch whose queue it traces (the same invocations).
+    /// slices of the megakernel launch whose queue it traces (the same invocations). Of
+    /// `shadow_queue_splat.comp`: `width` is the light pass's count of light paths (one per
+    /// invocation), the rest unused.
     pub struct ShadowQueuePush (16 bytes) {
         pub width: u32,
         pub height: u32,

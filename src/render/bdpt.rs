@@ -52,6 +52,16 @@ impl std::str::FromStr for Join {
     }
 }
 
+/// Light paths per camera sample for a film of `pixels` pixels (`--light-paths RATIO`).
+pub fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
+    ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32
+}
+
+/// Invocations of a light pass of `paths` light paths (whole workgroups).
+pub fn light_invocations(paths: u32) -> u64 {
+    (paths as u64).next_multiple_of(abi::PT_WG_SIZE as u64)
+}
+
 /// What the light vertex cache adds to the megakernel: a scan of the stored counts and a
 /// pass that lists every stored slot densely.
 struct Lvc {
@@ -84,7 +94,8 @@ pub struct Bdpt {
     /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list, VCM's
     /// merge grid).
     pub vertex_bytes: u64,
-    /// The camera pass's shadow-ray queue (`--shadow-queue`), if any.
+    /// The shadow-ray queue of the camera pass and of the light pass's joins to the camera
+    /// (`--shadow-queue`), if any.
     queue: Option<(super::shadow_queue::ShadowQueueTracer, super::ShadowQueue)>,
 }
 
@@ -102,7 +113,7 @@ impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together). `vcm`: vertex connection and merging (the light vertex
-    /// cache's join). `queue`: the camera pass's shadow-ray queue, for launches of up to
+    /// cache's join). `queue`: the camera and light passes' shadow-ray queue, for launches of up to
     /// `invocations` invocations.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
@@ -127,7 +138,7 @@ impl Bdpt {
                 join.name()
             )));
         }
-        let per_sample = ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32;
+        let per_sample = light_paths_per_sample(pixels, ratio);
         let camera_samples = camera_samples.max(1);
         let paths = per_sample.saturating_mul(camera_samples);
         let info = ctx.info();
@@ -195,19 +206,22 @@ impl Bdpt {
             _ => None,
         };
         let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4) + grid.as_ref().map_or(0, |g| g.bytes);
+        // The light pass queues its joins to the camera in the same storage, one light path
+        // per invocation.
+        let invocations = invocations.max(light_invocations(paths));
         let queue = queue
             .map(|q| {
-                let tracer = super::shadow_queue::ShadowQueueTracer::new(ctx, scene, settings.count_traversal, q.slots, invocations)?;
+                let tracer = super::shadow_queue::ShadowQueueTracer::new(ctx, scene, settings.count_traversal, q.slots, invocations, true)?;
                 Ok::<_, RenderError>((tracer, q))
             })
             .transpose()?;
-        let camera_specs: Vec<Spec> = specs.iter().copied().chain(queue.as_ref().map(|q| q.0.spec())).collect();
+        specs.extend(queue.as_ref().map(|q| q.0.spec()));
         Ok(Bdpt {
             lvc_offsets: ctx.create_buffer("bdpt.lvc_offsets", paths as u64 * 4, Memory::Device)?,
             lvc,
             grid,
             light: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FORMS), &specs)?,
-            camera: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &camera_specs)?,
+            camera: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &specs)?,
             vertices,
             counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
             join,
@@ -253,6 +267,9 @@ impl Bdpt {
         let total = push.light_path_total;
         assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
         rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
+        if let Some((tracer, _)) = &self.queue {
+            tracer.record_splats(rec, &binds, total, self.light.groups_for(total))?;
+        }
         if let Some(lvc) = &self.lvc {
             lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;
             rec.dispatch(&lvc.compact, &binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
@@ -278,7 +295,7 @@ impl IntegratorKernels for Bdpt {
     /// utilities, `compute::Scan`).
     fn kernels(&self) -> Vec<&Kernel> {
         let mut k = vec![&self.light, &self.camera];
-        k.extend(self.queue.as_ref().map(|q| q.0.kernel()));
+        k.extend(self.queue.iter().flat_map(|q| q.0.kernels()));
         if let Some(g) = &self.grid {
             k.extend(g.kernels());
         }

@@ -500,7 +500,12 @@ fn build_kernels(
     slices: u32,
 ) -> Result<Kernels, RenderError> {
     check_layout(scene.bvh.layout)?;
-    let invocations = shadow_queue::invocations(window.width(), window.height(), slices);
+    let mut invocations = shadow_queue::invocations(window.width(), window.height(), slices);
+    if integrator.stores_light_vertices() {
+        // BDPT's light pass queues its joins to the camera too: a light path per invocation.
+        let paths = bdpt::light_paths_per_sample(pixels, settings.light_path_ratio).saturating_mul(slices);
+        invocations = invocations.max(bdpt::light_invocations(paths));
+    }
     let queue = resolve_shadow_queue(ctx, settings, integrator, &scene.features, scene.bvh.layout, invocations);
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee => {

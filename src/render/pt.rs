@@ -47,7 +47,7 @@ impl PathTracer {
         let Some(shape) = queue.filter(|_| nee) else {
             return Ok(PathTracer { kernel: ctx.create_kernel(forms, &specs)?, queue: None });
         };
-        let tracer = ShadowQueueTracer::new(ctx, scene, settings.count_traversal, shape.slots, invocations)?;
+        let tracer = ShadowQueueTracer::new(ctx, scene, settings.count_traversal, shape.slots, invocations, false)?;
         specs.push(tracer.spec());
         let pause = match shape.pause {
             true => {
@@ -102,7 +102,7 @@ impl PathTracer {
 impl IntegratorKernels for PathTracer {
     fn kernels(&self) -> Vec<&Kernel> {
         match &self.queue {
-            Some(q) => q.pause.iter().chain([&self.kernel, q.tracer.kernel()]).collect(),
+            Some(q) => q.pause.iter().chain([&self.kernel]).chain(q.tracer.kernels()).collect(),
             None => vec![&self.kernel],
         }
     }

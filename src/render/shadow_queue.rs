@@ -1,7 +1,8 @@
 //! The shadow-ray queue of the megakernels (`--shadow-queue`; docs/integrators.md, "Shadow-ray
 //! queue"): pt-nee's kernel and BDPT's camera pass queue their shadow rays with what each adds
 //! if clear (`glsl/common/shadow_queue.glsl`), and `shadow_queue.comp` traces them after the
-//! launch and adds the clear ones to the same pixel sums.
+//! launch and adds the clear ones to the same pixel sums; BDPT's light pass queues its joins to
+//! the camera, which `shadow_queue_splat.comp` traces and splats.
 
 use super::{film::Film, gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, kernels};
@@ -64,21 +65,25 @@ pub fn invocations(width: u32, height: u32, slices: u32) -> u64 {
     n.next_multiple_of(abi::PT_WG_SIZE as u64)
 }
 
-/// The queue's kernel and storage for megakernel launches of up to `invocations` invocations.
+/// The queue's kernels and storage for megakernel launches of up to `invocations` invocations.
 pub struct ShadowQueueTracer {
     trace: Kernel,
+    /// BDPT's light pass: the kernel that splats the clear joins to the camera.
+    splat: Option<Kernel>,
     slots: u32,
     queue: Buffer,
     counts: Buffer,
 }
 
 impl ShadowQueueTracer {
+    /// `splats`: also the kernel for BDPT's light pass (`record_splats`).
     pub fn new(
         ctx: &Context,
         scene: &GpuScene,
         count_traversal: bool,
         slots: u32,
         invocations: u64,
+        splats: bool,
     ) -> Result<ShadowQueueTracer, RenderError> {
         let mut specs = scene.features.specs();
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
@@ -93,6 +98,7 @@ impl ShadowQueueTracer {
         };
         Ok(ShadowQueueTracer {
             trace: ctx.create_kernel(scene.bvh.kernel(&kernels::SHADOW_QUEUE_FORMS), &specs)?,
+            splat: if splats { Some(ctx.create_kernel(scene.bvh.kernel(&kernels::SHADOW_QUEUE_SPLAT_FORMS), &specs)?) } else { None },
             slots,
             queue: ctx.create_buffer("shadow_queue.rays", bytes, Memory::Device).map_err(mem)?,
             counts: ctx.create_buffer("shadow_queue.counts", invocations * 4, Memory::Device).map_err(mem)?,
@@ -104,8 +110,9 @@ impl ShadowQueueTracer {
         Spec { id: abi::SPEC_SHADOW_QUEUE, value: self.slots }
     }
 
-    pub fn kernel(&self) -> &Kernel {
-        &self.trace
+    /// The queue's kernels (the splatting one where made).
+    pub fn kernels(&self) -> impl Iterator<Item = &Kernel> {
+        std::iter::once(&self.trace).chain(self.splat.as_ref())
     }
 
     pub fn bytes(&self) -> u64 {
@@ -127,5 +134,13 @@ impl ShadowQueueTracer {
     pub fn record(&self, rec: &mut Recorder, binds: &[Bind], film: &Film, slices: u32, groups: u32) -> Result<()> {
         let push = abi::ShadowQueuePush { width: film.width, height: film.height, slices: slices.max(1), pad: 0 };
         rec.dispatch(&self.trace, binds, bytemuck::bytes_of(&push), [groups, 1, 1])
+    }
+
+    /// Records the splatting kernel after a BDPT light pass of `paths` light paths in `groups`
+    /// workgroups (`binds`: the light pass's, with the queue's and the splat buffer).
+    pub fn record_splats(&self, rec: &mut Recorder, binds: &[Bind], paths: u32, groups: u32) -> Result<()> {
+        let splat = self.splat.as_ref().expect("the queue was made without its splatting kernel");
+        let push = abi::ShadowQueuePush { width: paths, height: 1, slices: 1, pad: 0 };
+        rec.dispatch(splat, binds, bytemuck::bytes_of(&push), [groups, 1, 1])
     }
 }
