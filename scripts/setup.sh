@@ -7,8 +7,10 @@
 #      (Debian's own libshaderc_combined.a lacks the glslang and SPIRV-Tools symbols), and
 #      SHADERC_LIB_DIR pointed at it. If that cannot be done, the fallback builds shaderc from
 #      C++ source (~13 min once; needs cmake, git, python3, g++) via --features shaderc-from-source;
-#   3. CARGO_TARGET_DIR outside the clone (default ~/.cache/bidir/target) so rebuilds are warm.
-# Exports: SHADERC_LIB_DIR (fast path), BIDIR_CARGO_FEATURES (fallback), CARGO_TARGET_DIR.
+#   3. CARGO_TARGET_DIR outside the clone (default ~/.cache/bidir/target) so rebuilds are warm,
+#      and BIDIR_SPV_CACHE (~/.cache/bidir/spv) for build.rs's compiled kernels.
+# Exports: SHADERC_LIB_DIR (fast path), BIDIR_CARGO_FEATURES (fallback), CARGO_TARGET_DIR,
+# BIDIR_SPV_CACHE.
 
 bidir_cache=${BIDIR_CACHE:-$HOME/.cache/bidir}
 mkdir -p "$bidir_cache"
@@ -42,6 +44,9 @@ bidir_apt_install xvfb xauth libx11-xcb1 libxcursor1 libxrandr2 libxi6 libxkbcom
   || echo "setup: could not install Xvfb and the X11 libraries; the viewer's window test will be skipped" >&2
 
 export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$bidir_cache/target}
+# build.rs keeps compiled kernels here, keyed by their preprocessed source: a fresh clone (CI)
+# or clippy's build compiles only the kernels that changed. Empty: no cache.
+export BIDIR_SPV_CACHE=${BIDIR_SPV_CACHE-$bidir_cache/spv}
 export BIDIR_CARGO_FEATURES=${BIDIR_CARGO_FEATURES:-}
 
 bidir_merge_shaderc() {
