@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout. Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -607,6 +607,53 @@ bdpt-queue2)
       echo "== sponza bdpt --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
       echo "== caustic bdpt --shadow-queue $q"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
       echo "== cornell vcm --shadow-queue $q"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+bdpt-layout)
+  # #16 (session 11): with both passes' shadow rays queued, BDPT's and VCM's kernels over each
+  # BVH layout (bvh2 is their default), interleaved; registers per kernel and layout.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^bdpt_|^shadow"
+  for r in 1 2; do
+    for l in bvh2 cwbvh bvh4; do
+      echo "== cornell bdpt --bvh $l"; $T "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --bvh $l 2>&1 | grep -E "$K"
+    done
+  done
+  for l in bvh2 cwbvh bvh4; do
+    echo "== sponza bdpt --bvh $l"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "$K"
+    echo "== caustic bdpt --bvh $l"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples"
+    echo "== cornell vcm --bvh $l"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples"
+    echo "== registers --bvh $l"; "$B" info --kernels --bvh $l 2>&1 | grep -E "bdpt|shadow" | cut -c1-110
+  done
+  ;;
+light-queue)
+  # #16 (session 11): BDPT's light pass queuing its joins to the camera (B) against the camera
+  # pass alone queuing (BASE = 55e7dbc), interleaved; the same images; then bdpt against
+  # pt-nee at equal time on the Cornell box (sharper reference).
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^bdpt_|^shadow"
+  for b in "$BASE" "$B" "$BASE" "$B"; do
+    n=$(basename "$b")
+    echo "== $n cornell bdpt"; $T "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "$K"
+    echo "== $n sponza bdpt"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "$K"
+  done
+  for b in "$BASE" "$B"; do
+    n=$(basename "$b")
+    echo "== $n caustic bdpt"; $T "$b" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+    echo "== $n cornell vcm"; $T "$b" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+  done
+  for i in bdpt vcm; do
+    for q in off auto; do $T "$B" render $CB --integrator $i --spp 64 --shadow-queue $q -o "/tmp/$i-$q.exr" 2>&1 | tail -1; done
+    "$B" diff "/tmp/$i-off.exr" "/tmp/$i-auto.exr" 2>&1 | head -2
+  done
+  for t in 0.1 1; do
+    for i in pt-nee bdpt; do
+      echo "== $i --time $t"; $T "$B" render $CB --integrator $i --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
     done
   done
   ;;

@@ -101,8 +101,8 @@ pub struct SettingsArgs {
     /// surfaces (the faster, measured on the H200); off on CPU devices such as lavapipe.
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub one_trace: String,
-    /// Queue the shadow rays of pt-nee's and BDPT's (or VCM's) camera kernel for a kernel of
-    /// their own that traces them after it, SLOTS per thread; pt-nee launches its kernel once
+    /// Queue the shadow rays of pt-nee's kernel and of BDPT's (or VCM's) camera and light
+    /// kernels for a kernel of their own that traces them after it, SLOTS per thread; pt-nee launches its kernel once
     /// per SAMPLES samples per thread (default SLOTS / 8). A thread whose slots are full traces
     /// the ray itself, or (pt-nee) with /pause stops its path until the next launch. The image
     /// is the same up to the order of float sums. auto: on GPUs, for pt-nee where the scene has
