@@ -175,6 +175,7 @@ fn bdpt_single_join_matches_references() {
 
 #[test]
 fn bdpt_light_vertex_cache_matches_references() {
-    // Over the binary BVH, as GPUs render the default BDPT.
+    // Over the binary BVH, as GPUs render BDPT with `--shadow-queue off` (the other joins over
+    // the device's default, the wide BVH on lavapipe and, with the queue, on GPUs).
     check_with(Integrator::Bdpt(Join::DEFAULT), 1, Some(BvhLayout::Bvh2));
 }

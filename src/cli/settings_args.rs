@@ -78,7 +78,8 @@ pub struct SettingsArgs {
     pub tri_test: TriTest,
     /// BVH layout the integrators traverse: auto (the faster one for the device, integrator
     /// and scene: cwbvh on CPU devices such as lavapipe, on GPUs for pt in scenes with only
-    /// diffuse surfaces and for pt-nee in scenes without mirrors or glass; bvh2 otherwise) |
+    /// diffuse surfaces, for pt-nee in scenes without mirrors or glass and for BDPT and VCM
+    /// unless --shadow-queue off; bvh2 otherwise) |
     /// bvh2 | cwbvh | bvh4 (4-wide, full-precision boxes).
     #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh|bvh4")]
     pub bvh: String,

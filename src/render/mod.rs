@@ -341,18 +341,23 @@ fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
 /// no mirror or glass (session 9: Sponza +6 %, DamagedHelmet +8-17 %, MetalRoughSpheres +7 %),
 /// the binary one where it has mirrors or glass (their larger kernels reached 96 registers
 /// over the wide BVH: caustic scene pt-nee 314-412 against 385-490; rough Cornell -7 %), for
-/// pt in glossy scenes (Sponza -10 % over the wide BVH) and for BDPT and VCM (their camera
-/// pass was 13-24 % slower over the wide BVH; Sponza bdpt 549 against 644 ms).
+/// pt in glossy scenes (Sponza -10 % over the wide BVH). BDPT and VCM (`queued`: their shadow
+/// rays go to the shadow-ray queue, the default on GPUs) take the wide BVH in every scene
+/// measured (session 11: Cornell box bdpt 214.5 against 244.6 ms, Sponza 392.7 against 413.2,
+/// caustic scene 77.2 against 87.0, Cornell box vcm 249.8 against 307.8); without the queue the
+/// binary one (their camera pass was 13-24 % slower over the wide BVH; Sponza bdpt 549 against
+/// 644 ms).
 /// The 4-wide BVH (`bvh4`) is never the default: it traces standalone rays fastest
 /// but made every integrator kernel slower (more registers; docs/traversal.md).
 /// [`Renderer::switch_integrator`] rebuilds the renderer where a switch changes this choice.
-pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
+pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures, queued: bool) -> BvhLayout {
     if on_cpu {
         return BvhLayout::Cwbvh;
     }
     match integrator {
         Integrator::Pt if features.only_diffuse() => BvhLayout::Cwbvh,
         Integrator::PtNee if !features.has_specular() => BvhLayout::Cwbvh,
+        Integrator::Bdpt(_) | Integrator::Vcm(_) if queued => BvhLayout::Cwbvh,
         _ => BvhLayout::Bvh2,
     }
 }
@@ -446,7 +451,9 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
 /// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
 /// the default for the device, integrator and scene).
 fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
-    settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), integrator, features))
+    // BDPT's and VCM's queue is on unless `--shadow-queue off` (default_camera_pass_queue).
+    let queued = settings.shadow_queue != Some(None);
+    settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), integrator, features, queued))
 }
 
 /// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
@@ -878,14 +885,19 @@ mod default_tests {
             (textured_ggx, cw, b2, true),
         ];
         for (f, pt_nee, pt, regen) in gpu {
-            assert_eq!(default_bvh_layout(false, Integrator::PtNee, &f), pt_nee, "{f:?}");
-            assert_eq!(default_bvh_layout(false, Integrator::Pt, &f), pt, "{f:?}");
+            for queued in [true, false] {
+                assert_eq!(default_bvh_layout(false, Integrator::PtNee, &f, queued), pt_nee, "{f:?}");
+                assert_eq!(default_bvh_layout(false, Integrator::Pt, &f, queued), pt, "{f:?}");
+            }
             assert_eq!(default_path_regeneration(false, &f), regen, "{f:?}");
-            // BDPT and VCM stay on the binary BVH on GPUs; CPU devices take the wide one and
-            // regenerate everywhere.
-            assert_eq!(default_bvh_layout(false, Integrator::Bdpt(Join::Lvc(0)), &f), b2);
-            assert_eq!(default_bvh_layout(false, Integrator::Vcm(vcm::VcmMode::FULL), &f), b2);
-            assert_eq!(default_bvh_layout(true, Integrator::Bdpt(Join::Full), &f), cw);
+            // BDPT and VCM take the wide BVH on GPUs with their shadow rays queued (the
+            // default), the binary one without; CPU devices take the wide one and regenerate
+            // everywhere.
+            assert_eq!(default_bvh_layout(false, Integrator::Bdpt(Join::Lvc(0)), &f, true), cw);
+            assert_eq!(default_bvh_layout(false, Integrator::Vcm(vcm::VcmMode::FULL), &f, true), cw);
+            assert_eq!(default_bvh_layout(false, Integrator::Bdpt(Join::Lvc(0)), &f, false), b2);
+            assert_eq!(default_bvh_layout(false, Integrator::Vcm(vcm::VcmMode::FULL), &f, false), b2);
+            assert_eq!(default_bvh_layout(true, Integrator::Bdpt(Join::Full), &f, false), cw);
             assert!(default_path_regeneration(true, &f));
             // One trace call for pt-nee's two rays: on GPUs but over the wide BVH in diffuse
             // scenes; never on CPU devices.
