@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout. Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11. Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -608,6 +608,32 @@ bdpt-queue2)
       echo "== caustic bdpt --shadow-queue $q"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
       echo "== cornell vcm --shadow-queue $q"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
     done
+  done
+  ;;
+defaults11)
+  # #16 (session 11): the defaults after fcf3c5d (BDPT and VCM over the wide BVH with their
+  # shadow rays queued), against BASE = 55e7dbc (session 10's defaults); then bdpt against
+  # pt-nee at equal time on the Cornell box (sharper reference), twice.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 90"
+  for b in "$BASE" "$B"; do
+    n=$(basename "$b")
+    for i in pt-nee bdpt vcm; do
+      echo "== $n cornell $i"; $T "$b" bench render $CB --integrator $i --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples"
+    done
+    echo "== $n sponza bdpt"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples"
+  done
+  for r in 1 2; do
+    for t in 0.1 1; do
+      for i in pt-nee bdpt; do
+        echo "== $i --time $t"; $T "$B" render $CB --integrator $i --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+    done
+  done
+  for i in bdpt vcm; do
+    $T "$B" render $CB --integrator $i --spp 64 --bvh bvh2 -o "/tmp/$i-b2.exr" 2>&1 | tail -1
+    $T "$B" render $CB --integrator $i --spp 64 -o "/tmp/$i-auto.exr" 2>&1 | tail -1
+    "$B" diff "/tmp/$i-b2.exr" "/tmp/$i-auto.exr" 2>&1 | head -2
   done
   ;;
 bdpt-layout)
