@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11. Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots. Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -609,6 +609,25 @@ bdpt-queue2)
       echo "== cornell vcm --shadow-queue $q"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
     done
   done
+  ;;
+bdpt-slots)
+  # #16 (session 11): BDPT's and VCM's queue slots over the wide BVH (32 is the default,
+  # chosen over the binary BVH in session 10), interleaved.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  K="Msamples|^bdpt_|^shadow"
+  for r in 1 2; do
+    for q in 8 16 32 64; do
+      echo "== cornell bdpt --shadow-queue $q"; $T "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --shadow-queue $q 2>&1 | grep -E "$K"
+    done
+  done
+  for q in 8 16 32 64; do
+    echo "== sponza bdpt --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
+    echo "== caustic bdpt --shadow-queue $q"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+    echo "== cornell vcm --shadow-queue $q"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+  done
+  echo "== registers"; "$B" info --kernels 2>&1 | grep -E "^bdpt:lvc=1|^vcm /" | cut -c1-100
   ;;
 defaults11)
   # #16 (session 11): the defaults after fcf3c5d (BDPT and VCM over the wide BVH with their

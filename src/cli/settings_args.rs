@@ -103,12 +103,12 @@ pub struct SettingsArgs {
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub one_trace: String,
     /// Queue the shadow rays of pt-nee's kernel and of BDPT's (or VCM's) camera and light
-    /// kernels for a kernel of their own that traces them after it, SLOTS per thread; pt-nee launches its kernel once
-    /// per SAMPLES samples per thread (default SLOTS / 8). A thread whose slots are full traces
-    /// the ray itself, or (pt-nee) with /pause stops its path until the next launch. The image
-    /// is the same up to the order of float sums. auto: on GPUs, for pt-nee where the scene has
-    /// no mirror or glass (192/24, with /pause where it has glossy surfaces), for BDPT and VCM
-    /// 32 slots; off on CPU devices.
+    /// kernels for a kernel of their own that traces them after it, SLOTS per thread; pt-nee
+    /// launches its kernel once per SAMPLES samples per thread (default SLOTS / 8). A thread
+    /// whose slots are full traces the ray itself, or (pt-nee) with /pause stops its path until
+    /// the next launch. The image is the same up to the order of float sums. auto: on GPUs, for
+    /// pt-nee where the scene has no mirror or glass (192/24, with /pause where it has glossy
+    /// surfaces), for BDPT and VCM 64 slots; off on CPU devices.
     #[arg(long, default_value = "auto", value_name = "auto|off|SLOTS[/SAMPLES][/pause]")]
     pub shadow_queue: String,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box

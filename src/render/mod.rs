@@ -386,15 +386,16 @@ pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatur
 }
 
 /// BDPT's and VCM's camera pass and light pass's joins to the camera: the shadow-ray queue by
-/// default on GPUs, 32 slots (one camera or light path per thread; what does not fit is traced
-/// in place); off on CPU devices. The light pass's joins queued too (session 11): Cornell box
-/// bdpt 244.0 against 260.9 ms. NVIDIA H200,
-/// `bench render` (docs/results.md, "A queue for the shadow rays"): Cornell box bdpt 261.5
-/// against 321 ms per 1024 spp (camera pass 94 + queue 38 against 192 ms), Sponza 425.6 against
-/// 546 ms per 64 spp, caustic scene 89.6 against 95.8 ms, VCM on the Cornell box 322 against
-/// 394 ms.
+/// default on GPUs, 64 slots (one camera or light path per thread; what does not fit is traced
+/// in place, and `ShadowQueue::fit` takes fewer where the memory budget asks); off on CPU
+/// devices. NVIDIA H200, `bench render` (docs/results.md, "A queue for the shadow rays" and
+/// "The light pass's joins queued"): Cornell box bdpt 261.5 against 321 ms per 1024 spp with
+/// the camera pass queued (session 10), 244.0 with the light pass's joins too, 214.5 over the
+/// wide BVH (session 11); over it 64 slots against 32: Sponza bdpt 386.6 against 393.2 ms per
+/// 64 spp, Cornell box vcm 243.7 against 249.7, Cornell box and caustic scene bdpt level (16
+/// slots lose 3-16 %, 8 slots 23-42 %).
 pub fn default_camera_pass_queue(on_cpu: bool) -> Option<ShadowQueue> {
-    (!on_cpu).then_some(ShadowQueue { slots: 32, chunk_samples: 1, pause: false })
+    (!on_cpu).then_some(ShadowQueue { slots: 64, chunk_samples: 1, pause: false })
 }
 
 /// pt-nee's shadow-ray queue by default (`ShadowQueue`): on GPUs over the compressed wide BVH
@@ -911,7 +912,7 @@ mod default_tests {
             assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
             assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
             // BDPT's and VCM's camera pass: on GPUs, never on CPU devices.
-            assert_eq!(default_camera_pass_queue(false).map(|q| q.slots), Some(32));
+            assert_eq!(default_camera_pass_queue(false).map(|q| q.slots), Some(64));
             assert_eq!(default_camera_pass_queue(true), None);
         }
     }
