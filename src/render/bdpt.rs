@@ -113,8 +113,8 @@ impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together). `vcm`: vertex connection and merging (the light vertex
-    /// cache's join). `queue`: the camera and light passes' shadow-ray queue, for launches of up to
-    /// `invocations` invocations.
+    /// cache's join). `queue`: the camera and light passes' shadow-ray queue, for camera-pass
+    /// launches of up to `invocations` invocations (the light pass's are counted here).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         ctx: &Context,

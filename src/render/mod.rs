@@ -215,8 +215,8 @@ pub struct RenderSettings {
     /// through the same call as the extension rays (`--one-trace`); `None` takes
     /// [`default_one_trace`]. Either gives the same image.
     pub one_trace: Option<bool>,
-    /// pt-nee's and BDPT's/VCM's camera and light passes: queue the shadow rays for a kernel of their own
-    /// (`--shadow-queue`; BDPT and VCM use its slots only); `None` takes
+    /// pt-nee's and BDPT's/VCM's camera and light passes: queue the shadow rays for a kernel
+    /// of their own (`--shadow-queue`; BDPT and VCM use its slots only); `None` takes
     /// [`default_shadow_queue`] / [`default_camera_pass_queue`], `Some(None)` is off. The image
     /// is the same up to the order of float sums.
     pub shadow_queue: Option<Option<ShadowQueue>>,
