@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots. Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11. Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -607,6 +607,19 @@ bdpt-queue2)
       echo "== sponza bdpt --shadow-queue $q"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "$K"
       echo "== caustic bdpt --shadow-queue $q"; $T "$B" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
       echo "== cornell vcm --shadow-queue $q"; $T "$B" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 --shadow-queue $q 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+joins11)
+  # #16 (session 11): with the queue and the wide BVH, BDPT's connections per camera vertex at
+  # equal time again (session 7 chose lvc=1): Cornell box against the sharper reference, the
+  # caustic scene (128², the test's camera) against its committed reference; two runs.
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for j in bdpt:lvc=1 bdpt:lvc=2 bdpt:lvc bdpt:single pt-nee; do
+      echo "== cornell $j --time 1"; $T "$B" render $CB --integrator $j --time 1 --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      echo "== caustic $j --time 1"; $T "$B" render $CAU --integrator $j --time 1 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
     done
   done
   ;;
