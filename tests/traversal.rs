@@ -183,7 +183,7 @@ fn offset_ray_origin(p: Vec3, n: Vec3) -> Vec3 {
     Vec3::new(off(p.x, n.x), off(p.y, n.y), off(p.z, n.z))
 }
 
-/// Shadow rays as the integrators trace them (`visible_between` in glsl/common/scene.glsl):
+/// Shadow rays as the integrators trace them (`shadow_ray_between` in glsl/common/scene.glsl):
 /// from points on the Cornell box's right wall and floor, offset off them, to points on the
 /// light, offset below it, ending `slack` short of the target.
 fn shadow_rays_to_the_light(rng: &mut Pcg, n: usize) -> Vec<GpuRay> {

@@ -101,11 +101,6 @@ vec3 env_disk_origin(vec3 w, float u1, float u2) {
 ShadowRay env_shadow_ray(vec3 p, vec3 n_f, vec3 w) {
     return ShadowRay(offset_ray_origin(p, n_f), w, 3.0e38);
 }
-
-// Whether nothing blocks that way.
-bool env_visible(vec3 p, vec3 n_f, vec3 w, inout uvec2 stats) {
-    return shadow_ray_clear(env_shadow_ray(p, n_f, w), stats);
-}
 #endif
 
 // Probability that light sampling picks an emissive triangle rather than the environment

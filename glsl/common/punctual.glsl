@@ -68,13 +68,6 @@ ShadowRay punctual_shadow_ray(vec3 p, vec3 n_f, PunctualSample s) {
     float len = s.dist < 1.0e38 ? length(p + s.w * s.dist - o) : 3.0e38;
     return ShadowRay(o, s.w, len);
 }
-
-// Whether nothing blocks that way: shadow_ray_clear without its test for a negative length,
-// which a punctual light's ray never has.
-bool punctual_visible(vec3 p, vec3 n_f, PunctualSample s, inout uvec2 stats) {
-    ShadowRay r = punctual_shadow_ray(p, n_f, s);
-    return trace_ray(r.o, r.d, 0.0, r.tmax, true, stats).prim == NO_HIT;
-}
 #endif
 
 #endif

@@ -209,10 +209,6 @@ bool shadow_ray_clear(ShadowRay r, inout uvec2 stats) {
     return r.tmax < 0.0 || trace_ray(r.o, r.d, 0.0, r.tmax, true, stats).prim == NO_HIT;
 }
 
-bool visible_between(vec3 a, vec3 na, vec3 b, vec3 nb, inout uvec2 stats) {
-    return shadow_ray_clear(shadow_ray_between(a, na, b, nb), stats);
-}
-
 vec3 material_albedo(GpuMaterial m, vec2 uv) {
     vec3 a = m.albedo;
     if (HAS_TEXTURES != 0u && m.albedo_texture != 0u) {

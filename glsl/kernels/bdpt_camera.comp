@@ -214,8 +214,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     vec3 f = continuous_eval(bsdf, ns_f, wo, ps.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_camera = mis(ps.emission_over_direct * cos_s) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * volume_transmittance(sigma_in, ps.dist) * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
-                    if (max3(c) > 0.0
-                        && (SHADOW_QUEUE != 0u ? shadow_clear_now(punctual_shadow_ray(s.p, ng_f, ps), c, stats) : punctual_visible(s.p, ng_f, ps, stats))) {
+                    if (max3(c) > 0.0 && shadow_clear_now(punctual_shadow_ray(s.p, ng_f, ps), c, stats)) {
                         radiance += c;
                     }
                 }

@@ -77,8 +77,7 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
     if (queue_tagged_shadow(ray, contrib, pix)) {
         return;
     }
-    TraceHit sh = trace_ray(ray.o, ray.d, 0.0, ray.tmax, true, stats);
-    if (sh.prim != NO_HIT) {
+    if (!shadow_ray_clear(ray, stats)) {
         return;
     }
     if (any(isnan(contrib)) || any(isinf(contrib))) {

@@ -53,13 +53,21 @@ impl std::str::FromStr for Join {
 }
 
 /// Light paths per camera sample for a film of `pixels` pixels (`--light-paths RATIO`).
-pub fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
+fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
     ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32
 }
 
 /// Invocations of a light pass of `paths` light paths (whole workgroups).
-pub fn light_invocations(paths: u32) -> u64 {
+fn light_invocations(paths: u32) -> u64 {
     (paths as u64).next_multiple_of(abi::PT_WG_SIZE as u64)
+}
+
+/// Invocations the shadow-ray queue serves for a film of `pixels` pixels (the full image's)
+/// whose camera pass launches `camera_invocations`: the light pass queues its joins to the
+/// camera in the same storage, a light path per invocation (`--light-paths RATIO` per pixel and
+/// camera sample, `slices` camera samples an iteration).
+pub fn queue_invocations(camera_invocations: u64, pixels: u32, ratio: f32, slices: u32) -> u64 {
+    camera_invocations.max(light_invocations(light_paths_per_sample(pixels, ratio).saturating_mul(slices.max(1))))
 }
 
 /// What the light vertex cache adds to the megakernel: a scan of the stored counts and a
@@ -113,8 +121,8 @@ impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together). `vcm`: vertex connection and merging (the light vertex
-    /// cache's join). `queue`: the camera and light passes' shadow-ray queue, for camera-pass
-    /// launches of up to `invocations` invocations (the light pass's are counted here).
+    /// cache's join). `queue`: the camera and light passes' shadow-ray queue, for launches of up
+    /// to `invocations` invocations (`queue_invocations`).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         ctx: &Context,
@@ -206,9 +214,8 @@ impl Bdpt {
             _ => None,
         };
         let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4) + grid.as_ref().map_or(0, |g| g.bytes);
-        // The light pass queues its joins to the camera in the same storage, one light path
-        // per invocation.
-        let invocations = invocations.max(light_invocations(paths));
+        // `queue_invocations` counted the light pass's invocations too.
+        assert!(queue.is_none() || invocations >= light_invocations(paths), "the shadow-ray queue is smaller than the light pass");
         let queue = queue
             .map(|q| {
                 let tracer = super::shadow_queue::ShadowQueueTracer::new(ctx, scene, settings.count_traversal, q.slots, invocations, true)?;

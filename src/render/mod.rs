@@ -512,9 +512,7 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     let mut invocations = shadow_queue::invocations(window.width(), window.height(), slices);
     if integrator.stores_light_vertices() {
-        // BDPT's light pass queues its joins to the camera too: a light path per invocation.
-        let paths = bdpt::light_paths_per_sample(pixels, settings.light_path_ratio).saturating_mul(slices);
-        invocations = invocations.max(bdpt::light_invocations(paths));
+        invocations = bdpt::queue_invocations(invocations, pixels, settings.light_path_ratio, slices);
     }
     let queue = resolve_shadow_queue(ctx, settings, integrator, &scene.features, scene.bvh.layout, invocations);
     Ok(match integrator {
