@@ -13,6 +13,7 @@
 //! ```
 
 mod bdpt;
+mod defaults;
 pub mod env;
 mod film;
 mod first_hit;
@@ -28,6 +29,8 @@ mod tonemap;
 pub mod vcm;
 
 pub use bdpt::{Bdpt, Join};
+use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue};
+pub use defaults::{default_bvh_layout, default_camera_pass_queue, default_one_trace, default_path_regeneration, default_shadow_queue};
 pub use film::Film;
 pub use gpu_scene::GpuScene;
 pub use integrator::{IntegratorKernels, PassInputs};
@@ -332,113 +335,6 @@ fn check_layout(layout: BvhLayout) -> Result<(), RenderError> {
     }
 }
 
-/// The BVH layout `integrator` traces fastest on a device for a scene with `features`,
-/// measured with `bidir bench render` (NVIDIA H200 and llvmpipe; docs/results.md, "Cornell
-/// box, session 6" and "Which BVH the path tracers take in glossy scenes"): the compressed wide
-/// BVH on CPU devices (fewer, wider node visits suit llvmpipe's SIMD lanes); on GPUs the wide
-/// BVH for the path tracers where the scene has only diffuse surfaces (Cornell box pt-nee 693
-/// against 606 Msamples/s over the binary BVH) and for pt-nee also where it has GGX lobes but
-/// no mirror or glass (session 9: Sponza +6 %, DamagedHelmet +8-17 %, MetalRoughSpheres +7 %),
-/// the binary one where it has mirrors or glass (their larger kernels reached 96 registers
-/// over the wide BVH: caustic scene pt-nee 314-412 against 385-490; rough Cornell -7 %), for
-/// pt in glossy scenes (Sponza -10 % over the wide BVH). BDPT and VCM (`queued`: their shadow
-/// rays go to the shadow-ray queue, the default on GPUs) take the wide BVH in every scene
-/// measured (session 11: Cornell box bdpt 214.5 against 244.6 ms, Sponza 392.7 against 413.2,
-/// caustic scene 77.2 against 87.0, Cornell box vcm 249.8 against 307.8); without the queue the
-/// binary one (their camera pass was 13-24 % slower over the wide BVH; Sponza bdpt 549 against
-/// 644 ms).
-/// The 4-wide BVH (`bvh4`) is never the default: it traces standalone rays fastest
-/// but made every integrator kernel slower (more registers; docs/traversal.md).
-/// [`Renderer::switch_integrator`] rebuilds the renderer where a switch changes this choice.
-pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures, queued: bool) -> BvhLayout {
-    if on_cpu {
-        return BvhLayout::Cwbvh;
-    }
-    match integrator {
-        Integrator::Pt if features.only_diffuse() => BvhLayout::Cwbvh,
-        Integrator::PtNee if !features.has_specular() => BvhLayout::Cwbvh,
-        Integrator::Bdpt(_) | Integrator::Vcm(_) if queued => BvhLayout::Cwbvh,
-        _ => BvhLayout::Bvh2,
-    }
-}
-
-/// Whether pt and pt-nee regenerate paths by default (the image is the same either way):
-/// on, except on GPUs for scenes with smooth mirrors or glass, where the regenerating loop
-/// was slower on the H200 (caustic scene pt-nee 385 against 490 Msamples/s, mirror-and-glass
-/// scene 318 against 395; elsewhere it gained up to 32 %: Sponza pt-nee 67.5 against 51.1).
-/// Measured, not modelled (docs/results.md).
-pub fn default_path_regeneration(on_cpu: bool, features: &SceneFeatures) -> bool {
-    let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
-    on_cpu || !smooth_specular
-}
-
-/// Whether pt-nee traces its shadow rays through the extension rays' trace call, in the step
-/// after the one that drew them (the image is the same either way): on GPUs, except over
-/// the compressed wide BVH in scenes with only diffuse surfaces, where the extra steps cost
-/// more than the shared traversal saves. NVIDIA H200, `bench render`, Msamples/s, two runs
-/// (docs/results.md, "One trace call for extension and shadow rays"): Cornell box over bvh2
-/// 631-638 against 534-537, over cwbvh 661-668 against 698-703; Sponza (cwbvh) 76.2-76.4
-/// against 72.4-72.5; caustic scene (bvh2) 584-590 against 541-543. Off on CPU devices
-/// (llvmpipe, Cornell box over cwbvh: 25-30 % slower on; DamagedHelmet: within its spread).
-pub fn default_one_trace(on_cpu: bool, layout: BvhLayout, features: &SceneFeatures) -> bool {
-    let wide_diffuse = layout == BvhLayout::Cwbvh && features.only_diffuse();
-    !(on_cpu || wide_diffuse)
-}
-
-/// BDPT's and VCM's camera pass and light pass's joins to the camera: the shadow-ray queue by
-/// default on GPUs, 64 slots (one camera or light path per thread; what does not fit is traced
-/// in place, and `ShadowQueue::fit` takes fewer where the memory budget asks); off on CPU
-/// devices. NVIDIA H200, `bench render` (docs/results.md, "A queue for the shadow rays" and
-/// "The light pass's joins queued"): Cornell box bdpt 261.5 against 321 ms per 1024 spp with
-/// the camera pass queued (session 10), 244.0 with the light pass's joins too, 214.5 over the
-/// wide BVH (session 11); over it 64 slots against 32: Sponza bdpt 386.6 against 393.2 ms per
-/// 64 spp, Cornell box vcm 243.7 against 249.7, Cornell box and caustic scene bdpt level (16
-/// slots lose 3-16 %, 8 slots 23-42 %).
-pub fn default_camera_pass_queue(on_cpu: bool) -> Option<ShadowQueue> {
-    (!on_cpu).then_some(ShadowQueue { slots: 64, chunk_samples: 1, pause: false })
-}
-
-/// pt-nee's shadow-ray queue by default (`ShadowQueue`): on GPUs over the compressed wide BVH
-/// (scenes without mirrors or glass), 192 slots and 24 samples per launch, paths pausing for a
-/// full queue where the scene has glossy surfaces (the megakernel that traces a shadow ray
-/// itself where the slots are full held 96 registers on Sponza against 80; on the diffuse
-/// Cornell box the pausing one was the slower, 785 against 824 Msamples/s); none over the
-/// binary BVH (caustic scene 490 against 581) nor on CPU devices (llvmpipe: a 128x128 render
-/// of 48 samples per pixel took 1.27x the time, its two more kernels' compile included).
-/// NVIDIA H200, `bench render`, two runs (docs/results.md, "A queue for the shadow rays"):
-/// Cornell box 844-845 against 701-710 Msamples/s, Sponza 81.7-81.8 against 76.5-76.7 (84.9
-/// with the queue's rays shared over the subgroup), DamagedHelmet 709-719 against 680-693 (at
-/// 128/16), MetalRoughSpheres 817-819 against 819-832.
-pub fn default_shadow_queue(on_cpu: bool, layout: BvhLayout, features: &SceneFeatures) -> Option<ShadowQueue> {
-    if on_cpu || layout != BvhLayout::Cwbvh {
-        return None;
-    }
-    Some(ShadowQueue { slots: 192, chunk_samples: 24, pause: !features.only_diffuse() })
-}
-
-/// The shadow-ray queue of `integrator`'s megakernel for launches of `invocations`
-/// invocations: `--shadow-queue` or the default (`default_shadow_queue` for pt-nee,
-/// `default_camera_pass_queue` for BDPT and VCM), with fewer slots where they would not fit in
-/// `shadow_queue::budget`.
-fn resolve_shadow_queue(
-    ctx: &Context,
-    settings: &RenderSettings,
-    integrator: Integrator,
-    features: &SceneFeatures,
-    layout: BvhLayout,
-    invocations: u64,
-) -> Option<ShadowQueue> {
-    let (queue, fixed) = match integrator {
-        Integrator::Pt => return None,
-        Integrator::PtNee => {
-            let queue = settings.shadow_queue.unwrap_or_else(|| default_shadow_queue(on_cpu(ctx), layout, features));
-            (queue, pt::PAUSED_PATH_BYTES)
-        }
-        Integrator::Bdpt(_) | Integrator::Vcm(_) => (settings.shadow_queue.unwrap_or_else(|| default_camera_pass_queue(on_cpu(ctx))), 0),
-    };
-    queue.and_then(|q| q.fit(invocations, fixed, shadow_queue::budget(ctx)))
-}
-
 /// How the kernels of `settings` run, for logs and image metadata (neither changes the image):
 /// the BVH layout, and for pt/pt-nee whether paths are regenerated.
 pub fn kernel_form(settings: &RenderSettings) -> String {
@@ -447,19 +343,6 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
         (Integrator::Pt | Integrator::PtNee, Some(r)) => format!("{layout}, path regeneration {}", if r { "on" } else { "off" }),
         _ => layout.to_string(),
     }
-}
-
-/// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
-/// the default for the device, integrator and scene).
-fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
-    // BDPT's and VCM's queue is on unless `--shadow-queue off` (default_camera_pass_queue).
-    let queued = settings.shadow_queue != Some(None);
-    settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), integrator, features, queued))
-}
-
-/// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
-fn on_cpu(ctx: &Context) -> bool {
-    ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU
 }
 
 /// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`).
@@ -858,76 +741,5 @@ impl Renderer {
 
     pub fn nan_samples(&self) -> Result<u32, RenderError> {
         Ok(self.film.nan_samples(&self.ctx)?)
-    }
-}
-
-#[cfg(test)]
-mod default_tests {
-    use super::*;
-
-    /// The scenes of the measured table (docs/results.md, "Cornell box, session 6") by what
-    /// they have, and what `auto` picked there for pt-nee on the H200.
-    #[test]
-    fn path_tracer_defaults_follow_the_measured_table() {
-        let diffuse = SceneFeatures::default();
-        let glass = SceneFeatures { glass: true, ..diffuse };
-        let mirror_glass = SceneFeatures { mirror: true, glass: true, ..diffuse };
-        let rough = SceneFeatures { glossy: true, glass: true, rough_glass: true, ..diffuse };
-        let textured_ggx = SceneFeatures { glossy: true, textures: true, uvs: true, normals: true, ..diffuse };
-        let (cw, b2) = (BvhLayout::Cwbvh, BvhLayout::Bvh2);
-        // (features, pt-nee's layout, pt's layout, path regeneration)
-        let gpu = [
-            (diffuse, cw, cw, true),
-            (glass, b2, b2, false),
-            (mirror_glass, b2, b2, false),
-            (rough, b2, b2, true),
-            (textured_ggx, cw, b2, true),
-        ];
-        for (f, pt_nee, pt, regen) in gpu {
-            for queued in [true, false] {
-                assert_eq!(default_bvh_layout(false, Integrator::PtNee, &f, queued), pt_nee, "{f:?}");
-                assert_eq!(default_bvh_layout(false, Integrator::Pt, &f, queued), pt, "{f:?}");
-            }
-            assert_eq!(default_path_regeneration(false, &f), regen, "{f:?}");
-            // BDPT and VCM take the wide BVH on GPUs with their shadow rays queued (the
-            // default), the binary one without; CPU devices take the wide one and regenerate
-            // everywhere.
-            assert_eq!(default_bvh_layout(false, Integrator::Bdpt(Join::Lvc(0)), &f, true), cw);
-            assert_eq!(default_bvh_layout(false, Integrator::Vcm(vcm::VcmMode::FULL), &f, true), cw);
-            assert_eq!(default_bvh_layout(false, Integrator::Bdpt(Join::Lvc(0)), &f, false), b2);
-            assert_eq!(default_bvh_layout(false, Integrator::Vcm(vcm::VcmMode::FULL), &f, false), b2);
-            assert_eq!(default_bvh_layout(true, Integrator::Bdpt(Join::Full), &f, false), cw);
-            assert!(default_path_regeneration(true, &f));
-            // One trace call for pt-nee's two rays: on GPUs but over the wide BVH in diffuse
-            // scenes; never on CPU devices.
-            assert_eq!(default_one_trace(false, BvhLayout::Cwbvh, &f), f != diffuse, "{f:?}");
-            assert!(default_one_trace(false, BvhLayout::Bvh2, &f));
-            assert!(!default_one_trace(true, BvhLayout::Cwbvh, &f));
-            // pt-nee's shadow-ray queue: on GPUs over the wide BVH (pausing paths but in
-            // diffuse scenes), never over the binary one nor on CPU devices.
-            let queue = default_shadow_queue(false, pt_nee, &f);
-            assert_eq!(queue.is_some(), pt_nee == cw, "{f:?}");
-            assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
-            assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
-            // BDPT's and VCM's camera pass: on GPUs, never on CPU devices.
-            assert_eq!(default_camera_pass_queue(false).map(|q| q.slots), Some(64));
-            assert_eq!(default_camera_pass_queue(true), None);
-        }
-    }
-
-    /// The queue takes the slots asked for where they fit the budget, fewer where not, none
-    /// where fewer than a handful would; the budget covers the queue, counts and paused paths.
-    #[test]
-    fn shadow_queue_fits_its_budget() {
-        let q = ShadowQueue { slots: 192, chunk_samples: 24, pause: true };
-        let fixed = pt::PAUSED_PATH_BYTES;
-        let per_invocation = |slots: u64| slots * 48 + 4 + fixed;
-        assert_eq!(q.fit(1000, fixed, per_invocation(192) * 1000), Some(q));
-        let fewer = q.fit(1000, fixed, per_invocation(100) * 1000 + 47).expect("100 slots fit");
-        assert_eq!((fewer.slots, fewer.chunk_samples, fewer.pause), (100, 24, true));
-        assert_eq!(q.fit(1000, fixed, per_invocation(3) * 1000), None);
-        assert_eq!(q.fit(1000, fixed, per_invocation(4) * 1000).map(|q| q.slots), Some(4));
-        // BDPT's camera pass needs nothing besides its slots.
-        assert_eq!(q.fit(1000, 0, (192 * 48 + 4) * 1000), Some(q));
     }
 }
