@@ -7,6 +7,14 @@
 
 layout(constant_id = SPEC_TRI_TEST) const uint TRI_TEST = TRI_TEST_WATERTIGHT;
 
+// v[k] for k in 0..2 as two selects. (Indexing a vector with a run-time k, `v[k]`, compiles
+// on NVIDIA's driver to a chain of address compares and predicated moves per use: the
+// watertight test's nine picks ran ~40 instructions more per triangle, seen in the machine
+// code, scripts/device/sass.py.)
+float pick3(vec3 v, uint k) {
+    return k == 0u ? v.x : (k == 1u ? v.y : v.z);
+}
+
 // Per-ray constants.
 struct PreparedRay {
     vec3 o;
@@ -76,12 +84,15 @@ bool intersect_watertight(PreparedRay r, vec3 v0, vec3 v1, vec3 v2, float tmax, 
     precise vec3 a = v0 - r.o;
     precise vec3 b = v1 - r.o;
     precise vec3 c = v2 - r.o;
-    precise float ax = a[r.kx] - r.sx * a[r.kz];
-    precise float ay = a[r.ky] - r.sy * a[r.kz];
-    precise float bx = b[r.kx] - r.sx * b[r.kz];
-    precise float by = b[r.ky] - r.sy * b[r.kz];
-    precise float cx = c[r.kx] - r.sx * c[r.kz];
-    precise float cy = c[r.ky] - r.sy * c[r.kz];
+    float akz = pick3(a, r.kz);
+    float bkz = pick3(b, r.kz);
+    float ckz = pick3(c, r.kz);
+    precise float ax = pick3(a, r.kx) - r.sx * akz;
+    precise float ay = pick3(a, r.ky) - r.sy * akz;
+    precise float bx = pick3(b, r.kx) - r.sx * bkz;
+    precise float by = pick3(b, r.ky) - r.sy * bkz;
+    precise float cx = pick3(c, r.kx) - r.sx * ckz;
+    precise float cy = pick3(c, r.ky) - r.sy * ckz;
     precise float u = cx * by - cy * bx;
     precise float v = ax * cy - ay * cx;
     precise float w = bx * ay - by * ax;
@@ -92,9 +103,9 @@ bool intersect_watertight(PreparedRay r, vec3 v0, vec3 v1, vec3 v2, float tmax, 
     if (det == 0.0) {
         return false;
     }
-    precise float az = r.sz * a[r.kz];
-    precise float bz = r.sz * b[r.kz];
-    precise float cz = r.sz * c[r.kz];
+    precise float az = r.sz * akz;
+    precise float bz = r.sz * bkz;
+    precise float cz = r.sz * ckz;
     precise float ts = u * az + v * bz + w * cz;
     precise float inv_det = 1.0 / det;
     precise float tt = ts * inv_det;

@@ -36,5 +36,11 @@ int short_stack_pop() {
 #define TRAVERSAL_STACK_INIT()                                                                     \
     short_stack_top = ivec4(int(TRAVERSAL_SENTINEL));                                              \
     short_stack_depth = 0u
-#define TRAVERSAL_STACK_PUSH(x) short_stack_push(x)
-#define TRAVERSAL_STACK_POP() short_stack_pop()
+// No distances here: nothing is skipped (see the local stack in traverse.glsl).
+#define TRAVERSAL_STACK_PUSH(x, t_bits) short_stack_push(x)
+#define TRAVERSAL_STACK_POP(dst, cull) dst = short_stack_pop()
+#define TRAVERSAL_STACK_TOP() ivec2(short_stack_top.x, 0)
+#define TRAVERSAL_STACK_DROP_IF(c)                                                                 \
+    if (c) {                                                                                       \
+        short_stack_pop();                                                                         \
+    }

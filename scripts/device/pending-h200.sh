@@ -272,6 +272,173 @@ int-slabs)
   for b in "$BASE" "$B"; do $T "$b" render $CB --integrator bdpt --spp 16 -o "/tmp/$(basename "$b").exr" 2>&1 | tail -1; done
   "$B" diff "/tmp/$(basename "$B").exr" "/tmp/$(basename "$BASE").exr" 2>&1 | head -2
   ;;
+cull12)
+  # #17 (session 12): stack entries carry their box's entry distance and a pop skips those
+  # past the nearest hit (bvh2, bvh2q, bvh4); u8-to-float bit trick reverted (cwbvh lost
+  # 5-7 % with it in trav12). Against BASE (5234dd2), interleaved, two runs; then the
+  # integrators over each layout (this commit only), to see whether the defaults move.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh2" "--bvh cwbvh" "--bvh bvh4" "--bvh bvh2 --quality 3" "--bvh bvh4 --leaf-size 2 --quality 3"; do
+      for b in "$B" "$BASE"; do
+        [ $r = 2 ] && [ "$c" = "--bvh bvh4" -o "$c" = "--bvh bvh2 --quality 3" -o "$c" = "--bvh bvh4 --leaf-size 2 --quality 3" ] && continue
+        echo "== sponza $c $(basename "$b")"
+        $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+      done
+    done
+  done
+  for l in cwbvh bvh2 bvh4; do
+    for i in pt-nee bdpt; do
+      echo "== cornell $i --bvh $l"
+      $T "$B" bench render $CB --integrator $i --spp 1024 --bvh $l 2>&1 | grep -E "Msamples" | head -1
+      echo "== sponza $i --bvh $l"
+      $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 --bvh $l 2>&1 | grep -E "Msamples" | head -1
+    done
+  done
+  "$B" info --kernels --bvh bvh4 2>&1 | grep -iE "^ *(pt|bdpt|shadow)" | head -12
+  for l in bvh2 bvh4; do
+    "$B" render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 16 --bvh $l -o /tmp/new-$l.exr > /dev/null 2>&1
+    "$BASE" render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 16 --bvh $l -o /tmp/base-$l.exr > /dev/null 2>&1
+    echo "== sponza pt-nee 16 spp --bvh $l, this commit against BASE:"; "$B" diff /tmp/new-$l.exr /tmp/base-$l.exr 2>&1 | grep -iE "rmse|ratio"
+  done
+  ;;
+trav12)
+  # #17 (session 12): this commit (every layout's node step without the sunk child load,
+  # selects for run-time vector indices, subgroupAny vote, bytes to floats without I2F, no
+  # buffer bounds checks) against BASE (5234dd2), interleaved, two runs; the driver's
+  # pipeline beside the best layout; the integrators; images against BASE (RMSE).
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "--bvh bvh2" "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh cwbvh" "--bvh bvh2q" "--bvh cwbvh --tri-test woop --quality 3" "--bvh bvh4"; do
+      for b in "$B" "$BASE"; do
+        [ $r = 2 ] && [ "$c" = "--bvh bvh2q" -o "$c" = "--bvh bvh4" ] && continue
+        echo "== sponza $c $(basename "$b")"
+        $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+      done
+    done
+  done
+  echo "== sponza bvh4 leaf 3 quality 3 --driver-rt"
+  $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --driver-rt 2>&1 | grep -E "^(primary|shadow|diffuse|driver)|agree|x the"
+  for c in "--bvh bvh2" "--bvh bvh4" "--bvh cwbvh"; do
+    for b in "$B" "$BASE"; do
+      echo "== cornell 1920x1080 $c $(basename "$b")"
+      $T "$b" bench traversal --width 1920 --height 1080 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  for r in 1 2; do
+    for b in "$B" "$BASE"; do
+      for i in pt pt-nee bdpt vcm; do
+        echo "== cornell $i $(basename "$b")"
+        $T "$b" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+      done
+      for i in pt-nee bdpt; do
+        echo "== sponza $i $(basename "$b")"
+        $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+      done
+    done
+  done
+  for i in pt-nee bdpt vcm; do
+    "$B" render $CB --integrator $i --spp 64 -o /tmp/new-$i.exr > /dev/null 2>&1
+    "$BASE" render $CB --integrator $i --spp 64 -o /tmp/base-$i.exr > /dev/null 2>&1
+    echo "== cornell $i 64 spp, this commit against BASE:"; "$B" diff /tmp/new-$i.exr /tmp/base-$i.exr 2>&1 | tail -3
+  done
+  "$B" render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 16 -o /tmp/new-sp.exr > /dev/null 2>&1
+  "$BASE" render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 16 -o /tmp/base-sp.exr > /dev/null 2>&1
+  echo "== sponza pt-nee 16 spp, this commit against BASE:"; "$B" diff /tmp/new-sp.exr /tmp/base-sp.exr 2>&1 | tail -3
+  D=/tmp/nvc-cw; rm -rf $D; mkdir -p $D
+  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal "$SP" --camera CameraMain --bvh cwbvh --reps 5 --warmup 1 > /dev/null 2>&1
+  mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/trace-cwbvh.bin"
+  D=/tmp/nvc-pt; rm -rf $D; mkdir -p $D
+  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench render $CB --integrator pt-nee --spp 64 --runs 5 --warmup 1 > /dev/null 2>&1
+  cp $D/GLCache/*/*/*.bin "$OUT/cache/cornell-ptnee.bin"
+  ;;
+exp12b)
+  # #17 (session 12): the bvh4 node step's changes as the code (children early, selects,
+  # subgroupAny vote; the watertight test's axis picks as selects, every layout) and kernels
+  # without buffer bounds checks by default (BIDIR_BUFFER_CHECKS=1 restores them), against
+  # BASE (5234dd2); bvh2's vote as subgroupAny (BIDIR_TRAVERSE_EXPERIMENT=4); the
+  # integrators; images against BASE; the machine code of bvh2, cwbvh and pt-nee kernels.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh2" "--bvh cwbvh"; do
+      for v in "B 0 0" "B 1 0" "BASE 0 0" "B 0 4"; do
+        set -- $v
+        [ "$3" = 4 ] && [ "$c" != "--bvh bvh2" ] && continue
+        b=$B; [ "$1" = BASE ] && b=$BASE
+        echo "== sponza $c $(basename "$b") checks $2 experiment $3"
+        BIDIR_BUFFER_CHECKS=$2 BIDIR_TRAVERSE_EXPERIMENT=$3 $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+      done
+    done
+  done
+  for r in 1 2; do
+    for v in "B 0" "B 1" "BASE 0"; do
+      set -- $v
+      b=$B; [ "$1" = BASE ] && b=$BASE
+      for i in pt-nee bdpt; do
+        echo "== cornell $i $(basename "$b") checks $2"
+        BIDIR_BUFFER_CHECKS=$2 $T "$b" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples|^(bdpt|pt|shadow)" | head -6
+        echo "== sponza $i $(basename "$b") checks $2"
+        BIDIR_BUFFER_CHECKS=$2 $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples|^(bdpt|pt|shadow)" | head -6
+      done
+    done
+  done
+  for i in pt-nee bdpt; do
+    "$B" render $CB --integrator $i --spp 64 -o /tmp/new-$i.exr > /dev/null 2>&1
+    "$BASE" render $CB --integrator $i --spp 64 -o /tmp/base-$i.exr > /dev/null 2>&1
+    echo "== cornell $i 64 spp, this commit against BASE: $("$B" diff /tmp/new-$i.exr /tmp/base-$i.exr 2>&1 | tail -1)"
+  done
+  for c in bvh2 cwbvh; do
+    D=/tmp/nvc-$c; rm -rf $D; mkdir -p $D
+    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal "$SP" --camera CameraMain --bvh $c --reps 5 --warmup 1 > /dev/null 2>&1
+    mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/trace-$c.bin"
+  done
+  D=/tmp/nvc-ptnee; rm -rf $D; mkdir -p $D
+  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench render $CB --integrator pt-nee --spp 64 --runs 5 --warmup 1 > /dev/null 2>&1
+  cp $D/GLCache/*/*/*.bin "$OUT/cache/cornell-ptnee.bin"
+  ;;
+exp12)
+  # #17 (session 12): the bvh4 node step as the driver compiles it (SASS, part sass) had the
+  # children's load after the box test, dynamic vector indexing as compare chains, and a
+  # bounds check per load; BIDIR_TRAVERSE_EXPERIMENT bits (1 children early + selects, 2 the
+  # watertight test's axis picks as selects, 4 subgroupAny vote, 8 branch-free pushes) and
+  # BIDIR_UNCHECKED_BUFFERS=1 (VK_EXT_pipeline_robustness off) against the default.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for v in "0 0" "1 0" "3 0" "7 0" "11 0" "15 0" "0 1" "3 1" "11 1"; do
+      set -- $v
+      echo "== sponza bvh4 leaf 3 quality 3, experiment $1, unchecked $2"
+      BIDIR_TRAVERSE_EXPERIMENT=$1 BIDIR_UNCHECKED_BUFFERS=$2 $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  for l in bvh2 cwbvh; do
+    for u in 0 1 0 1; do
+      echo "== sponza $l unchecked $u"
+      BIDIR_UNCHECKED_BUFFERS=$u $T "$B" bench traversal "$SP" --camera CameraMain --bvh $l 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  for v in "11 0" "11 1"; do
+    set -- $v
+    D=/tmp/nvcache-$1-$2; rm -rf $D; mkdir -p $D
+    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 BIDIR_TRAVERSE_EXPERIMENT=$1 BIDIR_UNCHECKED_BUFFERS=$2 \
+      $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --reps 5 --warmup 1 > /dev/null 2>&1
+    mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/exp-$1-$2.bin"
+  done
+  ;;
+sass)
+  # #17 (session 12): the machine code of the trace kernels, carved from the driver's shader
+  # disk cache (scripts/device/sass.py), for bvh4 and bvh2, watertight.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  export __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1
+  which cuobjdump nvdisasm
+  timeout -k 5 120 "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --reps 5 --warmup 1 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+  find $D -type f -exec ls -la {} \;
+  python3 scripts/device/sass.py $D "$OUT/sass"
+  ;;
 bvh4)
   # #17 (session 9): the binary tree collapsed to 4-wide nodes of full-precision boxes
   # (--bvh bvh4) against bvh2 and cwbvh, interleaved, then its options once each.

@@ -76,10 +76,11 @@ fn devices(opts: &ContextOptions) -> anyhow::Result<()> {
             d.timestamp_period_ns
         );
         println!(
-            "  features:      atomic float add {}, int64 {}, driver ray tracing {}",
+            "  features:      atomic float add {}, int64 {}, driver ray tracing {}, kernels without buffer bounds checks {}",
             if d.atomic_float_add { "yes" } else { "no" },
             if d.shader_int64 { "yes" } else { "no" },
-            if d.ray_tracing_pipeline { "yes (bench traversal --driver-rt)" } else { "no" }
+            if d.ray_tracing_pipeline { "yes (bench traversal --driver-rt)" } else { "no" },
+            if d.pipeline_robustness { "yes (BIDIR_BUFFER_CHECKS=1 keeps them)" } else { "no" }
         );
         if !d.usable() {
             println!("  not usable:    lacks {}", d.missing.join(", "));

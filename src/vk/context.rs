@@ -83,6 +83,18 @@ impl ContextOptions {
 
 /// The device-wide state shared (through `Arc`) by every GPU object, so that each object
 /// can free itself on drop and the device is destroyed only after the last of them.
+/// Whether kernels are created without the driver's bounds checks on storage and uniform
+/// buffers (VK_EXT_pipeline_robustness, `DISABLED`): wherever the device allows it, unless
+/// BIDIR_BUFFER_CHECKS=1 asks for the checks (a debugging aid: an out-of-bounds access then
+/// reads zeros and drops writes instead of being undefined). NVIDIA's driver otherwise
+/// compares every storage-buffer access's offset with the buffer's size: two instructions per
+/// load, 4-7 % of the trace kernels' time on the H200 (docs/traversal.md, session 12).
+/// Every kernel indexes its buffers within bounds (the tests run under the validation
+/// layers; lavapipe's Mesa 22 lacks the extension, so CI runs with the checks).
+pub(crate) fn unchecked_buffers(info: &DeviceInfo) -> bool {
+    info.pipeline_robustness && !std::env::var("BIDIR_BUFFER_CHECKS").is_ok_and(|v| v == "1")
+}
+
 pub(crate) struct Shared {
     /// The loader (keeps its library loaded while the instance lives; surfaces need it).
     pub entry: ash::Entry,
@@ -303,6 +315,10 @@ fn create_device(
     if statistics {
         ext_ptrs.push(ash::khr::pipeline_executable_properties::NAME.as_ptr());
     }
+    let unchecked = unchecked_buffers(info);
+    if unchecked {
+        ext_ptrs.push(ash::ext::pipeline_robustness::NAME.as_ptr());
+    }
 
     // Enable the optional features bidir's kernels use where the device has them.
     let mut f13 = vk::PhysicalDeviceVulkan13Features::default();
@@ -338,6 +354,10 @@ fn create_device(
     let mut executable_info = vk::PhysicalDevicePipelineExecutablePropertiesFeaturesKHR::default().pipeline_executable_info(true);
     if statistics {
         create = create.push_next(&mut executable_info);
+    }
+    let mut robustness = vk::PhysicalDevicePipelineRobustnessFeaturesEXT::default().pipeline_robustness(true);
+    if unchecked {
+        create = create.push_next(&mut robustness);
     }
     let mut atomic_float = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default().shader_buffer_float32_atomic_add(true);
     if info.atomic_float_add {

@@ -231,6 +231,9 @@ pub struct DeviceInfo {
     /// VK_KHR_pipeline_executable_properties: the driver reports each kernel's registers,
     /// spills, shared memory and the like (`ContextOptions::kernel_statistics`).
     pub kernel_statistics: bool,
+    /// VK_EXT_pipeline_robustness (its `pipelineRobustness` feature): kernels may be created
+    /// without the driver's bounds checks on storage and uniform buffers.
+    pub pipeline_robustness: bool,
     /// VK_KHR_ray_tracing_pipeline with VK_KHR_acceleration_structure (and the deferred host
     /// operations it needs): the driver's own ray tracing, which `bench traversal --driver-rt`
     /// measures bidir's traversal against.
@@ -328,6 +331,11 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             instance.get_physical_device_features2(pd, &mut f2);
         }
         let atomic_float_add = atomic_float.shader_buffer_float32_atomic_add == vk::TRUE;
+        let mut robustness = vk::PhysicalDevicePipelineRobustnessFeaturesEXT::default();
+        if has_ext(ash::ext::pipeline_robustness::NAME) {
+            let mut f2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut robustness);
+            instance.get_physical_device_features2(pd, &mut f2);
+        }
 
         let mut missing = Vec::new();
         if api < vk::API_VERSION_1_2 {
@@ -377,6 +385,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             sm_count: sm.shader_sm_count,
             warps_per_sm: sm.shader_warps_per_sm,
             kernel_statistics: has_ext(ash::khr::pipeline_executable_properties::NAME),
+            pipeline_robustness: robustness.pipeline_robustness == vk::TRUE,
             ray_tracing_pipeline: RAY_TRACING_EXTENSIONS.iter().all(|e| has_ext(e)),
             missing,
         })

@@ -196,7 +196,14 @@ impl Context {
             } else {
                 vk::PipelineCreateFlags::empty()
             };
-            let info = [vk::ComputePipelineCreateInfo::default().stage(stage).layout(pipeline_layout).flags(flags)];
+            let mut robustness = vk::PipelineRobustnessCreateInfoEXT::default()
+                .storage_buffers(vk::PipelineRobustnessBufferBehaviorEXT::DISABLED)
+                .uniform_buffers(vk::PipelineRobustnessBufferBehaviorEXT::DISABLED);
+            let mut info = vk::ComputePipelineCreateInfo::default().stage(stage).layout(pipeline_layout).flags(flags);
+            if super::context::unchecked_buffers(&s.info) {
+                info = info.push_next(&mut robustness);
+            }
+            let info = [info];
             let result = s.device.create_compute_pipelines(vk::PipelineCache::null(), &info, None);
             s.device.destroy_shader_module(shader, None);
             let pipeline = match result {
