@@ -103,9 +103,18 @@ layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
     ivec2 stack[TRAVERSAL_STACK_SIZE];                                                             \
     int sp = 0;                                                                                    \
     stack[0] = ivec2(int(TRAVERSAL_SENTINEL), 0)
-#define TRAVERSAL_STACK_PUSH(x, t_bits) stack[++sp] = ivec2((x), (t_bits))
+// Any-hit rays (`any_hit`, constant where trace_ray is inlined) skip nothing: they stop at
+// their first hit, and their entries' distances are neither stored nor read.
+#define TRAVERSAL_STACK_PUSH(child, t_bits)                                                        \
+    if (any_hit) {                                                                                 \
+        stack[++sp].x = (child);                                                                   \
+    } else {                                                                                       \
+        stack[++sp] = ivec2((child), (t_bits));                                                    \
+    }
 #define TRAVERSAL_STACK_POP(dst, cull)                                                             \
-    {                                                                                              \
+    if (any_hit) {                                                                                 \
+        dst = stack[sp--].x;                                                                       \
+    } else {                                                                                       \
         ivec2 e_ = stack[sp--];                                                                    \
         while (e_.y > (cull)) {                                                                    \
             e_ = stack[sp--];                                                                      \
@@ -114,7 +123,7 @@ layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
     }
 // The top entry (node, distance bits) without popping it, and a pop of it only where `c`
 // holds: with these a node step chooses its next node without a branch (see trace_ray).
-#define TRAVERSAL_STACK_TOP() stack[sp]
+#define TRAVERSAL_STACK_TOP() (any_hit ? ivec2(stack[sp].x, 0) : stack[sp])
 #define TRAVERSAL_STACK_DROP_IF(c) sp -= (c) ? 1 : 0
 #endif
 

@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11. Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12 (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -271,6 +271,77 @@ int-slabs)
   done
   for b in "$BASE" "$B"; do $T "$b" render $CB --integrator bdpt --spp 16 -o "/tmp/$(basename "$b").exr" 2>&1 | tail -1; done
   "$B" diff "/tmp/$(basename "$B").exr" "/tmp/$(basename "$BASE").exr" 2>&1 | head -2
+  ;;
+layout12)
+  # #16/#17 (session 12): with the culling stack, BDPT (and pt-nee) over bvh4 against the
+  # default cwbvh per scene size (Sponza bdpt: 338.7 against 365.0 ms in final12; Cornell box
+  # the other way, 230.9 against 204.8 in cull12). Scenes bundled geometry-only.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  for sc in cornell caustic DamagedHelmet MetalRoughSpheresNoTextures CesiumMilkTruck LightsPunctualLamp sponza; do
+    case $sc in
+      cornell) A="$CB"; S=1024 ;;
+      caustic) A="$CAU"; S=256 ;;
+      sponza) A="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"; S=64 ;;
+      *) A="$(ls $PWD/.device/scenes/gltf-samples/$sc/*.gl* | head -1) $CB"; S=256 ;;
+    esac
+    echo "== $sc: $("$B" info $A 2>&1 | grep -E "^triangles" | head -1)"
+    for r in 1 2; do
+      for i in bdpt pt-nee; do
+        for l in cwbvh bvh4 bvh2; do
+          [ $i = pt-nee ] && [ $l = bvh2 ] && continue
+          echo "-- $sc $i --bvh $l: $($T "$B" bench render $A --integrator $i --spp $S --warmup 1 --runs 3 --bvh $l 2>&1 | grep -oE "GPU [0-9.]+ ms|\([a-z0-9]+, [^)]*\)" | tr '\n' ' ')"
+        done
+      done
+    done
+  done
+  ;;
+final12)
+  # #17/#16 (session 12), the final code: any-hit rays keep the plain stack (cull12's shadow
+  # rays lost 3-10 % to the distance entries). Trace kernels and integrators against BASE
+  # (5234dd2), interleaved, two runs; BDPT over bvh4 beside its default on Sponza.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh2" "--bvh bvh4" "--bvh cwbvh"; do
+      for b in "$B" "$BASE"; do
+        echo "== sponza $c $(basename "$b")"
+        $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+      done
+    done
+  done
+  for r in 1 2; do
+    for b in "$B" "$BASE"; do
+      for i in pt pt-nee bdpt vcm; do
+        echo "== cornell $i $(basename "$b")"
+        $T "$b" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+      done
+      for i in pt-nee bdpt; do
+        echo "== caustic $i $(basename "$b")"
+        $T "$b" bench render $CAU --integrator $i --spp 256 2>&1 | grep -E "Msamples" | head -1
+        echo "== sponza $i $(basename "$b")"
+        $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+      done
+      echo "== sponza bdpt --bvh bvh4 $(basename "$b")"
+      $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+    done
+  done
+  for i in pt-nee bdpt; do
+    "$B" render $CAU --integrator $i --spp 64 -o /tmp/new-c-$i.exr > /dev/null 2>&1
+    "$BASE" render $CAU --integrator $i --spp 64 -o /tmp/base-c-$i.exr > /dev/null 2>&1
+    echo "== caustic $i 64 spp, this commit against BASE:"; "$B" diff /tmp/new-c-$i.exr /tmp/base-c-$i.exr 2>&1 | grep -iE "rmse|ratio"
+  done
+  "$B" render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 16 --integrator bdpt --bvh bvh4 -o /tmp/new-b4.exr > /dev/null 2>&1
+  "$BASE" render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 16 --integrator bdpt --bvh bvh4 -o /tmp/base-b4.exr > /dev/null 2>&1
+  echo "== sponza bdpt bvh4 16 spp, this commit against BASE:"; "$B" diff /tmp/new-b4.exr /tmp/base-b4.exr 2>&1 | grep -iE "rmse|ratio"
+  for t in 0.1 1; do
+    for i in pt-nee bdpt; do
+      echo "== cornell $i --time $t"
+      "$B" render --integrator $i --time $t --reference "$REF" -o /tmp/x.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
   ;;
 cull12)
   # #17 (session 12): stack entries carry their box's entry distance and a pop skips those

@@ -81,20 +81,20 @@ impl ContextOptions {
     }
 }
 
-/// The device-wide state shared (through `Arc`) by every GPU object, so that each object
-/// can free itself on drop and the device is destroyed only after the last of them.
 /// Whether kernels are created without the driver's bounds checks on storage and uniform
 /// buffers (VK_EXT_pipeline_robustness, `DISABLED`): wherever the device allows it, unless
-/// BIDIR_BUFFER_CHECKS=1 asks for the checks (a debugging aid: an out-of-bounds access then
-/// reads zeros and drops writes instead of being undefined). NVIDIA's driver otherwise
+/// BIDIR_BUFFER_CHECKS=1 asks for the checks (a debugging aid: the driver's default handling
+/// of out-of-bounds accesses instead of undefined behaviour). NVIDIA's driver otherwise
 /// compares every storage-buffer access's offset with the buffer's size: two instructions per
 /// load, 4-7 % of the trace kernels' time on the H200 (docs/traversal.md, session 12).
-/// Every kernel indexes its buffers within bounds (the tests run under the validation
-/// layers; lavapipe's Mesa 22 lacks the extension, so CI runs with the checks).
+/// Every kernel must index its buffers within bounds: out of bounds is undefined without the
+/// checks (lavapipe under Mesa 22 lacks the extension, so CI runs with them).
 pub(crate) fn unchecked_buffers(info: &DeviceInfo) -> bool {
     info.pipeline_robustness && !std::env::var("BIDIR_BUFFER_CHECKS").is_ok_and(|v| v == "1")
 }
 
+/// The device-wide state shared (through `Arc`) by every GPU object, so that each object
+/// can free itself on drop and the device is destroyed only after the last of them.
 pub(crate) struct Shared {
     /// The loader (keeps its library loaded while the instance lives; surfaces need it).
     pub entry: ash::Entry,
