@@ -243,6 +243,34 @@ fn procedural_scene_matches_cpu_hit_for_hit() {
     finish(ctx);
 }
 
+/// Small triangles far from the world's origin, rays starting among them: the slab tests'
+/// rounding there is large against the boxes (a coordinate's unit of rounding is 1/64 at
+/// 131072; the triangles are a few of those across). A slab test that precomputes the
+/// origin's product with the reciprocal direction must widen its slabs by that product's
+/// rounding (`slab_origins` in glsl/common/traverse.glsl): without the widening this scene
+/// loses hits. Every layout is checked against the binary layout's CPU reference: the
+/// compressed wide layout's own CPU traversal (`CpuTracer` over its tree) misses a hit here
+/// that the binary CPU traversal and every GPU layout find (session 12, left for later).
+#[test]
+fn small_triangles_far_from_the_origin_match_cpu_hit_for_hit() {
+    let ctx = gpu();
+    let mut rng = Pcg::new(13);
+    let offset = Vec3::new(131_072.0, -65_536.0, 98_304.0);
+    let (mut positions, tris) = geometry::soup(&mut rng, 6_000, Vec3::splat(-3.0), Vec3::splat(3.0), 0.15);
+    for p in &mut positions {
+        *p += offset;
+    }
+    let rays = mixed_rays(&mut rng, offset - Vec3::splat(3.0), offset + Vec3::splat(3.0), 30_000);
+    let opts = BuildOptions::default();
+    let (hits_misses, reference) = check_layout(&ctx, "far from the origin", &positions, &tris, &rays, opts, None);
+    for layout in [BvhLayout::Cwbvh, BvhLayout::Bvh4, BvhLayout::Bvh2q] {
+        check_layout(&ctx, "far from the origin", &positions, &tris, &rays, BuildOptions { layout, ..opts }, Some(reference.clone()));
+    }
+    let (hits, misses) = hits_misses;
+    assert!(hits > 3_000 && misses > 1_000, "the ray set must exercise both hits and misses ({hits} hits, {misses} misses)");
+    finish(ctx);
+}
+
 #[test]
 fn single_triangle_and_tiny_scenes() {
     let ctx = gpu();

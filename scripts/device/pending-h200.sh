@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12 (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -271,6 +271,30 @@ int-slabs)
   done
   for b in "$BASE" "$B"; do $T "$b" render $CB --integrator bdpt --spp 16 -o "/tmp/$(basename "$b").exr" 2>&1 | tail -1; done
   "$B" diff "/tmp/$(basename "$B").exr" "/tmp/$(basename "$BASE").exr" 2>&1 | head -2
+  ;;
+ffma12)
+  # #17 (session 12): the binary and 4-wide slab tests as one multiply-add per plane, the
+  # origin term widened by its rounding (slab_origins), against PREV (f5c3eb5), interleaved.
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  P=${PREV:-$PWD/.device/bidir-prev}
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh2" "--bvh bvh4"; do
+      for b in "$B" "$P"; do
+        echo "== sponza $c $(basename "$b")"
+        $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+      done
+    done
+    for b in "$B" "$P"; do
+      echo "== sponza bdpt --bvh bvh4 $(basename "$b"): $($T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "GPU [0-9.]+ ms")"
+      echo "== caustic pt-nee $(basename "$b"): $($T "$b" bench render $CAU --integrator pt-nee --spp 256 2>&1 | grep -oE "GPU [0-9.]+ ms")"
+      echo "== cornell pt-nee --bvh bvh2 $(basename "$b"): $($T "$b" bench render $CB --integrator pt-nee --bvh bvh2 --spp 1024 2>&1 | grep -oE "GPU [0-9.]+ ms")"
+    done
+  done
+  "$B" render $CAU --integrator pt-nee --spp 64 -o /tmp/new.exr > /dev/null 2>&1
+  "$P" render $CAU --integrator pt-nee --spp 64 -o /tmp/prev.exr > /dev/null 2>&1
+  echo "== caustic pt-nee 64 spp against PREV:"; "$B" diff /tmp/new.exr /tmp/prev.exr 2>&1 | grep -iE "rmse|ratio"
   ;;
 layout12)
   # #16/#17 (session 12): with the culling stack, BDPT (and pt-nee) over bvh4 against the
