@@ -248,9 +248,10 @@ fn procedural_scene_matches_cpu_hit_for_hit() {
 /// 131072; the triangles are a few of those across). A slab test that precomputes the
 /// origin's product with the reciprocal direction must widen its slabs by that product's
 /// rounding (`slab_origins` in glsl/common/traverse.glsl): without the widening this scene
-/// loses hits. Every layout is checked against the binary layout's CPU reference: the
-/// compressed wide layout's own CPU traversal (`CpuTracer` over its tree) misses a hit here
-/// that the binary CPU traversal and every GPU layout find (session 12, left for later).
+/// loses hits. Every layout is checked against the CPU reference over the binary build: over
+/// the compressed wide build's own source tree the reference (obvhs' BVH2 traversal,
+/// `CpuTracer`) misses a hit here that it finds over the binary build and that every GPU
+/// layout finds (session 12; obvhs' slab test, not bidir's, left for later).
 #[test]
 fn small_triangles_far_from_the_origin_match_cpu_hit_for_hit() {
     let ctx = gpu();

@@ -132,23 +132,6 @@ int stack_cull_bits(float t) {
     return floatBitsToInt(t * BOX_EXIT_SCALE);
 }
 
-// The slab tests' origin terms: a plane p is at distance p idir - o idir, one multiply-add
-// with o idir computed once per ray. (Written so, with o idir plain, the compiler factored
-// it back into (p - o) idir, two instructions per plane.) The precomputed product is off by
-// up to a unit of rounding of its magnitude, an absolute error that BOX_EXIT_SCALE's relative
-// widening does not cover where the origin is far from the world's origin against the box's
-// distance; so near planes subtract it raised, and far planes lowered, by four units of
-// rounding of its magnitude (as the compressed wide kernel widens its slabs), which leaves
-// the multiply-add's own rounding relative, as Ize's bound has it.
-void slab_origins(vec3 o, vec3 idir, out vec3 ood_near, out vec3 ood_far) {
-    precise vec3 ood = o * idir;
-    precise vec3 slack = abs(ood) * (1.0 / 4194304.0);
-    precise vec3 up = ood + slack;
-    precise vec3 down = ood - slack;
-    ood_near = up;
-    ood_far = down;
-}
-
 #ifdef TRAVERSE_BVH4
 #include "traverse_bvh4.glsl"
 #else
@@ -165,15 +148,8 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                    abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
     vec3 idir = 1.0 / dd;
-    vec3 ood_near, ood_far;
-    slab_origins(o, idir, ood_near, ood_far);
-    // Per axis, the terms for the lower and the upper plane: the lower one is the near one
-    // unless the ray runs down that axis.
-    bvec3 up_axis = greaterThanEqual(idir, vec3(0.0));
-    vec3 ood_lo = mix(ood_far, ood_near, up_axis);
-    vec3 ood_hi = mix(ood_near, ood_far, up_axis);
-    vec4 ood_xy = vec4(ood_lo.x, ood_hi.x, ood_lo.y, ood_hi.y);
-    vec4 ood_zz = vec4(ood_lo.z, ood_hi.z, ood_lo.z, ood_hi.z);
+    vec4 o_xy = o.xxyy;
+    vec4 idir_xy = idir.xxyy;
 
     TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
     TRAVERSAL_STACK_INIT();
@@ -188,10 +164,16 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                 stats.x++;
                 traversal_counts.y++;
             }
-            vec4 idir_xy = idir.xxyy;
-            vec4 t0xy = n.c0_xy * idir_xy - ood_xy;
-            vec4 t1xy = n.c1_xy * idir_xy - ood_xy;
-            vec4 tz = n.c01_z * idir.z - ood_zz;
+            // (p - o) idir, as written: its rounding is what BOX_EXIT_SCALE covers (Ize 2013).
+            // p idir - o idir with o idir computed once is one instruction less per plane
+            // but, contracted to a multiply-add (as lavapipe's compiler does), off by the
+            // rounding of o idir, an absolute error that lost hits far from the world's origin
+            // (tests/traversal.rs, small_triangles_far_from_the_origin...); that form with
+            // the origin term widened by its rounding is commit fead3e2, not yet timed on
+            // the H200.
+            vec4 t0xy = (n.c0_xy - o_xy) * idir_xy;
+            vec4 t1xy = (n.c1_xy - o_xy) * idir_xy;
+            vec4 tz = (n.c01_z - o.z) * idir.z;
             float c0min, c0max, c1min, c1max;
             if (INT_SLABS != 0u) {
                 // The same selections on the floats' bits as signed integers (Aila & Laine

@@ -29,8 +29,6 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                    abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
     vec3 idir = 1.0 / dd;
-    vec3 ood_near, ood_far;
-    slab_origins(o, idir, ood_near, ood_far);
     uint nx = dd.x < 0.0 ? 1u : 0u;
     uint ny = dd.y < 0.0 ? 3u : 2u;
     uint nz = dd.z < 0.0 ? 5u : 4u;
@@ -51,12 +49,13 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             // without a branch: with `node = children[k0 & 3u]` inside `if (hit)` the
             // compiler sank the load there, after the test, a second dependent fetch per step.
             ivec4 children = bvh4_nodes[node].children;
-            vec4 near_x = bvh4_nodes[node].planes[nx] * idir.x - ood_near.x;
-            vec4 far_x = bvh4_nodes[node].planes[nx ^ 1u] * idir.x - ood_far.x;
-            vec4 near_y = bvh4_nodes[node].planes[ny] * idir.y - ood_near.y;
-            vec4 far_y = bvh4_nodes[node].planes[ny ^ 1u] * idir.y - ood_far.y;
-            vec4 near_z = bvh4_nodes[node].planes[nz] * idir.z - ood_near.z;
-            vec4 far_z = bvh4_nodes[node].planes[nz ^ 1u] * idir.z - ood_far.z;
+            // (p - o) idir, as in the binary kernel (see there).
+            vec4 near_x = (bvh4_nodes[node].planes[nx] - o.x) * idir.x;
+            vec4 far_x = (bvh4_nodes[node].planes[nx ^ 1u] - o.x) * idir.x;
+            vec4 near_y = (bvh4_nodes[node].planes[ny] - o.y) * idir.y;
+            vec4 far_y = (bvh4_nodes[node].planes[ny ^ 1u] - o.y) * idir.y;
+            vec4 near_z = (bvh4_nodes[node].planes[nz] - o.z) * idir.z;
+            vec4 far_z = (bvh4_nodes[node].planes[nz ^ 1u] - o.z) * idir.z;
             vec4 t_near, t_far;
             if (INT_SLABS != 0u) {
                 // On the bits as signed integers, as in the binary kernel: tmin and hit.t are

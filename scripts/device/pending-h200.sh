@@ -274,22 +274,19 @@ int-slabs)
   ;;
 ffma12)
   # #17 (session 12): the binary and 4-wide slab tests as one multiply-add per plane, the
-  # origin term widened by its rounding (slab_origins), against PREV (f5c3eb5), interleaved.
+  # origin term widened by its rounding (slab_origins), against PREV (f5c3eb5, where the
+  # compiler made it (p - o) idir), interleaved, two runs (cut to fit the session's last
+  # device minutes).
   SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
   CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
   P=${PREV:-$PWD/.device/bidir-prev}
-  T="timeout -k 5 90"
+  T="timeout -k 5 60"
   for r in 1 2; do
-    for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh2" "--bvh bvh4"; do
+    for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh2"; do
       for b in "$B" "$P"; do
         echo "== sponza $c $(basename "$b")"
-        $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+        $T "$b" bench traversal "$SP" --camera CameraMain $c --reps 5 --warmup 2 2>&1 | grep -E "^(primary|shadow|diffuse) "
       done
-    done
-    for b in "$B" "$P"; do
-      echo "== sponza bdpt --bvh bvh4 $(basename "$b"): $($T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "GPU [0-9.]+ ms")"
-      echo "== caustic pt-nee $(basename "$b"): $($T "$b" bench render $CAU --integrator pt-nee --spp 256 2>&1 | grep -oE "GPU [0-9.]+ ms")"
-      echo "== cornell pt-nee --bvh bvh2 $(basename "$b"): $($T "$b" bench render $CB --integrator pt-nee --bvh bvh2 --spp 1024 2>&1 | grep -oE "GPU [0-9.]+ ms")"
     done
   done
   "$B" render $CAU --integrator pt-nee --spp 64 -o /tmp/new.exr > /dev/null 2>&1
