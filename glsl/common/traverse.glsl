@@ -168,9 +168,9 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             // p idir - o idir with o idir computed once is one instruction less per plane
             // but, contracted to a multiply-add (as lavapipe's compiler does), off by the
             // rounding of o idir, an absolute error that lost hits far from the world's origin
-            // (tests/traversal.rs, small_triangles_far_from_the_origin...); that form with
-            // the origin term widened by its rounding is commit fead3e2, not yet timed on
-            // the H200.
+            // (tests/traversal.rs, small_triangles_far_from_the_origin...). That form with the
+            // origin term widened by its rounding (the 4-wide kernel's) was mixed here on the
+            // H200: shadow rays 4.91 against 4.73 Grays/s, diffuse 1.48 against 1.55.
             vec4 t0xy = (n.c0_xy - o_xy) * idir_xy;
             vec4 t1xy = (n.c1_xy - o_xy) * idir_xy;
             vec4 tz = (n.c01_z - o.z) * idir.z;

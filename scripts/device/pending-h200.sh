@@ -274,16 +274,17 @@ int-slabs)
   ;;
 ffma12)
   # #17 (session 12): the binary and 4-wide slab tests as one multiply-add per plane, the
-  # origin term widened by its rounding (slab_origins), against PREV (f5c3eb5, where the
-  # compiler made it (p - o) idir), interleaved, two runs (cut to fit the session's last
-  # device minutes).
+  # origin term widened by its rounding (slab_origins; B = a build of fead3e2), against PREV
+  # (f5c3eb5, where the compiler made it (p - o) idir) and FINAL (c3d2cf6, (p - o) idir as
+  # written), interleaved, two runs (cut to fit the session's last device minutes).
   SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
   CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
   P=${PREV:-$PWD/.device/bidir-prev}
   T="timeout -k 5 60"
   for r in 1 2; do
     for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh2"; do
-      for b in "$B" "$P"; do
+      for b in "$B" "$P" ${FINAL:-$PWD/.device/bidir-final}; do
+        [ -x "$b" ] || continue
         echo "== sponza $c $(basename "$b")"
         $T "$b" bench traversal "$SP" --camera CameraMain $c --reps 5 --warmup 2 2>&1 | grep -E "^(primary|shadow|diffuse) "
       done
