@@ -122,10 +122,26 @@ layout(constant_id = SPEC_SPECULATIVE) const uint SPECULATIVE = 1u;
         dst = e_.x;                                                                                \
     }
 // The top entry (node, distance bits) without popping it, and a pop of it only where `c`
-// holds: with these a node step chooses its next node without a branch (see trace_ray).
+// holds: with these a node step chooses its next node without a branch (see
+// TRAVERSAL_STACK_NEXT).
 #define TRAVERSAL_STACK_TOP() (any_hit ? ivec2(stack[sp].x, 0) : stack[sp])
 #define TRAVERSAL_STACK_DROP_IF(c) sp -= (c) ? 1 : 0
 #endif
+
+// A node step's next node: `nearest` (the nearest hit child, read with the node) unless no
+// child was hit (`none`), then the stack's top, or the first entry below it not past `cull`.
+// The choice is a select, not a branch: with the child read only where a box was hit, the
+// compiler sank its load after the box test, a second dependent fetch per step (seen in the
+// machine code, scripts/device/sass.py; session 12).
+#define TRAVERSAL_STACK_NEXT(dst, none, nearest, cull)                                            \
+    {                                                                                              \
+        ivec2 top_ = TRAVERSAL_STACK_TOP();                                                        \
+        dst = (none) ? top_.x : (nearest);                                                         \
+        TRAVERSAL_STACK_DROP_IF(none);                                                             \
+        if ((none) && top_.y > (cull)) {                                                           \
+            TRAVERSAL_STACK_POP(dst, cull);                                                        \
+        }                                                                                          \
+    }
 
 // The bits `cull` of TRAVERSAL_STACK_POP for a nearest hit at distance t.
 int stack_cull_bits(float t) {
@@ -194,17 +210,9 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             }
             bool hit0 = c0min <= c0max * BOX_EXIT_SCALE;
             bool hit1 = c1min <= c1max * BOX_EXIT_SCALE;
-            // The next node chosen without a branch: with the children read only where a box
-            // is hit, the compiler sank their load after the test, a second dependent fetch
-            // per step (seen in the machine code, scripts/device/sass.py).
             bool none = !hit0 && !hit1;
             bool near1 = hit1 && (!hit0 || c1min < c0min);
-            ivec2 top = TRAVERSAL_STACK_TOP();
-            node = none ? top.x : (near1 ? n.children.y : n.children.x);
-            TRAVERSAL_STACK_DROP_IF(none);
-            if (none && top.y > stack_cull_bits(hit.t)) {
-                TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));
-            }
+            TRAVERSAL_STACK_NEXT(node, none, near1 ? n.children.y : n.children.x, stack_cull_bits(hit.t));
             if (hit0 && hit1) {
                 TRAVERSAL_STACK_PUSH(near1 ? n.children.x : n.children.y, floatBitsToInt(near1 ? c0min : c1min));
             }

@@ -58,9 +58,8 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                 stats.x++;
                 traversal_counts.y++;
             }
-            // The children's pointers are loaded with the planes and the next node is chosen
-            // without a branch: with `node = children[k0 & 3u]` inside `if (hit)` the
-            // compiler sank the load there, after the test, a second dependent fetch per step.
+            // The children's pointers are read with the planes; the next node is chosen
+            // without a branch (TRAVERSAL_STACK_NEXT).
             ivec4 children = bvh4_nodes[node].children;
             vec4 near_x = bvh4_nodes[node].planes[nx] * idir.x - ood_near.x;
             vec4 far_x = bvh4_nodes[node].planes[nx ^ 1u] * idir.x - ood_far.x;
@@ -89,12 +88,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
             uint f = max(a, c), g = min(b, e);
             uint k1 = min(f, g), k2 = max(f, g);
             bool none = k0 == 0xffffffffu;
-            ivec2 top = TRAVERSAL_STACK_TOP();
-            node = none ? top.x : pick4(children, k0);
-            TRAVERSAL_STACK_DROP_IF(none);
-            if (none && top.y > stack_cull_bits(hit.t)) {
-                TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));
-            }
+            TRAVERSAL_STACK_NEXT(node, none, pick4(children, k0), stack_cull_bits(hit.t));
             if (k3 != 0xffffffffu) {
                 TRAVERSAL_STACK_PUSH(pick4(children, k3), int(k3 & ~3u));
             }

@@ -22,8 +22,11 @@ use crate::vk::Context;
 /// caustic scene 77.2 against 87.0, Cornell box vcm 249.8 against 307.8); without the queue the
 /// binary one (their camera pass was 13-24 % slower over the wide BVH; Sponza bdpt 549 against
 /// 644 ms).
-/// The 4-wide BVH (`bvh4`) is never the default: it traces standalone rays fastest
-/// but made every integrator kernel slower (more registers; docs/traversal.md).
+/// The 4-wide BVH (`bvh4`) is never the default: it traces standalone rays fastest, and since
+/// session 12 (its stack skips boxes past the nearest hit) BDPT over it is 7 % faster on Sponza
+/// (339.9 against 365.6 ms), but slower on the Cornell box (256.4 against 206.0), the punctual
+/// lamp and a million-triangle scene, level elsewhere; no scene size separates them
+/// (docs/traversal.md, "The node step as the driver compiles it").
 /// [`Renderer::switch_integrator`] rebuilds the renderer where a switch changes this choice.
 pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures, queued: bool) -> BvhLayout {
     if on_cpu {
