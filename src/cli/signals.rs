@@ -7,8 +7,9 @@ use signal_hook::consts::SIGINT;
 use signal_hook::iterator::Signals;
 
 /// Restores the default action of SIGPIPE (Rust ignores it, so writes to a closed pipe fail
-/// and `println!` panics). The one `unsafe` outside `src/vk` (the binary denies it
-/// elsewhere): std offers no safe way to set a signal's disposition.
+/// and `println!` panics). One of the two `unsafe` blocks outside `src/vk` (the binary denies
+/// it elsewhere; the other is `exit_now`): std offers no safe way to set a signal's
+/// disposition.
 #[allow(unsafe_code)]
 pub fn default_sigpipe() {
     // SAFETY: sets a signal's disposition to the default action; called first thing in
@@ -16,6 +17,18 @@ pub fn default_sigpipe() {
     unsafe {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
+}
+
+/// Ends the process with `code` at once, without exit handlers or static destructors: the
+/// main thread may be inside the Vulkan driver, and `std::process::exit` from this thread ran
+/// the driver's teardown under it (seen once in CI on lavapipe: the process died of a signal
+/// after "aborted: nothing written" instead of exiting 130). Partial files are removed before.
+#[allow(unsafe_code)]
+fn exit_now(code: i32) -> ! {
+    use std::io::Write;
+    std::io::stderr().flush().ok();
+    // SAFETY: _exit takes no pointers and never returns; nothing is left to clean up here.
+    unsafe { libc::_exit(code) }
 }
 
 /// What the first Ctrl-C does.
@@ -44,7 +57,7 @@ pub fn on_interrupt(first: FirstInterrupt) -> anyhow::Result<()> {
                 let removed = bidir::imaging::abort_writes();
                 let note = if removed > 0 { format!(" ({removed} partial file(s) removed)") } else { String::new() };
                 eprintln!("\naborted: nothing written{note}");
-                std::process::exit(130);
+                exit_now(130);
             }
         }
     })?;
