@@ -576,3 +576,88 @@ fn environment_sampling_with_a_sun_matches_its_pdf() {
     drop((s, genv, texel_buf, alias));
     finish(ctx);
 }
+
+/// rng.glsl's numbers on the CPU, operation for operation: the PCG hash, Burley's (2020)
+/// nested uniform scramble and per-group index shuffle, Sobol' points by their matrix product
+/// (`bidir::gpu::sobol::sobol`, not the kernels' shortcuts), the hash chain past the Sobol'
+/// dimensions.
+mod rng_twin {
+    use bidir::gpu::sobol::sobol;
+
+    pub fn pcg_hash(v: u32) -> u32 {
+        let state = v.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+        let word = ((state >> ((state >> 28) + 4)) ^ state).wrapping_mul(277_803_737);
+        (word >> 22) ^ word
+    }
+
+    fn laine_karras(mut x: u32, seed: u32) -> u32 {
+        x = x.wrapping_add(seed);
+        for m in [0x6c50_b47c_u32, 0xb82f_1e52, 0xc7af_e638, 0x8d22_f6e6] {
+            x ^= x.wrapping_mul(m);
+        }
+        x
+    }
+
+    fn scramble(x: u32, seed: u32) -> u32 {
+        laine_karras(x.reverse_bits(), seed).reverse_bits()
+    }
+
+    /// The first `n` numbers of (pixel, sample) under `sobol_dims` Sobol' dimensions.
+    pub fn numbers(pixel: u32, sample: u32, seed: u32, sobol_dims: u32, n: usize) -> Vec<u32> {
+        let s = pcg_hash(pixel ^ pcg_hash(seed));
+        let mut state = if sobol_dims > 0 { s } else { pcg_hash(s ^ pcg_hash(sample)) };
+        let mut out = Vec::with_capacity(n);
+        for dim in 0..n as u32 {
+            if sobol_dims > 0 && dim < sobol_dims {
+                let group_seed = pcg_hash(state ^ pcg_hash(dim / 4));
+                let shuffled = scramble(sample, group_seed);
+                let k = dim % 4;
+                out.push(scramble(sobol(shuffled, k as usize), pcg_hash(group_seed ^ (k + 1))));
+                continue;
+            }
+            if sobol_dims > 0 && dim == sobol_dims {
+                state = pcg_hash(state ^ pcg_hash(sample ^ 0x5bd1_e995));
+            }
+            state = pcg_hash(state);
+            out.push(state);
+        }
+        out
+    }
+}
+
+/// The kernels' random numbers are rng.glsl's definition bit for bit (its Sobol' points
+/// computed by shortcuts, each against the matrix product): independent, the default
+/// Sobol' dimensions, two and Sobol' everywhere, over sample indices with every bit in use.
+#[test]
+fn kernel_random_numbers_equal_their_cpu_twin_bit_for_bit() {
+    let ctx = gpu();
+    {
+        let count = 4096u32;
+        let mut pcg = common::Pcg::new(13);
+        let samples: Vec<u32> = (0..count).map(|i| if i < 64 { i } else { pcg.next_u32() }).collect();
+        let input: Vec<Vec4> = samples.iter().map(|&s| Vec4::new(f32::from_bits(s), 0.0, 0.0, 0.0)).collect();
+        let input = ctx.upload_buffer("sampling.rng_samples", &input).unwrap();
+        for sobol_dims in [abi::SAMPLER_INDEPENDENT, 2, bidir::render::Sampler::DEFAULT_SOBOL_DIMS, u32::MAX] {
+            let spec = bidir::vk::Spec { id: abi::SPEC_SAMPLER, value: sobol_dims };
+            let k = SamplingKernel::with_specs(&ctx, &[spec]);
+            let push = abi::SamplingTestPush { mode: abi::SAMPLING_RNG, count, seed: 7, ..Default::default() };
+            let out = k.run(push, 4, Some(&input));
+            let mut wrong = 0;
+            for i in 0..count {
+                let want = rng_twin::numbers(i / 8, samples[i as usize], 7, sobol_dims, 16);
+                let got: Vec<u32> = out[4 * i as usize..4 * i as usize + 4].iter().flat_map(|v| v.to_array().map(f32::to_bits)).collect();
+                if got != want {
+                    if wrong < 3 {
+                        eprintln!("sampler {sobol_dims}: pixel {} sample {:#x}: GPU {got:x?}, CPU {want:x?}", i / 8, samples[i as usize]);
+                    }
+                    wrong += 1;
+                }
+            }
+            assert_eq!(
+                wrong, 0,
+                "sampler with {sobol_dims} Sobol' dimensions: {wrong} of {count} invocations' numbers differ from rng.glsl's CPU twin"
+            );
+        }
+    }
+    finish(ctx);
+}

@@ -14,7 +14,10 @@
 // - SAMPLING_ROUGH_GLASS / SAMPLING_ROUGH_GLASS_EVAL: the rough dielectric (rough_dielectric.glsl).
 // - SAMPLING_ENV: env_sample over the bound environment, out[2i] = (direction, its pdf_w),
 //   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
-// Uniform numbers come from rng.glsl (the independent sampler), as in the integrators.
+// - SAMPLING_RNG: rng.glsl's numbers themselves, for tests/sampling_rng.rs's bit-for-bit
+//   comparison with its CPU twin (the kernel created with the sampler to test).
+// Uniform numbers come from rng.glsl (the independent sampler unless the kernel is created
+// with another), as in the integrators.
 #include "bidir_abi.glsl"
 #include "ray.glsl"
 #include "rng.glsl"
@@ -51,7 +54,17 @@ void main() {
         return;
     }
     Rng rng = rng_init(i, 0u, pc.seed);
-    if (pc.mode == SAMPLING_COSINE) {
+    if (pc.mode == SAMPLING_RNG) {
+        rng = rng_init(i / 8u, floatBitsToUint(input_dirs[i].x), pc.seed);
+        for (uint k = 0u; k < 4u; k++) {
+            uvec4 v;
+            v.x = rng_next_uint(rng);
+            v.y = rng_next_uint(rng);
+            v.z = rng_next_uint(rng);
+            v.w = rng_next_uint(rng);
+            result[4u * i + k] = uintBitsToFloat(v);
+        }
+    } else if (pc.mode == SAMPLING_COSINE) {
         float u1 = rng_next(rng);
         float u2 = rng_next(rng);
         result[i] = vec4(sample_cosine_hemisphere(pc.a.xyz, u1, u2), 0.0);

@@ -521,6 +521,75 @@ exp12)
     mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/exp-$1-$2.bin"
   done
   ;;
+s13b)
+  # Session 13: cheaper Sobol' numbers (bit for bit the same): v1 = the second dimension as a
+  # reversed superset transform and dimensions 3 and 4 as per-bit tests (if form), v1s = the
+  # same with selects, v2s = v1s with each group's seed and shuffled index kept in the Rng;
+  # all with the 4-wide any-hit step without sorting. Against BASE (d788d86), interleaved.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 60"
+  V=".device/bidir-base .device/bidir-v1 .device/bidir-v1s .device/bidir-v2s"
+  for r in 1 2; do
+    for b in $V; do
+      echo "== cornell pt-nee $(basename $b)"
+      $T $b bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,4p
+    done
+  done
+  for b in $V; do
+    echo "== cornell bdpt $(basename $b)"
+    $T $b bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,6p
+    echo "== caustic pt-nee $(basename $b)"
+    $T $b bench render $CAU --integrator pt-nee --spp 256 2>&1 | grep -E "Msamples" | head -1
+    echo "== sponza pt-nee $(basename $b)"
+    $T $b bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  for b in $V; do
+    $T $b render --integrator pt-nee --spp 64 -o /tmp/$(basename $b)-p.exr > /dev/null 2>&1
+    $T $b render --integrator bdpt --spp 16 -o /tmp/$(basename $b)-b.exr > /dev/null 2>&1
+    echo "== $(basename $b) against base: pt-nee 64 spp, bdpt 16 spp"
+    .device/bidir-base diff /tmp/$(basename $b)-p.exr /tmp/bidir-base-p.exr 2>&1 | grep -iE "rmse"
+    .device/bidir-base diff /tmp/$(basename $b)-b.exr /tmp/bidir-base-b.exr 2>&1 | grep -iE "rmse"
+  done
+  for b in .device/bidir-v1s .device/bidir-v2s; do
+    echo "== kernels $(basename $b)"
+    $T $b info --kernels 2>&1 | grep -E "^(pt-nee|bdpt:lvc=1) " | head -6
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  ( export __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1
+    $T .device/bidir-v2s render $CB --integrator pt-nee --spp 64 -o /tmp/a.exr > /dev/null 2>&1 )
+  tar czf "$OUT/cache-v2s.tgz" -C $D .
+  ;;
+s13a)
+  # Session 13, first look: what Owen-scrambled Sobol' numbers cost pt-nee and bdpt now
+  # (samplers against each other, one binary), the 4-wide any-hit step without sorting (B)
+  # against BASE, and the driver's shader cache of a pt-nee and a bdpt render (machine code,
+  # scripts/device/sass.py here).
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for smp in sobol independent sobol:4 sobol:2; do
+      echo "== cornell pt-nee --sampler $smp"
+      $T "$BASE" bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 --sampler $smp 2>&1 | head -4
+    done
+  done
+  for smp in sobol independent; do
+    echo "== cornell bdpt --sampler $smp"
+    $T "$BASE" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 --sampler $smp 2>&1 | head -6
+  done
+  for r in 1 2; do
+    for b in "$B" "$BASE"; do
+      echo "== sponza bvh4 leaf 3 quality 3 $(basename "$b")"
+      $T "$b" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --reps 5 --warmup 2 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  ( export __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1
+    $T "$BASE" render $CB --integrator pt-nee --spp 64 -o /tmp/a.exr > /dev/null 2>&1
+    $T "$BASE" info --kernels 2>&1 | grep -iE "pt|regist" | head -20 )
+  tar czf "$OUT/cache-ptnee.tgz" -C $D .
+  ;;
 sass)
   # #17 (session 12): the machine code of the trace kernels, carved from the driver's shader
   # disk cache (scripts/device/sass.py), for bvh4 and bvh2, watertight.

@@ -226,6 +226,10 @@ gpu_consts! {
     /// SAMPLING_ROUGH_GLASS, local frame of `b.xyz`): out[2i] = (f radiance, f importance,
     /// pdf_fwd_w, pdf_rev_w), out[2i + 1] = the same for the pair swapped.
     pub const SAMPLING_ROUGH_GLASS_EVAL: u32 = 8;
+    /// rng.glsl itself, under the kernel's SPEC_SAMPLER: invocation i draws the first 16
+    /// numbers (rng_next_uint) of pixel i / 8 and sample index in[i].x (as bits), out[4i ..
+    /// 4i + 3] holding them as bits.
+    pub const SAMPLING_RNG: u32 = 9;
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.

@@ -45,18 +45,47 @@ pub fn sobol(index: u32, dim: usize) -> u32 {
     (0..32).filter(|k| (index >> k) & 1 == 1).fold(0, |x, k| x ^ v[dim][k])
 }
 
-/// `uint sobol_point(uint index, uint dim)` as straight-line code: for each dimension, the
-/// xor of the direction numbers of the index's set bits, with the numbers as literals (a
-/// constant array indexed at run time is copied into every invocation by some drivers).
+/// The masks of [`superset_xor`]'s five steps: the bit positions whose bit `h` is clear.
+const SUPERSET_MASKS: [(u32, u32); 5] = [(1, 0x5555_5555), (2, 0x3333_3333), (4, 0x0f0f_0f0f), (8, 0x00ff_00ff), (16, 0x0000_ffff)];
+
+/// Bit i of the result is the xor of the bits k of `x` whose positions contain i's (k & i ==
+/// i): five shift-and-xor steps, one per bit of the position (the binary "superset" or
+/// zeta transform).
+pub fn superset_xor(mut x: u32) -> u32 {
+    for (h, m) in SUPERSET_MASKS {
+        x ^= (x >> h) & m;
+    }
+    x
+}
+
+/// Point `index` of the second dimension without its 32 direction numbers: that dimension's
+/// generator matrix is Pascal's triangle mod 2 (m_k = (1 + 2)^(k - 1), carry-less), so bit
+/// 31 - i of the point is the xor of the index bits k with C(k, i) odd, i.e. (Lucas) with k
+/// containing i: the reversed [`superset_xor`] of the index. Eleven operations where the
+/// matrix product took ~110 instructions (the H200's machine code, session 13).
+pub fn sobol_dim1(index: u32) -> u32 {
+    superset_xor(index).reverse_bits()
+}
+
+/// `uint sobol_point(uint index, uint dim)` for the kernels, equal bit for bit to [`sobol`]
+/// (tests/sampling.rs checks the kernels' numbers against a CPU twin): dimension 0 as a bit
+/// reversal, 1 as [`sobol_dim1`], 2 and 3 as the xor of the direction numbers of the index's
+/// set bits, each a literal under a test of its bit (a constant array indexed at run time is
+/// copied into every invocation by some drivers). The matrix product written as a multiply
+/// by each bit took ~3.5 instructions a bit on the H200 and was inlined at every call for
+/// all three dimensions; in this form pt-nee on the Cornell box runs at 1104 against 878
+/// Msamples/s, and 1077 with the bit tests written as selects (session 13, docs/results.md).
 pub fn glsl() -> String {
     let v = sobol_directions();
-    let mut s = String::from(
-        "uint sobol_point(uint index, uint dim) {\n    if (dim == 0u) {\n        return bitfieldReverse(index);\n    }\n    uint x = 0u;\n",
-    );
-    for (d, dirs) in v.iter().enumerate().skip(1) {
+    let mut s = String::from("uint sobol_point(uint index, uint dim) {\n    if (dim == 0u) {\n        return bitfieldReverse(index);\n    }\n    uint x = index;\n    if (dim == 1u) {\n");
+    for (h, m) in SUPERSET_MASKS {
+        s += &format!("        x ^= (x >> {h}u) & {m:#010x}u;\n");
+    }
+    s += "        return bitfieldReverse(x);\n    }\n    x = 0u;\n";
+    for (d, dirs) in v.iter().enumerate().skip(2) {
         s += &format!("    if (dim == {d}u) {{\n");
         for (k, c) in dirs.iter().enumerate() {
-            s += &format!("        x ^= ((index >> {k}u) & 1u) * {c:#010x}u;\n");
+            s += &format!("        if ((index & {:#010x}u) != 0u) {{\n            x ^= {c:#010x}u;\n        }}\n", 1u32 << k);
         }
         s += "    }\n";
     }
@@ -80,6 +109,20 @@ mod tests {
         assert_eq!(d1, vec![0.0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875]);
         let d2: Vec<f64> = (0..8).map(|i| f(sobol(i, 2))).collect();
         assert_eq!(d2, vec![0.0, 0.5, 0.75, 0.25, 0.375, 0.875, 0.625, 0.125]);
+    }
+
+    /// The second dimension's shortcut is its matrix product, for every bit alone and for
+    /// random indices.
+    #[test]
+    fn dimension_1_is_the_reversed_superset_transform() {
+        for k in 0..32 {
+            assert_eq!(sobol_dim1(1 << k), sobol(1 << k, 1), "index bit {k}");
+        }
+        let mut x = 0x1234_5678u32;
+        for _ in 0..100_000 {
+            x = x.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+            assert_eq!(sobol_dim1(x), sobol(x, 1), "index {x:#x}");
+        }
     }
 
     /// Each dimension alone puts one of the first 256 points in every 1/256 interval, and

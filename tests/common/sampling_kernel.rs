@@ -2,7 +2,7 @@
 //! vec4s per invocation; the inputs a mode does not read are bound to one placeholder.
 
 use bidir::gpu::{abi, kernels};
-use bidir::vk::{Bind, Buffer, Context, Kernel, Memory};
+use bidir::vk::{Bind, Buffer, Context, Kernel, Memory, Spec};
 use glam::Vec4;
 
 pub struct SamplingKernel<'a> {
@@ -14,7 +14,12 @@ pub struct SamplingKernel<'a> {
 
 impl<'a> SamplingKernel<'a> {
     pub fn new(ctx: &'a Context) -> Self {
-        let kernel = ctx.create_kernel(&kernels::SAMPLING, &[]).unwrap();
+        Self::with_specs(ctx, &[])
+    }
+
+    /// The kernel with specialisation constants, e.g. a sampler (`SPEC_SAMPLER`).
+    pub fn with_specs(ctx: &'a Context, specs: &[Spec]) -> Self {
+        let kernel = ctx.create_kernel(&kernels::SAMPLING, specs).unwrap();
         let placeholder = ctx.create_buffer("sampling.placeholder", 128, Memory::Device).unwrap();
         SamplingKernel { ctx, kernel, placeholder }
     }
