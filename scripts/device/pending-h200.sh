@@ -521,6 +521,49 @@ exp12)
     mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/exp-$1-$2.bin"
   done
   ;;
+s13c)
+  # Session 13, the committed code (B) against BASE (d788d86): time-budgeted renders (Cornell
+  # box against the sharper reference, the caustic scene at the test's 128² camera against its
+  # committed reference), the integrators' rates, the trace kernels; the machine code of BDPT.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  T="timeout -k 5 60"
+  for t in 0.1 1; do
+    for i in pt pt-nee bdpt bdpt:full; do
+      for b in "$B" "$BASE" "$B"; do
+        echo "== cornell $i --time $t $(basename "$b")"; $T "$b" render $CB --integrator $i --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+        echo "== caustic $i --time $t $(basename "$b")"; $T "$b" render $CAU --width 128 --height 128 --integrator $i --time $t --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+    done
+  done
+  for b in "$B" "$BASE"; do
+    for i in pt pt-nee bdpt bdpt:full vcm; do
+      echo "== cornell $i $(basename "$b")"
+      $T "$b" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    done
+    for i in pt pt-nee bdpt; do
+      echo "== caustic $i $(basename "$b")"
+      $T "$b" bench render $CAU --width 256 --height 256 --integrator $i --spp 256 2>&1 | grep -E "Msamples" | head -1
+    done
+    for i in pt-nee bdpt; do
+      echo "== sponza $i $(basename "$b")"
+      $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+    done
+    echo "== sponza bdpt --bvh bvh4 $(basename "$b")"
+    $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh4" "--bvh bvh2" "--bvh cwbvh"; do
+    for b in "$B" "$BASE"; do
+      echo "== sponza $c $(basename "$b")"
+      $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  ( export __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1
+    $T "$B" render $CB --integrator bdpt --spp 16 -o /tmp/a.exr > /dev/null 2>&1 )
+  tar czf "$OUT/cache-bdpt.tgz" -C $D .
+  ;;
 s13b)
   # Session 13: cheaper Sobol' numbers (bit for bit the same): v1 = the second dimension as a
   # reversed superset transform and dimensions 3 and 4 as per-bit tests (if form), v1s = the
