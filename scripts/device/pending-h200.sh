@@ -521,6 +521,54 @@ exp12)
     mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/exp-$1-$2.bin"
   done
   ;;
+s13e)
+  # Session 13: does a time-budgeted render's last pass overshoot (#16: at most 10 %)? Fresh
+  # processes, 0.1 s, each pass logged (BIDIR_PASS_LOG); the whole log goes to $OUT.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  T="timeout -k 5 60"
+  export BIDIR_PASS_LOG=1
+  for r in 1 2 3 4; do
+    for i in pt-nee bdpt pt; do
+      for sc in cornell caustic; do
+        if [ $sc = cornell ]; then A="$CB"; else A="$CAU"; fi
+        echo "== $sc $i --time 0.1 run $r" >> "$OUT/passes.log"
+        $T "$B" render $A --integrator $i --time 0.1 -o /tmp/t.exr >> "$OUT/passes.log" 2>&1
+        echo "== $sc $i run $r: $(grep "spp in" "$OUT/passes.log" | tail -1)"
+      done
+    done
+  done
+  ;;
+s13d)
+  # Session 13, a measurement only: BDPT without the in-kernel fallback for shadow rays that
+  # find the queue's slots full (M = bidir-m1: such rays dropped, a wrong image if it ever
+  # happens), against B (3e954c8): what the second traversal inlined in the light and camera
+  # kernels costs them (registers, time), and whether the slots ever run out here.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  M=.device/bidir-m1
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for b in "$B" "$M"; do
+      echo "== cornell bdpt $(basename "$b")"
+      $T "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,6p
+    done
+  done
+  for b in "$B" "$M"; do
+    echo "== caustic bdpt $(basename "$b")"
+    $T "$b" bench render $CAU --integrator bdpt --spp 256 2>&1 | grep -E "Msamples" | head -1
+    echo "== sponza bdpt $(basename "$b")"
+    $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | sed -n 1,6p
+    echo "== kernels $(basename "$b")"
+    $T "$b" info --kernels 2>&1 | grep -E "^bdpt:lvc=1 " | head -4
+    $T "$b" render $CB --integrator bdpt --spp 64 -o /tmp/$(basename "$b")-c.exr > /dev/null 2>&1
+    $T "$b" render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 16 -o /tmp/$(basename "$b")-s.exr > /dev/null 2>&1
+  done
+  echo "== images, M against B (0: the slots never ran out)"
+  "$B" diff /tmp/bidir-m1-c.exr /tmp/bidir-c.exr 2>&1 | grep -iE "rmse"
+  "$B" diff /tmp/bidir-m1-s.exr /tmp/bidir-s.exr 2>&1 | grep -iE "rmse"
+  ;;
 s13c)
   # Session 13, the committed code (B) against BASE (d788d86): time-budgeted renders (Cornell
   # box against the sharper reference, the caustic scene at the test's 128² camera against its

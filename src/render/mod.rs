@@ -668,10 +668,18 @@ impl Renderer {
     }
 
     /// Renders samples `first..first + spp` and teaches the pass model how long it took.
+    /// With `BIDIR_PASS_LOG` set, each pass prints its size, the model's prediction and the
+    /// time it took to stderr.
     pub fn adaptive_pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
+        let predicted = self.pacing.known().then(|| self.pacing.seconds(spp));
         let t = Instant::now();
         self.pass_at(first, spp)?;
-        self.pacing.record(spp, t.elapsed().as_secs_f64());
+        let took = t.elapsed().as_secs_f64();
+        if std::env::var_os("BIDIR_PASS_LOG").is_some() {
+            let predicted = predicted.map_or("-".to_string(), |p| format!("{:.2} ms", p * 1e3));
+            eprintln!("pass: samples {first}..{} ({spp} spp), predicted {predicted}, took {:.2} ms", first + spp, took * 1e3);
+        }
+        self.pacing.record(spp, took);
         Ok(())
     }
 
