@@ -521,6 +521,28 @@ exp12)
     mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/exp-$1-$2.bin"
   done
   ;;
+s13f)
+  # Session 13: budgeted passes grow at most 4x the longest measured (or to a quarter of the
+  # budget): B against P (54ab3b4, passes sized by the model alone), fresh processes, 0.1 s,
+  # interleaved, four runs; pass logs in $OUT.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  P=.device/bidir-prev
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  T="timeout -k 5 60"
+  export BIDIR_PASS_LOG=1
+  for r in 1 2 3 4; do
+    for i in pt-nee bdpt pt; do
+      for sc in cornell caustic; do
+        if [ $sc = cornell ]; then A="$CB"; else A="$CAU"; fi
+        for b in "$B" "$P"; do
+          echo "== $sc $i --time 0.1 run $r $(basename $b)" >> "$OUT/passes.log"
+          $T "$b" render $A --integrator $i --time 0.1 --reference $([ $sc = cornell ] && echo "$REF" || echo assets/scenes/caustic/reference.exr) -o /tmp/t.exr >> "$OUT/passes.log" 2>&1
+          echo "== $sc $i run $r $(basename $b): $(grep "spp in" "$OUT/passes.log" | tail -1 | sed -E 's/NVIDIA H200 //; s/ \(.*//') $(grep "^RMSE" "$OUT/passes.log" | tail -1 | cut -d, -f1)"
+        done
+      done
+    done
+  done
+  ;;
 s13e)
   # Session 13: does a time-budgeted render's last pass overshoot (#16: at most 10 %)? Fresh
   # processes, 0.1 s, each pass logged (BIDIR_PASS_LOG); the whole log goes to $OUT.

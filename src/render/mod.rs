@@ -710,8 +710,9 @@ impl Renderer {
     /// Renders passes until `time` has passed or [`request_stop`] is called (at least one
     /// sample either way). After one calibration pass (none if this renderer has rendered
     /// before) every pass is sized by the pass model to fill what is left of the budget, up to
-    /// `pass_target`, so the render runs at the GPU's steady rate from its first moments; a
-    /// last pass that would overshoot the budget by more than 10 % is not started.
+    /// `pass_target` and to [`PassModel::spp_within_budget`]'s growth limit, so the render
+    /// runs at the GPU's steady rate from its first moments; a last pass that would overshoot
+    /// the budget by more than 10 % is not started.
     pub fn render_time(&mut self, time: Duration, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
         let start = Instant::now();
         let budget = time.as_secs_f64();
@@ -726,7 +727,7 @@ impl Renderer {
                 match self.pacing.spp_within(left) {
                     0 if self.samples > 0 && self.pacing.seconds(1) - left > 0.1 * budget => break,
                     0 => 1,
-                    n => n,
+                    _ => self.pacing.spp_within_budget(left, budget).max(1),
                 }
             };
             self.adaptive_pass(cap)?;
