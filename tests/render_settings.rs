@@ -247,33 +247,3 @@ fn one_trace_gives_the_same_image() {
     }
     finish(ctx);
 }
-
-/// BDPT's and VCM's light pass runs its light paths several to an invocation, each started
-/// where the one before ends (`light_paths_per_invocation`), with the shadow-ray queue (4
-/// slots: the later paths of an invocation find them full and trace in place) and without:
-/// the random numbers follow the path, so the image agrees with one path per invocation to
-/// 1e-5 of each value (the splats' atomic adds land in any order).
-#[test]
-fn light_paths_regenerated_give_the_same_image() {
-    use bidir::render::ShadowQueue;
-    let ctx = gpu();
-    let (scene, camera) = small_cornell(24, 16);
-    for integrator in [Integrator::Bdpt(Join::DEFAULT), Integrator::Vcm(bidir::render::vcm::VcmMode::FULL)] {
-        for queue in [None, Some(ShadowQueue { slots: 4, chunk_samples: 1, pause: false })] {
-            let image = |per_invocation: u32| {
-                let mut settings = RenderSettings::new(integrator);
-                settings.light_paths_per_invocation = Some(per_invocation);
-                settings.shadow_queue = Some(queue);
-                settings.sample_slices = 2;
-                render_values(&ctx, &scene, &camera, settings, 4)
-            };
-            let one = image(1);
-            assert!(one.iter().filter(|&&v| v > 0.0).count() * 2 > one.len(), "a mostly black image");
-            for n in [3, 64] {
-                let differ = values_differing(&image(n), &one, 1e-5);
-                assert_eq!(differ, 0, "{integrator:?}, queue {queue:?}, {n} paths per invocation: {differ} of {} values differ", one.len());
-            }
-        }
-    }
-    finish(ctx);
-}

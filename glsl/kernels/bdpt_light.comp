@@ -1,8 +1,5 @@
 #version 460
-// BDPT, pass 1: light subpaths (one per pixel), each invocation taking paths gid, gid + n,
-// gid + 2n, ... of the launch's n, the next one started in the loop iteration where one ends
-// (path regeneration, as pt.comp's), so a subgroup's lanes do not wait for its longest path
-// while paths are left. An emitter point chosen by
+// BDPT, pass 1: one light subpath per invocation (one per pixel). An emitter point chosen by
 // power, a cosine-distributed direction, then BSDF sampling with Russian roulette and no
 // length bound. Every diffuse-capable vertex (a) is offered to the vertex store, a
 // reservoir of `light_path_len` slots (Vitter's algorithm R), so each vertex is kept with
@@ -92,35 +89,15 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
     atomicAdd(splat[3u * pix + 2u], contrib.b);
 }
 
-// A light path between bounces: what light_path_step carries from one to the next.
-struct LightPath {
-    uint path;
-    uint depth;          // vertices so far, the one the next segment finds included
-    uint stored, seen;   // the vertex store's reservoir
-    bool at_infinity;    // its first segment's length does not enter dVCM
-    vec3 beta, o, d;
-    float beta0;
-    float d_vcm, d_vc, d_vm;
-    vec3 sigma_near;     // sigma_a where the next segment leaves its surface (volume.glsl)
-    Rng rng;
-};
-
-// The path's counts, for the camera pass and the light vertex cache's scan.
-void light_path_end(LightPath lp) {
-    light_counts[lp.path] = uvec2(lp.stored, lp.seen);
-    lvc_offsets[lp.path] = lp.stored;
-}
-
-// Starts light path `path` from an emitter: false if it carries nothing (its counts written).
-bool light_path_begin(uint path, VcmFactors k, out LightPath lp) {
-    lp.path = path;
-    lp.depth = 1u;
-    lp.stored = 0u;
-    lp.seen = 0u;
-    lp.sigma_near = vec3(0.0);
+// Light path `path`: its vertices to the store, its joins to the camera splatted or queued.
+void light_path(uint path) {
+    uvec2 stats = uvec2(0u);
+    uint stored = 0u, seen = 0u;
+    uint base = path * pc.light_path_len;
     if (pc.emitter_count == 0u && HAS_ENV == 0u && HAS_PUNCTUAL == 0u) {
-        light_path_end(lp);
-        return false;
+        light_counts[path] = uvec2(0u);
+        lvc_offsets[path] = 0u;
+        return;
     }
     Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
     if (HAS_ALPHA != 0u) {
@@ -129,6 +106,7 @@ bool light_path_begin(uint path, VcmFactors k, out LightPath lp) {
 
     vec3 beta, o, d;
     float d_vcm, d_vc;
+    VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
     float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
     bool from_env = HAS_ENV != 0u && u_kind < env.pick;
     bool from_punctual = HAS_PUNCTUAL != 0u && !from_env && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
@@ -155,8 +133,9 @@ bool light_path_begin(uint path, VcmFactors k, out LightPath lp) {
             beta = l.intensity.rgb * punctual_falloff(l, d) / emission_pdf_w;
         }
         if (!(emission_pdf_w > 0.0) || max3(beta) <= 0.0) {
-            light_path_end(lp);
-            return false;
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
         }
         d_vcm = mis(pick / emission_pdf_w);
         d_vc = 0.0;
@@ -167,8 +146,9 @@ bool light_path_begin(uint path, VcmFactors k, out LightPath lp) {
         float direct_pdf_w = env.pick * es.pdf_w;
         float emission_pdf_w = direct_pdf_w / env.disk_area;
         if (!(emission_pdf_w > 0.0)) {
-            light_path_end(lp);
-            return false;
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
         }
         d = -es.w;
         o = env_disk_origin(es.w, rng_next(rng), rng_next(rng));
@@ -183,46 +163,23 @@ bool light_path_begin(uint path, VcmFactors k, out LightPath lp) {
         float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * luminance(ls.le) / pc.emitter_weight;
         float emission_pdf_w = direct_pdf_a * cos0 / PI;
         if (cos0 <= 0.0 || emission_pdf_w <= 0.0) {
-            light_path_end(lp);
-            return false;
+            light_counts[path] = uvec2(0u);
+            lvc_offsets[path] = 0u;
+            return;
         }
         beta = light_sample_radiance(ls) * cos0 / emission_pdf_w;
         d_vcm = mis(direct_pdf_a / emission_pdf_w);
         d_vc = mis(cos0 / emission_pdf_w);
         o = offset_ray_origin(ls.p, ls.n);
     }
-    lp.at_infinity = at_infinity;
-    lp.beta = beta;
-    lp.o = o;
-    lp.d = d;
-    lp.beta0 = max3(beta);
-    lp.d_vcm = d_vcm;
-    lp.d_vc = d_vc;
-    lp.d_vm = d_vc * k.vc; // dVM starts as dVC / eta (0 for a delta light)
-    lp.rng = rng;
-    return true;
-}
+    float beta0 = max3(beta);
+    float d_vm = d_vc * k.vc; // dVM starts as dVC / eta (0 for a delta light)
+    vec3 sigma_near = vec3(0.0); // sigma_a where the next segment leaves its surface (volume.glsl)
 
-// The path ends here: its counts written, false for light_path_step to return.
-#define LIGHT_PATH_END    \
-    {                     \
-        light_path_end(lp); \
-        return false;     \
-    }
-
-// One bounce of `lp`: the next segment, the vertex it finds (stored, joined to the camera)
-// and the scattering there; false when the path has ended.
-bool light_path_step(inout LightPath lp, VcmFactors k, inout uvec2 stats) {
-    uint depth = lp.depth;
-    vec3 beta = lp.beta, o = lp.o, d = lp.d;
-    float d_vcm = lp.d_vcm, d_vc = lp.d_vc, d_vm = lp.d_vm;
-    vec3 sigma_near = lp.sigma_near;
-    bool at_infinity = lp.at_infinity;
-    uint base = lp.path * pc.light_path_len;
-    {
+    for (uint depth = 1u;; depth++) {
         TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
         if (h.prim == NO_HIT) {
-            LIGHT_PATH_END;
+            break;
         }
         Surface s = surface_at(o, d, h);
         GpuMaterial m = materials[s.material];
@@ -256,39 +213,39 @@ bool light_path_step(inout LightPath lp, VcmFactors k, inout uvec2 stats) {
             // Without GGX lobes f does not depend on the outgoing direction: store beta f.
             vec3 beta_f = HAS_GLOSSY != 0u || VCM_MERGES ? beta : beta * c.diffuse / PI;
             // Reservoir: keep the seen-th vertex with probability L / seen.
-            lp.seen++;
-            uint slot = lp.seen <= pc.light_path_len ? lp.seen - 1u : uint(rng_next(lp.rng) * float(lp.seen));
+            seen++;
+            uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
             if (slot < pc.light_path_len) {
                 light_vertices[base + slot] = LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, s.front ? 0u : 1u, s.uv, s.material, d_vm);
-                lp.stored = min(lp.seen, pc.light_path_len);
+                stored = min(seen, pc.light_path_len);
             }
             if (VCM_CONNECTS && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
                 connect_to_camera(s.p, ns_f, ng_f, wi, c, beta, sigma_in, d_vcm, d_vc, k.vm, stats);
             }
         }
         if (pc.max_depth != 0u && depth + 1u >= pc.max_depth) {
-            LIGHT_PATH_END; // no longer light subpath can contribute
+            break; // no longer light subpath can contribute
         }
 
         // Continue by sampling the BSDF (importance transport: no eta^2 radiance scaling).
-        uint lobe = choose_lobe_drawn(m, s.uv, lp.rng);
+        uint lobe = choose_lobe_drawn(m, s.uv, rng);
         if (lobe == LOBE_DIFFUSE) {
             if (!continuous_ok) {
-                LIGHT_PATH_END;
+                break;
             }
-            float u_lobe = HAS_GLOSSY != 0u ? rng_next(lp.rng) : 0.0;
-            float u1 = rng_next(lp.rng);
-            float u2 = rng_next(lp.rng);
+            float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
             vec3 dn;
             if (!continuous_sample(c, ns_f, wi, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
-                LIGHT_PATH_END;
+                break;
             }
             // f is symmetric, so the adjoint BSDF is f itself (up to the shading-normal factor
             // below); the reverse pdf samples wi from dn, 0 below the shading hemisphere.
             float pdf_fwd_w, pdf_rev_w;
             vec3 f = continuous_eval(c, ns_f, wi, dn, pdf_fwd_w, pdf_rev_w);
             if (pdf_fwd_w <= 0.0) {
-                LIGHT_PATH_END;
+                break;
             }
             float cos_out = dot(dn, ns_f);
             beta *= f * (cos_out / pdf_fwd_w);
@@ -305,15 +262,15 @@ bool light_path_step(inout LightPath lp, VcmFactors k, inout uvec2 stats) {
         } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
             // Rough glass (importance: no eta^2), never connected: as bdpt_camera.comp.
             float eta = s.front ? 1.0 / m.ior : m.ior;
-            float u_sel = rng_next(lp.rng);
-            float u1 = rng_next(lp.rng);
-            float u2 = rng_next(lp.rng);
+            float u_sel = rng_next(rng);
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
             vec3 dn;
             float weight, pdf_fwd_w, pdf_rev_w;
             bool refracted;
             if (!rough_dielectric_sample_world(ns_f, wi, eta, glass_alpha(m, s.uv), false, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
                 || (dot(dn, ng_f) > 0.0) == refracted) {
-                LIGHT_PATH_END;
+                break;
             }
             beta *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
             d_vcm = 0.0;
@@ -328,7 +285,7 @@ bool light_path_step(inout LightPath lp, VcmFactors k, inout uvec2 stats) {
                 float eta = s.front ? 1.0 / m.ior : m.ior;
                 float scale;
                 bool refracted;
-                dn = sample_dielectric(d, ns_f, eta, rng_next(lp.rng), scale, refracted);
+                dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
                 if (refracted) {
                     beta *= glass_tint(m, s.uv);
                 }
@@ -346,45 +303,22 @@ bool light_path_step(inout LightPath lp, VcmFactors k, inout uvec2 stats) {
         o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);
 
         if (depth >= pc.rr_depth) {
-            float q = min(max3(beta) / lp.beta0, 0.95);
-            if (q <= 0.0 || rng_next(lp.rng) >= q) {
-                LIGHT_PATH_END;
+            float q = min(max3(beta) / beta0, 0.95);
+            if (q <= 0.0 || rng_next(rng) >= q) {
+                break;
             }
             beta /= q;
         }
     }
-    lp.depth = depth + 1u;
-    lp.beta = beta;
-    lp.o = o;
-    lp.d = d;
-    lp.d_vcm = d_vcm;
-    lp.d_vc = d_vc;
-    lp.d_vm = d_vm;
-    lp.sigma_near = sigma_near;
-    return true;
+    light_counts[path] = uvec2(stored, seen);
+    lvc_offsets[path] = stored;
+    ADD_TRAVERSAL_COUNTS(render_stats);
 }
-#undef LIGHT_PATH_END
 
 void main() {
-    // Paths gid, gid + n, ... of the launch's n invocations, one loop of bounces: where a path
-    // ends the next one starts in the following iteration (its counts and vertices are the
-    // same whichever invocation runs it: every random number follows the path's index).
-    uint n = gl_NumWorkGroups.x * PT_WG_SIZE;
-    VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
-    uvec2 stats = uvec2(0u);
-    LightPath lp;
-    uint next = gl_GlobalInvocationID.x;
-    bool live = false;
-    for (;;) {
-        if (live) {
-            live = light_path_step(lp, k, stats);
-        } else if (next < pc.light_path_total) {
-            live = light_path_begin(next, k, lp);
-            next += n;
-        } else {
-            break;
-        }
+    uint path = gl_GlobalInvocationID.x;
+    if (path < pc.light_path_total) {
+        light_path(path);
     }
     shadow_queue_finish(shadow_queued);
-    ADD_TRAVERSAL_COUNTS(render_stats);
 }

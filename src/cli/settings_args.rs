@@ -96,11 +96,6 @@ pub struct SettingsArgs {
     /// for scenes with smooth mirrors or glass (the faster there, measured on the H200).
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub path_regeneration: String,
-    /// BDPT and VCM: light paths each thread of the light pass runs one after another,
-    /// starting the next where one ends; the image is the same. auto: 1 (on GPUs, at least
-    /// 2^17 threads are kept).
-    #[arg(long, default_value = "auto", value_name = "auto|N")]
-    pub light_paths_per_invocation: String,
     /// pt-nee: trace each light sample's shadow ray in the next step, through the same trace
     /// call as the path's extension rays (on), or where it is drawn (off); the image is the
     /// same. auto: on GPUs, except over the compressed wide BVH in scenes with only diffuse
@@ -159,13 +154,6 @@ impl SettingsArgs {
             "on" => Some(true),
             "off" => Some(false),
             other => bail!("--path-regeneration {other}: auto | on | off"),
-        };
-        s.light_paths_per_invocation = match self.light_paths_per_invocation.as_str() {
-            "auto" => None,
-            n => match n.parse::<u32>() {
-                Ok(n) if (1..=64).contains(&n) => Some(n),
-                _ => bail!("--light-paths-per-invocation {n}: auto or a count from 1 to 64"),
-            },
         };
         s.one_trace = match self.one_trace.as_str() {
             "auto" => None,

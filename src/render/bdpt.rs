@@ -105,44 +105,7 @@ pub struct Bdpt {
     /// The shadow-ray queue of the camera pass and of the light pass's joins to the camera
     /// (`--shadow-queue`), if any.
     queue: Option<(super::shadow_queue::ShadowQueueTracer, super::ShadowQueue)>,
-    /// Light paths an invocation of the light pass runs one after another, regenerating,
-    /// and whether its launch keeps a floor (`light_launch`).
-    light_paths_per_invocation: (u32, bool),
 }
-
-/// Invocations that run a light pass of `paths` light paths, `per_invocation` of them each
-/// (the last ones fewer), with `floor`, never fewer than `MIN_LIGHT_INVOCATIONS` (or
-/// `paths`): a launch that does not fill the GPU loses more than regeneration wins.
-fn light_launch(paths: u32, per_invocation: u32, floor: bool) -> u32 {
-    let n = paths.div_ceil(per_invocation.max(1));
-    if floor {
-        n.max(paths.min(MIN_LIGHT_INVOCATIONS))
-    } else {
-        n
-    }
-}
-
-/// See `light_launch`: 2^17, about 1.5 times what an H200 keeps resident of the light kernel.
-const MIN_LIGHT_INVOCATIONS: u32 = 1 << 17;
-
-/// Light paths per invocation of the light pass and whether `light_launch` keeps its floor:
-/// the setting as given (no floor), else `BIDIR_LIGHT_PATHS_PER_INVOCATION` if set (a
-/// measuring aid), else `DEFAULT_LIGHT_PATHS_PER_INVOCATION` on GPUs, with the floor, and 1
-/// on CPU devices (llvmpipe runs lanes masked, where regeneration cannot pay).
-fn light_paths_per_invocation(ctx: &Context, setting: Option<u32>) -> (u32, bool) {
-    if let Some(n) = setting {
-        return (n.max(1), false);
-    }
-    match std::env::var("BIDIR_LIGHT_PATHS_PER_INVOCATION").ok().and_then(|v| v.parse::<u32>().ok()) {
-        Some(n) if n >= 1 => (n, true),
-        _ if super::defaults::on_cpu(ctx) => (1, true),
-        _ => (DEFAULT_LIGHT_PATHS_PER_INVOCATION, true),
-    }
-}
-
-/// Light paths per invocation of the light pass on GPUs (not yet measured on the H200: 1, a
-/// path per invocation as before).
-const DEFAULT_LIGHT_PATHS_PER_INVOCATION: u32 = 1;
 
 /// What `--integrator vcm` adds to BDPT with the light vertex cache.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -274,7 +237,6 @@ impl Bdpt {
             max_camera_samples: camera_samples,
             vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
             queue,
-            light_paths_per_invocation: light_paths_per_invocation(ctx, settings.light_paths_per_invocation),
         })
     }
 
@@ -311,13 +273,9 @@ impl Bdpt {
         }
         let total = push.light_path_total;
         assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
-        let (per_invocation, floor) = self.light_paths_per_invocation;
-        let groups = self.light.groups_for(light_launch(total, per_invocation, floor));
-        rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [groups, 1, 1])?;
+        rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
         if let Some((tracer, _)) = &self.queue {
-            // Every invocation launched runs light paths (their stride is the launch's size),
-            // so each one's queue is splatted.
-            tracer.record_splats(rec, &binds, groups * abi::PT_WG_SIZE, groups)?;
+            tracer.record_splats(rec, &binds, total, self.light.groups_for(total))?;
         }
         if let Some(lvc) = &self.lvc {
             lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;

@@ -214,10 +214,6 @@ pub struct RenderSettings {
     /// (`--path-regeneration`); `None` takes [`default_path_regeneration`]. Either gives the
     /// same image.
     pub path_regeneration: Option<bool>,
-    /// BDPT's and VCM's light pass: light paths an invocation runs one after another, the
-    /// next started where one ends (`--light-paths-per-invocation`); `None` takes the
-    /// default (`bdpt::light_paths_per_invocation`). Any count gives the same image.
-    pub light_paths_per_invocation: Option<u32>,
     /// pt-nee: trace the light sample's shadow ray in the step after the one that drew it,
     /// through the same call as the extension rays (`--one-trace`); `None` takes
     /// [`default_one_trace`]. Either gives the same image.
@@ -264,7 +260,6 @@ impl RenderSettings {
             vcm_radius: vcm::VcmRadius::default(),
             vcm_alpha: 0.75,
             path_regeneration: None,
-            light_paths_per_invocation: None,
             one_trace: None,
             shadow_queue: None,
             count_traversal: false,
