@@ -521,6 +521,41 @@ exp12)
     mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/exp-$1-$2.bin"
   done
   ;;
+s13g)
+  # Session 13: the light pass regenerating paths (BIDIR_LIGHT_PATHS_PER_INVOCATION k = 1, 2,
+  # 3, 4; B = a build of fd159e5, reverted after this measurement: docs/results.md) against P
+  # (f8477ec, a light path per invocation), interleaved; images compared.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  P=.device/bidir-prev
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    echo "== cornell bdpt prev"; $T "$P" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,6p
+    for k in 1 2 3 4; do
+      echo "== cornell bdpt k=$k"; BIDIR_LIGHT_PATHS_PER_INVOCATION=$k $T "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,6p
+    done
+  done
+  for k in 0 1 2 4; do
+    if [ $k = 0 ]; then b="$P"; else b="$B"; fi
+    export BIDIR_LIGHT_PATHS_PER_INVOCATION=$([ $k = 0 ] && echo 1 || echo $k)
+    echo "== k=$k cornell vcm"; $T "$b" bench render $CB --integrator vcm --spp 1024 2>&1 | grep Msamples
+    echo "== k=$k caustic bdpt"; $T "$b" bench render $CAU --integrator bdpt --spp 256 2>&1 | grep Msamples
+    echo "== k=$k sponza bdpt"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | sed -n 1,4p
+    $T "$b" render $CB --integrator bdpt --spp 64 -o /tmp/k$k.exr > /dev/null 2>&1
+    $T "$b" render $CB --integrator vcm --spp 64 -o /tmp/v$k.exr > /dev/null 2>&1
+  done
+  unset BIDIR_LIGHT_PATHS_PER_INVOCATION
+  for k in 1 2 4; do
+    echo "== k=$k against prev: bdpt, vcm 64 spp"
+    "$B" diff /tmp/k$k.exr /tmp/k0.exr 2>&1 | grep -iE "rmse"; "$B" diff /tmp/v$k.exr /tmp/v0.exr 2>&1 | grep -iE "rmse"
+  done
+  for t in 0.1 1; do
+    echo "== cornell bdpt --time $t"; $T "$B" render $CB --integrator bdpt --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+  done
+  "$B" info --kernels 2>&1 | grep -E "^bdpt:lvc=1 " | head -2
+  ;;
+
 s13f)
   # Session 13: budgeted passes grow at most 4x the longest measured (or to a quarter of the
   # budget): B against P (54ab3b4, passes sized by the model alone), fresh processes, 0.1 s,
