@@ -14,7 +14,7 @@
 // - SAMPLING_ROUGH_GLASS / SAMPLING_ROUGH_GLASS_EVAL: the rough dielectric (rough_dielectric.glsl).
 // - SAMPLING_ENV: env_sample over the bound environment, out[2i] = (direction, its pdf_w),
 //   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
-// - SAMPLING_RNG: rng.glsl's numbers themselves, for tests/sampling_rng.rs's bit-for-bit
+// - SAMPLING_RNG: rng.glsl's numbers themselves, for tests/sampling.rs's bit-for-bit
 //   comparison with its CPU twin (the kernel created with the sampler to test).
 // Uniform numbers come from rng.glsl (the independent sampler unless the kernel is created
 // with another), as in the integrators.

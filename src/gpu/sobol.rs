@@ -48,9 +48,9 @@ pub fn sobol(index: u32, dim: usize) -> u32 {
 /// The masks of [`superset_xor`]'s five steps: the bit positions whose bit `h` is clear.
 const SUPERSET_MASKS: [(u32, u32); 5] = [(1, 0x5555_5555), (2, 0x3333_3333), (4, 0x0f0f_0f0f), (8, 0x00ff_00ff), (16, 0x0000_ffff)];
 
-/// Bit i of the result is the xor of the bits k of `x` whose positions contain i's (k & i ==
-/// i): five shift-and-xor steps, one per bit of the position (the binary "superset" or
-/// zeta transform).
+/// Bit i of the result is the xor of the bits k of `x` whose positions k contain i (k & i
+/// == i): five shift-and-xor steps, one per bit of a position (the binary "superset" or zeta
+/// transform).
 pub fn superset_xor(mut x: u32) -> u32 {
     for (h, m) in SUPERSET_MASKS {
         x ^= (x >> h) & m;
