@@ -247,8 +247,8 @@ fn procedural_scene_matches_cpu_hit_for_hit() {
 /// rounding there is large against the boxes (a coordinate's unit of rounding is 1/64 at
 /// 131072; the triangles are a few of those across). A slab test that precomputes the
 /// origin's product with the reciprocal direction must widen its slabs by that product's
-/// rounding (`slab_origins` in glsl/common/traverse.glsl): without the widening this scene
-/// loses hits. Every layout is checked against the CPU reference over the binary build: over
+/// rounding (`ood_near` / `ood_far` in glsl/common/traverse_bvh4.glsl; the binary kernel
+/// computes (p - o) idir instead): without the widening this scene loses hits. Every layout is checked against the CPU reference over the binary build: over
 /// the compressed wide build's own source tree the reference (obvhs' BVH2 traversal,
 /// `CpuTracer`) misses a hit here that it finds over the binary build and that every GPU
 /// layout finds (session 12; obvhs' slab test, not bidir's, left for later).

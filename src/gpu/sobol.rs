@@ -1,6 +1,7 @@
 //! Sobol' direction numbers for the first four dimensions (Joe & Kuo's primitive
-//! polynomials and initial values), computed once here and injected into GLSL by build.rs as
-//! `SOBOL_DIRECTIONS`. Kernels use them for Owen-scrambled Sobol' sampling (Burley 2020,
+//! polynomials and initial values) and the kernels' `sobol_point` made from them ([`glsl`],
+//! written by build.rs into `bidir_sobol.glsl`). Kernels use it for Owen-scrambled Sobol'
+//! sampling (Burley 2020,
 //! "Practical Hash-based Owen Scrambling"): each group of four dimensions gets its own
 //! shuffled index and scrambled values, so any number of dimensions stays uniformly
 //! distributed (unbiased) while each 4D group keeps Sobol's stratification.
