@@ -210,25 +210,25 @@ gpu_consts! {
     pub const SAMPLING_EMITTER: u32 = 2;
     pub const SAMPLING_DIELECTRIC: u32 = 3;
     /// continuous_sample for the BSDF in the push (`a`: wo, `b`: shading normal, `c`..`e`:
-    /// its parameters): out[2i] = (wi, 1 if sampled else 0), out[2i + 1] = (f cos / pdf_fwd_w
+    /// its parameters): `out[2i]` = (wi, 1 if sampled else 0), `out[2i + 1]` = (f cos / pdf_fwd_w
     /// (rgb), pdf_fwd_w).
     pub const SAMPLING_GLOSSY: u32 = 4;
-    /// continuous_eval of direction pairs in[2i] = wo, in[2i + 1] = wi: out[2i] =
-    /// (f(wo, wi), pdf_fwd_w), out[2i + 1] = (f(wi, wo), pdf_rev_w).
+    /// continuous_eval of direction pairs `in[2i]` = wo, `in[2i + 1]` = wi: `out[2i]` =
+    /// (f(wo, wi), pdf_fwd_w), `out[2i + 1]` = (f(wi, wo), pdf_rev_w).
     pub const SAMPLING_GLOSSY_EVAL: u32 = 5;
     /// Environment sampling: (direction, pdf_w) per sample, then the pdf looked up again.
     pub const SAMPLING_ENV: u32 = 6;
     /// rough_dielectric_sample_world for wo `a.xyz`, shading normal `b.xyz`, eta `c.x`, alpha
-    /// `c.y`, radiance if `c.z` > 0: out[2i] = (wi, 1 if sampled else 0), out[2i + 1] =
+    /// `c.y`, radiance if `c.z` > 0: `out[2i]` = (wi, 1 if sampled else 0), `out[2i + 1]` =
     /// (weight f |cos| / pdf_fwd_w, pdf_fwd_w, pdf_rev_w, 1 if refracted).
     pub const SAMPLING_ROUGH_GLASS: u32 = 7;
-    /// The rough dielectric of direction pairs in[2i] = wo, in[2i + 1] = wi (parameters as
-    /// SAMPLING_ROUGH_GLASS, local frame of `b.xyz`): out[2i] = (f radiance, f importance,
-    /// pdf_fwd_w, pdf_rev_w), out[2i + 1] = the same for the pair swapped.
+    /// The rough dielectric of direction pairs `in[2i]` = wo, `in[2i + 1]` = wi (parameters as
+    /// SAMPLING_ROUGH_GLASS, local frame of `b.xyz`): `out[2i]` = (f radiance, f importance,
+    /// pdf_fwd_w, pdf_rev_w), `out[2i + 1]` = the same for the pair swapped.
     pub const SAMPLING_ROUGH_GLASS_EVAL: u32 = 8;
     /// rng.glsl itself, under the kernel's SPEC_SAMPLER: invocation i draws the first 16
-    /// numbers (rng_next_uint) of pixel i / 8 and sample index in[i].x (as bits), out[4i ..
-    /// 4i + 3] holding them as bits.
+    /// numbers (rng_next_uint) of pixel i / 8 and sample index `in[i].x` (as bits),
+    /// `out[4i .. 4i + 3]` holding them as bits.
     pub const SAMPLING_RNG: u32 = 9;
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups

@@ -27,7 +27,7 @@ use crate::vk::Context;
 /// (339.9 against 365.6 ms), but slower on the Cornell box (256.4 against 206.0), the punctual
 /// lamp and a million-triangle scene, level elsewhere; no scene size separates them
 /// (docs/traversal.md, "The node step as the driver compiles it").
-/// [`Renderer::switch_integrator`] rebuilds the renderer where a switch changes this choice.
+/// [`Renderer::switch_integrator`](crate::render::Renderer::switch_integrator) rebuilds the renderer where a switch changes this choice.
 pub fn default_bvh_layout(on_cpu: bool, integrator: Integrator, features: &SceneFeatures, queued: bool) -> BvhLayout {
     if on_cpu {
         return BvhLayout::Cwbvh;

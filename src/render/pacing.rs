@@ -18,7 +18,7 @@ pub struct PassModel {
 
 /// How many times longer than the longest pass measured a budgeted pass may be
 /// ([`PassModel::spp_within_budget`]).
-pub const MAX_PASS_GROWTH: f64 = 4.0;
+const MAX_PASS_GROWTH: f64 = 4.0;
 
 impl PassModel {
     /// Whether at least one pass has been measured.
@@ -64,7 +64,7 @@ impl PassModel {
     }
 
     /// As [`spp_within`](Self::spp_within) for a pass of a time budget of `budget` seconds
-    /// with `seconds` left: the pass also takes at most [`MAX_PASS_GROWTH`] times the longest
+    /// with `seconds` left: the pass also takes at most `MAX_PASS_GROWTH` (4) times the longest
     /// pass measured, or a quarter of the budget if that is more. A model fitted to small
     /// passes, extrapolated to a pass many times their size, ran 13 % long on the H200 (the
     /// caustic scene at 128², 0.1 s: fitted to passes of 1 and 61 spp, a last pass of 1,491
