@@ -136,6 +136,24 @@ fn image_round_trip_and_kernel() {
     finish(ctx);
 }
 
+/// A context compiles a kernel once per source and specialisation: asking again gives the same
+/// pipeline (a renderer made again compiles nothing), other constants or another source a new
+/// one; the context still closes cleanly with kernels cached.
+#[test]
+fn kernels_are_compiled_once_per_specialisation() {
+    let ctx = gpu();
+    let spec = |value| [bidir::vk::Spec { id: abi::SPEC_SAMPLER, value }];
+    let a = ctx.create_kernel(&kernels::SAMPLING, &spec(8)).unwrap();
+    let b = ctx.create_kernel(&kernels::SAMPLING, &spec(8)).unwrap();
+    let c = ctx.create_kernel(&kernels::SAMPLING, &spec(2)).unwrap();
+    let d = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
+    assert!(a.same_pipeline(&b), "the same kernel and constants were compiled twice");
+    assert!(!a.same_pipeline(&c), "other constants reused a pipeline");
+    assert!(!a.same_pipeline(&d) && d.same_pipeline(&ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap()));
+    drop((a, b, c, d));
+    finish(ctx);
+}
+
 #[test]
 fn dispatch_rejects_wrong_bindings_and_push_constants() {
     let ctx = gpu();

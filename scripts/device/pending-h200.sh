@@ -521,6 +521,144 @@ exp12)
     mkdir -p "$OUT/cache" && cp $D/GLCache/*/*/*.bin "$OUT/cache/exp-$1-$2.bin"
   done
   ;;
+s14c)
+  # Session 14: Sobol' dimensions 2 and 3 as 8 and 9 shift-and-xor steps and a bit reversal
+  # (src/gpu/sobol.rs STEPS; the same numbers bit for bit) instead of a test per index bit,
+  # and kernels compiled once per context and specialisation. B against BASE (f546c54),
+  # interleaved; images compared; time-budgeted renders against the sharper reference.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for v in $BASE $B; do
+      echo "== cornell pt-nee $(basename $v)"
+      $T $v bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples" | head -1
+      echo "== cornell bdpt $(basename $v)"
+      $T $v bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,4p
+      for i in bdpt pt-nee; do
+        echo "== sponza $i $(basename $v)"
+        $T $v bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples|camera|light" | head -3
+      done
+    done
+  done
+  for v in $BASE $B; do
+    for i in pt bdpt:full vcm; do
+      echo "== cornell $i $(basename $v)"
+      $T $v bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    done
+    for i in pt-nee bdpt; do
+      echo "== caustic $i $(basename $v)"
+      $T $v bench render $CAU --width 256 --height 256 --integrator $i --spp 256 2>&1 | grep -E "Msamples" | head -1
+    done
+    echo "== sponza bdpt --bvh bvh4 $(basename $v)"
+    $T $v bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  for b in "$BASE" "$B"; do
+    n=$(basename $b)
+    $T $b render --integrator pt-nee --spp 64 -o /tmp/$n-p.exr > /dev/null 2>&1
+    $T $b render --integrator bdpt --spp 16 -o /tmp/$n-b.exr > /dev/null 2>&1
+    $T $b render --integrator vcm --spp 16 -o /tmp/$n-v.exr > /dev/null 2>&1
+    $T $b render "$SP" --sponza-sun-sky --camera CameraMain --width 320 --height 180 --integrator bdpt --spp 4 -o /tmp/$n-s.exr > /dev/null 2>&1
+  done
+  echo "== B against BASE: pt-nee 64 spp, bdpt 16, vcm 16, Sponza bdpt 4"
+  for k in p b v s; do "$BASE" diff /tmp/bidir-$k.exr /tmp/bidir-base-$k.exr 2>&1 | grep -iE "rmse"; done
+  for t in 0.1 1; do
+    for i in pt-nee bdpt; do
+      for b in "$B" "$BASE" "$B"; do
+        echo "== cornell $i --time $t $(basename "$b")"; $T "$b" render $CB --integrator $i --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+    done
+    for i in pt-nee bdpt; do
+      echo "== caustic $i --time $t $(basename "$B")"; $T "$B" render $CAU --width 128 --height 128 --integrator $i --time $t --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+  done
+  for b in "$BASE" "$B"; do
+    echo "== kernels $(basename $b)"
+    $T $b info --kernels 2>&1 | grep -E "^(pt-nee|bdpt:lvc=1) " | head -6
+  done
+  ;;
+s14b)
+  # Session 14: the Sobol' tables by bytes (bidir-byte: 4 lookups in 4 KiB a dimension) against
+  # by nibbles (B: 8 lookups in 512 bytes a dimension, every lookup within one 64-byte run) and
+  # BASE (f546c54, a test per index bit), interleaved: s14a found the byte tables faster on the
+  # Cornell box and slower on Sponza.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 60"
+  V="$BASE .device/bidir-byte $B"
+  for r in 1 2; do
+    for v in $V; do
+      echo "== cornell pt-nee $(basename $v)"
+      $T $v bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples" | head -1
+      echo "== cornell bdpt $(basename $v)"
+      $T $v bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,4p
+      for i in bdpt pt-nee; do
+        echo "== sponza $i $(basename $v)"
+        $T $v bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples|camera|light" | head -3
+      done
+    done
+  done
+  for v in $BASE $B; do
+    for i in pt vcm; do
+      echo "== cornell $i $(basename $v)"
+      $T $v bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    done
+    for i in pt-nee bdpt; do
+      echo "== caustic $i $(basename $v)"
+      $T $v bench render $CAU --integrator $i --spp 256 2>&1 | grep -E "Msamples" | head -1
+    done
+  done
+  ;;
+s14a)
+  # Session 14: Sobol' dimensions 2 and 3 from byte tables (four lookups in an 8 KiB buffer
+  # instead of a test per index bit; the same numbers bit for bit): B against BASE (f546c54),
+  # interleaved; B with --sampler independent as the bound of what the Sobol' points cost.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for v in "$BASE" "$B" "$B --sampler independent"; do
+      echo "== cornell pt-nee $(basename $v)"
+      $T $v bench render $CB --integrator pt-nee --spp 1024 --warmup 2 --runs 5 2>&1 | grep -E "Msamples" | head -1
+      echo "== cornell bdpt $(basename $v)"
+      $T $v bench render $CB --integrator bdpt --spp 1024 --warmup 2 --runs 5 2>&1 | sed -n 1,6p
+    done
+  done
+  for v in "$BASE" "$B"; do
+    for i in pt vcm; do
+      echo "== cornell $i $(basename $v)"
+      $T $v bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    done
+    for i in pt-nee bdpt; do
+      echo "== caustic $i $(basename $v)"
+      $T $v bench render $CAU --integrator $i --spp 256 2>&1 | grep -E "Msamples" | head -1
+      echo "== sponza $i $(basename $v)"
+      $T $v bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+    done
+  done
+  for b in "$BASE" "$B"; do
+    n=$(basename $b)
+    $T $b render --integrator pt-nee --spp 64 -o /tmp/$n-p.exr > /dev/null 2>&1
+    $T $b render --integrator bdpt --spp 16 -o /tmp/$n-b.exr > /dev/null 2>&1
+    $T $b render --integrator vcm --spp 16 -o /tmp/$n-v.exr > /dev/null 2>&1
+  done
+  echo "== B against BASE: pt-nee 64 spp, bdpt 16, vcm 16"
+  for k in p b v; do "$BASE" diff /tmp/bidir-$k.exr /tmp/bidir-base-$k.exr 2>&1 | grep -iE "rmse"; done
+  for t in 0.1 1; do
+    for i in pt-nee bdpt; do
+      for b in "$B" "$B"; do
+        echo "== cornell $i --time $t $(basename "$b")"; $T "$b" render $CB --integrator $i --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+    done
+  done
+  for b in "$BASE" "$B"; do
+    echo "== kernels $(basename $b)"
+    $T $b info --kernels 2>&1 | grep -E "^(pt-nee|bdpt:lvc=1) " | head -6
+  done
+  ;;
 s13g)
   # Session 13: the light pass regenerating paths (BIDIR_LIGHT_PATHS_PER_INVOCATION k = 1, 2,
   # 3, 4; B = a build of fd159e5, reverted after this measurement: docs/results.md) against P

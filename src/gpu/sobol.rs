@@ -46,51 +46,87 @@ pub fn sobol(index: u32, dim: usize) -> u32 {
     (0..32).filter(|k| (index >> k) & 1 == 1).fold(0, |x, k| x ^ v[dim][k])
 }
 
-/// The masks of [`superset_xor`]'s five steps: the bit positions whose bit `h` is clear.
-const SUPERSET_MASKS: [(u32, u32); 5] = [(1, 0x5555_5555), (2, 0x3333_3333), (4, 0x0f0f_0f0f), (8, 0x00ff_00ff), (16, 0x0000_ffff)];
+/// Steps `x ^= (x >> h) & m` that, followed by a bit reversal, compute dimensions 1, 2 and 3
+/// from the index ([`shift_xor`]): each generator matrix factors into these few steps.
+///
+/// Dimension 1's matrix is Pascal's triangle mod 2 (m_k = (1 + 2)^(k - 1), carry-less), so bit
+/// 31 - i of its point is the xor of the index bits k with C(k, i) odd, i.e. (Lucas) with k
+/// containing i: five steps, one per bit of a position, the binary "superset" (zeta)
+/// transform. In general (session 14) the matrix of a dimension with primitive polynomial p
+/// of degree s rewrites the index as a polynomial in base q, q the reciprocal of p (1 + z for
+/// dimension 1, 1 + z + z^2 for 2, 1 + z + z^3 for 3), followed by one fix-up step within each
+/// s-bit digit; as q^(2^b) = q(z^(2^b)) over GF(2), the base change splits level by level into
+/// block steps on h = 2^b-bit parts: two per level for dimension 2 (8 steps with the fix-up
+/// merged), three for dimension 3 (12, shortened to 9 by an SMT search over the masks with the
+/// shifts fixed). Every step is linear, so agreeing with the matrix product on the 32 one-bit
+/// indices (the tests below) proves them equal on all 2^32.
+pub const STEPS: [&[(u32, u32)]; SOBOL_DIMS] = [
+    &[],
+    &[(1, 0x5555_5555), (2, 0x3333_3333), (4, 0x0f0f_0f0f), (8, 0x00ff_00ff), (16, 0x0000_ffff)],
+    &[
+        (8, 0x00ff_ff00),
+        (16, 0x0000_00ff),
+        (4, 0x0ff0_0ff0),
+        (8, 0x000f_000f),
+        (2, 0x3c3c_3c3c),
+        (4, 0x0303_0303),
+        (1, 0x3333_3333),
+        (3, 0x1111_1111),
+    ],
+    &[
+        (24, 0x0000_00ff),
+        (16, 0x0000_fffe),
+        (8, 0x0000_1ffe),
+        (12, 0x0000_0fff),
+        (4, 0x0e07_e07e),
+        (6, 0x0303_f03f),
+        (2, 0x0e38_e38e),
+        (3, 0x071c_71c7),
+        (1, 0x4924_9249),
+    ],
+];
 
-/// Bit i of the result is the xor of the bits k of `x` whose positions k contain i (k & i
-/// == i): five shift-and-xor steps, one per bit of a position (the binary "superset" or zeta
-/// transform).
-pub fn superset_xor(mut x: u32) -> u32 {
-    for (h, m) in SUPERSET_MASKS {
+/// `x` through `steps` (`x ^= (x >> h) & m` each, in order).
+pub fn shift_xor(mut x: u32, steps: &[(u32, u32)]) -> u32 {
+    for &(h, m) in steps {
         x ^= (x >> h) & m;
     }
     x
 }
 
-/// Point `index` of the second dimension without its 32 direction numbers: that dimension's
-/// generator matrix is Pascal's triangle mod 2 (m_k = (1 + 2)^(k - 1), carry-less), so bit
-/// 31 - i of the point is the xor of the index bits k with C(k, i) odd, i.e. (Lucas) with k
-/// containing i: the reversed [`superset_xor`] of the index. Eleven operations where the
-/// matrix product took ~110 instructions (the H200's machine code, session 13).
-pub fn sobol_dim1(index: u32) -> u32 {
-    superset_xor(index).reverse_bits()
+/// Point `index` of dimension `dim` (< 4) as the kernels compute it: a bit reversal after
+/// [`STEPS`]`[dim]`. Equal to [`sobol`] (the matrix product) bit for bit.
+pub fn sobol_fast(index: u32, dim: usize) -> u32 {
+    shift_xor(index, STEPS[dim]).reverse_bits()
 }
 
 /// `uint sobol_point(uint index, uint dim)` for the kernels, equal bit for bit to [`sobol`]
-/// (tests/sampling.rs checks the kernels' numbers against a CPU twin): dimension 0 as a bit
-/// reversal, 1 as [`sobol_dim1`], 2 and 3 as the xor of the direction numbers of the index's
-/// set bits, each a literal under a test of its bit (a constant array indexed at run time is
-/// copied into every invocation by some drivers). The matrix product written as a multiply
-/// by each bit took ~3.5 instructions a bit on the H200 and was inlined at every call for
-/// all three dimensions; in this form pt-nee on the Cornell box runs at 1104 against 878
-/// Msamples/s, and 1077 with the bit tests written as selects (session 13, docs/results.md).
+/// (tests/sampling.rs checks the kernels' numbers against a CPU twin): [`sobol_fast`], 5, 8
+/// and 9 steps of two instructions (a shift, and a LOP3 for the mask and the xor) and a bit
+/// reversal for dimensions 1, 2 and 3, straight-line code. History (docs/results.md): the
+/// matrix product as a multiply by each index bit, ~3.5 instructions a bit on the H200, pt-nee
+/// on the Cornell box 878 Msamples/s (before session 13); dimension 1 by its five steps and 2 and 3
+/// as a literal under a test of each bit, ~2 instructions a bit, 1104 (session 13), but 64
+/// branches inlined at each of a megakernel's ~100 calls (pt_cwbvh: 354,265 words of SPIR-V,
+/// whose validation at pipeline creation cost lavapipe ~2 s); tables of the xors of 4 or 8
+/// index bits in a buffer: faster on the Cornell box, slower on Sponza and lavapipe.
 pub fn glsl() -> String {
-    let v = sobol_directions();
-    let mut s = String::from("uint sobol_point(uint index, uint dim) {\n    if (dim == 0u) {\n        return bitfieldReverse(index);\n    }\n    uint x = index;\n    if (dim == 1u) {\n");
-    for (h, m) in SUPERSET_MASKS {
-        s += &format!("        x ^= (x >> {h}u) & {m:#010x}u;\n");
-    }
-    s += "        return bitfieldReverse(x);\n    }\n    x = 0u;\n";
-    for (d, dirs) in v.iter().enumerate().skip(2) {
-        s += &format!("    if (dim == {d}u) {{\n");
-        for (k, c) in dirs.iter().enumerate() {
-            s += &format!("        if ((index & {:#010x}u) != 0u) {{\n            x ^= {c:#010x}u;\n        }}\n", 1u32 << k);
+    let mut s = String::from("uint sobol_point(uint index, uint dim) {\n    if (dim == 0u) {\n        return bitfieldReverse(index);\n    }\n    uint x = index;\n");
+    for (d, steps) in STEPS.iter().enumerate().skip(1) {
+        let last = d + 1 == SOBOL_DIMS;
+        let indent = if last { "    " } else { "        " };
+        if !last {
+            s += &format!("    if (dim == {d}u) {{\n");
         }
-        s += "    }\n";
+        for &(h, m) in steps.iter() {
+            s += &format!("{indent}x ^= (x >> {h}u) & {m:#010x}u;\n");
+        }
+        s += &format!("{indent}return bitfieldReverse(x);\n");
+        if !last {
+            s += "    }\n";
+        }
     }
-    s + "    return x;\n}\n"
+    s + "}\n"
 }
 
 #[cfg(test)]
@@ -112,17 +148,21 @@ mod tests {
         assert_eq!(d2, vec![0.0, 0.5, 0.75, 0.25, 0.375, 0.875, 0.625, 0.125]);
     }
 
-    /// The second dimension's shortcut is its matrix product, for every bit alone and for
+    /// The kernels' steps are the matrix product for every bit alone (which, the steps being
+    /// linear over GF(2), proves them equal everywhere) and, as a check of that argument, for
     /// random indices.
     #[test]
-    fn dimension_1_is_the_reversed_superset_transform() {
-        for k in 0..32 {
-            assert_eq!(sobol_dim1(1 << k), sobol(1 << k, 1), "index bit {k}");
-        }
-        let mut x = 0x1234_5678u32;
-        for _ in 0..100_000 {
-            x = x.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
-            assert_eq!(sobol_dim1(x), sobol(x, 1), "index {x:#x}");
+    fn steps_are_the_matrix_product() {
+        for d in 0..SOBOL_DIMS {
+            assert_eq!(sobol_fast(0, d), 0, "dimension {d}, index 0");
+            for k in 0..32 {
+                assert_eq!(sobol_fast(1 << k, d), sobol(1 << k, d), "dimension {d}, index bit {k}");
+            }
+            let mut x = 0x1234_5678u32;
+            for _ in 0..20_000 {
+                x = x.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+                assert_eq!(sobol_fast(x, d), sobol(x, d), "dimension {d}, index {x:#x}");
+            }
         }
     }
 

@@ -124,18 +124,18 @@ impl<'a> Recorder<'a> {
         // SAFETY: recording state; every handle is live for the submission (the caller's
         // borrows outlive `Context::submit`, which waits for completion).
         unsafe {
-            d.cmd_bind_pipeline(self.cmd, vk::PipelineBindPoint::COMPUTE, kernel.pipeline);
+            d.cmd_bind_pipeline(self.cmd, vk::PipelineBindPoint::COMPUTE, kernel.0.pipeline);
             if !writes.is_empty() {
                 self.shared.push_descriptor.cmd_push_descriptor_set(
                     self.cmd,
                     vk::PipelineBindPoint::COMPUTE,
-                    kernel.pipeline_layout,
+                    kernel.0.pipeline_layout,
                     0,
                     &writes,
                 );
             }
             if !push.is_empty() {
-                d.cmd_push_constants(self.cmd, kernel.pipeline_layout, vk::ShaderStageFlags::COMPUTE, 0, push);
+                d.cmd_push_constants(self.cmd, kernel.0.pipeline_layout, vk::ShaderStageFlags::COMPUTE, 0, push);
             }
             d.cmd_dispatch(self.cmd, groups[0], groups[1], groups[2]);
         }

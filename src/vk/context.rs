@@ -168,6 +168,8 @@ pub struct Context {
     pub(crate) shared: Arc<Shared>,
     log: Arc<ValidationLog>,
     devices: Arc<Vec<DeviceInfo>>,
+    /// Every kernel built on this device, by source and specialisation (`create_kernel`).
+    pub(crate) kernels: Arc<std::sync::Mutex<std::collections::HashMap<super::kernel::KernelKey, super::kernel::Kernel>>>,
 }
 
 impl Context {
@@ -231,7 +233,7 @@ impl Context {
                 };
                 shared.name(queue, "bidir.queue");
                 shared.name(pool, "bidir.command_pool");
-                Ok(Context { shared: Arc::new(shared), log, devices: Arc::new(infos) })
+                Ok(Context { shared: Arc::new(shared), log, devices: Arc::new(infos), kernels: Default::default() })
             }
             Err(e) => {
                 destroy_instance(&parts);
@@ -259,7 +261,11 @@ impl Context {
     /// those emitted during destruction (leaked objects). Fails if GPU objects made from this
     /// context are still alive.
     pub fn close(self) -> Result<Vec<String>> {
-        let Context { shared, log, .. } = self;
+        let Context { shared, log, kernels, .. } = self;
+        // The cached kernels hold the device: drop them first (those still in use elsewhere
+        // keep it alive, and are reported below).
+        kernels.lock().unwrap_or_else(|e| e.into_inner()).clear();
+        drop(kernels);
         match Arc::try_unwrap(shared) {
             Ok(shared) => drop(shared),
             Err(shared) => return Err(VkError::LiveObjects(Arc::strong_count(&shared) - 1)),

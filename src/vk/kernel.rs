@@ -29,8 +29,15 @@ impl KernelSource {
     }
 }
 
-/// A compiled compute pipeline.
-pub struct Kernel {
+/// A compiled compute pipeline. Clones share it: a [`Context`] compiles each kernel once
+/// per specialisation and hands the same pipeline to every later `create_kernel` asking for it
+/// (a renderer created again with the same settings compiles nothing; on lavapipe under the
+/// validation layers a megakernel's pipeline takes 1-3 s to create).
+#[derive(Clone)]
+pub struct Kernel(pub(crate) Arc<Compiled>);
+
+/// What a [`Kernel`] shares: the pipeline and what was read from its SPIR-V.
+pub(crate) struct Compiled {
     shared: Arc<Shared>,
     name: String,
     pub(crate) set_layout: vk::DescriptorSetLayout,
@@ -57,19 +64,20 @@ impl Kernel {
     /// empty unless the context was created with `ContextOptions::kernel_statistics` on a
     /// device that offers them (`DeviceInfo::kernel_statistics`).
     pub fn statistics(&self) -> Result<Vec<KernelStatistic>> {
-        let Some(pe) = &self.shared.pipeline_executables else { return Ok(Vec::new()) };
+        let Some(pe) = &self.0.shared.pipeline_executables else { return Ok(Vec::new()) };
         let text = |c: &[std::ffi::c_char]| {
             // SAFETY: the driver writes NUL-terminated strings into these fixed-size arrays.
             unsafe { std::ffi::CStr::from_ptr(c.as_ptr()) }.to_string_lossy().into_owned()
         };
-        let info = vk::PipelineInfoKHR::default().pipeline(self.pipeline);
+        let k = &self.0;
+        let info = vk::PipelineInfoKHR::default().pipeline(k.pipeline);
         // SAFETY: a live pipeline of this device, created with CAPTURE_STATISTICS_KHR.
-        let executables = unsafe { pe.get_pipeline_executable_properties(&info) }.ctx(|| format!("executables of kernel {}", self.name))?;
+        let executables = unsafe { pe.get_pipeline_executable_properties(&info) }.ctx(|| format!("executables of kernel {}", k.name))?;
         let mut out = Vec::new();
         for (i, exe) in executables.iter().enumerate() {
-            let ei = vk::PipelineExecutableInfoKHR::default().pipeline(self.pipeline).executable_index(i as u32);
+            let ei = vk::PipelineExecutableInfoKHR::default().pipeline(k.pipeline).executable_index(i as u32);
             // SAFETY: as above; `i` is below the executable count just returned.
-            let stats = unsafe { pe.get_pipeline_executable_statistics(&ei) }.ctx(|| format!("statistics of kernel {}", self.name))?;
+            let stats = unsafe { pe.get_pipeline_executable_statistics(&ei) }.ctx(|| format!("statistics of kernel {}", k.name))?;
             for st in &stats {
                 // SAFETY: `format` says which member of the union the driver wrote.
                 let value = unsafe {
@@ -88,27 +96,32 @@ impl Kernel {
     }
 
     pub fn name(&self) -> &str {
-        &self.name
+        &self.0.name
+    }
+    /// Whether `self` and `other` are the same compiled pipeline (one `create_kernel` result
+    /// and its clones, or a later call with the same source and constants).
+    pub fn same_pipeline(&self, other: &Kernel) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
     }
     /// Descriptor bindings the kernel uses (reflected from its SPIR-V).
     pub fn bindings(&self) -> &[ReflectedBinding] {
-        &self.bindings
+        &self.0.bindings
     }
     /// Push-constant bytes the kernel expects.
     pub fn push_size(&self) -> u32 {
-        self.push_size
+        self.0.push_size
     }
     /// `local_size_{x,y,z}` of the kernel.
     pub fn local_size(&self) -> [u32; 3] {
-        self.local_size
+        self.0.local_size
     }
     /// Workgroups needed to cover `n` invocations along x.
     pub fn groups_for(&self, n: u32) -> u32 {
-        n.div_ceil(self.local_size[0].max(1))
+        n.div_ceil(self.0.local_size[0].max(1))
     }
 }
 
-impl Drop for Kernel {
+impl Drop for Compiled {
     fn drop(&mut self) {
         if self.shared.poisoned.load(std::sync::atomic::Ordering::SeqCst) {
             return;
@@ -122,6 +135,15 @@ impl Drop for Kernel {
     }
 }
 
+/// What identifies a compiled kernel in a [`Context`]'s cache: its source (name and
+/// embedded SPIR-V) and specialisation constants.
+#[derive(Clone, PartialEq, Eq, Hash, Debug)]
+pub(crate) struct KernelKey {
+    name: &'static str,
+    spirv: (usize, usize),
+    specs: Vec<(u32, u32)>,
+}
+
 /// A specialisation constant: `layout(constant_id = id) const uint NAME = default;`.
 #[derive(Clone, Copy, Debug)]
 pub struct Spec {
@@ -130,8 +152,23 @@ pub struct Spec {
 }
 
 impl Context {
-    /// Builds the pipeline for an embedded kernel, with specialisation constants.
+    /// The pipeline for an embedded kernel, with specialisation constants: built on the first
+    /// call for this source and these constants (in this order), shared after.
     pub fn create_kernel(&self, source: &KernelSource, specs: &[Spec]) -> Result<Kernel> {
+        let key = KernelKey {
+            name: source.name,
+            spirv: (source.spirv.as_ptr() as usize, source.spirv.len()),
+            specs: specs.iter().map(|sp| (sp.id, sp.value)).collect(),
+        };
+        if let Some(k) = self.kernels.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return Ok(k.clone());
+        }
+        let kernel = Kernel(Arc::new(self.compile_kernel(source, specs)?));
+        self.kernels.lock().unwrap_or_else(|e| e.into_inner()).insert(key, kernel.clone());
+        Ok(kernel)
+    }
+
+    fn compile_kernel(&self, source: &KernelSource, specs: &[Spec]) -> Result<Compiled> {
         let s = &self.shared;
         let kerr = |msg: String| VkError::Kernel { kernel: source.name.into(), msg };
         let words = source.spirv_words();
@@ -217,7 +254,7 @@ impl Context {
             s.name(pipeline, source.name);
             s.name(pipeline_layout, &format!("{}.layout", source.name));
             s.name(set_layout, &format!("{}.set_layout", source.name));
-            Ok(Kernel {
+            Ok(Compiled {
                 shared: s.clone(),
                 name: source.name.into(),
                 set_layout,
