@@ -1,10 +1,13 @@
 //! Where BDPT must win: a glass sphere focusing a small light onto the floor
 //! (`assets/scenes/caustic`). The caustic is reached by light paths, hardly by path tracing
-//! with light sampling (its shadow rays hit the glass). At equal render time BDPT's RMSE
-//! (the default join, the light vertex cache) against a long reference render must be lower
-//! than pt-nee's; the MSE ratio is reported. (The full join was used until Sobol' was limited
-//! to a sample's first dimensions, which sped pt-nee up more than BDPT on llvmpipe: its ratio
-//! fell to 0.97-1.19 over two runs, against 1.47 for the cache.)
+//! with light sampling (its shadow rays hit the glass). At equal sample counts (a fixed seed:
+//! deterministic) BDPT's MSE (the default join, the light vertex cache) against a long
+//! reference render must be lower than pt-nee's by more than a BDPT sample costs in pt-nee
+//! samples, so that it wins at equal time. No time is measured here: the cost ratio comes from
+//! the benchmarks (`bidir render --time 1`, caustic scene 128²: 1.4 on the H200, 20,966 against
+//! 15,057 spp, docs/results.md; 1.75 on lavapipe in CI, 490 against 280 spp in 12 s), and the
+//! test asks for the larger. (Until session 14 it raced the two for 12 s on lavapipe, which
+//! made its outcome depend on the load of the machine: BDPT got 222 to 281 spp.)
 
 mod common;
 
@@ -14,7 +17,6 @@ use bidir::scene::Camera;
 use common::{finish, gpu};
 use glam::Vec3;
 use std::path::Path;
-use std::time::Duration;
 
 const SCENE: &str = "assets/scenes/caustic/caustic.obj";
 const REFERENCE: &str = "assets/scenes/caustic/reference.exr";
@@ -32,35 +34,31 @@ pub fn caustic_camera() -> Camera {
     }
 }
 
+/// BDPT's MSE per sample over pt-nee's that makes it win at equal time on every device
+/// measured (module doc).
+const COST_RATIO: f64 = 1.75;
+/// Samples per pixel of each render: ~6 s (pt-nee) and ~11 s (bdpt) on lavapipe.
+const SPP: u32 = 256;
+
 #[test]
 fn bdpt_beats_pt_nee_at_equal_time_on_a_caustic() {
     let reference = read_exr(Path::new(REFERENCE)).expect("the caustic reference is committed beside the scene");
     let scene = bidir::scene::load(Path::new(SCENE), &Default::default()).unwrap().scene;
     let cam = caustic_camera();
     let ctx = gpu();
-    // Long enough on lavapipe for a few dozen BDPT samples per pixel; GPUs get far more.
-    let time = Duration::from_secs_f64(if ctx.info().device_type == bidir::vk::PhysicalDeviceType::CPU { 12.0 } else { 1.0 });
     let mut mse = Vec::new();
     for integrator in [Integrator::PtNee, Integrator::Bdpt(Join::DEFAULT)] {
         let mut r = Renderer::new(&ctx, &scene, &cam, RenderSettings::new(integrator)).unwrap();
-        r.render_time(time, |_| {}).unwrap();
+        r.render_spp(SPP, |_| {}).unwrap();
         let img = r.image().unwrap();
         let e = metrics::rmse(&img, &reference);
         let ratio = metrics::mean_ratio(&img, &reference);
-        eprintln!(
-            "{}: {} spp in {:?}, RMSE {e:.5}, mean ratio {:.4} {:.4} {:.4}",
-            integrator.name(),
-            r.samples(),
-            time,
-            ratio[0],
-            ratio[1],
-            ratio[2]
-        );
+        eprintln!("{}: {SPP} spp, RMSE {e:.5}, mean ratio {:.4} {:.4} {:.4}", integrator.name(), ratio[0], ratio[1], ratio[2]);
         if integrator != Integrator::PtNee {
             // BDPT's mean must match the reference within its own noise: 4 standard errors of
-            // the image mean, estimated from the pixel variance. On lavapipe (~50 spp in 12 s)
-            // the bright caustic makes that a loose check (~11 %); on a GPU (thousands of spp)
-            // a tight one. BDPT's bias is tested tightly by the furnace and Cornell tests.
+            // the image mean, estimated from the pixel variance (~10 % at 256 spp: the bright
+            // caustic makes it a loose check). BDPT's bias is tested tightly by the furnace and
+            // Cornell tests.
             let px: Vec<f64> = img.data.chunks_exact(3).map(|c| (c[0] + c[1] + c[2]) as f64).collect();
             let n = px.len() as f64;
             let mean = px.iter().sum::<f64>() / n;
@@ -73,7 +71,14 @@ fn bdpt_beats_pt_nee_at_equal_time_on_a_caustic() {
         mse.push(e * e);
         drop(r);
     }
-    eprintln!("equal-time MSE ratio pt-nee / bdpt: {:.2}", mse[0] / mse[1]);
-    assert!(mse[1] < mse[0], "BDPT must beat pt-nee at equal time on the caustic (MSE {:.3e} vs {:.3e})", mse[1], mse[0]);
+    // Seeds 0 to 3 gave 2.62, 2.55, 1.98 and 2.51 (session 14).
+    let per_sample = mse[0] / mse[1];
+    eprintln!("MSE ratio pt-nee / bdpt at {SPP} spp: {per_sample:.2} (must exceed the cost ratio {COST_RATIO})");
+    assert!(
+        per_sample > COST_RATIO,
+        "BDPT's MSE per sample on the caustic is only {per_sample:.2}x below pt-nee's ({:.3e} vs {:.3e}): it would not win at equal time where a BDPT sample costs {COST_RATIO} pt-nee samples",
+        mse[1],
+        mse[0]
+    );
     finish(ctx);
 }
