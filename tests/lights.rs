@@ -339,11 +339,11 @@ fn sky_flags_refuse_what_they_cannot_do() {
     assert!(run(&["render", "--sky", "turbidity=20;sun=0,1,0", o[0], o[1]]).contains("bad turbidity"));
 }
 
-/// Emitters too weak for their scene (DamagedHelmet's emissive texture) get a hint; a room
-/// lit by its lamp (the Cornell box), a scene of bright emissive cubes and the modified
-/// Sponza's sun and sky do not.
+/// Emitters too weak for their scene (DamagedHelmet's emissive texture) get the default
+/// environment as well, and a line saying so; a room lit by its lamp (the Cornell box), a scene
+/// of bright emissive cubes and the modified Sponza's sun and sky do not.
 #[test]
-fn weak_emitters_get_a_hint() {
+fn weak_emitters_get_the_default_environment_too() {
     let threshold = bidir::scene::DIM_EMISSION_RATIO;
     let cornell = Scene::builtin_cornell_box().emitted_light_ratio().unwrap();
     eprintln!("Cornell box: emitted light ratio {cornell:.4}");
@@ -371,7 +371,24 @@ fn weak_emitters_get_a_hint() {
     let out =
         std::process::Command::new(env!("CARGO_BIN_EXE_bidir")).args(["info", samples.join(helmet).to_str().unwrap()]).output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
-    assert!(text.contains("its emitters are weak for its size") && text.contains("--env 1,1,1"), "{text}");
+    assert!(text.contains("its emitters are weak for its size") && text.contains("lit by a uniform white environment"), "{text}");
+    // ... and renders lit (its own light alone leaves it nearly black).
+    let mean = |extra: &[&str]| {
+        let exr = std::env::temp_dir().join(format!("bidir-helmet-{}-{}.exr", std::process::id(), extra.len()));
+        let model = samples.join(helmet);
+        let mut args: Vec<String> =
+            ["render", model.to_str().unwrap(), "--width", "16", "--height", "16", "--spp", "2"].iter().map(|s| s.to_string()).collect();
+        args.extend(extra.iter().map(|s| s.to_string()));
+        args.extend(["-o".to_owned(), exr.to_str().unwrap().to_owned()]);
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_bidir")).args(&args).env("BIDIR_VALIDATION", "1").output().unwrap();
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        let img = bidir::imaging::read_exr(&exr).unwrap();
+        std::fs::remove_file(&exr).unwrap();
+        img.data.iter().map(|&v| v as f64).sum::<f64>() / img.data.len() as f64
+    };
+    let (lit, own) = (mean(&[]), mean(&["--env", "none"]));
+    eprintln!("DamagedHelmet: image mean {lit:.4} by default, {own:.4} with --env none");
+    assert!(lit > 10.0 * own, "DamagedHelmet is not lit by the default environment: mean {lit} against {own} under its own light");
 }
 
 /// Parts of disjoint sample ranges merge into the whole render's alpha and AOVs.

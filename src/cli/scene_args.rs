@@ -136,8 +136,9 @@ impl SceneArgs {
         Ok(LoadedScene { scene, warnings, camera, camera_index, load_time })
     }
 
-    /// The environment `--env` asks for; without `--env`, a scene that has no emitter gets a
-    /// uniform white one of radiance 1 and a warning, so it never renders silently black.
+    /// The environment `--env` asks for; without `--env`, a scene that has no emitter, or only
+    /// emitters too weak to light it, gets a uniform white one of radiance 1 and a warning, so it
+    /// never renders silently black.
     fn environment(&self, scene: &Scene, warnings: &mut Vec<String>) -> anyhow::Result<Option<Environment>> {
         if !(self.env_scale.is_finite() && self.env_scale >= 0.0) {
             bail!("--env-scale {}: must be a finite number >= 0", self.env_scale);
@@ -155,10 +156,7 @@ impl SceneArgs {
                 warnings.push(w);
                 Some(Environment::uniform(Vec3::ONE))
             }
-            (None, None) => {
-                self.hint_if_dim(scene, warnings);
-                None
-            }
+            (None, None) => self.dim_emitters_environment(scene, warnings),
         };
         // A sun alone shines from an otherwise black sky.
         let env = match self.sun {
@@ -168,21 +166,23 @@ impl SceneArgs {
         Ok(env.map(|e| Environment { scale: self.env_scale, rotate_deg: self.env_rotate, ..e }))
     }
 
-    /// A scene lit only by emitters too weak for its size (a small emissive texture) renders
-    /// nearly black: one line says so and how to add light (its own light is kept).
-    fn hint_if_dim(&self, scene: &Scene, warnings: &mut Vec<String>) {
+    /// A scene lit only by emitters too weak for its size (DamagedHelmet's glowing visor:
+    /// 0.15 % of the light the default environment would give) renders nearly black, where a
+    /// glTF viewer shows the model under an environment: it gets the default white environment
+    /// as well as its own light, and one line says so and how to keep only its own.
+    fn dim_emitters_environment(&self, scene: &Scene, warnings: &mut Vec<String>) -> Option<Environment> {
         if !scene.punctual_lights.is_empty() || self.sun.is_some() {
-            return;
+            return None;
         }
-        if let Some(ratio) = scene.emitted_light_ratio().filter(|r| *r < bidir::scene::DIM_EMISSION_RATIO) {
-            let w = format!(
-                "{}: its emitters are weak for its size (they give it {:.2} % of the light a uniform environment of radiance 1 would) and it has no --env: the image may be nearly black (add --env 1,1,1, or --sun with --sky)",
-                scene.source,
-                100.0 * ratio
-            );
-            log::warn!("{w}");
-            warnings.push(w);
-        }
+        let ratio = scene.emitted_light_ratio().filter(|r| *r < bidir::scene::DIM_EMISSION_RATIO)?;
+        let w = format!(
+            "{}: its emitters are weak for its size (they give it {:.2} % of the light a uniform environment of radiance 1 would), no punctual light and no --env: lit by a uniform white environment of radiance 1 as well (--env none keeps only its own light)",
+            scene.source,
+            100.0 * ratio
+        );
+        log::warn!("{w}");
+        warnings.push(w);
+        Some(Environment::uniform(Vec3::ONE))
     }
 
     /// `--sky`'s map, its sun where `--sun` is (its irradiance lights the ground too).

@@ -1,9 +1,11 @@
 //! Scenes whose emitters cannot light them: a glTF model whose only emission is a small
-//! emissive texture (DamagedHelmet's glowing visor) has an emitter, so it does not get the
-//! default environment, yet renders almost black. What the user expects from such a model is
-//! what a glTF viewer shows, the model under an environment; what they asked for is the file's
-//! own light. bidir keeps the file's light and says how to add an environment (the CLI prints
-//! the hint when [`Scene::emitted_light_ratio`] is below [`DIM_EMISSION_RATIO`]).
+//! emissive texture (DamagedHelmet's glowing visor) has an emitter, yet renders almost black.
+//! What the user expects from such a model is what a glTF viewer (and the model's reference
+//! screenshot) shows, the model under an environment; glTF says nothing of the environment.
+//! Where [`Scene::emitted_light_ratio`] is below [`DIM_EMISSION_RATIO`] and there is no
+//! punctual light or sun, the CLI adds the default white environment to the file's own light
+//! and says so (`--env none` keeps only the file's light). Until session 14 it only printed a
+//! hint, and DamagedHelmet rendered as its visor on black.
 
 use super::{luminance, srgb_to_linear, Scene};
 use glam::Vec3;
