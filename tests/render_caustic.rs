@@ -54,21 +54,22 @@ fn bdpt_beats_pt_nee_at_equal_time_on_a_caustic() {
         let e = metrics::rmse(&img, &reference);
         let ratio = metrics::mean_ratio(&img, &reference);
         eprintln!("{}: {SPP} spp, RMSE {e:.5}, mean ratio {:.4} {:.4} {:.4}", integrator.name(), ratio[0], ratio[1], ratio[2]);
+        mse.push(e * e);
         if integrator != Integrator::PtNee {
-            // BDPT's mean must match the reference within its own noise: 4 standard errors of
-            // the image mean, estimated from the pixel variance (~10 % at 256 spp: the bright
-            // caustic makes it a loose check). BDPT's bias is tested tightly by the furnace and
-            // Cornell tests.
+            // BDPT's mean must match the reference within 4 standard errors of the image
+            // mean, estimated from the variance across pixels: a loose check (~11 %, the
+            // spread of the scene's own pixel values, whatever the sample count; the H200 at
+            // 8,192 spp gave 10.6 %). BDPT's bias is tested tightly by the furnace and Cornell
+            // tests.
             let px: Vec<f64> = img.data.chunks_exact(3).map(|c| (c[0] + c[1] + c[2]) as f64).collect();
             let n = px.len() as f64;
             let mean = px.iter().sum::<f64>() / n;
             let var = px.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
             let rel_se = (var / n).sqrt() / mean;
-            let r = (ratio[0] + ratio[1] + ratio[2]) / 3.0;
-            eprintln!("bdpt mean ratio {r:.4}, 4 standard errors {:.2} %", 400.0 * rel_se);
-            assert!((r - 1.0).abs() < 4.0 * rel_se, "bdpt mean ratio {r:.4} vs the caustic reference (4 sigma {:.4})", 4.0 * rel_se);
+            let m = (ratio[0] + ratio[1] + ratio[2]) / 3.0;
+            eprintln!("bdpt mean ratio {m:.4}, 4 standard errors {:.2} %", 400.0 * rel_se);
+            assert!((m - 1.0).abs() < 4.0 * rel_se, "bdpt mean ratio {m:.4} vs the caustic reference (4 sigma {:.4})", 4.0 * rel_se);
         }
-        mse.push(e * e);
         drop(r);
     }
     // Seeds 0 to 3 gave 2.62, 2.55, 1.98 and 2.51 (session 14).

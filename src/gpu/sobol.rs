@@ -111,8 +111,8 @@ pub fn sobol_fast(index: u32, dim: usize) -> u32 {
 /// whose validation at pipeline creation cost lavapipe ~2 s); tables of the xors of 4 or 8
 /// index bits in a buffer: faster on the Cornell box, slower on Sponza and lavapipe.
 pub fn glsl() -> String {
-    let mut s = String::from("uint sobol_point(uint index, uint dim) {\n    if (dim == 0u) {\n        return bitfieldReverse(index);\n    }\n    uint x = index;\n");
-    for (d, steps) in STEPS.iter().enumerate().skip(1) {
+    let mut s = String::from("uint sobol_point(uint index, uint dim) {\n    uint x = index;\n");
+    for (d, steps) in STEPS.iter().enumerate() {
         let last = d + 1 == SOBOL_DIMS;
         let indent = if last { "    " } else { "        " };
         if !last {
