@@ -18,6 +18,25 @@ float mis(float x) {
     return x * x;
 }
 
+// Light tracing for direct lighting (`--direct-light-tracing`, RenderSettings::
+// direct_light_tracing; off by default). A path of two segments, light -> x -> eye, is also
+// sampled by the camera path that hits the emitter (s = 0) and by x's light sample (s = 1), both
+// drawn from the pixel's own stratified (Owen-scrambled Sobol') dimensions; light tracing's
+// joins land on whatever pixel they project to, which no stratification reaches. The power
+// heuristic weighs strategies as if all were independent samples, and so gives light tracing
+// a share of direct lighting that costs more noise than it saves (and a shadow ray for every
+// light path's first vertex). Off, light tracing is not a strategy of these paths: its sample
+// count is 0 in their MIS weights on both ends (vcm.glsl's direct_light_tracing(); the camera
+// pass's s = 1 weights at its first vertex and s = 0 weights at its second, the light pass's
+// t = 1 joins of first vertices, which it skips), and the remaining weights of every such path
+// still sum to 1: the estimate stays unbiased. The camera path's first vertex is on a surface the
+// light sample can reach, so no two-segment path is lost (a delta surface there is never joined
+// by light tracing anyway). Cornell box, per-sample MSE against the sharper reference, without
+// it / with it: 0.88 at 16 spp, 0.77-0.81 at 64, 0.67 at 256 (lavapipe, seeds 0-2), and lower
+// also with independent samples, on the rough Cornell box and where the light hides (docs/
+// results.md, "Light tracing for direct lighting").
+layout(constant_id = SPEC_DIRECT_LIGHT_TRACING) const uint DIRECT_LIGHT_TRACING = 0u;
+
 // Importance (light-path throughput) scattered at a vertex with shading normals is not
 // symmetric with radiance: the adjoint BSDF picks up |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|)
 // (Veach 1997, section 5.3.2, eq. 5.20), wo toward the vertex the light came from, wi the

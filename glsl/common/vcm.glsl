@@ -34,6 +34,13 @@
 // once (SceneFeatures::mixed_lobes; elsewhere a path may merge at each mixed vertex it
 // leaves by a delta lobe, and merging stays in the camera pass).
 #define VCM_MERGE_DEFERRED ((VCM & VCM_MERGE_APART) != 0u)
+// 1 where light tracing (t = 1) is a strategy of the paths of two segments, light -> surface
+// -> eye, else 0 (bdpt.glsl, DIRECT_LIGHT_TRACING). VCM keeps it: its merging terms ride in the
+// same dVC as light tracing's, and that case was not worked through.
+float direct_light_tracing() {
+    return DIRECT_LIGHT_TRACING != 0u || VCM != 0u ? 1.0 : 0.0;
+}
+
 // 1 where the light subpaths' recursion counts merging at their vertices, else 0.
 float vcm_light_merge_terms() {
     return VCM_MERGE_EVERYWHERE ? 1.0 : 0.0;

@@ -129,7 +129,10 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 } else {
                     float direct_pdf_w = env.pick * e.pdf_w;
                     float emission_pdf_w = direct_pdf_w / env.disk_area;
-                    float w_camera = mis(direct_pdf_w) * d_vcm + mis(emission_pdf_w) * d_vc;
+                    // At the second vertex dVC is light tracing's term alone (bdpt.glsl,
+                    // DIRECT_LIGHT_TRACING).
+                    float lt = depth == 2u ? direct_light_tracing() : 1.0;
+                    float w_camera = mis(direct_pdf_w) * d_vcm + mis(emission_pdf_w) * lt * d_vc;
                     radiance += beta * e.le / (1.0 + w_camera);
                 }
             }
@@ -169,7 +172,10 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 // redo this vertex's solid-angle-to-area step (done above with the shading
                 // cosine) with it, or s = 0 and s = 1 would weigh the path inconsistently.
                 float to_geometric = HAS_NORMALS != 0u ? mis(cos_in / cos_l) : 1.0;
-                float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * d_vc) * to_geometric;
+                // At the second vertex dVC is light tracing's term alone (bdpt.glsl,
+                // DIRECT_LIGHT_TRACING).
+                float lt = depth == 2u ? direct_light_tracing() : 1.0;
+                float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * lt * d_vc) * to_geometric;
                 radiance += beta * material_emission(m, s.uv) / (1.0 + w_camera);
             }
         }
@@ -199,6 +205,9 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             }
         }
         if (VCM_CONNECTS && bsdf.pick > 0.0) {
+            // The light samples' dVCM: at the first vertex it is light tracing's term alone
+            // (bdpt.glsl, DIRECT_LIGHT_TRACING).
+            float d_vcm_s1 = depth == 1u ? direct_light_tracing() * d_vcm : d_vcm;
             // s = 1: the environment (probability env.pick; its "point" is a direction, the
             // cosine there is 1), a punctual light, or a fresh point on an emitter.
             float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
@@ -212,7 +221,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 if (cos_s > 0.0 && dot(ng_f, ps.w) > 0.0 && max3(ps.li) > 0.0) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, ps.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
-                    float w_camera = mis(ps.emission_over_direct * cos_s) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    float w_camera = mis(ps.emission_over_direct * cos_s) * (vm_camera + d_vcm_s1 + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * volume_transmittance(sigma_in, ps.dist) * f * ps.li * (cos_s / (env.punctual_pick * ps.pick * (1.0 + w_camera)));
                     if (max3(c) > 0.0 && shadow_clear_now(punctual_shadow_ray(s.p, ng_f, ps), c, stats)) {
                         radiance += c;
@@ -227,7 +236,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
                     vec3 f = continuous_eval(bsdf, ns_f, wo, es.w, bsdf_dir_pdf_w, bsdf_rev_pdf_w);
                     float w_light = mis(bsdf_dir_pdf_w / direct_pdf_w);
-                    float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    float w_camera = mis(emission_pdf_w * cos_s / direct_pdf_w) * (vm_camera + d_vcm_s1 + d_vc * mis(bsdf_rev_pdf_w));
                     vec3 c = beta * volume_transmittance(sigma_in, 3.0e38) * f * es.le * (cos_s / (direct_pdf_w * (w_light + 1.0 + w_camera)));
                     if (max3(c) > 0.0 && shadow_clear_now(env_shadow_ray(s.p, ng_f, es.w), c, stats)) {
                         radiance += c;
@@ -249,7 +258,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     float w_light = mis(bsdf_dir_pdf_w / (ls.pick * direct_pdf_w));
                     // With merging, vm_camera counts merging at this vertex (a light path's
                     // first vertex found here).
-                    float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (vm_camera + d_vcm + d_vc * mis(bsdf_rev_pdf_w));
+                    float w_camera = mis(emission_pdf_w * cos_s / (direct_pdf_w * cos_l)) * (vm_camera + d_vcm_s1 + d_vc * mis(bsdf_rev_pdf_w));
                     // The shadow ray leaves on the side the path arrived on and reaches the
                     // emitter's front: only this end can lie inside a volume.
                     vec3 c = beta * volume_transmittance(sigma_in, sqrt(dist2)) * f * light_sample_radiance(ls) * (cos_s / (ls.pick * direct_pdf_w * (w_light + 1.0 + w_camera)));

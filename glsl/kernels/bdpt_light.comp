@@ -4,7 +4,8 @@
 // length bound. Every diffuse-capable vertex (a) is offered to the vertex store, a
 // reservoir of `light_path_len` slots (Vitter's algorithm R), so each vertex is kept with
 // probability min(1, L / n) — the camera pass divides by it — and (b) is joined to the camera
-// (strategy t = 1) and splatted into the pixel it projects to.
+// (strategy t = 1) and splatted into the pixel it projects to; a path's first vertex only
+// with DIRECT_LIGHT_TRACING (bdpt.glsl).
 // With SPEC_VCM (`--integrator vcm`, vcm.glsl) it also carries dVM and stores each vertex
 // for merging; without connections (photon mapping) it does not splat.
 #extension GL_KHR_shader_subgroup_basic : require
@@ -219,7 +220,10 @@ void light_path(uint path) {
                 light_vertices[base + slot] = LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, s.front ? 0u : 1u, s.uv, s.material, d_vm);
                 stored = min(seen, pc.light_path_len);
             }
-            if (VCM_CONNECTS && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
+            // A first vertex is joined to the eye only where light tracing samples direct
+            // lighting (bdpt.glsl, DIRECT_LIGHT_TRACING).
+            bool joins_eye = depth > 1u || direct_light_tracing() > 0.0;
+            if (VCM_CONNECTS && joins_eye && (pc.max_depth == 0u || depth + 1u <= pc.max_depth)) {
                 connect_to_camera(s.p, ns_f, ng_f, wi, c, beta, sigma_in, d_vcm, d_vc, k.vm, stats);
             }
         }

@@ -764,6 +764,56 @@ s13d)
   "$B" diff /tmp/bidir-m1-c.exr /tmp/bidir-c.exr 2>&1 | grep -iE "rmse"
   "$B" diff /tmp/bidir-m1-s.exr /tmp/bidir-s.exr 2>&1 | grep -iE "rmse"
   ;;
+s15b)
+  # Session 15: BDPT without light tracing for direct lighting (the default now) against
+  # --direct-light-tracing (the previous behaviour), same binary. .device/scenes/hidden: the
+  # Cornell box with a panel under its light (where the light hides).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 64 --height 64"
+  T="timeout -k 5 60"
+  for f in "" "--direct-light-tracing" "" "--direct-light-tracing"; do
+    echo "== cornell bdpt bench '$f'"; $T "$B" bench render $CB --integrator bdpt $f --spp 1024 2>&1 | grep -E "Msamples|^[a-z_0-9]+ +[0-9]" | head -6
+  done
+  for t in 0.1 1; do
+    for f in "" "--direct-light-tracing" "" "--direct-light-tracing"; do
+      echo "== cornell bdpt --time $t '$f'"; $T "$B" render $CB --integrator bdpt $f --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+    echo "== cornell pt-nee --time $t"; $T "$B" render $CB --integrator pt-nee --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+  done
+  for f in "" "--direct-light-tracing"; do
+    echo "== caustic bdpt --time 1 '$f'"; $T "$B" render $CAU --integrator bdpt $f --time 1 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    echo "== rough bdpt --time 1 '$f'"; $T "$B" render $RC --integrator bdpt $f --time 1 --reference assets/scenes/rough-cornell/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    for s in 1 2; do $T "$B" render $HID --integrator bdpt $f --seed $s --time 1 -o /tmp/h$s.exr 2>&1 | grep -iE "spp in"; done
+    echo "== hidden bdpt --time 1 '$f', seed 1 against seed 2: $("$B" diff /tmp/h1.exr /tmp/h2.exr 2>&1 | grep -i rmse)"
+    echo "== sponza bdpt bench '$f'"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt $f --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  for s in 1 2; do $T "$B" render $HID --integrator pt-nee --seed $s --time 1 -o /tmp/h$s.exr 2>&1 | grep -iE "spp in"; done
+  echo "== hidden pt-nee --time 1, seed 1 against seed 2: $("$B" diff /tmp/h1.exr /tmp/h2.exr 2>&1 | grep -i rmse)"
+  ;;
+s15a)
+  # Session 15 (measurement build, not committed): where BDPT's time goes on the Cornell box.
+  # BIDIR_BDPT_EXP bits drop parts of the passes (1: the light pass's vertex stores, 2: its
+  # joins to the camera, 4: their shadow rays (joins computed, not queued), 8: the camera
+  # pass's connections, 16: its light samples); BIDIR_LT_KAPPA scales the light-tracing
+  # strategy's sample count in the MIS weights.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  for e in 0 1 2 4 8 16 24 0; do
+    echo "== cornell bdpt exp $e"; BIDIR_BDPT_EXP=$e $T "$B" bench render $CB --integrator bdpt --spp 1024 2>&1 | grep -E "Msamples|^[a-z_0-9]+ +[0-9]" | head -9
+  done
+  echo "== cornell pt-nee"; $T "$B" bench render $CB --integrator pt-nee --spp 1024 2>&1 | grep -E "Msamples|^[a-z_0-9]+ +[0-9]" | head -4
+  for k in 1 0.5 0.3 1 0.5; do
+    for t in 0.1 1; do
+      echo "== cornell bdpt kappa $k --time $t"; BIDIR_LT_KAPPA=$k $T "$B" render $CB --integrator bdpt --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+  done
+  for k in 1 0.5 0.3; do
+    echo "== cornell bdpt kappa $k --spp 8192"; BIDIR_LT_KAPPA=$k $T "$B" render $CB --integrator bdpt --spp 8192 --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+  done
+  ;;
 s13c)
   # Session 13, the committed code (B) against BASE (d788d86): time-budgeted renders (Cornell
   # box against the sharper reference, the caustic scene at the test's 128² camera against its

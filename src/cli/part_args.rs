@@ -79,6 +79,9 @@ pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: Sam
     let mut set = format!("sampler {:?} max_depth {} rr_depth {} tri_test {:?}", s.sampler, s.max_depth, s.rr_depth, s.bvh.tri_test);
     if let bidir::render::Integrator::Bdpt(_) | bidir::render::Integrator::Vcm(_) = s.integrator {
         set += &format!(" light_path_len {} light_paths {}", s.light_path_len, s.light_path_ratio);
+        if s.direct_light_tracing {
+            set += " direct_light_tracing";
+        }
     }
     if let bidir::render::Integrator::Vcm(_) = s.integrator {
         set += &format!(" vcm_radius {:?} vcm_alpha {}", s.vcm_radius, s.vcm_alpha);

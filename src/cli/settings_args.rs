@@ -111,6 +111,12 @@ pub struct SettingsArgs {
     /// surfaces), for BDPT and VCM 64 slots; off on CPU devices.
     #[arg(long, default_value = "auto", value_name = "auto|off|SLOTS[/SAMPLES][/pause]")]
     pub shadow_queue: String,
+    /// BDPT: keep light tracing as a strategy for direct lighting (light -> surface -> eye).
+    /// Off by default: the camera path's light samples and emitter hits, stratified per pixel,
+    /// sample it with less noise and no shadow ray per light path's first vertex. Either is
+    /// unbiased; VCM always keeps it.
+    #[arg(long)]
+    pub direct_light_tracing: bool,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
     /// diagonal (0.001), or a length in scene units with the suffix u (0.02u).
     #[arg(long, default_value = "0.001", value_name = "R")]
@@ -162,6 +168,7 @@ impl SettingsArgs {
             other => bail!("--one-trace {other}: auto | on | off"),
         };
         s.shadow_queue = parse_shadow_queue(&self.shadow_queue)?;
+        s.direct_light_tracing = self.direct_light_tracing;
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;
         Ok(s)

@@ -170,6 +170,7 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
         specs.push(Spec { id: abi::SPEC_STATS, value: settings.count_traversal as u32 });
         specs.push(sampler.spec());
+        specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
         let capacity = paths.saturating_mul(light_path_len);
         if let Some(v) = vcm {
             if !matches!(join, Join::Lvc(_)) {
