@@ -57,25 +57,34 @@ fn small_cornell(size: u32) -> Scene {
 }
 
 /// With merging off VCM's weights are BDPT's (eta_VCM = 0 removes every merging term), so
-/// `vcm:no-merge` and `bdpt --direct-light-tracing` (the same join, `Join::DEFAULT`; VCM
-/// keeps light tracing as a strategy of direct lighting, BDPT by default does not) give the
-/// same image for the same seed: the same kernels with dVM carried but unused, the same random numbers. Not always to the last bit: light tracing
+/// `vcm:no-merge` and `bdpt` (the same join, `Join::DEFAULT`) give the same image for the
+/// same seed, with light tracing a strategy of direct lighting (`--direct-light-tracing`) or
+/// not (the default): the same kernels with dVM carried but unused, the same random numbers.
+/// Not always to the last bit: light tracing
 /// splats with float atomics whose order varies from run to run (as BDPT against itself), so
 /// values may differ by a few ulps (measured: at most 2e-7 relative; a weight error would show
 /// at 1e-3 or more).
 #[test]
 fn no_merge_equals_bdpt() {
     let scene = small_cornell(32);
-    let mut bdpt = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
-    bdpt.direct_light_tracing = true;
-    let a = render(&scene, bdpt, 2, 3..=3).remove(0);
-    let b = render(&scene, RenderSettings::new(NO_MERGE), 2, 3..=3).remove(0);
-    let differ = a.data.iter().zip(&b.data).filter(|(x, y)| x != y).count();
-    let rel = a.data.iter().zip(&b.data).map(|(x, y)| ((x - y).abs() / x.abs().max(1e-6)) as f64).fold(0.0, f64::max);
-    let mean = image_mean(&a);
-    eprintln!("vcm:no-merge vs bdpt: {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})", a.data.len());
-    assert!(mean > 0.01, "the image is lit");
-    assert!(rel < 2e-6, "vcm:no-merge differs from bdpt by {rel:e} relative: more than float atomics' rounding");
+    for direct_light_tracing in [false, true] {
+        let settings = |integrator| {
+            let mut s = RenderSettings::new(integrator);
+            s.direct_light_tracing = direct_light_tracing;
+            s
+        };
+        let a = render(&scene, settings(Integrator::Bdpt(Join::DEFAULT)), 2, 3..=3).remove(0);
+        let b = render(&scene, settings(NO_MERGE), 2, 3..=3).remove(0);
+        let differ = a.data.iter().zip(&b.data).filter(|(x, y)| x != y).count();
+        let rel = a.data.iter().zip(&b.data).map(|(x, y)| ((x - y).abs() / x.abs().max(1e-6)) as f64).fold(0.0, f64::max);
+        let mean = image_mean(&a);
+        eprintln!(
+            "vcm:no-merge vs bdpt (direct light tracing {direct_light_tracing}): {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})",
+            a.data.len()
+        );
+        assert!(mean > 0.01, "the image is lit");
+        assert!(rel < 2e-6, "vcm:no-merge differs from bdpt by {rel:e} relative: more than float atomics' rounding");
+    }
 }
 
 /// The furnace (radiance exactly 2): merging a uniform photon density is unbiased on a

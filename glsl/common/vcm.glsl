@@ -35,10 +35,14 @@
 // leaves by a delta lobe, and merging stays in the camera pass).
 #define VCM_MERGE_DEFERRED ((VCM & VCM_MERGE_APART) != 0u)
 // 1 where light tracing (t = 1) is a strategy of the paths of two segments, light -> surface
-// -> eye, else 0 (bdpt.glsl, DIRECT_LIGHT_TRACING). VCM keeps it: its merging terms ride in the
-// same dVC as light tracing's, and that case was not worked through.
+// -> eye, else 0 (bdpt.glsl, DIRECT_LIGHT_TRACING). Where it is not, every weight of such a
+// path counts light tracing's samples as 0: the camera pass's light samples at its first
+// vertex (whose dVCM is light tracing's term alone), its emitter hits at its second (the part
+// of dVC that is not merging's, `d_vc_merge`), its merges at its first vertex with a light
+// vertex one segment from the light (vcm_merge.glsl), and the light pass's joins of first
+// vertices, which it skips.
 float direct_light_tracing() {
-    return DIRECT_LIGHT_TRACING != 0u || VCM != 0u ? 1.0 : 0.0;
+    return DIRECT_LIGHT_TRACING != 0u ? 1.0 : 0.0;
 }
 
 // 1 where the light subpaths' recursion counts merging at their vertices, else 0.

@@ -64,7 +64,11 @@ vec3 vcm_merge(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm,
             float weight = 1.0;
             if (VCM_CONNECTS) {
                 float w_light = y.d_vcm * k.vc + y.d_vm * mis(cam_dir_pdf_w);
-                float w_camera = d_vcm * k.vc + d_vm * mis(cam_rev_pdf_w);
+                // A light vertex one segment from the light merged at the first camera
+                // vertex: a path light -> surface -> eye, whose camera dVCM is light tracing's
+                // term (vcm.glsl, direct_light_tracing).
+                float lt = depth == 1u && uint(y.segments) == 1u ? direct_light_tracing() : 1.0;
+                float w_camera = lt * d_vcm * k.vc + d_vm * mis(cam_rev_pdf_w);
                 weight = 1.0 / (w_light + 1.0 + w_camera);
             }
             uvec2 counts = light_counts[slot / pc.light_path_len]; // (stored, seen)

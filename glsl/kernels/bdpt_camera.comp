@@ -103,6 +103,9 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     vec3 radiance = vec3(0.0);
     float d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
     float d_vc = 0.0;
+    // dVC at the second vertex less light tracing's term: the merging term of the first
+    // vertex (0 in BDPT), for the emitter hits there (vcm.glsl, direct_light_tracing).
+    float d_vc_merge = 0.0;
     float d_vm = 0.0;
     VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
     // Merging at a light vertex joined to this camera vertex is a strategy only when merging
@@ -129,10 +132,10 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 } else {
                     float direct_pdf_w = env.pick * e.pdf_w;
                     float emission_pdf_w = direct_pdf_w / env.disk_area;
-                    // At the second vertex dVC is light tracing's term alone (bdpt.glsl,
-                    // DIRECT_LIGHT_TRACING).
-                    float lt = depth == 2u ? direct_light_tracing() : 1.0;
-                    float w_camera = mis(direct_pdf_w) * d_vcm + mis(emission_pdf_w) * lt * d_vc;
+                    // At the second vertex dVC is light tracing's term and merging's
+                    // (vcm.glsl, direct_light_tracing).
+                    float dvc = depth == 2u && direct_light_tracing() == 0.0 ? d_vc_merge : d_vc;
+                    float w_camera = mis(direct_pdf_w) * d_vcm + mis(emission_pdf_w) * dvc;
                     radiance += beta * e.le / (1.0 + w_camera);
                 }
             }
@@ -154,6 +157,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         d_vcm *= mis(h.t * h.t);
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
+        d_vc_merge /= mis(cos_in);
         if (VCM != 0u) {
             d_vm /= mis(cos_in);
         }
@@ -172,10 +176,10 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 // redo this vertex's solid-angle-to-area step (done above with the shading
                 // cosine) with it, or s = 0 and s = 1 would weigh the path inconsistently.
                 float to_geometric = HAS_NORMALS != 0u ? mis(cos_in / cos_l) : 1.0;
-                // At the second vertex dVC is light tracing's term alone (bdpt.glsl,
-                // DIRECT_LIGHT_TRACING).
-                float lt = depth == 2u ? direct_light_tracing() : 1.0;
-                float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * lt * d_vc) * to_geometric;
+                // At the second vertex dVC is light tracing's term and merging's
+                // (vcm.glsl, direct_light_tracing).
+                float dvc = depth == 2u && direct_light_tracing() == 0.0 ? d_vc_merge : d_vc;
+                float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * dvc) * to_geometric;
                 radiance += beta * material_emission(m, s.uv) / (1.0 + w_camera);
             }
         }
@@ -206,7 +210,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
         }
         if (VCM_CONNECTS && bsdf.pick > 0.0) {
             // The light samples' dVCM: at the first vertex it is light tracing's term alone
-            // (bdpt.glsl, DIRECT_LIGHT_TRACING).
+            // (vcm.glsl, direct_light_tracing).
             float d_vcm_s1 = depth == 1u ? direct_light_tracing() * d_vcm : d_vcm;
             // s = 1: the environment (probability env.pick; its "point" is a direction, the
             // cosine there is 1), a punctual light, or a fresh point on an emitter.
@@ -334,6 +338,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
             if (VCM != 0u) {
                 d_vm = mis(cos_out / pdf_fwd_w) * (d_vm * mis(pdf_rev_w) + d_vcm * k.vc + (merge_here ? 1.0 : 0.0));
             }
+            d_vc_merge = depth == 1u ? mis(cos_out / pdf_fwd_w) * vm_camera : 0.0; // dVC is 0 at the first vertex
             d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + vm_camera);
             d_vcm = mis(1.0 / pdf_fwd_w);
             merge_pending = false; // the first continuous scattering: no merging after it

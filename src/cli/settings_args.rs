@@ -111,10 +111,10 @@ pub struct SettingsArgs {
     /// surfaces), for BDPT and VCM 64 slots; off on CPU devices.
     #[arg(long, default_value = "auto", value_name = "auto|off|SLOTS[/SAMPLES][/pause]")]
     pub shadow_queue: String,
-    /// BDPT: keep light tracing as a strategy for direct lighting (light -> surface -> eye).
+    /// BDPT and VCM: keep light tracing as a strategy for direct lighting (light -> surface -> eye).
     /// Off by default: the camera path's light samples and emitter hits, stratified per pixel,
     /// sample it with less noise and no shadow ray per light path's first vertex. Either is
-    /// unbiased; VCM always keeps it.
+    /// unbiased.
     #[arg(long)]
     pub direct_light_tracing: bool,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box

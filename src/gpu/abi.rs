@@ -322,9 +322,9 @@ gpu_consts! {
     /// shadow ray is traced in it); 0 (the pass's last launch) finishes every path, tracing a
     /// shadow ray itself where the slots are full.
     pub const SPEC_SHADOW_SUSPEND: u32 = 54;
-    /// BDPT: 1 keeps light tracing (t = 1) as a strategy for direct lighting, the paths light
+    /// BDPT and VCM: 1 keeps light tracing (t = 1) as a strategy for direct lighting, the paths light
     /// -> surface -> eye; 0 leaves those to the camera path's light samples and emitter hits
-    /// (`RenderSettings::direct_light_tracing`; glsl/common/bdpt.glsl). VCM always keeps it.
+    /// (`RenderSettings::direct_light_tracing`; glsl/common/bdpt.glsl).
     pub const SPEC_DIRECT_LIGHT_TRACING: u32 = 55;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`).
     pub const BIND_PT_SUSPENDED: u32 = 38;

@@ -223,11 +223,11 @@ pub struct RenderSettings {
     /// [`default_shadow_queue`] / [`default_camera_pass_queue`], `Some(None)` is off. The image
     /// is the same up to the order of float sums.
     pub shadow_queue: Option<Option<ShadowQueue>>,
-    /// BDPT: keep light tracing (t = 1) as a strategy for direct lighting, the paths light ->
+    /// BDPT and VCM: keep light tracing (t = 1) as a strategy for direct lighting, the paths light ->
     /// surface -> eye (`--direct-light-tracing`). Off (the default) those are left to the
     /// camera path's light samples and emitter hits, which the pixel's stratified samples
     /// draw: less noise and fewer shadow rays (glsl/common/bdpt.glsl; docs/integrators.md).
-    /// Either is unbiased. VCM always keeps it.
+    /// Either is unbiased.
     pub direct_light_tracing: bool,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
