@@ -9,9 +9,88 @@
 #ifndef BIDIR_BDPT_GLSL
 #define BIDIR_BDPT_GLSL
 
-layout(std430, binding = BIND_LIGHT_VERTICES) buffer LightVertices { LightVertex light_vertices[]; };
+// The light-vertex store: LIGHT_VERTEX_WORDS 16-byte words per slot. 6 hold a `LightVertex`
+// as std430 lays it out (src/gpu/abi.rs); 4 are the compact form of scenes without GGX lobes
+// or volumes, outside VCM's merging, which read none of uv, material, back_face and d_vm:
+// pos, dVCM | ns, dVC | beta f, pick | ng and wi octahedral in 16 + 16 bits, segments. The
+// store is written once and read about once per vertex, so its bytes are what a light vertex
+// costs (src/render/bdpt.rs, `light_vertex_words`).
+layout(constant_id = SPEC_LIGHT_VERTEX_WORDS) const uint LIGHT_VERTEX_WORDS = 6u;
+layout(std430, binding = BIND_LIGHT_VERTICES) buffer LightVertices { uvec4 light_vertex_words[]; };
 // Per light path: (vertices stored, vertices seen). The store is a reservoir.
 layout(std430, binding = BIND_LIGHT_COUNTS) buffer LightCounts { uvec2 light_counts[]; };
+
+// Unit vector as two 16-bit signed-normalised octahedral coordinates (Cigolle et al. 2014,
+// "A Survey of Efficient Representations for Independent Unit Vectors"); error ~3e-5.
+uint oct_encode(vec3 n) {
+    vec2 p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
+    if (n.z < 0.0) {
+        p = (1.0 - abs(p.yx)) * vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    }
+    return packSnorm2x16(p);
+}
+
+vec3 oct_decode(uint e) {
+    vec2 p = unpackSnorm2x16(e);
+    vec3 n = vec3(p, 1.0 - abs(p.x) - abs(p.y));
+    if (n.z < 0.0) {
+        n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+    }
+    return normalize(n);
+}
+
+void store_light_vertex(uint slot, LightVertex v) {
+    uint b = slot * LIGHT_VERTEX_WORDS;
+    light_vertex_words[b] = uvec4(floatBitsToUint(v.pos), floatBitsToUint(v.d_vcm));
+    light_vertex_words[b + 1u] = uvec4(floatBitsToUint(v.ns), floatBitsToUint(v.d_vc));
+    if (LIGHT_VERTEX_WORDS == 4u) {
+        light_vertex_words[b + 2u] = uvec4(floatBitsToUint(v.beta_f), floatBitsToUint(v.pick));
+        light_vertex_words[b + 3u] = uvec4(oct_encode(v.ng), oct_encode(v.wi), floatBitsToUint(v.segments), 0u);
+    } else {
+        light_vertex_words[b + 2u] = uvec4(floatBitsToUint(v.ng), floatBitsToUint(v.pick));
+        light_vertex_words[b + 3u] = uvec4(floatBitsToUint(v.wi), floatBitsToUint(v.segments));
+        light_vertex_words[b + 4u] = uvec4(floatBitsToUint(v.beta_f), v.back_face);
+        light_vertex_words[b + 5u] = uvec4(floatBitsToUint(v.uv), v.material, floatBitsToUint(v.d_vm));
+    }
+}
+
+// The includer has included scene.glsl (HAS_NORMALS): without shading normals ng is ns, exactly.
+LightVertex load_light_vertex(uint slot) {
+    uint b = slot * LIGHT_VERTEX_WORDS;
+    uvec4 w0 = light_vertex_words[b];
+    uvec4 w1 = light_vertex_words[b + 1u];
+    uvec4 w2 = light_vertex_words[b + 2u];
+    uvec4 w3 = light_vertex_words[b + 3u];
+    LightVertex v;
+    v.pos = uintBitsToFloat(w0.xyz);
+    v.d_vcm = uintBitsToFloat(w0.w);
+    v.ns = uintBitsToFloat(w1.xyz);
+    v.d_vc = uintBitsToFloat(w1.w);
+    if (LIGHT_VERTEX_WORDS == 4u) {
+        v.beta_f = uintBitsToFloat(w2.xyz);
+        v.pick = uintBitsToFloat(w2.w);
+        v.ng = HAS_NORMALS != 0u ? oct_decode(w3.x) : v.ns;
+        v.wi = oct_decode(w3.y);
+        v.segments = uintBitsToFloat(w3.z);
+        v.back_face = 0u;
+        v.uv = vec2(0.0);
+        v.material = 0u;
+        v.d_vm = 0.0;
+    } else {
+        uvec4 w4 = light_vertex_words[b + 4u];
+        uvec4 w5 = light_vertex_words[b + 5u];
+        v.ng = uintBitsToFloat(w2.xyz);
+        v.pick = uintBitsToFloat(w2.w);
+        v.wi = uintBitsToFloat(w3.xyz);
+        v.segments = uintBitsToFloat(w3.w);
+        v.beta_f = uintBitsToFloat(w4.xyz);
+        v.back_face = w4.w;
+        v.uv = uintBitsToFloat(w5.xy);
+        v.material = w5.z;
+        v.d_vm = uintBitsToFloat(w5.w);
+    }
+    return v;
+}
 
 // Power heuristic, beta = 2.
 float mis(float x) {

@@ -47,7 +47,7 @@ vec3 vcm_merge(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, float d_vcm,
                 continue;
             }
             uint slot = item.slot;
-            LightVertex y = light_vertices[slot];
+            LightVertex y = load_light_vertex(slot);
             if (pc.max_depth != 0u && uint(y.segments) + depth > pc.max_depth) {
                 continue;
             }

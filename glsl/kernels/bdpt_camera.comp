@@ -286,7 +286,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                     for (uint j = 0u; j < joins; j++) {
                         uint slot = lvc_index[rng_below(rng, total)];
                         uvec2 c = light_counts[slot / pc.light_path_len];
-                        LightVertex y = light_vertices[slot];
+                        LightVertex y = load_light_vertex(slot);
                         if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                             continue;
                         }
@@ -302,7 +302,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 float inv_q = float(lc.y) / float(joins);
                 for (uint j = 0u; j < joins; j++) {
                     uint slot = full ? j : min(uint(rng_next(rng) * float(lc.x)), lc.x - 1u);
-                    LightVertex y = light_vertices[base + slot];
+                    LightVertex y = load_light_vertex(base + slot);
                     if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                         continue;
                     }

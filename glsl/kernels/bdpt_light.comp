@@ -217,7 +217,7 @@ void light_path(uint path) {
             seen++;
             uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
             if (slot < pc.light_path_len) {
-                light_vertices[base + slot] = LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, s.front ? 0u : 1u, s.uv, s.material, d_vm);
+                store_light_vertex(base + slot, LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, s.front ? 0u : 1u, s.uv, s.material, d_vm));
                 stored = min(seen, pc.light_path_len);
             }
             // A first vertex is joined to the eye only where light tracing samples direct

@@ -764,6 +764,49 @@ s13d)
   "$B" diff /tmp/bidir-m1-c.exr /tmp/bidir-c.exr 2>&1 | grep -iE "rmse"
   "$B" diff /tmp/bidir-m1-s.exr /tmp/bidir-s.exr 2>&1 | grep -iE "rmse"
   ;;
+s15d)
+  # Session 15: the compact light-vertex store (B) against 2abade7 (BASE, 96-byte vertices),
+  # interleaved.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  T="timeout -k 5 60"
+  for b in "$BASE" "$B" "$BASE" "$B"; do
+    echo "== cornell bdpt $(basename "$b")"; $T "$b" bench render $CB --integrator bdpt --spp 1024 2>&1 | grep -E "Msamples|^[a-z_0-9]+ +[0-9]" | head -5
+    echo "== cornell vcm:no-merge $(basename "$b")"; $T "$b" bench render $CB --integrator vcm --no-merge --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    echo "== caustic bdpt $(basename "$b")"; $T "$b" bench render $CAU --width 256 --height 256 --integrator bdpt --spp 256 2>&1 | grep -E "Msamples" | head -1
+    echo "== sponza bdpt $(basename "$b")"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  for b in "$B" "$BASE" "$B"; do
+    echo "== cornell bdpt --time 1 $(basename "$b")"; $T "$b" render $CB --integrator bdpt --time 1 --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+  done
+  for b in "$B" "$BASE"; do
+    $T "$b" render $CB --integrator bdpt --spp 64 -o /tmp/c-$(basename "$b").exr > /dev/null 2>&1
+    $T "$b" render $CAU --width 128 --height 128 --integrator bdpt --spp 256 -o /tmp/k-$(basename "$b").exr > /dev/null 2>&1
+  done
+  echo "== cornell 64 spp, compact against 96-byte: $("$B" diff /tmp/c-bidir.exr /tmp/c-bidir-base.exr 2>&1 | grep -i rmse)"
+  echo "== caustic 256 spp, compact against 96-byte: $("$B" diff /tmp/k-bidir.exr /tmp/k-bidir-base.exr 2>&1 | grep -i rmse)"
+  ;;
+s15c)
+  # Session 15: VCM without light tracing for direct lighting (default) against
+  # --direct-light-tracing, same binary; bdpt beside it.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  SDS="assets/scenes/sds/sds.obj --eye 0.9,1.3,-3.2 --target -0.4,0.4,0 --up 0,1,0 --fov 50 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for f in "" "--direct-light-tracing"; do
+    echo "== cornell vcm bench '$f'"; $T "$B" bench render $CB --integrator vcm $f --spp 1024 2>&1 | grep -E "Msamples" | head -1
+  done
+  for i in vcm bdpt; do
+    for f in "" "--direct-light-tracing" "" "--direct-light-tracing"; do
+      echo "== cornell $i --time 1 '$f'"; $T "$B" render $CB --integrator $i $f --time 1 --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+    for f in "" "--direct-light-tracing"; do
+      echo "== sds $i --time 1 '$f'"; $T "$B" render $SDS --integrator $i $f --time 1 --reference assets/scenes/sds/reference-h200-vcm.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      echo "== caustic $i --time 1 '$f'"; $T "$B" render $CAU --integrator $i $f --time 1 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+  done
+  ;;
 s15b)
   # Session 15: BDPT without light tracing for direct lighting (the default now) against
   # --direct-light-tracing (the previous behaviour), same binary. .device/scenes/hidden: the

@@ -326,6 +326,9 @@ gpu_consts! {
     /// -> surface -> eye; 0 leaves those to the camera path's light samples and emitter hits
     /// (`RenderSettings::direct_light_tracing`; glsl/common/bdpt.glsl).
     pub const SPEC_DIRECT_LIGHT_TRACING: u32 = 55;
+    /// BDPT and VCM: 16-byte words per slot of BIND_LIGHT_VERTICES: 6 (a `LightVertex`) or 4
+    /// (the compact form without the glossy, volume and merging fields; glsl/common/bdpt.glsl).
+    pub const SPEC_LIGHT_VERTEX_WORDS: u32 = 56;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`).
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
@@ -721,7 +724,8 @@ gpu_structs! {
 
     /// A stored light-subpath vertex (a diffuse-capable hit), for BDPT connections. MIS
     /// quantities follow Georgiev 2012 ("Implementing Vertex Connection and Merging"),
-    /// power heuristic.
+    /// power heuristic. Scenes that read none of its glossy, volume and merging fields store
+    /// it in a compact 64-byte form instead (`SPEC_LIGHT_VERTEX_WORDS`, glsl/common/bdpt.glsl).
     pub struct LightVertex (96 bytes) {
         pub pos: Vec3,
         /// dVCM of the VCM technical report (Georgiev et al. 2012) at this vertex.

@@ -117,6 +117,20 @@ pub struct VcmConfig {
     pub alpha: f32,
 }
 
+/// 16-byte words per light-vertex slot (`SPEC_LIGHT_VERTEX_WORDS`): a whole `LightVertex` (6)
+/// where the kernels read its GGX, volume or merging fields (a scene with glossy surfaces or
+/// volumes, or VCM that merges), else its compact form of 4 (glsl/common/bdpt.glsl). The
+/// store is written once and read about once per vertex: on the Cornell box its 96-byte
+/// stores were 14.5 of the light pass's 67 ms per 1024 spp (docs/results.md).
+pub fn light_vertex_words(features: &crate::gpu_data::SceneFeatures, merges: bool) -> u32 {
+    const _: () = assert!(std::mem::size_of::<LightVertex>() == 6 * 16);
+    if features.glossy || features.volume || merges {
+        6
+    } else {
+        4
+    }
+}
+
 impl Bdpt {
     /// BDPT kernels and light-vertex storage for a film of `pixels` pixels.
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
@@ -157,12 +171,14 @@ impl Bdpt {
             )));
         }
         let light_path_len = light_path_len.max(1);
-        let bytes = paths as u64 * light_path_len as u64 * std::mem::size_of::<LightVertex>() as u64;
+        let words = light_vertex_words(&scene.features, vcm.is_some_and(|v| v.mode.merge));
+        let vertex_size = words as u64 * 16;
+        let bytes = paths as u64 * light_path_len as u64 * vertex_size;
         if bytes > info.max_storage_buffer_range as u64 {
             return Err(RenderError::Memory(format!(
                 "BDPT light vertices need {:.1} MiB ({paths} paths x {light_path_len} vertices x {} bytes), over the device's {} MiB storage-buffer limit: lower --light-path-len, --light-paths, --sample-slices or the resolution",
                 bytes as f64 / (1u64 << 20) as f64,
-                std::mem::size_of::<LightVertex>(),
+                vertex_size,
                 info.max_storage_buffer_range >> 20
             )));
         }
@@ -171,6 +187,7 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_STATS, value: settings.count_traversal as u32 });
         specs.push(sampler.spec());
         specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
+        specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
         let capacity = paths.saturating_mul(light_path_len);
         if let Some(v) = vcm {
             if !matches!(join, Join::Lvc(_)) {
