@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -763,6 +763,44 @@ s13d)
   echo "== images, M against B (0: the slots never ran out)"
   "$B" diff /tmp/bidir-m1-c.exr /tmp/bidir-c.exr 2>&1 | grep -iE "rmse"
   "$B" diff /tmp/bidir-m1-s.exr /tmp/bidir-s.exr 2>&1 | grep -iE "rmse"
+  ;;
+s15f)
+  # Session 15's final code (B) against session 14's (BASE, 2cfbab6): the issue's before/after
+  # table (time-budgeted renders, Cornell box against the sharper reference, the caustic scene
+  # at the test's 128² camera against its committed reference) and the rates.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  T="timeout -k 5 60"
+  for t in 0.1 1; do
+    for i in pt pt-nee bdpt bdpt:full; do
+      for b in "$B" "$BASE"; do
+        echo "== cornell $i --time $t $(basename "$b")"; $T "$b" render $CB --integrator $i --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+        echo "== caustic $i --time $t $(basename "$b")"; $T "$b" render $CAU --width 128 --height 128 --integrator $i --time $t --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+    done
+  done
+  for b in "$B" "$BASE"; do
+    for i in pt pt-nee bdpt bdpt:full vcm; do
+      echo "== cornell $i $(basename "$b")"; $T "$b" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    done
+    for i in pt-nee bdpt; do
+      echo "== caustic $i $(basename "$b")"; $T "$b" bench render $CAU --width 256 --height 256 --integrator $i --spp 256 2>&1 | grep -E "Msamples" | head -1
+    done
+  done
+  ;;
+s15e)
+  # Session 15 (measurement build): the light vertex cache's draws, per subgroup consecutive
+  # entries from one random start (BIDIR_LVC_COHERENT=1) against independent draws.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for c in 0 1 0 1; do
+    echo "== cornell bdpt coherent $c"; BIDIR_LVC_COHERENT=$c $T "$B" bench render $CB --integrator bdpt --spp 1024 2>&1 | grep -E "Msamples|^[a-z_0-9]+ +[0-9]" | head -5
+    echo "== sponza bdpt coherent $c"; BIDIR_LVC_COHERENT=$c $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples|^[a-z_0-9]+ +[0-9]" | head -3
+  done
+  for c in 0 1 0 1; do
+    echo "== cornell bdpt --time 1 coherent $c"; BIDIR_LVC_COHERENT=$c $T "$B" render $CB --integrator bdpt --time 1 --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+  done
   ;;
 s15d)
   # Session 15: the compact light-vertex store (B) against 2abade7 (BASE, 96-byte vertices),
