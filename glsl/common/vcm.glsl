@@ -45,6 +45,12 @@ float direct_light_tracing() {
     return DIRECT_LIGHT_TRACING != 0u ? 1.0 : 0.0;
 }
 
+// The camera's dVC in the weight of an emitter its path finds at vertex `depth` (s = 0): at
+// the second vertex dVC is light tracing's term and merging's, `d_vc_merge` merging's alone.
+float emitter_hit_d_vc(uint depth, float d_vc, float d_vc_merge) {
+    return depth == 2u && direct_light_tracing() == 0.0 ? d_vc_merge : d_vc;
+}
+
 // 1 where the light subpaths' recursion counts merging at their vertices, else 0.
 float vcm_light_merge_terms() {
     return VCM_MERGE_EVERYWHERE ? 1.0 : 0.0;

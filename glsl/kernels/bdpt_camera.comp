@@ -104,7 +104,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     float d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
     float d_vc = 0.0;
     // dVC at the second vertex less light tracing's term: the merging term of the first
-    // vertex (0 in BDPT), for the emitter hits there (vcm.glsl, direct_light_tracing).
+    // vertex (0 in BDPT), for the emitter hits there (vcm.glsl, emitter_hit_d_vc).
     float d_vc_merge = 0.0;
     float d_vm = 0.0;
     VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
@@ -132,10 +132,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 } else {
                     float direct_pdf_w = env.pick * e.pdf_w;
                     float emission_pdf_w = direct_pdf_w / env.disk_area;
-                    // At the second vertex dVC is light tracing's term and merging's
-                    // (vcm.glsl, direct_light_tracing).
-                    float dvc = depth == 2u && direct_light_tracing() == 0.0 ? d_vc_merge : d_vc;
-                    float w_camera = mis(direct_pdf_w) * d_vcm + mis(emission_pdf_w) * dvc;
+                    float w_camera = mis(direct_pdf_w) * d_vcm + mis(emission_pdf_w) * emitter_hit_d_vc(depth, d_vc, d_vc_merge);
                     radiance += beta * e.le / (1.0 + w_camera);
                 }
             }
@@ -176,10 +173,7 @@ vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
                 // redo this vertex's solid-angle-to-area step (done above with the shading
                 // cosine) with it, or s = 0 and s = 1 would weigh the path inconsistently.
                 float to_geometric = HAS_NORMALS != 0u ? mis(cos_in / cos_l) : 1.0;
-                // At the second vertex dVC is light tracing's term and merging's
-                // (vcm.glsl, direct_light_tracing).
-                float dvc = depth == 2u && direct_light_tracing() == 0.0 ? d_vc_merge : d_vc;
-                float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * dvc) * to_geometric;
+                float w_camera = (mis(direct_pdf_a) * d_vcm + mis(emission_pdf_w) * emitter_hit_d_vc(depth, d_vc, d_vc_merge)) * to_geometric;
                 radiance += beta * material_emission(m, s.uv) / (1.0 + w_camera);
             }
         }
