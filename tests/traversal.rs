@@ -35,6 +35,8 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
     match layout {
         BvhLayout::Bvh2 => {
             v.push(("not speculative", TraceOptions { speculative: false, ..base }));
+            // The integrators' loops (the trace kernels run them in lockstep by default).
+            v.push(("divergent loops", TraceOptions { lockstep: false, ..base }));
             // The stack is independent of the triangle test and of pre-splits (which make the
             // deeper trees): one build per scene is enough.
             if tri_test == TriTest::Watertight && opts.pre_split {
@@ -50,7 +52,12 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
         BvhLayout::Bvh4 => {
             v.truncate(2);
             v.push(("not speculative", TraceOptions { speculative: false, ..base }));
+            v.push(("divergent loops", TraceOptions { lockstep: false, ..base }));
             v.push(("float slab test", TraceOptions { int_slabs: false, ..base }));
+            // Dynamic fetch: lanes refilled one by one (3 groups: many refills per subgroup),
+            // and three at a time with the device's default launch.
+            v.push(("dynamic fetch at 1 lane, 3 groups", TraceOptions { persistent: Some(3), refill_lanes: 1, ..base }));
+            v.push(("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }));
         }
         BvhLayout::Cwbvh => {
             v.push(("postponing", TraceOptions { postpone: true, ..base }));
@@ -122,6 +129,7 @@ fn check_layout(
                 }
                 Some((tri, h)) => {
                     assert_ne!(g.tri, NO_HIT, "{name} {variant} ray {i} ({o}, {d}): CPU hit triangle {tri} at t={}, GPU missed", h.t);
+                    assert!((g.tri as usize) < bvh.tri_ids.len(), "{name} {variant} ray {i}: GPU hit prim {} is no triangle", g.tri);
                     let gtri = bvh.tri_ids[g.tri as usize];
                     if gtri != tri {
                         // A tie: two triangles at the same distance (a shared edge or vertex,
@@ -205,7 +213,8 @@ fn shadow_rays_to_the_light(rng: &mut Pcg, n: usize) -> Vec<GpuRay> {
 }
 
 /// Rays of three kinds: from outside toward the scene, random directions from inside, and
-/// segments between random points (shadow-like, finite tmax).
+/// segments between random points (shadow-like, finite tmax); every 101st a ray without a
+/// segment (tmax < 0, as ray generation marks one that is not traced: no hit).
 fn mixed_rays(rng: &mut Pcg, lo: Vec3, hi: Vec3, n: usize) -> Vec<GpuRay> {
     let c = (lo + hi) * 0.5;
     let ext = (hi - lo).length();
@@ -222,6 +231,8 @@ fn mixed_rays(rng: &mut Pcg, lo: Vec3, hi: Vec3, n: usize) -> Vec<GpuRay> {
                 ray(a, (b - a).normalize(), (b - a).length())
             }
         })
+        .enumerate()
+        .map(|(i, r)| if i % 101 == 100 { GpuRay { dir: r.dir.truncate().extend(-1.0), ..r } } else { r })
         .collect()
 }
 

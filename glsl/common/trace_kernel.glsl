@@ -24,14 +24,101 @@ layout(push_constant) uniform Push { TracePush pc; };
 void trace_one(uint i, inout uvec2 stats) {
     GpuRay r = rays[i];
     TraceHit h = TraceHit(r.dir.w, NO_HIT, vec2(0.0));
-    if (r.dir.w >= 0.0) {
+    // Lockstep loops (SPEC_LOCKSTEP) take every lane, a ray without a segment too (it is
+    // done at once): the call then sits in no branch.
+    if (LOCKSTEP != 0u || r.dir.w >= 0.0) {
         h = trace_ray(r.origin.xyz, r.dir.xyz, r.origin.w, r.dir.w, ANY_HIT != 0u, stats);
     }
     hits[i] = GpuHit(h.t, h.prim, h.bary.x, h.bary.y);
 }
 
+#ifdef TRAVERSE_BVH4
+layout(constant_id = SPEC_REFILL_LANES) const uint REFILL_LANES = 0u;
+
+// Persistent threads with dynamic fetch (Aila & Laine 2009, section 3's "dynamic fetch"):
+// the 4-wide traversal's lockstep loops (traverse_bvh4.glsl) with rays taken from the global
+// counter whenever REFILL_LANES lanes of the subgroup are done, so that a subgroup keeps few
+// lanes idle behind its slowest ray. A done lane writes its hit at the next refill; the loop
+// ends when the rays have run out (or the subgroup's refills, pc.max_batches) and no lane
+// holds one.
+void trace_dynamic(inout uvec2 stats) {
+    const uint NO_RAY = 0xffffffffu;
+    bool any_hit = ANY_HIT != 0u;
+    uint ray = NO_RAY;
+    bool exhausted = false;
+    uint refills = 0u;
+    PreparedRay pr = prepare_ray(vec3(0.0), vec3(0.0, 0.0, 1.0), 0.0);
+    Bvh4Ray br = bvh4_ray(vec3(0.0), vec3(0.0, 0.0, 1.0));
+    vec3 idir = br.idir, ood_near = br.ood_near, ood_far = br.ood_far;
+    uint nx = br.nx, ny = br.ny, nz = br.nz;
+    float tmin = 0.0;
+    TraceHit hit = TraceHit(0.0, NO_HIT, vec2(0.0));
+    TRAVERSAL_STACK_INIT();
+    int node = int(TRAVERSAL_SENTINEL);
+    int leaf = 0;
+    while (true) {
+        bool idle = node == int(TRAVERSAL_SENTINEL);
+        uvec4 idle_lanes = subgroupBallot(idle);
+        uint idle_count = subgroupBallotBitCount(idle_lanes);
+        if (idle_count >= min(REFILL_LANES, subgroupBallotBitCount(subgroupBallot(true)))) {
+            if (idle && ray != NO_RAY) {
+                hits[ray] = GpuHit(hit.t, hit.prim, hit.bary.x, hit.bary.y);
+                ray = NO_RAY;
+            }
+            if (!exhausted) {
+                uint base = 0u;
+                if (subgroupElect()) {
+                    base = atomicAdd(next_ray, idle_count);
+                }
+                base = subgroupBroadcastFirst(base);
+                // At most pc.max_batches refills per subgroup (the host sizes the launch for
+                // that; see persistent_launch: llvmpipe's loop limiter).
+                refills++;
+                exhausted = base + idle_count >= pc.count || refills >= pc.max_batches;
+                uint i = base + subgroupBallotExclusiveBitCount(idle_lanes);
+                if (idle && i < pc.count) {
+                    GpuRay r = rays[i];
+                    ray = i;
+                    tmin = r.origin.w;
+                    pr = prepare_ray(r.origin.xyz, r.dir.xyz, tmin);
+                    br = bvh4_ray(r.origin.xyz, r.dir.xyz);
+                    idir = br.idir;
+                    ood_near = br.ood_near;
+                    ood_far = br.ood_far;
+                    nx = br.nx;
+                    ny = br.ny;
+                    nz = br.nz;
+                    hit = TraceHit(r.dir.w, NO_HIT, vec2(0.0));
+                    sp = 0;
+                    // A ray without a segment (tmax < 0) is done at once, as trace_one has it.
+                    node = r.dir.w >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
+                    leaf = 0;
+                }
+            }
+            if (!subgroupAny(ray != NO_RAY)) {
+                break;
+            }
+        }
+        while (true) {
+            if (uint(node) < TRAVERSAL_SENTINEL) {
+                #include "traverse_bvh4_step.glsl"
+            }
+            if (TRAVERSAL_DESCEND_LOCKSTEP()) {
+                break;
+            }
+        }
+        TRAVERSAL_LEAVES_LOCKSTEP();
+    }
+}
+#endif
+
 void main() {
     uvec2 stats = uvec2(0u);
+#ifdef TRAVERSE_BVH4
+    if (PERSISTENT != 0u && REFILL_LANES != 0u) {
+        trace_dynamic(stats);
+    } else
+#endif
     if (PERSISTENT != 0u) {
         // Persistent threads (Aila & Laine 2009, section 3): only as many workgroups as the
         // GPU keeps resident are launched, and each subgroup fetches a batch of

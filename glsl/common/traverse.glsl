@@ -72,6 +72,16 @@ bool test_leaf_triangle(PreparedRay pr, uint i, inout TraceHit hit, inout uvec2 
 // 1 (default): the slab tests' minima and maxima on the distances' bits as signed integers
 // (see trace_ray and cwbvh_intersect_children); 0: as floats. The same boxes are hit either way.
 layout(constant_id = SPEC_INT_SLABS) const uint INT_SLABS = 1u;
+// Lockstep loops (SPEC_LOCKSTEP; trace_ray_lockstep of the binary and 4-wide layouts, with
+// speculative traversal): every lane of the subgroup runs the traversal's loops until no lane
+// has work left, a lane whose ray is done idling, and the loops end on subgroup votes. The
+// speculative vote then sits in loops the subgroup runs together, which NVIDIA's compiler
+// turns into one vote and a cheap check of the lanes, instead of a convergence test (MATCH,
+// REDUX) with an active mask kept in shared memory per step (scripts/device/sass.py). H200,
+// Sponza, `bench traversal`: binary +4 % / +9 % / +3 %, 4-wide (leaf size 3, quality 3) +4 %
+// / +5 % / +2.5 % on primary / shadow / diffuse rays; in the integrators' megakernels the same
+// loops cost 4-19 %, so only the trace kernels use them (session 16, docs/traversal.md).
+layout(constant_id = SPEC_LOCKSTEP) const uint LOCKSTEP = 0u;
 
 #ifdef TRAVERSE_CWBVH
 #include "traverse_cwbvh.glsl"
@@ -148,13 +158,78 @@ int stack_cull_bits(float t) {
     return floatBitsToInt(t * BOX_EXIT_SCALE);
 }
 
+// Lockstep loops (LOCKSTEP): the descent ends when no lane has an inner node and no leaf yet
+// (lanes holding a postponed leaf keep descending speculatively, done lanes idle).
+#define TRAVERSAL_DESCEND_LOCKSTEP() !subgroupAny(uint(node) < TRAVERSAL_SENTINEL && leaf >= 0)
+// Their leaf phase: this lane's postponed leaf, then `node` if it is a leaf too; an any-hit
+// ray that finds a hit ends its traversal (node = the sentinel) and idles.
+#define TRAVERSAL_LEAVES_LOCKSTEP()                                                                \
+    while (leaf < 0) {                                                                             \
+        uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                                 \
+        uint count_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;                                \
+        bool found_ = false;                                                                       \
+        for (uint i_ = first_; i_ < first_ + count_; i_++) {                                       \
+            if (test_leaf_triangle(pr, i_, hit, stats) && any_hit) {                               \
+                found_ = true;                                                                     \
+                break;                                                                             \
+            }                                                                                      \
+        }                                                                                          \
+        if (found_) {                                                                              \
+            node = int(TRAVERSAL_SENTINEL);                                                        \
+            leaf = 0;                                                                              \
+        } else {                                                                                   \
+            leaf = node;                                                                           \
+            if (node < 0) {                                                                        \
+                TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                                 \
+            }                                                                                      \
+        }                                                                                          \
+    }
+
 #ifdef TRAVERSE_BVH4
 #include "traverse_bvh4.glsl"
 #else
 
+// The same traversal with the loops in lockstep over the subgroup (LOCKSTEP, the trace
+// kernels): a lane whose ray is done idles until every lane's is.
+TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+    PreparedRay pr = prepare_ray(o, d, tmin);
+    if (TRAVERSAL_STATS != 0u) {
+        traversal_counts.x++;
+    }
+    vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
+    vec3 idir = 1.0 / dd;
+    vec4 o_xy = o.xxyy;
+    vec4 idir_xy = idir.xxyy;
+    TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
+    TRAVERSAL_STACK_INIT();
+    // A ray without a segment (tmax < 0) is done at once (no branch around the loops).
+    int node = tmax >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
+    int leaf = 0;
+    while (true) {
+        while (true) {
+            if (uint(node) < TRAVERSAL_SENTINEL) {
+                #include "traverse_bvh2_step.glsl"
+            }
+            if (TRAVERSAL_DESCEND_LOCKSTEP()) {
+                break;
+            }
+        }
+        TRAVERSAL_LEAVES_LOCKSTEP();
+        if (!subgroupAny(node != int(TRAVERSAL_SENTINEL))) {
+            break;
+        }
+    }
+    return hit;
+}
+
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
 TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+    if (LOCKSTEP != 0u && SPECULATIVE != 0u) {
+        return trace_ray_lockstep(o, d, tmin, tmax, any_hit, stats);
+    }
     PreparedRay pr = prepare_ray(o, d, tmin);
     if (TRAVERSAL_STATS != 0u) {
         traversal_counts.x++;
@@ -175,52 +250,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     while (node != int(TRAVERSAL_SENTINEL)) {
         // Inner nodes: descend until this lane holds a leaf and every active lane does.
         while (uint(node) < TRAVERSAL_SENTINEL) {
-            BvhNode n = fetch_node(node);
-            if (TRAVERSAL_STATS != 0u) {
-                stats.x++;
-                traversal_counts.y++;
-            }
-            // (p - o) idir, as written: its rounding is what BOX_EXIT_SCALE covers (Ize 2013).
-            // p idir - o idir with o idir computed once is one instruction less per plane
-            // but, contracted to a multiply-add (as lavapipe's compiler does), off by the
-            // rounding of o idir, an absolute error that lost hits far from the world's origin
-            // (tests/traversal.rs, small_triangles_far_from_the_origin...). That form with the
-            // origin term widened by its rounding (the 4-wide kernel's) was mixed here on the
-            // H200: shadow rays 4.91 against 4.73 Grays/s, diffuse 1.48 against 1.55.
-            vec4 t0xy = (n.c0_xy - o_xy) * idir_xy;
-            vec4 t1xy = (n.c1_xy - o_xy) * idir_xy;
-            vec4 tz = (n.c01_z - o.z) * idir.z;
-            float c0min, c0max, c1min, c1max;
-            if (INT_SLABS != 0u) {
-                // The same selections on the floats' bits as signed integers (Aila & Laine
-                // 2009's Kepler trick): exact where it matters, since tmin and hit.t are not
-                // negative and a negative float, whichever the integer order picks, loses
-                // to tmin in a near distance and rejects the box in a far one.
-                ivec4 a0 = floatBitsToInt(t0xy), a1 = floatBitsToInt(t1xy), az = floatBitsToInt(tz);
-                int lo = floatBitsToInt(tmin), hi = floatBitsToInt(hit.t);
-                c0min = intBitsToFloat(max(max(min(a0.x, a0.y), min(a0.z, a0.w)), max(min(az.x, az.y), lo)));
-                c0max = intBitsToFloat(min(min(max(a0.x, a0.y), max(a0.z, a0.w)), min(max(az.x, az.y), hi)));
-                c1min = intBitsToFloat(max(max(min(a1.x, a1.y), min(a1.z, a1.w)), max(min(az.z, az.w), lo)));
-                c1max = intBitsToFloat(min(min(max(a1.x, a1.y), max(a1.z, a1.w)), min(max(az.z, az.w), hi)));
-            } else {
-                c0min = max(max(min(t0xy.x, t0xy.y), min(t0xy.z, t0xy.w)), max(min(tz.x, tz.y), tmin));
-                c0max = min(min(max(t0xy.x, t0xy.y), max(t0xy.z, t0xy.w)), min(max(tz.x, tz.y), hit.t));
-                c1min = max(max(min(t1xy.x, t1xy.y), min(t1xy.z, t1xy.w)), max(min(tz.z, tz.w), tmin));
-                c1max = min(min(max(t1xy.x, t1xy.y), max(t1xy.z, t1xy.w)), min(max(tz.z, tz.w), hit.t));
-            }
-            bool hit0 = c0min <= c0max * BOX_EXIT_SCALE;
-            bool hit1 = c1min <= c1max * BOX_EXIT_SCALE;
-            bool none = !hit0 && !hit1;
-            bool near1 = hit1 && (!hit0 || c1min < c0min);
-            TRAVERSAL_STACK_NEXT(node, none, near1 ? n.children.y : n.children.x, stack_cull_bits(hit.t));
-            if (hit0 && hit1) {
-                TRAVERSAL_STACK_PUSH(near1 ? n.children.x : n.children.y, floatBitsToInt(near1 ? c0min : c1min));
-            }
-            // Postpone a leaf and keep descending (speculative traversal).
-            if (node < 0 && leaf >= 0) {
-                leaf = node;
-                TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));
-            }
+            #include "traverse_bvh2_step.glsl"
             // As !subgroupAny rather than subgroupAll(leaf < 0): the same vote, 3 % faster on
             // the H200 (session 12).
             if (SPECULATIVE != 0u ? !subgroupAny(leaf >= 0) : leaf < 0) {

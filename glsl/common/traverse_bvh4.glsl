@@ -18,13 +18,16 @@ int pick4(ivec4 v, uint s) {
     return (s & 2u) != 0u ? ((s & 1u) != 0u ? v.w : v.z) : ((s & 1u) != 0u ? v.y : v.x);
 }
 
-// Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts 4-wide
-// nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
-TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
-    PreparedRay pr = prepare_ray(o, d, tmin);
-    if (TRAVERSAL_STATS != 0u) {
-        traversal_counts.x++;
-    }
+// What a ray's node steps need: its reciprocal direction, the origin's slab term widened
+// for near and far planes, and the index of each axis' near planes.
+struct Bvh4Ray {
+    vec3 idir;
+    vec3 ood_near;
+    vec3 ood_far;
+    uint nx, ny, nz;
+};
+
+Bvh4Ray bvh4_ray(vec3 o, vec3 d) {
     vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
                    abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
@@ -45,6 +48,54 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     uint nx = dd.x < 0.0 ? 1u : 0u;
     uint ny = dd.y < 0.0 ? 3u : 2u;
     uint nz = dd.z < 0.0 ? 5u : 4u;
+    return Bvh4Ray(idir, ood_near, ood_far, nx, ny, nz);
+}
+
+// The same traversal with the loops in lockstep over the subgroup (SPEC_LOCKSTEP, the trace
+// kernels; see traverse.glsl): a lane whose ray is done idles until every lane's is.
+TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+    PreparedRay pr = prepare_ray(o, d, tmin);
+    if (TRAVERSAL_STATS != 0u) {
+        traversal_counts.x++;
+    }
+    Bvh4Ray br = bvh4_ray(o, d);
+    vec3 idir = br.idir, ood_near = br.ood_near, ood_far = br.ood_far;
+    uint nx = br.nx, ny = br.ny, nz = br.nz;
+    TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
+    TRAVERSAL_STACK_INIT();
+    // A ray without a segment (tmax < 0) is done at once (no branch around the loops).
+    int node = tmax >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
+    int leaf = 0;
+    while (true) {
+        while (true) {
+            if (uint(node) < TRAVERSAL_SENTINEL) {
+                #include "traverse_bvh4_step.glsl"
+            }
+            if (TRAVERSAL_DESCEND_LOCKSTEP()) {
+                break;
+            }
+        }
+        TRAVERSAL_LEAVES_LOCKSTEP();
+        if (!subgroupAny(node != int(TRAVERSAL_SENTINEL))) {
+            break;
+        }
+    }
+    return hit;
+}
+
+// Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts 4-wide
+// nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
+TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+    if (LOCKSTEP != 0u && SPECULATIVE != 0u) {
+        return trace_ray_lockstep(o, d, tmin, tmax, any_hit, stats);
+    }
+    PreparedRay pr = prepare_ray(o, d, tmin);
+    if (TRAVERSAL_STATS != 0u) {
+        traversal_counts.x++;
+    }
+    Bvh4Ray br = bvh4_ray(o, d);
+    vec3 idir = br.idir, ood_near = br.ood_near, ood_far = br.ood_far;
+    uint nx = br.nx, ny = br.ny, nz = br.nz;
 
     TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
     TRAVERSAL_STACK_INIT();
@@ -54,70 +105,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     while (node != int(TRAVERSAL_SENTINEL)) {
         // Inner nodes: descend until this lane holds a leaf and every active lane does.
         while (uint(node) < TRAVERSAL_SENTINEL) {
-            if (TRAVERSAL_STATS != 0u) {
-                stats.x++;
-                traversal_counts.y++;
-            }
-            // The children's pointers are read with the planes; the next node is chosen
-            // without a branch (TRAVERSAL_STACK_NEXT).
-            ivec4 children = bvh4_nodes[node].children;
-            vec4 near_x = bvh4_nodes[node].planes[nx] * idir.x - ood_near.x;
-            vec4 far_x = bvh4_nodes[node].planes[nx ^ 1u] * idir.x - ood_far.x;
-            vec4 near_y = bvh4_nodes[node].planes[ny] * idir.y - ood_near.y;
-            vec4 far_y = bvh4_nodes[node].planes[ny ^ 1u] * idir.y - ood_far.y;
-            vec4 near_z = bvh4_nodes[node].planes[nz] * idir.z - ood_near.z;
-            vec4 far_z = bvh4_nodes[node].planes[nz ^ 1u] * idir.z - ood_far.z;
-            vec4 t_near, t_far;
-            if (INT_SLABS != 0u) {
-                // On the bits as signed integers, as in the binary kernel: tmin and hit.t are
-                // not negative, so a negative distance loses to tmin in t_near and rejects the
-                // box in t_far whichever the integer order picks.
-                ivec4 lo = ivec4(floatBitsToInt(tmin)), hi = ivec4(floatBitsToInt(hit.t));
-                t_near = intBitsToFloat(max(max(floatBitsToInt(near_x), floatBitsToInt(near_y)), max(floatBitsToInt(near_z), lo)));
-                t_far = intBitsToFloat(min(min(floatBitsToInt(far_x), floatBitsToInt(far_y)), min(floatBitsToInt(far_z), hi)));
-            } else {
-                t_near = max(max(near_x, near_y), max(near_z, vec4(tmin)));
-                t_far = min(min(far_x, far_y), min(far_z, vec4(hit.t)));
-            }
-            bvec4 hit4 = lessThanEqual(t_near, t_far * BOX_EXIT_SCALE);
-            if (any_hit) {
-                // Any hit ends the ray, so the order of the hit children matters less than
-                // the work of ordering them: the lowest hit slot next, the others pushed as
-                // they come (no keys, no sorting network). H200, Sponza, leaf size 3, quality
-                // 3: shadow rays 6.30-6.32 against 5.97-6.02 Grays/s sorted, though they
-                // visit 15.8 nodes against 14.8 (session 13).
-                uint m = (hit4.x ? 1u : 0u) | (hit4.y ? 2u : 0u) | (hit4.z ? 4u : 0u) | (hit4.w ? 8u : 0u);
-                TRAVERSAL_STACK_NEXT(node, m == 0u, pick4(children, uint(findLSB(m))), 0);
-                m &= m - 1u;
-                for (int i = 0; i < 3 && m != 0u; i++) {
-                    TRAVERSAL_STACK_PUSH(pick4(children, uint(findLSB(m))), 0);
-                    m &= m - 1u;
-                }
-            } else {
-                uvec4 key = mix(uvec4(0xffffffffu), (floatBitsToUint(t_near) & ~3u) | uvec4(0u, 1u, 2u, 3u), hit4);
-                // Sorting network (0,1) (2,3) (0,2) (1,3) (1,2): k0 nearest .. k3 farthest.
-                uint a = min(key.x, key.y), b = max(key.x, key.y);
-                uint c = min(key.z, key.w), e = max(key.z, key.w);
-                uint k0 = min(a, c), k3 = max(b, e);
-                uint f = max(a, c), g = min(b, e);
-                uint k1 = min(f, g), k2 = max(f, g);
-                bool none = k0 == 0xffffffffu;
-                TRAVERSAL_STACK_NEXT(node, none, pick4(children, k0), stack_cull_bits(hit.t));
-                if (k3 != 0xffffffffu) {
-                    TRAVERSAL_STACK_PUSH(pick4(children, k3), int(k3 & ~3u));
-                }
-                if (k2 != 0xffffffffu) {
-                    TRAVERSAL_STACK_PUSH(pick4(children, k2), int(k2 & ~3u));
-                }
-                if (k1 != 0xffffffffu) {
-                    TRAVERSAL_STACK_PUSH(pick4(children, k1), int(k1 & ~3u));
-                }
-            }
-            // Postpone a leaf and keep descending (speculative traversal).
-            if (node < 0 && leaf >= 0) {
-                leaf = node;
-                TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));
-            }
+            #include "traverse_bvh4_step.glsl"
             // As !subgroupAny rather than subgroupAll(leaf < 0): the same vote, 1-2 % faster on
             // the H200 (session 12).
             if (SPECULATIVE != 0u ? !subgroupAny(leaf >= 0) : leaf < 0) {

@@ -764,6 +764,119 @@ s13d)
   "$B" diff /tmp/bidir-m1-c.exr /tmp/bidir-c.exr 2>&1 | grep -iE "rmse"
   "$B" diff /tmp/bidir-m1-s.exr /tmp/bidir-s.exr 2>&1 | grep -iE "rmse"
   ;;
+s16d)
+  # Session 16: the trace kernels' lockstep loops (default) against --divergent-loops (the
+  # integrators' loops), persistent threads with batches against dynamic fetch (--refill N),
+  # Sponza; then the integrators (unchanged loops: against s16c's exp 0 figures).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 40"
+  L3="--bvh bvh4 --leaf-size 3 --quality 3"
+  for r in 1 2; do
+    for c in "$L3" "$L3 --divergent-loops" "--bvh bvh2" "--bvh bvh2 --divergent-loops" "--bvh bvh4" "$L3 --persistent" "$L3 --refill 8" "$L3 --refill 16" "$L3 --refill 24" "$L3 --refill 28" "$L3 --refill 32"; do
+      echo "== sponza $c"; $T "$B" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  for c in "--bvh bvh2" "--bvh bvh4" "--bvh cwbvh"; do
+    echo "== cornell 1920x1080 $c"; $T "$B" bench traversal --width 1920 --height 1080 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  for i in pt pt-nee bdpt; do
+    echo "== cornell $i"; $T "$B" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+  done
+  echo "== caustic bdpt"; $T "$B" bench render $CAU --width 256 --height 256 --integrator bdpt --spp 256 2>&1 | grep -E "Msamples" | head -1
+  for i in pt-nee bdpt; do
+    echo "== sponza $i"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  echo "== sponza bdpt bvh4"; $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  D=/tmp/nvcache16; rm -rf $D; mkdir -p $D
+  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal "$SP" --camera CameraMain $L3 --refill 8 --reps 3 --warmup 1 > /dev/null 2>&1
+  tar czf "$OUT/nvcache-refill.tgz" -C $D .
+  ;;
+s16c)
+  # Session 16 (measurement build): BIDIR_TRAV_EXP 1 (loops the subgroup runs together: votes
+  # in uniform control flow) on every layout, 17 (and the ray origin in shared memory for the
+  # leaf tests, 4-wide trace kernel only); the trace kernels and the integrators.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 40"
+  for r in 1 2; do
+    for e in 0 1 17; do
+      echo "== sponza bvh4 l3 q3 exp $e"; BIDIR_TRAV_EXP=$e $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+    for l in bvh2 cwbvh bvh4; do
+      for e in 0 1; do
+        echo "== sponza $l exp $e"; BIDIR_TRAV_EXP=$e $T "$B" bench traversal "$SP" --camera CameraMain --bvh $l 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  for e in 0 1 0 1; do
+    for i in pt pt-nee bdpt; do
+      echo "== cornell $i exp $e"; BIDIR_TRAV_EXP=$e $T "$B" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    done
+    echo "== caustic bdpt exp $e"; BIDIR_TRAV_EXP=$e $T "$B" bench render $CAU --width 256 --height 256 --integrator bdpt --spp 256 2>&1 | grep -E "Msamples" | head -1
+    for i in pt-nee bdpt; do
+      echo "== sponza $i exp $e"; BIDIR_TRAV_EXP=$e $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator $i --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+    done
+    echo "== sponza bdpt bvh4 exp $e"; BIDIR_TRAV_EXP=$e $T "$B" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  D=/tmp/nvcache17; rm -rf $D; mkdir -p $D
+  BIDIR_TRAV_EXP=17 __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --reps 3 --warmup 1 > /dev/null 2>&1
+  tar czf "$OUT/nvcache17.tgz" -C $D .
+  ;;
+s16b)
+  # Session 16 (measurement build): 4-wide traversal experiments by BIDIR_TRAV_EXP bits (1:
+  # loops the subgroup runs together, votes in uniform control flow; 2: the watertight
+  # test's shear computed per leaf visit; 4: no origin slack, measurement only), Sponza,
+  # leaf size 3, quality 3; then the machine code of 1 and 3.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for e in 0 1 2 3 4 6 7; do
+      echo "== sponza bvh4 exp $e"; BIDIR_TRAV_EXP=$e $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  echo "== sponza bvh4 --no-speculative"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --no-speculative 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  for e in 1 3; do
+    D=/tmp/nvcache$e; rm -rf $D; mkdir -p $D
+    BIDIR_TRAV_EXP=$e __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --reps 3 --warmup 1 > /dev/null 2>&1
+    tar czf "$OUT/nvcache$e.tgz" -C $D .
+  done
+  ;;
+s16s)
+  # Session 16: the machine code of the 4-wide trace kernels (leaf size 3, quality 3) as the
+  # driver compiled them: the shader disk cache comes back as $OUT/nvcache.tgz, for
+  # scripts/device/sass.py here. Also the figures of the same run.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  export __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1
+  timeout -k 5 120 "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+  tar czf "$OUT/nvcache.tgz" -C $D .
+  ;;
+s16a)
+  # Session 16: light paths per pixel (--light-paths R) against equal-time error, now that
+  # light tracing is no longer a strategy of direct lighting (Cornell box, caustic scene,
+  # the Cornell box whose light hides above a panel: seed-to-seed RMSE).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for t in 0.1 1; do
+    echo "== cornell pt-nee --time $t"; $T "$B" render $CB --integrator pt-nee --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+  done
+  for r in 2 1 0.5 0.25 0.125 0.0625; do
+    echo "== cornell bdpt bench r=$r"; $T "$B" bench render $CB --integrator bdpt --light-paths $r --spp 1024 2>&1 | grep -E "Msamples" | head -1
+    for t in 0.1 1; do
+      echo "== cornell bdpt --time $t r=$r"; $T "$B" render $CB --integrator bdpt --light-paths $r --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+    echo "== caustic bdpt --time 1 r=$r"; $T "$B" render $CAU --integrator bdpt --light-paths $r --time 1 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    for s in 1 2; do $T "$B" render $HID --integrator bdpt --light-paths $r --seed $s --time 1 -o /tmp/h$s.exr 2>&1 | grep -iE "spp in"; done
+    echo "== hidden bdpt --time 1 r=$r, seed 1 against seed 2: $("$B" diff /tmp/h1.exr /tmp/h2.exr 2>&1 | grep -i rmse)"
+  done
+  ;;
 s15f)
   # Session 15's final code (B) against session 14's (BASE, 2cfbab6): the issue's before/after
   # table (time-budgeted renders, Cornell box against the sharper reference, the caustic scene

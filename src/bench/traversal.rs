@@ -52,6 +52,12 @@ pub struct Options {
     pub persistent: Option<u32>,
     /// Binary layout: speculative traversal (default) or plain while-while.
     pub speculative: bool,
+    /// Binary and 4-wide layouts, speculative: loops in lockstep over the subgroup (default;
+    /// `TraceOptions::lockstep`).
+    pub lockstep: bool,
+    /// 4-wide layout, persistent: dynamic fetch as soon as this many lanes are done (0:
+    /// batches; `TraceOptions::refill_lanes`).
+    pub refill_lanes: u32,
     /// Compressed wide layout: triangle postponing.
     pub postpone: bool,
     /// Binary layouts: the stack's top in registers, the rest in shared memory.
@@ -81,6 +87,8 @@ impl Default for Options {
             alpha: false,
             persistent: None,
             speculative: true,
+            lockstep: true,
+            refill_lanes: 0,
             postpone: false,
             short_stack: false,
             int_slabs: true,
@@ -124,6 +132,8 @@ pub struct Report {
     /// Workgroups of the persistent kernel (None: one invocation per ray).
     pub persistent_groups: Option<u32>,
     pub speculative: bool,
+    pub lockstep: bool,
+    pub refill_lanes: u32,
     pub postpone: bool,
     pub short_stack: bool,
     pub int_slabs: bool,
@@ -188,6 +198,8 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let mut trace_opts = TraceOptions::new(opts.build.tri_test);
     trace_opts.layout = opts.build.layout;
     trace_opts.speculative = opts.speculative;
+    trace_opts.lockstep = opts.lockstep;
+    trace_opts.refill_lanes = opts.refill_lanes;
     trace_opts.postpone = opts.postpone;
     trace_opts.short_stack = opts.short_stack;
     trace_opts.int_slabs = opts.int_slabs;
@@ -316,6 +328,8 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
         persistent_groups: timing.persistent_groups(),
         speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
+        lockstep: opts.lockstep && opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
+        refill_lanes: if opts.persistent.is_some() { opts.refill_lanes } else { 0 },
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         short_stack: opts.short_stack,
         int_slabs: opts.int_slabs,
@@ -349,6 +363,8 @@ impl Report {
             ("persistent", Json::Bool(self.persistent_groups.is_some())),
             ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
             ("speculative", Json::Bool(self.speculative)),
+            ("lockstep", Json::Bool(self.lockstep)),
+            ("refill_lanes", Json::Int(self.refill_lanes as i64)),
             ("postpone", Json::Bool(self.postpone)),
             ("short_stack", Json::Bool(self.short_stack)),
             ("int_slabs", Json::Bool(self.int_slabs)),
@@ -411,6 +427,8 @@ impl Report {
             if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
                 + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
                 + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
+                + if self.layout != BvhLayout::Cwbvh && self.speculative && !self.lockstep { ", divergent loops" } else { "" }
+                + &if self.refill_lanes > 0 { format!(", dynamic fetch at {} done lanes", self.refill_lanes) } else { String::new() }
                 + if self.postpone { ", triangle postponing" } else { "" }
                 + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
                 + if !self.int_slabs { ", float slab test" } else { "" }

@@ -91,6 +91,16 @@ pub struct TraversalArgs {
     /// the speculative one (Aila & Laine 2009).
     #[arg(long)]
     pub no_speculative: bool,
+    /// Binary and 4-wide BVHs: let each lane leave the traversal's loops on its own, as the
+    /// integrators do, instead of running them in lockstep over the subgroup until every lane
+    /// is done (the default: its speculative vote is cheaper).
+    #[arg(long)]
+    pub divergent_loops: bool,
+    /// 4-wide BVH, persistent threads (implies --persistent): refill a subgroup's done lanes
+    /// with new rays as soon as N of them are done (dynamic fetch) instead of fetching a batch
+    /// when all are.
+    #[arg(long, value_name = "N")]
+    pub refill: Option<u32>,
     /// Compressed wide BVH: postpone triangle tests while few lanes have any (Ylitie et al.
     /// 2017, section 4).
     #[arg(long)]
@@ -205,6 +215,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.layout = a.bvh;
     o.alpha = a.alpha;
     o.speculative = !a.no_speculative;
+    o.lockstep = !a.divergent_loops;
     o.postpone = a.postpone;
     o.short_stack = a.short_stack;
     o.int_slabs = !a.float_slabs;
@@ -212,12 +223,18 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.sort = a.sort;
     o.workgroup_size = a.workgroup_size;
     o.driver_rt = a.driver_rt;
-    o.persistent = match (a.persistent, a.persistent_groups) {
+    o.persistent = match (a.persistent || a.refill.is_some(), a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),
         (true, None) => Some(0),
         (false, None) => None,
     };
+    if let Some(n) = a.refill {
+        if !(1..=128).contains(&n) || a.bvh != bidir::bvh::BvhLayout::Bvh4 || a.no_speculative || a.divergent_loops {
+            anyhow::bail!("--refill {n}: 1 to 128 lanes, with --bvh bvh4 and its speculative lockstep loops (not --no-speculative or --divergent-loops)");
+        }
+        o.refill_lanes = n;
+    }
     let cam = bidir::gpu_data::gpu_camera(&loaded.camera);
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();

@@ -329,6 +329,15 @@ gpu_consts! {
     /// BDPT and VCM: 16-byte words per slot of BIND_LIGHT_VERTICES: 6 (a `LightVertex`) or 4
     /// (the compact form without the glossy, volume and merging fields; glsl/common/bdpt.glsl).
     pub const SPEC_LIGHT_VERTEX_WORDS: u32 = 56;
+    /// Binary and 4-wide speculative traversal: 1 runs its loops in lockstep over the
+    /// subgroup (a lane whose ray is done idles until every lane's is, so the speculative vote
+    /// sits in uniform control flow; the trace kernels' default), 0 lets each lane leave them
+    /// on its own (the integrators, where lockstep loops are slower; glsl/common/traverse.glsl).
+    pub const SPEC_LOCKSTEP: u32 = 57;
+    /// 4-wide persistent trace kernels: 0 fetches a batch of rays when every lane of a
+    /// subgroup is done; N > 0 refills the done lanes with new rays as soon as N of them are
+    /// (dynamic fetch, Aila & Laine 2009; glsl/common/trace_kernel.glsl).
+    pub const SPEC_REFILL_LANES: u32 = 58;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`).
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared

@@ -42,6 +42,14 @@ pub struct TraceOptions {
     /// Binary layout: speculative while-while traversal (Aila & Laine 2009), the default;
     /// false: plain while-while (see SPEC_SPECULATIVE).
     pub speculative: bool,
+    /// Binary and 4-wide layouts, speculative: the traversal's loops in lockstep over the
+    /// subgroup (SPEC_LOCKSTEP), the default; false: each lane leaves them on its own, as in
+    /// the integrators.
+    pub lockstep: bool,
+    /// 4-wide layout, persistent, lockstep: refill a subgroup's done lanes with new rays as
+    /// soon as this many are done (SPEC_REFILL_LANES, dynamic fetch); 0 (default): a batch
+    /// when all are.
+    pub refill_lanes: u32,
     /// Compressed wide layout: triangle postponing (see SPEC_CWBVH_POSTPONE).
     pub postpone: bool,
     /// Binary layouts, geometry only: the stack's top four entries in registers, the rest in
@@ -66,6 +74,8 @@ impl TraceOptions {
             persistent: None,
             layout: BvhLayout::Bvh2,
             speculative: true,
+            lockstep: true,
+            refill_lanes: 0,
             postpone: false,
             short_stack: false,
             int_slabs: true,
@@ -106,11 +116,13 @@ pub fn persistent_batch_cap(info: &crate::vk::DeviceInfo) -> u32 {
 
 /// (workgroups, batches per subgroup) of a persistent launch over `count` rays: `groups`
 /// workgroups, or more where `max_batches` batches of each subgroup could not cover every
-/// ray (each subgroup fetches whole batches of its size, so a workgroup covers
-/// TRACE_WG_SIZE × max_batches rays), and never more than one invocation per ray needs.
-pub fn persistent_launch(count: u32, groups: u32, max_batches: u32) -> (u32, u32) {
+/// ray, and never more than one invocation per ray needs. `batch_share`: the least part of
+/// a subgroup's lanes one batch fetches (1: whole batches of its size, so a workgroup covers
+/// TRACE_WG_SIZE × max_batches rays; dynamic fetch refills as few as its threshold).
+pub fn persistent_launch(count: u32, groups: u32, max_batches: u32, batch_share: f64) -> (u32, u32) {
     let per_ray = count.div_ceil(abi::TRACE_WG_SIZE);
-    let needed = (count as u64).div_ceil(abi::TRACE_WG_SIZE as u64 * max_batches.max(1) as u64) as u32;
+    let per_group = (abi::TRACE_WG_SIZE as f64 * batch_share.clamp(1e-3, 1.0)).floor().max(1.0) as u64;
+    let needed = (count as u64).div_ceil(per_group * max_batches.max(1) as u64).min(u32::MAX as u64) as u32;
     (groups.max(needed).min(per_ray), max_batches.max(1))
 }
 
@@ -130,6 +142,8 @@ pub struct Tracer {
     counter: Buffer,
     /// Most ray batches one subgroup of a persistent kernel fetches.
     max_batches: u32,
+    /// The device's subgroup size (dynamic fetch's launch).
+    subgroup_size: u32,
 }
 
 impl Tracer {
@@ -145,9 +159,21 @@ impl Tracer {
         trace_specs.push(Spec { id: abi::SPEC_PERSISTENT, value: opts.persistent.is_some() as u32 });
         match opts.layout {
             BvhLayout::Bvh2 | BvhLayout::Bvh2q | BvhLayout::Bvh4 => {
-                trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 })
+                trace_specs.push(Spec { id: abi::SPEC_SPECULATIVE, value: opts.speculative as u32 });
+                // Lockstep loops are the speculative traversal's (trace_ray_lockstep).
+                trace_specs.push(Spec { id: abi::SPEC_LOCKSTEP, value: (opts.lockstep && opts.speculative) as u32 });
             }
             BvhLayout::Cwbvh => trace_specs.push(Spec { id: abi::SPEC_CWBVH_POSTPONE, value: opts.postpone as u32 }),
+        }
+        if opts.refill_lanes > 0 {
+            if opts.layout != BvhLayout::Bvh4 || opts.persistent.is_none() || !opts.speculative || !opts.lockstep {
+                let msg = format!(
+                    "dynamic fetch ({} lanes) needs the 4-wide layout, persistent threads and the speculative lockstep loops",
+                    opts.refill_lanes
+                );
+                return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
+            }
+            trace_specs.push(Spec { id: abi::SPEC_REFILL_LANES, value: opts.refill_lanes });
         }
         trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
         if opts.rays_per_invocation != 1 {
@@ -211,6 +237,7 @@ impl Tracer {
             persistent,
             counter: ctx.create_buffer("trace.ray_counter", 4, Memory::Device)?,
             max_batches: persistent_batch_cap(ctx.info()),
+            subgroup_size: ctx.info().subgroup_size,
         })
     }
 
@@ -255,7 +282,10 @@ impl Tracer {
         let mut groups = k.groups_for(count.div_ceil(self.opts.rays_per_invocation.max(1)));
         if let Some(persistent_groups) = self.persistent {
             rec.fill_buffer(&self.counter, 0);
-            (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches);
+            // Dynamic fetch refills at least min(refill_lanes, subgroup size) lanes at a time.
+            let sg = self.subgroup_size.max(1);
+            let share = if self.opts.refill_lanes > 0 { self.opts.refill_lanes.min(sg) as f64 / sg as f64 } else { 1.0 };
+            (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches, share);
         }
         rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])
     }
@@ -353,10 +383,18 @@ mod tests {
         for count in [1u32, 63, 64, 65, 90_000, 2_073_600] {
             for groups in [1u32, 3, 1024, 4224] {
                 for cap in [1u32, 32, u32::MAX] {
-                    let (g, b) = persistent_launch(count, groups, cap);
+                    let (g, b) = persistent_launch(count, groups, cap, 1.0);
                     assert!(g >= 1 && g <= count.div_ceil(wg), "{count} {groups} {cap}: {g} groups");
                     assert!(g as u64 * wg as u64 * b as u64 >= count as u64, "{count} {groups} {cap}: {g} x {b} batches");
                     assert!(g >= groups.min(count.div_ceil(wg)));
+                }
+                // Dynamic fetch: batches of as few as `share` of a subgroup's lanes (1 of 8,
+                // 3 of 8, 4 of 32), with the CPU's cap or none.
+                for (share, cap) in [(0.125, 32u32), (0.375, 32), (0.125, u32::MAX), (4.0 / 32.0, 32)] {
+                    let (g, b) = persistent_launch(count, groups, cap, share);
+                    let per_group = (wg as f64 * share).floor() as u64;
+                    assert!(g >= 1 && g <= count.div_ceil(wg), "{count} {groups} {cap} {share}: {g} groups");
+                    assert!(g as u64 * per_group * b as u64 >= count as u64, "{count} {groups} {cap} {share}: {g} x {b} batches");
                 }
             }
         }
