@@ -80,7 +80,7 @@ layout(constant_id = SPEC_INT_SLABS) const uint INT_SLABS = 1u;
 // REDUX) with an active mask kept in shared memory per step (scripts/device/sass.py). H200,
 // Sponza, `bench traversal`: binary +4 % / +9 % / +3 %, 4-wide (leaf size 3, quality 3) +4 %
 // / +5 % / +2.5 % on primary / shadow / diffuse rays; in the integrators' megakernels the same
-// loops cost 4-19 %, so only the trace kernels use them (session 16, docs/traversal.md).
+// loops cost 3-19 %, so only the trace kernels use them (session 16, docs/traversal.md).
 layout(constant_id = SPEC_LOCKSTEP) const uint LOCKSTEP = 0u;
 
 #ifdef TRAVERSE_CWBVH
