@@ -35,6 +35,15 @@ uvec3 traversal_counts = uvec3(0u);
 // ray touches (cf. Ize 2013, "Robust BVH Ray Traversal").
 const float BOX_EXIT_SCALE = 1.0000004;
 
+// The ray's reciprocal direction, with zero components replaced by tiny ones of the same sign
+// (every slab distance finite; each component has the sign of the direction's).
+vec3 traversal_inverse_direction(vec3 d) {
+    vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
+                   abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
+    return 1.0 / dd;
+}
+
 #ifdef TRAVERSE_WITH_ALPHA
 // Defined by the includer (scene.glsl): false where an alpha-tested triangle has a hole.
 bool traverse_alpha_hit(uint prim, vec2 bary);
@@ -185,44 +194,12 @@ int stack_cull_bits(float t) {
         }                                                                                          \
     }
 
+// The lockstep traversal of the binary and 4-wide layouts (below), which their trace_ray calls.
+TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats);
+
 #ifdef TRAVERSE_BVH4
 #include "traverse_bvh4.glsl"
 #else
-
-// The same traversal with the loops in lockstep over the subgroup (LOCKSTEP, the trace
-// kernels): a lane whose ray is done idles until every lane's is.
-TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
-    PreparedRay pr = prepare_ray(o, d, tmin);
-    if (TRAVERSAL_STATS != 0u) {
-        traversal_counts.x++;
-    }
-    vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
-                   abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
-                   abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
-    vec3 idir = 1.0 / dd;
-    vec4 o_xy = o.xxyy;
-    vec4 idir_xy = idir.xxyy;
-    TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
-    TRAVERSAL_STACK_INIT();
-    // A ray without a segment (tmax < 0) is done at once (no branch around the loops).
-    int node = tmax >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
-    int leaf = 0;
-    while (true) {
-        while (true) {
-            if (uint(node) < TRAVERSAL_SENTINEL) {
-                #include "traverse_bvh2_step.glsl"
-            }
-            if (TRAVERSAL_DESCEND_LOCKSTEP()) {
-                break;
-            }
-        }
-        TRAVERSAL_LEAVES_LOCKSTEP();
-        if (!subgroupAny(node != int(TRAVERSAL_SENTINEL))) {
-            break;
-        }
-    }
-    return hit;
-}
 
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts inner
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
@@ -234,11 +211,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     if (TRAVERSAL_STATS != 0u) {
         traversal_counts.x++;
     }
-    // Reciprocal direction with zero components replaced by tiny ones of the same sign.
-    vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
-                   abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
-                   abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
-    vec3 idir = 1.0 / dd;
+    vec3 idir = traversal_inverse_direction(d);
     vec4 o_xy = o.xxyy;
     vec4 idir_xy = idir.xxyy;
 
@@ -275,6 +248,49 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
     return hit;
 }
 #endif // TRAVERSE_BVH4
+
+// trace_ray with the loops in lockstep over the subgroup (LOCKSTEP, the trace kernels): the
+// same node step as the layout's trace_ray (its include file), a lane whose ray is done
+// idling until every lane's is.
+TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+    PreparedRay pr = prepare_ray(o, d, tmin);
+    if (TRAVERSAL_STATS != 0u) {
+        traversal_counts.x++;
+    }
+#ifdef TRAVERSE_BVH4
+    Bvh4Ray br = bvh4_ray(o, d);
+    vec3 idir = br.idir, ood_near = br.ood_near, ood_far = br.ood_far;
+    uint nx = br.nx, ny = br.ny, nz = br.nz;
+#else
+    vec3 idir = traversal_inverse_direction(d);
+    vec4 o_xy = o.xxyy;
+    vec4 idir_xy = idir.xxyy;
+#endif
+    TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
+    TRAVERSAL_STACK_INIT();
+    // A ray without a segment (tmax < 0) is done at once (no branch around the loops).
+    int node = tmax >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
+    int leaf = 0;
+    while (true) {
+        while (true) {
+            if (uint(node) < TRAVERSAL_SENTINEL) {
+#ifdef TRAVERSE_BVH4
+                #include "traverse_bvh4_step.glsl"
+#else
+                #include "traverse_bvh2_step.glsl"
+#endif
+            }
+            if (TRAVERSAL_DESCEND_LOCKSTEP()) {
+                break;
+            }
+        }
+        TRAVERSAL_LEAVES_LOCKSTEP();
+        if (!subgroupAny(node != int(TRAVERSAL_SENTINEL))) {
+            break;
+        }
+    }
+    return hit;
+}
 
 #endif // TRAVERSE_CWBVH
 #endif

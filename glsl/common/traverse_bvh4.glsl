@@ -28,10 +28,7 @@ struct Bvh4Ray {
 };
 
 Bvh4Ray bvh4_ray(vec3 o, vec3 d) {
-    vec3 dd = vec3(abs(d.x) > 1e-20 ? d.x : (d.x >= 0.0 ? 1e-20 : -1e-20),
-                   abs(d.y) > 1e-20 ? d.y : (d.y >= 0.0 ? 1e-20 : -1e-20),
-                   abs(d.z) > 1e-20 ? d.z : (d.z >= 0.0 ? 1e-20 : -1e-20));
-    vec3 idir = 1.0 / dd;
+    vec3 idir = traversal_inverse_direction(d);
     // Slab distances as one multiply-add per plane, p idir - o idir, with o idir computed
     // once per ray (written plainly, the compiler factors it back into (p - o) idir, two
     // instructions). o idir's rounding is an absolute error that BOX_EXIT_SCALE's relative
@@ -45,42 +42,10 @@ Bvh4Ray bvh4_ray(vec3 o, vec3 d) {
     precise vec3 slack = abs(ood) * (1.0 / 4194304.0);
     precise vec3 ood_near = ood + slack;
     precise vec3 ood_far = ood - slack;
-    uint nx = dd.x < 0.0 ? 1u : 0u;
-    uint ny = dd.y < 0.0 ? 3u : 2u;
-    uint nz = dd.z < 0.0 ? 5u : 4u;
+    uint nx = idir.x < 0.0 ? 1u : 0u;
+    uint ny = idir.y < 0.0 ? 3u : 2u;
+    uint nz = idir.z < 0.0 ? 5u : 4u;
     return Bvh4Ray(idir, ood_near, ood_far, nx, ny, nz);
-}
-
-// The same traversal with the loops in lockstep over the subgroup (SPEC_LOCKSTEP, the trace
-// kernels; see traverse.glsl): a lane whose ray is done idles until every lane's is.
-TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
-    PreparedRay pr = prepare_ray(o, d, tmin);
-    if (TRAVERSAL_STATS != 0u) {
-        traversal_counts.x++;
-    }
-    Bvh4Ray br = bvh4_ray(o, d);
-    vec3 idir = br.idir, ood_near = br.ood_near, ood_far = br.ood_far;
-    uint nx = br.nx, ny = br.ny, nz = br.nz;
-    TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
-    TRAVERSAL_STACK_INIT();
-    // A ray without a segment (tmax < 0) is done at once (no branch around the loops).
-    int node = tmax >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
-    int leaf = 0;
-    while (true) {
-        while (true) {
-            if (uint(node) < TRAVERSAL_SENTINEL) {
-                #include "traverse_bvh4_step.glsl"
-            }
-            if (TRAVERSAL_DESCEND_LOCKSTEP()) {
-                break;
-            }
-        }
-        TRAVERSAL_LEAVES_LOCKSTEP();
-        if (!subgroupAny(node != int(TRAVERSAL_SENTINEL))) {
-            break;
-        }
-    }
-    return hit;
 }
 
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts 4-wide
