@@ -56,11 +56,13 @@ void trace_dynamic(inout uvec2 stats) {
     TRAVERSAL_STACK_INIT();
     int node = int(TRAVERSAL_SENTINEL);
     int leaf = 0;
+    // Every lane of a persistent subgroup runs the loop to its end.
+    uint refill_at = min(REFILL_LANES, subgroupBallotBitCount(subgroupBallot(true)));
     while (true) {
         bool idle = node == int(TRAVERSAL_SENTINEL);
         uvec4 idle_lanes = subgroupBallot(idle);
         uint idle_count = subgroupBallotBitCount(idle_lanes);
-        if (idle_count >= min(REFILL_LANES, subgroupBallotBitCount(subgroupBallot(true)))) {
+        if (idle_count >= refill_at) {
             if (idle && ray != NO_RAY) {
                 hits[ray] = GpuHit(hit.t, hit.prim, hit.bary.x, hit.bary.y);
                 ray = NO_RAY;

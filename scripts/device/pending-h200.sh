@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -763,6 +763,14 @@ s13d)
   echo "== images, M against B (0: the slots never ran out)"
   "$B" diff /tmp/bidir-m1-c.exr /tmp/bidir-c.exr 2>&1 | grep -iE "rmse"
   "$B" diff /tmp/bidir-m1-s.exr /tmp/bidir-s.exr 2>&1 | grep -iE "rmse"
+  ;;
+s16h)
+  # Session 16's review: dynamic fetch with the subgroup's lane count taken once.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  for c in "--refill 28" "" "--refill 24"; do
+    echo "== sponza l3 q3 $c"; timeout -k 5 40 "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
   ;;
 s16g)
   # Session 16: dynamic fetch's launch size (--persistent-groups; the default is the SMs'

@@ -116,14 +116,21 @@ pub fn persistent_batch_cap(info: &crate::vk::DeviceInfo) -> u32 {
 
 /// (workgroups, batches per subgroup) of a persistent launch over `count` rays: `groups`
 /// workgroups, or more where `max_batches` batches of each subgroup could not cover every
-/// ray, and never more than one invocation per ray needs. `batch_share`: the least part of
-/// a subgroup's lanes one batch fetches (1: whole batches of its size, so a workgroup covers
-/// TRACE_WG_SIZE × max_batches rays; dynamic fetch refills as few as its threshold).
-pub fn persistent_launch(count: u32, groups: u32, max_batches: u32, batch_share: f64) -> (u32, u32) {
+/// ray, and never more than one invocation per ray needs. `rays_per_batch`: the fewest rays
+/// one batch of a workgroup's subgroups takes together (TRACE_WG_SIZE where each subgroup
+/// fetches whole batches of its size; fewer with dynamic fetch, `refill_rays_per_batch`).
+pub fn persistent_launch(count: u32, groups: u32, max_batches: u32, rays_per_batch: u32) -> (u32, u32) {
     let per_ray = count.div_ceil(abi::TRACE_WG_SIZE);
-    let per_group = (abi::TRACE_WG_SIZE as f64 * batch_share.clamp(1e-3, 1.0)).floor().max(1.0) as u64;
+    let per_group = rays_per_batch.clamp(1, abi::TRACE_WG_SIZE) as u64;
     let needed = (count as u64).div_ceil(per_group * max_batches.max(1) as u64).min(u32::MAX as u64) as u32;
     (groups.max(needed).min(per_ray), max_batches.max(1))
+}
+
+/// The fewest rays a workgroup's subgroups take in one round of dynamic fetch: each refills
+/// at least min(`refill_lanes`, its lanes) (glsl/common/trace_kernel.glsl, trace_dynamic).
+pub fn refill_rays_per_batch(refill_lanes: u32, subgroup_size: u32) -> u32 {
+    let lanes = subgroup_size.clamp(1, abi::TRACE_WG_SIZE);
+    (abi::TRACE_WG_SIZE / lanes) * refill_lanes.clamp(1, lanes)
 }
 
 /// Trace and ray-generation kernels specialised for one triangle test.
@@ -282,10 +289,11 @@ impl Tracer {
         let mut groups = k.groups_for(count.div_ceil(self.opts.rays_per_invocation.max(1)));
         if let Some(persistent_groups) = self.persistent {
             rec.fill_buffer(&self.counter, 0);
-            // Dynamic fetch refills at least min(refill_lanes, subgroup size) lanes at a time.
-            let sg = self.subgroup_size.max(1);
-            let share = if self.opts.refill_lanes > 0 { self.opts.refill_lanes.min(sg) as f64 / sg as f64 } else { 1.0 };
-            (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches, share);
+            let rays_per_batch = match self.opts.refill_lanes {
+                0 => abi::TRACE_WG_SIZE,
+                n => refill_rays_per_batch(n, self.subgroup_size),
+            };
+            (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches, rays_per_batch);
         }
         rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])
     }
@@ -383,18 +391,22 @@ mod tests {
         for count in [1u32, 63, 64, 65, 90_000, 2_073_600] {
             for groups in [1u32, 3, 1024, 4224] {
                 for cap in [1u32, 32, u32::MAX] {
-                    let (g, b) = persistent_launch(count, groups, cap, 1.0);
+                    let (g, b) = persistent_launch(count, groups, cap, wg);
                     assert!(g >= 1 && g <= count.div_ceil(wg), "{count} {groups} {cap}: {g} groups");
                     assert!(g as u64 * wg as u64 * b as u64 >= count as u64, "{count} {groups} {cap}: {g} x {b} batches");
                     assert!(g >= groups.min(count.div_ceil(wg)));
                 }
-                // Dynamic fetch: batches of as few as `share` of a subgroup's lanes (1 of 8,
-                // 3 of 8, 4 of 32), with the CPU's cap or none.
-                for (share, cap) in [(0.125, 32u32), (0.375, 32), (0.125, u32::MAX), (4.0 / 32.0, 32)] {
-                    let (g, b) = persistent_launch(count, groups, cap, share);
-                    let per_group = (wg as f64 * share).floor() as u64;
-                    assert!(g >= 1 && g <= count.div_ceil(wg), "{count} {groups} {cap} {share}: {g} groups");
-                    assert!(g as u64 * per_group * b as u64 >= count as u64, "{count} {groups} {cap} {share}: {g} x {b} batches");
+                // Dynamic fetch: refills of as few as 1 or 3 of 8 lanes, 4 of 32, with the CPU's
+                // cap or none.
+                for (refill, sg, cap) in [(1u32, 8u32, 32u32), (3, 8, 32), (1, 8, u32::MAX), (4, 32, 32)] {
+                    let per_group = refill_rays_per_batch(refill, sg);
+                    assert_eq!(per_group, wg / sg * refill);
+                    let (g, b) = persistent_launch(count, groups, cap, per_group);
+                    assert!(g >= 1 && g <= count.div_ceil(wg), "{count} {groups} {cap} {refill}/{sg}: {g} groups");
+                    assert!(
+                        g as u64 * per_group as u64 * b as u64 >= count as u64,
+                        "{count} {groups} {cap} {refill}/{sg}: {g} x {b} batches"
+                    );
                 }
             }
         }
