@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -782,6 +782,95 @@ s16g)
   for g in 4224 1056 2112 8448 16896; do
     echo "== sponza $L3 --refill 28 --persistent-groups $g"; $T "$B" bench traversal "$SP" --camera CameraMain $L3 --refill 28 --persistent-groups $g 2>&1 | grep -E "^(primary|shadow|diffuse) "
   done
+  ;;
+s17d)
+  # Session 17: --light-paths auto (pilot passes at 0.5, 1 and 2 light paths per pixel, then
+  # the most efficient) against fixed ratios at equal time: the Cornell box against the
+  # sharper reference, the caustic scene at 128² against its reference, the Cornell box whose
+  # light hides above a panel (RMSE between two seeds); auto with three seeds each.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for lp in auto 1 0.5 2; do
+    seeds="1"; [ "$lp" = auto ] && seeds="1 2 3"
+    for s in $seeds; do
+      for t in 0.1 1; do
+        echo "== cornell bdpt --time $t --light-paths $lp seed $s"; $T "$B" render $CB --integrator bdpt --light-paths $lp --seed $s --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|light paths per"
+      done
+      echo "== caustic bdpt --time 1 --light-paths $lp seed $s"; $T "$B" render $CAU --integrator bdpt --light-paths $lp --seed $s --time 1 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|light paths per"
+    done
+    for pair in "1 2" "3 4"; do
+      [ "$lp" != auto ] && [ "$pair" = "3 4" ] && continue
+      set -- $pair
+      for s in $1 $2; do $T "$B" render $HID --integrator bdpt --light-paths $lp --seed $s --time 1 -o /tmp/h$s.exr 2>&1 | grep -iE "spp in|light paths per"; done
+      echo "== hidden bdpt --time 1 --light-paths $lp, seed $1 against seed $2: $("$B" diff /tmp/h$1.exr /tmp/h$2.exr 2>&1 | grep -i rmse)"
+    done
+  done
+  ;;
+s17c)
+  # Session 17 (measurement build): the lockstep descent ends as soon as BIDIR_EXP_T lanes
+  # of the subgroup hold a postponed leaf (0: when every lane that still descends holds one,
+  # the speculative traversal of Aila & Laine), 4-wide, Sponza, build quality 3 and 4,
+  # lockstep and dynamic fetch; two runs, interleaved.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for c in "--bvh bvh4 --leaf-size 3 --quality 3" "--bvh bvh4 --leaf-size 3 --quality 3 --refill 28" "--bvh bvh4 --leaf-size 3 --quality 4"; do
+      for e in 0 4 8 16 24; do
+        echo "== sponza $c exp $e"; BIDIR_EXP_T=$e $T "$B" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  ;;
+s17b)
+  # Session 17 (measurement build): the slab slack as one multiply-add per plane set (B,
+  # BIDIR_EXP_PUSH=0) and, on top, the 4-wide closest-hit step's pushes at fixed offsets below
+  # the new top, with no branch between them (BIDIR_EXP_PUSH=1), against 59d1de3 (BASE);
+  # build quality 3 and 4, interleaved, two runs; then the machine code of 1.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for q in 3 4; do
+      for c in "--bvh bvh4 --leaf-size 3 --quality $q" "--bvh bvh4 --leaf-size 3 --quality $q --refill 28"; do
+        echo "== sponza $c base"; $T "$BASE" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+        for e in 0 1; do
+          echo "== sponza $c exp $e"; BIDIR_EXP_PUSH=$e $T "$B" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+        done
+      done
+    done
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  BIDIR_EXP_PUSH=1 __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --reps 3 --warmup 1 > /dev/null 2>&1
+  tar czf "$OUT/nvcache.tgz" -C $D .
+  ;;
+s17a)
+  # Session 17: Bvh4Node's planes in slots whose index flips one bit per axis (each plane's
+  # offset from the ray's sign flips by an AND and an OR) and the slab slack as one
+  # multiply-add per axis, against 59d1de3 (BASE), interleaved, two runs; build quality 4;
+  # then the machine code of the new trace kernels.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  L3="--bvh bvh4 --leaf-size 3 --quality 3"
+  for r in 1 2; do
+    for c in "$L3" "$L3 --refill 28" "--bvh bvh4"; do
+      for b in "$BASE" "$B"; do
+        echo "== sponza $c $(basename "$b")"; $T "$b" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  for c in "--bvh bvh4 --leaf-size 3 --quality 4" "--bvh bvh4 --leaf-size 3 --quality 4 --refill 28"; do
+    echo "== sponza $c"; $T "$B" bench traversal "$SP" --camera CameraMain $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  for b in "$BASE" "$B"; do
+    echo "== sponza bdpt bvh4 $(basename "$b")"; $T "$b" bench render "$SP" --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator bdpt --bvh bvh4 --spp 64 --warmup 1 --runs 3 2>&1 | grep -E "Msamples" | head -1
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal "$SP" --camera CameraMain $L3 --reps 3 --warmup 1 > /dev/null 2>&1
+  tar czf "$OUT/nvcache.tgz" -C $D .
   ;;
 s16f)
   # Session 16's final code: the traversal table (two runs, interleaved) and the integrators
