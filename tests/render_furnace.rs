@@ -110,6 +110,8 @@ fn furnace_bdpt_light_paths_auto() {
     let scene = furnace_scene(0.5, 1.0);
     let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));
     settings.light_path_auto = true;
+    // A pilot of 2 spp passes (far below what a render trusts: MIN_PILOT_SAMPLES).
+    settings.light_path_pilot_min_samples = 0;
     let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
     // 100 spp: a pilot of 2 x 3 passes of 2 spp, then 88 at the chosen ratio.
     r.render_spp(100, |_| {}).unwrap();
@@ -125,6 +127,15 @@ fn furnace_bdpt_light_paths_auto() {
     eprintln!("bdpt:lvc light paths auto: mean {mean:.5} expected 2 ({:+.3} %), 3 sigma {:.3} %", 100.0 * err, 150.0 * se);
     assert!(1.5 * se < 0.0025, "test too noisy to resolve 0.5 %");
     assert!(err.abs() < 0.005, "light paths auto: furnace mean {mean} vs 2 ({:+.3} %)", 100.0 * err);
+    drop(r);
+    // With the default minimum a 64 x 64 pilot of 2 spp passes is too small to trust: none
+    // runs and the ratio stays.
+    let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));
+    settings.light_path_auto = true;
+    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
+    r.render_spp(100, |_| {}).unwrap();
+    assert_eq!(r.light_path_pilots(), Some(&[][..]));
+    assert_eq!((r.settings().light_path_ratio, r.samples()), (1.0, 100));
     drop(r);
     finish(ctx);
 }

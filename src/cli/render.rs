@@ -176,9 +176,12 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         r.integrator_bytes() as f64 / (1u64 << 20) as f64
     );
     if let Some(pilots) = r.light_path_pilots() {
-        let measured: Vec<String> = pilots.iter().map(|p| format!("{}: {:.3e}", p.ratio, p.cost())).collect();
+        let measured: Vec<String> = pilots
+            .iter()
+            .map(|p| format!("{}: {:.3e} x {:.3} ms = {:.3e}", p.ratio, p.variance, p.seconds_per_spp * 1e3, p.cost()))
+            .collect();
         println!(
-            "light paths per pixel: {} (auto; variance x seconds per sample: {})",
+            "light paths per pixel: {} (auto; per ratio, variance x time per sample: {})",
             r.settings().light_path_ratio,
             if measured.is_empty() { "no pilot, the render is too short".to_string() } else { measured.join(", ") }
         );

@@ -8,8 +8,9 @@
 //! before rendering says which, so the renderer measures it: it renders its first passes at
 //! each ratio of [`AUTO_RATIOS`] in turn, twice, estimates each ratio's variance per sample
 //! from the difference of its two passes and its cost per sample from their times, and keeps
-//! the ratio with the least variance x time. Every pass is an unbiased estimate whatever its
-//! ratio, so the pilot passes stay in the image.
+//! the ratio with the least variance x time where it beats the starting ratio's by a clear
+//! margin ([`SWITCH_MARGIN`]). Every pass is an unbiased estimate whatever its ratio, so the
+//! pilot passes stay in the image.
 //!
 //! ```
 //! use bidir::render::light_paths::{choose, Pilot};
@@ -19,7 +20,7 @@
 //!     Pilot { ratio: 1.0, variance: 2.5, seconds_per_spp: 1.2 },
 //!     Pilot { ratio: 2.0, variance: 1.2, seconds_per_spp: 1.6 },
 //! ];
-//! assert_eq!(choose(&pilots), Some(2.0));
+//! assert_eq!(choose(&pilots, 1.0), Some(2.0));
 //! ```
 
 use super::RenderSettings;
@@ -30,6 +31,16 @@ pub const AUTO_RATIOS: [f32; 3] = [0.5, 1.0, 2.0];
 
 /// Pilot passes per ratio (their difference estimates its variance).
 pub const PILOT_ROUNDS: u32 = 2;
+
+/// The fewest samples (pixels x samples per pixel) a pilot pass holds; shorter renders keep
+/// their ratio. The scenes where the ratio matters carry their light on rare paths, so a
+/// pass's squared differences are heavy-tailed: on lavapipe, a 64 x 64 box whose light hides
+/// above a panel measured ratio 0.5's variance at 0.051-0.085 in three renders of 40-sample
+/// passes (160 thousand samples each), and 96 x 96 passes of 6 samples chose 2, 1 and 0.5 in
+/// three renders of the same scene. A pass of 2^22 samples (256 x 256 at 64 samples per
+/// pixel) holds 25 times the 160 thousand, which should narrow such swings about five-fold
+/// (as the square root of the samples), under the switch's 10 % margin.
+pub const MIN_PILOT_SAMPLES: u64 = 1 << 22;
 
 /// Share of a time budget (`render_time`) or of the samples asked for (`render_spp`) the
 /// pilot passes take in all.
@@ -61,10 +72,24 @@ impl Pilot {
     }
 }
 
-/// The ratio whose pilot reached the least variance x time; `None` where none measured a
-/// finite, positive one (an image without noise, or without light).
-pub fn choose(pilots: &[Pilot]) -> Option<f32> {
-    pilots.iter().filter(|p| p.cost().is_finite() && p.cost() > 0.0).min_by(|a, b| a.cost().total_cmp(&b.cost())).map(|p| p.ratio)
+/// A ratio other than the starting one must beat its variance x time by this share: a pilot
+/// of a few samples is a noisy measure, and a wrong switch costs more than the gains it
+/// chases (H200, docs/results.md: the caustic scene's MSE at equal time is 1.33x at 2 light
+/// paths per pixel against its best, 0.5; the hidden light's 1.86x at 0.5 against its best,
+/// 2; at 1 neither is more than 1.28x off).
+pub const SWITCH_MARGIN: f64 = 0.1;
+
+/// The ratio to render with: the starting `current` one unless another's pilot reached a
+/// variance x time [`SWITCH_MARGIN`] below it (then the least such); `None` where `current`
+/// measured nothing finite and positive (an image without noise, or without light) and no
+/// other did either.
+pub fn choose(pilots: &[Pilot], current: f32) -> Option<f32> {
+    let valid = |p: &&Pilot| p.cost().is_finite() && p.cost() > 0.0;
+    let best = pilots.iter().filter(valid).min_by(|a, b| a.cost().total_cmp(&b.cost()))?;
+    match pilots.iter().filter(valid).find(|p| p.ratio == current) {
+        Some(c) if best.cost() > (1.0 - SWITCH_MARGIN) * c.cost() => Some(current),
+        _ => Some(best.ratio),
+    }
 }
 
 /// The image one pass added (`spp` samples per pixel): the difference of the film's sums
@@ -87,21 +112,30 @@ pub fn pass_image(before: &Accumulation, after: &Accumulation, spp: u32) -> Vec<
     out
 }
 
+/// Pixel groups of [`variance_per_sample`]'s median of means.
+pub const VARIANCE_GROUPS: usize = 7;
+
 /// Variance of one sample per pixel from two independent passes of `spp` samples each:
-/// E|A - B|^2 = 2 Var(one pass) = 2 Var(one sample) / spp, summed over the channels and
-/// averaged over the pixels. Pixels where either pass is not finite are left out.
+/// E|A - B|^2 = 2 Var(one pass) = 2 Var(one sample) / spp, summed over the channels. Averaged
+/// over the pixels as a median of means: the mean over each of [`VARIANCE_GROUPS`] groups of
+/// pixels (pixel i in group i mod the count), then their median, so that a single bright
+/// outlier of a pass of few samples does not decide the choice. Pixels where either pass is
+/// not finite are left out; NaN where none is left.
 pub fn variance_per_sample(a: &[f32], b: &[f32], spp: u32) -> f64 {
-    let (mut sum, mut pixels) = (0.0f64, 0usize);
-    for (pa, pb) in a.chunks_exact(3).zip(b.chunks_exact(3)) {
+    let mut sums = [(0.0f64, 0usize); VARIANCE_GROUPS];
+    for (i, (pa, pb)) in a.chunks_exact(3).zip(b.chunks_exact(3)).enumerate() {
         if pa.iter().chain(pb).all(|v| v.is_finite()) {
-            sum += pa.iter().zip(pb).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>();
-            pixels += 1;
+            let g = &mut sums[i % VARIANCE_GROUPS];
+            g.0 += pa.iter().zip(pb).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>();
+            g.1 += 1;
         }
     }
-    if pixels == 0 {
+    let mut means: Vec<f64> = sums.iter().filter(|g| g.1 > 0).map(|g| g.0 / g.1 as f64).collect();
+    if means.is_empty() {
         return f64::NAN;
     }
-    sum / pixels as f64 * spp as f64 / 2.0
+    means.sort_by(f64::total_cmp);
+    means[means.len() / 2] * spp as f64 / 2.0
 }
 
 /// Samples per pixel of each pilot pass for a render of `spp` samples: together the passes
@@ -139,22 +173,33 @@ mod tests {
 
     #[test]
     fn the_variance_of_two_passes_scales_to_one_sample() {
-        // Two pixels; per channel differences 2 and 0: mean over pixels of 4 + 0 = 2, x spp 8 / 2.
-        let a = [1.0, 0.0, 0.0, 5.0, 5.0, 5.0];
-        let b = [3.0, 0.0, 0.0, 5.0, 5.0, 5.0];
-        assert_eq!(variance_per_sample(&a, &b, 8), 8.0);
-        // A NaN pixel is left out.
-        let c = [1.0, 0.0, 0.0, f32::NAN, 5.0, 5.0];
+        // 7 x 10 pixels, each differing by 2 in its red channel: 4 per pixel, x spp 8 / 2.
+        let n = VARIANCE_GROUPS * 10;
+        let a: Vec<f32> = (0..n).flat_map(|_| [1.0, 0.0, 5.0]).collect();
+        let b: Vec<f32> = (0..n).flat_map(|_| [3.0, 0.0, 5.0]).collect();
+        assert_eq!(variance_per_sample(&a, &b, 8), 16.0);
+        // One outlier moves one group's mean, not the median; a NaN pixel is left out.
+        let mut c = a.clone();
+        c[0] = 1000.0;
+        c[3 * 5 + 1] = f32::NAN;
         assert_eq!(variance_per_sample(&c, &b, 8), 16.0);
+        // Four of the seven groups twice as far apart: the median is theirs.
+        let d: Vec<f32> = (0..n).flat_map(|i| [if i % VARIANCE_GROUPS < 4 { 7.0 } else { 1.0 }, 0.0, 5.0]).collect();
+        assert_eq!(variance_per_sample(&d, &b, 8), 64.0);
         assert!(variance_per_sample(&[f32::NAN; 3], &[0.0; 3], 1).is_nan());
     }
 
     #[test]
-    fn choose_takes_the_least_variance_times_time_and_skips_what_measured_nothing() {
+    fn choose_switches_only_for_a_clear_gain_and_skips_what_measured_nothing() {
         let p = |ratio, variance, seconds_per_spp| Pilot { ratio, variance, seconds_per_spp };
-        assert_eq!(choose(&[p(0.5, 2.0, 1.0), p(1.0, 1.5, 1.2), p(2.0, 1.2, 1.8)]), Some(1.0));
-        assert_eq!(choose(&[p(0.5, f64::NAN, 1.0), p(1.0, 0.0, 1.0), p(2.0, 3.0, 1.0)]), Some(2.0));
-        assert_eq!(choose(&[p(0.5, 0.0, 1.0)]), None);
+        // 2 is 5 % better than 1: not enough to leave it; 20 % better: taken.
+        assert_eq!(choose(&[p(0.5, 2.0, 1.0), p(1.0, 1.5, 1.2), p(2.0, 1.0, 1.71)], 1.0), Some(1.0));
+        assert_eq!(choose(&[p(0.5, 2.0, 1.0), p(1.0, 1.5, 1.2), p(2.0, 1.0, 1.44)], 1.0), Some(2.0));
+        // The least of several clear gains.
+        assert_eq!(choose(&[p(0.5, 1.0, 1.0), p(1.0, 1.5, 1.2), p(2.0, 1.0, 1.44)], 1.0), Some(0.5));
+        // Nothing measured at the current ratio: the best valid one.
+        assert_eq!(choose(&[p(0.5, f64::NAN, 1.0), p(1.0, 0.0, 1.0), p(2.0, 3.0, 1.0)], 1.0), Some(2.0));
+        assert_eq!(choose(&[p(0.5, 0.0, 1.0)], 1.0), None);
     }
 
     #[test]

@@ -187,6 +187,10 @@ pub struct RenderSettings {
     /// store is sized for the largest. Single-device `render_spp` / `render_time` only;
     /// elsewhere `light_path_ratio` holds.
     pub light_path_auto: bool,
+    /// `--light-paths auto`: the fewest samples (pixels x samples per pixel) a pilot pass
+    /// must hold, else no pilot runs and `light_path_ratio` holds
+    /// (`light_paths::MIN_PILOT_SAMPLES`; tests lower it).
+    pub light_path_pilot_min_samples: u64,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (to
     /// measure what specialisation buys).
     pub all_material_code: bool,
@@ -262,6 +266,7 @@ impl RenderSettings {
             light_path_len: 8,
             light_path_ratio: 1.0,
             light_path_auto: false,
+            light_path_pilot_min_samples: light_paths::MIN_PILOT_SAMPLES,
             sample_slices: 0,
             all_material_code: false,
             pass_target: Duration::from_millis(250),
@@ -729,10 +734,17 @@ impl Renderer {
 
     /// `--light-paths auto`'s pilot (see `light_paths`): `PILOT_ROUNDS` passes of `spp`
     /// samples at each of `AUTO_RATIOS`, interleaved, then the ratio of least variance x time
-    /// from here on. The pilot's passes stay in the film (each an unbiased estimate).
+    /// (where clearly better than the starting one) from here on. The pilot's passes stay in
+    /// the film (each an unbiased estimate). Passes of fewer samples than
+    /// `light_path_pilot_min_samples` would measure too noisily: then nothing runs and the
+    /// ratio stays.
     fn run_light_path_pilot(&mut self, spp: u32) -> Result<(), RenderError> {
         use light_paths::{Pilot, AUTO_RATIOS, PILOT_ROUNDS};
         let spp = spp.clamp(1, self.max_pass_spp());
+        if (self.film.width as u64 * self.film.height as u64 * spp as u64) < self.settings.light_path_pilot_min_samples {
+            self.light_path_pilots = Some(Vec::new());
+            return Ok(());
+        }
         let pixels = self.camera.size.x * self.camera.size.y;
         let mut first: Vec<Option<Vec<f32>>> = vec![None; AUTO_RATIOS.len()];
         let mut variance = vec![f64::NAN; AUTO_RATIOS.len()];
@@ -762,7 +774,7 @@ impl Renderer {
             .filter(|(k, _)| !variance[*k].is_nan())
             .map(|(k, &ratio)| Pilot { ratio, variance: variance[k], seconds_per_spp: seconds[k] / (PILOT_ROUNDS * spp) as f64 })
             .collect();
-        let chosen = light_paths::choose(&pilots).unwrap_or(self.settings.light_path_ratio);
+        let chosen = light_paths::choose(&pilots, self.settings.light_path_ratio).unwrap_or(self.settings.light_path_ratio);
         self.kernels.set_light_path_ratio(pixels, chosen);
         self.settings.light_path_ratio = chosen;
         // The pass model learnt several ratios' costs: it starts over from the chosen one's.
