@@ -786,7 +786,8 @@ s16g)
 s17d)
   # Session 17: --light-paths auto (pilot passes at 0.5, 1 and 2 light paths per pixel, then
   # the most efficient) against fixed ratios at equal time: the Cornell box against the
-  # sharper reference, the caustic scene at 128² against its reference, the Cornell box whose
+  # sharper reference, the caustic scene at 128² against its reference (2 s: a pilot pass
+  # there needs 2^22 samples), the Cornell box whose
   # light hides above a panel (RMSE between two seeds); auto with three seeds each.
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
   CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
@@ -798,7 +799,7 @@ s17d)
       for t in 0.1 1; do
         echo "== cornell bdpt --time $t --light-paths $lp seed $s"; $T "$B" render $CB --integrator bdpt --light-paths $lp --seed $s --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|light paths per"
       done
-      echo "== caustic bdpt --time 1 --light-paths $lp seed $s"; $T "$B" render $CAU --integrator bdpt --light-paths $lp --seed $s --time 1 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|light paths per"
+      echo "== caustic bdpt --time 2 --light-paths $lp seed $s"; $T "$B" render $CAU --integrator bdpt --light-paths $lp --seed $s --time 2 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|light paths per"
     done
     for pair in "1 2" "3 4"; do
       [ "$lp" != auto ] && [ "$pair" = "3 4" ] && continue
