@@ -128,6 +128,19 @@ fn furnace_bdpt_light_paths_auto() {
     assert!(1.5 * se < 0.0025, "test too noisy to resolve 0.5 %");
     assert!(err.abs() < 0.005, "light paths auto: furnace mean {mean} vs 2 ({:+.3} %)", 100.0 * err);
     drop(r);
+    // With a time budget the pilot runs once the pass model has told a pass's fixed cost from
+    // its samples' (after the calibration pass and one sized pass).
+    let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));
+    settings.light_path_auto = true;
+    settings.light_path_pilot_min_samples = 0;
+    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
+    r.render_time(std::time::Duration::from_secs(3), |_| {}).unwrap();
+    let pilots = r.light_path_pilots().expect("the pilot ran").to_vec();
+    assert_eq!(pilots.len(), AUTO_RATIOS.len(), "{pilots:?}");
+    let (mean, _) = mean_and_se(&r.image().unwrap().data);
+    eprintln!("auto with a time budget: {} spp, chose {}, mean {mean:.5}", r.samples(), r.settings().light_path_ratio);
+    assert!((mean / 2.0 - 1.0).abs() < 0.01, "light paths auto, 3 s: furnace mean {mean} vs 2");
+    drop(r);
     // With the default minimum a 64 x 64 pilot of 2 spp passes is too small to trust: none
     // runs and the ratio stays.
     let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));

@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d, s17e (docs/traversal.md). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -781,6 +781,23 @@ s16g)
   L3="--bvh bvh4 --leaf-size 3 --quality 3"
   for g in 4224 1056 2112 8448 16896; do
     echo "== sponza $L3 --refill 28 --persistent-groups $g"; $T "$B" bench traversal "$SP" --camera CameraMain $L3 --refill 28 --persistent-groups $g 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s17e)
+  # Session 17: s17d's auto renders again, the pilot now sized once the pass model knows a
+  # pass's fixed cost (in s17d the 1-spp calibration pass made every pilot too small to run).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for s in 1 2 3; do
+    echo "== cornell bdpt --time 1 --light-paths auto seed $s"; $T "$B" render $CB --integrator bdpt --light-paths auto --seed $s --time 1 --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|light paths per"
+    echo "== caustic bdpt --time 2 --light-paths auto seed $s"; $T "$B" render $CAU --integrator bdpt --light-paths auto --seed $s --time 2 --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|light paths per"
+  done
+  for pair in "1 2" "3 4" "5 6"; do
+    set -- $pair
+    for s in $1 $2; do $T "$B" render $HID --integrator bdpt --light-paths auto --seed $s --time 1 -o /tmp/h$s.exr 2>&1 | grep -iE "spp in|light paths per"; done
+    echo "== hidden bdpt --time 1 --light-paths auto, seed $1 against seed $2: $("$B" diff /tmp/h$1.exr /tmp/h$2.exr 2>&1 | grep -i rmse)"
   done
   ;;
 s17d)

@@ -146,13 +146,10 @@ pub fn pilot_spp_for_samples(spp: u32) -> u32 {
     (spp as f64 * PILOT_SHARE / passes).floor() as u32
 }
 
-/// Samples per pixel of each pilot pass for a render of `budget` seconds when one sample per
-/// pixel takes `seconds_per_spp` at the starting ratio: together the passes take about
-/// [`PILOT_SHARE`] of the budget (at least one sample each).
-pub fn pilot_spp_for_time(budget: f64, seconds_per_spp: f64) -> u32 {
-    let passes = (AUTO_RATIOS.len() as u32 * PILOT_ROUNDS) as f64;
-    let spp = budget * PILOT_SHARE / passes / seconds_per_spp.max(1e-9);
-    (spp.floor() as u32).max(1)
+/// Seconds of each pilot pass for a render of `budget` seconds: together the passes take
+/// about [`PILOT_SHARE`] of it.
+pub fn pilot_pass_seconds(budget: f64) -> f64 {
+    budget * PILOT_SHARE / (AUTO_RATIOS.len() as u32 * PILOT_ROUNDS) as f64
 }
 
 #[cfg(test)]
@@ -206,8 +203,7 @@ mod tests {
     fn pilot_sizes() {
         assert_eq!(pilot_spp_for_samples(1000), 20);
         assert_eq!(pilot_spp_for_samples(40), 0);
-        assert_eq!(pilot_spp_for_time(1.0, 0.001), 20);
-        assert_eq!(pilot_spp_for_time(0.1, 1.0), 1);
+        assert!((pilot_pass_seconds(1.0) - 0.02).abs() < 1e-12);
     }
 
     #[test]

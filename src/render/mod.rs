@@ -768,20 +768,29 @@ impl Renderer {
                 }
             }
         }
+        // Each pass's fixed cost (submission, fence wait) is the same whatever the ratio: left
+        // out where the pass model knows it.
+        let overhead = if self.pacing.fitted() { self.pacing.overhead() } else { 0.0 };
         let pilots: Vec<Pilot> = AUTO_RATIOS
             .iter()
             .enumerate()
             .filter(|(k, _)| !variance[*k].is_nan())
-            .map(|(k, &ratio)| Pilot { ratio, variance: variance[k], seconds_per_spp: seconds[k] / (PILOT_ROUNDS * spp) as f64 })
+            .map(|(k, &ratio)| {
+                let per_pass = (seconds[k] / PILOT_ROUNDS as f64 - overhead).max(0.5 * seconds[k] / PILOT_ROUNDS as f64);
+                Pilot { ratio, variance: variance[k], seconds_per_spp: per_pass / spp as f64 }
+            })
             .collect();
         let chosen = light_paths::choose(&pilots, self.settings.light_path_ratio).unwrap_or(self.settings.light_path_ratio);
         self.kernels.set_light_path_ratio(pixels, chosen);
         self.settings.light_path_ratio = chosen;
-        // The pass model learnt several ratios' costs: it starts over from the chosen one's.
-        self.pacing = PassModel::default();
+        // The pass model learnt several ratios' costs: it starts over from the chosen one's
+        // (its fixed cost, then a pass of the pilot's size).
+        let mut pacing = PassModel::default();
         if let Some(p) = pilots.iter().find(|p| p.ratio == chosen) {
-            self.pacing.record(spp, p.seconds_per_spp * spp as f64);
+            pacing.record(1, overhead + p.seconds_per_spp);
+            pacing.record(spp, overhead + p.seconds_per_spp * spp as f64);
         }
+        self.pacing = pacing;
         self.light_path_pilots = Some(pilots);
         Ok(())
     }
@@ -832,9 +841,12 @@ impl Renderer {
             };
             self.adaptive_pass(cap)?;
             progress(Progress { samples: self.samples, elapsed: start.elapsed() });
-            if self.light_path_pilot_due() && self.pacing.known() {
-                // After the calibration pass: the pilot takes about PILOT_SHARE of the budget.
-                let n = light_paths::pilot_spp_for_time(budget, self.pacing.seconds(1));
+            if self.light_path_pilot_due() && self.pacing.fitted() {
+                // Once the pass model knows a pass's fixed cost from its samples' (after the
+                // calibration pass and one sized pass; a calibration pass of 1 spp is mostly
+                // fixed cost, and sizing from it made the H200's pilot passes ten times too
+                // small): the pilot takes about PILOT_SHARE of the budget.
+                let n = self.pacing.spp_within(light_paths::pilot_pass_seconds(budget)).max(1);
                 self.run_light_path_pilot(n)?;
                 progress(Progress { samples: self.samples, elapsed: start.elapsed() });
             }
