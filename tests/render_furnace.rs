@@ -100,59 +100,6 @@ fn furnace_bdpt_light_vertex_cache_other_light_path_counts() {
     }
 }
 
-/// `--light-paths auto`: the pilot renders passes at 0.5, 1 and 2 light paths per pixel, then
-/// the rest at the ratio it chose; every pass is an unbiased estimate, so the image keeps the
-/// furnace's mean whatever the choice.
-#[test]
-fn furnace_bdpt_light_paths_auto() {
-    use bidir::render::light_paths::AUTO_RATIOS;
-    let ctx = gpu();
-    let scene = furnace_scene(0.5, 1.0);
-    let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));
-    settings.light_path_auto = true;
-    // A pilot of 2 spp passes (far below what a render trusts: MIN_PILOT_SAMPLES).
-    settings.light_path_pilot_min_samples = 0;
-    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
-    // 100 spp: a pilot of 2 x 3 passes of 2 spp, then 88 at the chosen ratio.
-    r.render_spp(100, |_| {}).unwrap();
-    let pilots = r.light_path_pilots().expect("the pilot ran").to_vec();
-    eprintln!("pilots {pilots:?}, chose {}", r.settings().light_path_ratio);
-    assert_eq!(pilots.iter().map(|p| p.ratio).collect::<Vec<_>>(), AUTO_RATIOS.to_vec());
-    assert!(pilots.iter().all(|p| p.variance > 0.0 && p.variance.is_finite() && p.seconds_per_spp > 0.0), "{pilots:?}");
-    assert!(AUTO_RATIOS.contains(&r.settings().light_path_ratio));
-    assert_eq!(r.samples(), 100);
-    let img = r.image().unwrap();
-    let (mean, se) = mean_and_se(&img.data);
-    let err = mean / 2.0 - 1.0;
-    eprintln!("bdpt:lvc light paths auto: mean {mean:.5} expected 2 ({:+.3} %), 3 sigma {:.3} %", 100.0 * err, 150.0 * se);
-    assert!(1.5 * se < 0.0025, "test too noisy to resolve 0.5 %");
-    assert!(err.abs() < 0.005, "light paths auto: furnace mean {mean} vs 2 ({:+.3} %)", 100.0 * err);
-    drop(r);
-    // With a time budget the pilot runs once the pass model has told a pass's fixed cost from
-    // its samples' (after the calibration pass and one sized pass).
-    let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));
-    settings.light_path_auto = true;
-    settings.light_path_pilot_min_samples = 0;
-    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
-    r.render_time(std::time::Duration::from_secs(3), |_| {}).unwrap();
-    let pilots = r.light_path_pilots().expect("the pilot ran").to_vec();
-    assert_eq!(pilots.len(), AUTO_RATIOS.len(), "{pilots:?}");
-    let (mean, _) = mean_and_se(&r.image().unwrap().data);
-    eprintln!("auto with a time budget: {} spp, chose {}, mean {mean:.5}", r.samples(), r.settings().light_path_ratio);
-    assert!((mean / 2.0 - 1.0).abs() < 0.01, "light paths auto, 3 s: furnace mean {mean} vs 2");
-    drop(r);
-    // With the default minimum a 64 x 64 pilot of 2 spp passes is too small to trust: none
-    // runs and the ratio stays.
-    let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));
-    settings.light_path_auto = true;
-    let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
-    r.render_spp(100, |_| {}).unwrap();
-    assert_eq!(r.light_path_pilots(), Some(&[][..]));
-    assert_eq!((r.settings().light_path_ratio, r.samples()), (1.0, 100));
-    drop(r);
-    finish(ctx);
-}
-
 /// Mean of the pixels and its standard error. Pixels are independent estimates; channels are
 /// equal here, so only pixels count.
 fn mean_and_se(data: &[f32]) -> (f64, f64) {

@@ -78,8 +78,7 @@ pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: Sam
     info.set(keys::INTEGRATOR, s.integrator.name());
     let mut set = format!("sampler {:?} max_depth {} rr_depth {} tri_test {:?}", s.sampler, s.max_depth, s.rr_depth, s.bvh.tri_test);
     if let bidir::render::Integrator::Bdpt(_) | bidir::render::Integrator::Vcm(_) = s.integrator {
-        let ratio = if s.light_path_auto { "auto".to_string() } else { s.light_path_ratio.to_string() };
-        set += &format!(" light_path_len {} light_paths {ratio}", s.light_path_len);
+        set += &format!(" light_path_len {} light_paths {}", s.light_path_len, s.light_path_ratio);
         if s.direct_light_tracing {
             set += " direct_light_tracing";
         }

@@ -92,13 +92,7 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
     args.part.apply(&mut settings, &camera)?;
     let info_settings = settings.clone();
     super::signals::on_interrupt(super::signals::FirstInterrupt::FinishPass)?;
-    if settings.light_path_auto && args.part.sample_range.is_some() {
-        bail!("--light-paths auto chooses per render, so parts of one would not merge into it exactly: give --sample-range renders a ratio (e.g. --light-paths 1)");
-    }
     if let Some(devices) = super::render_devices::device_list(opts)? {
-        if settings.light_path_auto {
-            bail!("--light-paths auto chooses from pilot passes on one device; give several devices a ratio (e.g. --light-paths 1)");
-        }
         return super::render_devices::run(args, &loaded, &settings, &devices, &outputs, reference);
     }
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
@@ -175,17 +169,6 @@ pub fn run(args: &RenderArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         r.gpu_scene().bytes as f64 / (1u64 << 20) as f64,
         r.integrator_bytes() as f64 / (1u64 << 20) as f64
     );
-    if let Some(pilots) = r.light_path_pilots() {
-        let measured: Vec<String> = pilots
-            .iter()
-            .map(|p| format!("{}: {:.3e} x {:.3} ms = {:.3e}", p.ratio, p.variance, p.seconds_per_spp * 1e3, p.cost()))
-            .collect();
-        println!(
-            "light paths per pixel: {} (auto; per ratio, variance x time per sample: {})",
-            r.settings().light_path_ratio,
-            if measured.is_empty() { "no pilot, the render is too short".to_string() } else { measured.join(", ") }
-        );
-    }
     if let Some(reference) = reference {
         let ratio = metrics::mean_ratio(&img, &reference);
         println!(

@@ -66,11 +66,9 @@ pub struct SettingsArgs {
     pub light_path_len: u32,
     /// BDPT with the light vertex cache: light paths per iteration as a multiple of the pixel
     /// count (more help caustics and light tracing, fewer save time where light paths
-    /// rarely matter), or auto: chosen from pilot passes at 0.5, 1 and 2 (the most efficient
-    /// by variance x time; `bidir render` on one device, with --spp or --time). The other
-    /// joins pair one light path with each pixel.
-    #[arg(long, default_value = "1", value_name = "RATIO|auto")]
-    pub light_paths: LightPathsArg,
+    /// rarely matter). The other joins pair one light path with each pixel.
+    #[arg(long, default_value_t = 1.0, value_name = "RATIO")]
+    pub light_paths: f32,
     /// Samples of a pixel rendered at once, each by its own GPU thread (0: enough to fill
     /// the GPU, 1 on CPU devices).
     #[arg(long, default_value_t = 0, value_name = "N")]
@@ -131,6 +129,9 @@ pub struct SettingsArgs {
 impl SettingsArgs {
     /// Settings for `integrator` with these flags applied.
     pub fn settings(&self, integrator: Integrator) -> anyhow::Result<RenderSettings> {
+        if !(self.light_paths > 0.0 && self.light_paths.is_finite()) {
+            bail!("--light-paths must be a positive multiple of the pixel count");
+        }
         let mut s = RenderSettings::new(integrator);
         s.seed = self.seed;
         s.sampler = self.sampler;
@@ -142,10 +143,7 @@ impl SettingsArgs {
             s.rr_depth = rr;
         }
         s.light_path_len = self.light_path_len;
-        match self.light_paths {
-            LightPathsArg::Ratio(r) => s.light_path_ratio = r,
-            LightPathsArg::Auto => s.light_path_auto = true,
-        }
+        s.light_path_ratio = self.light_paths;
         s.sample_slices = self.sample_slices;
         s.bvh.tri_test = self.tri_test;
         s.bvh.quality = self.bvh_quality;
@@ -204,33 +202,4 @@ pub(crate) fn parse_shadow_queue(v: &str) -> anyhow::Result<Option<Option<bidir:
             Some(Some(bidir::render::ShadowQueue { slots, chunk_samples, pause }))
         }
     })
-}
-
-/// `--light-paths`: a ratio to the pixel count, or `auto`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum LightPathsArg {
-    Ratio(f32),
-    Auto,
-}
-
-impl std::str::FromStr for LightPathsArg {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        if s == "auto" {
-            return Ok(LightPathsArg::Auto);
-        }
-        match s.parse::<f32>() {
-            Ok(r) if r > 0.0 && r.is_finite() => Ok(LightPathsArg::Ratio(r)),
-            _ => Err(format!("'{s}' is neither auto nor a positive multiple of the pixel count")),
-        }
-    }
-}
-
-impl std::fmt::Display for LightPathsArg {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            LightPathsArg::Ratio(r) => write!(f, "{r}"),
-            LightPathsArg::Auto => f.write_str("auto"),
-        }
-    }
 }

@@ -52,9 +52,6 @@ pub fn run(args: &ViewArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         bail!("--exposure {}: must be a finite number of stops", args.exposure);
     }
     let settings = args.settings.settings(args.integrator.integrator()?)?;
-    if settings.light_path_auto {
-        bail!("--light-paths auto chooses from a render's first passes; the viewer renders with a ratio (e.g. --light-paths 2)");
-    }
     let loaded = args.scene.load()?;
     super::print_warnings(&loaded.warnings);
     // Ctrl-C in the terminal: quit at once, without a half-written screenshot.

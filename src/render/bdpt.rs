@@ -97,8 +97,6 @@ pub struct Bdpt {
     pub light_path_len: u32,
     /// Light paths per camera sample.
     pub light_paths: u32,
-    /// The most light paths per camera sample the store holds (`light_paths` or more).
-    capacity_per_sample: u32,
     /// Most camera samples per pixel in one iteration (the store holds light_paths x this).
     pub max_camera_samples: u32,
     /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list, VCM's
@@ -156,19 +154,15 @@ impl Bdpt {
         if !(ratio > 0.0 && ratio.is_finite()) {
             return Err(RenderError::Unsupported(format!("light paths per pixel must be a positive number, not {ratio}")));
         }
-        // The store holds the most light paths a pass may trace (`--light-paths auto`: the
-        // largest ratio its pilot tries).
-        let capacity_ratio = super::light_paths::capacity_ratio(settings);
-        if (ratio != 1.0 || capacity_ratio != 1.0) && !matches!(join, Join::Lvc(_)) {
+        if ratio != 1.0 && !matches!(join, Join::Lvc(_)) {
             return Err(RenderError::Unsupported(format!(
                 "the {} join pairs one light path with each pixel; a light-path ratio other than 1 needs the light vertex cache (bdpt:lvc)",
                 join.name()
             )));
         }
         let per_sample = light_paths_per_sample(pixels, ratio);
-        let capacity_per_sample = light_paths_per_sample(pixels, capacity_ratio).max(per_sample);
         let camera_samples = camera_samples.max(1);
-        let paths = capacity_per_sample.saturating_mul(camera_samples);
+        let paths = per_sample.saturating_mul(camera_samples);
         let info = ctx.info();
         if !info.atomic_float_add {
             return Err(RenderError::Unsupported(format!(
@@ -258,7 +252,6 @@ impl Bdpt {
             join,
             light_path_len,
             light_paths: per_sample,
-            capacity_per_sample,
             max_camera_samples: camera_samples,
             vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
             queue,
@@ -297,7 +290,7 @@ impl Bdpt {
             None => binds.extend(super::shadow_queue::ShadowQueueTracer::unused_binds(film)),
         }
         let total = push.light_path_total;
-        assert!(total <= self.capacity_per_sample * self.max_camera_samples, "more light paths than the store holds");
+        assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
         rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
         if let Some((tracer, _)) = &self.queue {
             tracer.record_splats(rec, &binds, total, self.light.groups_for(total))?;
@@ -343,20 +336,6 @@ impl IntegratorKernels for Bdpt {
     }
 
     fn splats(&self) -> bool {
-        true
-    }
-
-    fn set_light_path_ratio(&mut self, pixels: u32, ratio: f32) -> bool {
-        let per_sample = light_paths_per_sample(pixels, ratio);
-        if !matches!(self.join, Join::Lvc(_))
-            || self.grid.is_some()
-            || ratio.is_nan()
-            || ratio <= 0.0
-            || per_sample > self.capacity_per_sample
-        {
-            return false;
-        }
-        self.light_paths = per_sample;
         true
     }
 

@@ -45,12 +45,6 @@ pub trait IntegratorKernels {
     fn shadow_queue(&self) -> Option<super::ShadowQueue> {
         None
     }
-    /// BDPT with the light vertex cache: trace `ratio` light paths per pixel from the next
-    /// pass on (within the store's capacity); false where the integrator has no such ratio
-    /// or `ratio` does not fit.
-    fn set_light_path_ratio(&mut self, _pixels: u32, _ratio: f32) -> bool {
-        false
-    }
     /// Records and submits samples `first..first + spp` of every pixel, added to the film.
     fn pass(&self, ctx: &Context, inputs: &PassInputs, first: u32, spp: u32) -> Result<(), RenderError>;
 }

@@ -19,7 +19,6 @@ mod film;
 mod first_hit;
 pub mod gpu_scene;
 mod integrator;
-pub mod light_paths;
 pub mod lights;
 pub mod multi;
 mod pacing;
@@ -182,15 +181,6 @@ pub struct RenderSettings {
     /// BDPT with the light vertex cache: light paths per iteration as a multiple of the
     /// pixel count (the megakernel joins need 1: they pair a light path with each pixel).
     pub light_path_ratio: f32,
-    /// BDPT with the light vertex cache (`--light-paths auto`): choose the light paths per
-    /// pixel from pilot passes at each of `light_paths::AUTO_RATIOS` (`light_paths.rs`); the
-    /// store is sized for the largest. Single-device `render_spp` / `render_time` only;
-    /// elsewhere `light_path_ratio` holds.
-    pub light_path_auto: bool,
-    /// `--light-paths auto`: the fewest samples (pixels x samples per pixel) a pilot pass
-    /// must hold, else no pilot runs and `light_path_ratio` holds
-    /// (`light_paths::MIN_PILOT_SAMPLES`; tests lower it).
-    pub light_path_pilot_min_samples: u64,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (to
     /// measure what specialisation buys).
     pub all_material_code: bool,
@@ -265,8 +255,6 @@ impl RenderSettings {
             sampler: Sampler::Sobol,
             light_path_len: 8,
             light_path_ratio: 1.0,
-            light_path_auto: false,
-            light_path_pilot_min_samples: light_paths::MIN_PILOT_SAMPLES,
             sample_slices: 0,
             all_material_code: false,
             pass_target: Duration::from_millis(250),
@@ -333,9 +321,6 @@ pub struct Renderer {
     slices: u32,
     /// Alpha and AOVs, where the settings ask for them.
     first_hit: Option<first_hit::FirstHitPass>,
-    /// `--light-paths auto`: what its pilot measured, once it has run (empty where the render
-    /// was too short for one).
-    light_path_pilots: Option<Vec<light_paths::Pilot>>,
 }
 
 /// Invocations that keep a large GPU busy (132 SMs x 2,048 resident threads on an H100).
@@ -377,7 +362,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
     }
     let mut s = TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64);
     if settings.integrator.stores_light_vertices() {
-        let per_sample = (pixels as f64 * light_paths::capacity_ratio(settings).max(0.0) as f64).max(1.0) as u64;
+        let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
         let limit = SLICED_STORE_BYTES.min(ctx.info().max_storage_buffer_range as u64);
         s = s.min((limit / store.max(1)).max(1));
@@ -417,7 +402,7 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     let mut invocations = shadow_queue::invocations(window.width(), window.height(), slices);
     if integrator.stores_light_vertices() {
-        invocations = bdpt::queue_invocations(invocations, pixels, light_paths::capacity_ratio(settings), slices);
+        invocations = bdpt::queue_invocations(invocations, pixels, settings.light_path_ratio, slices);
     }
     let queue = resolve_shadow_queue(ctx, settings, integrator, &scene.features, scene.bvh.layout, invocations);
     Ok(match integrator {
@@ -481,7 +466,6 @@ impl Renderer {
             pacing: PassModel::default(),
             slices,
             first_hit,
-            light_path_pilots: None,
         })
     }
 
@@ -719,96 +703,10 @@ impl Renderer {
         }
     }
 
-    /// `--light-paths auto`: what its pilot measured per ratio, once it has run.
-    pub fn light_path_pilots(&self) -> Option<&[light_paths::Pilot]> {
-        self.light_path_pilots.as_deref()
-    }
-
-    /// Whether `--light-paths auto` has its pilot still to run (BDPT with the light vertex
-    /// cache; VCM keeps its ratio).
-    fn light_path_pilot_due(&self) -> bool {
-        self.settings.light_path_auto
-            && self.light_path_pilots.is_none()
-            && matches!(self.settings.integrator, Integrator::Bdpt(Join::Lvc(_)))
-    }
-
-    /// `--light-paths auto`'s pilot (see `light_paths`): `PILOT_ROUNDS` passes of `spp`
-    /// samples at each of `AUTO_RATIOS`, interleaved, then the ratio of least variance x time
-    /// (where clearly better than the starting one) from here on. The pilot's passes stay in
-    /// the film (each an unbiased estimate). Passes of fewer samples than
-    /// `light_path_pilot_min_samples` would measure too noisily: then nothing runs and the
-    /// ratio stays.
-    fn run_light_path_pilot(&mut self, spp: u32) -> Result<(), RenderError> {
-        use light_paths::{Pilot, AUTO_RATIOS, PILOT_ROUNDS};
-        let spp = spp.clamp(1, self.max_pass_spp());
-        if (self.film.width as u64 * self.film.height as u64 * spp as u64) < self.settings.light_path_pilot_min_samples {
-            self.light_path_pilots = Some(Vec::new());
-            return Ok(());
-        }
-        let pixels = self.camera.size.x * self.camera.size.y;
-        let mut first: Vec<Option<Vec<f32>>> = vec![None; AUTO_RATIOS.len()];
-        let mut variance = vec![f64::NAN; AUTO_RATIOS.len()];
-        let mut seconds = vec![0.0f64; AUTO_RATIOS.len()];
-        // The film's sums before the next pass (one read back per pass).
-        let mut before = self.film.sums(&self.ctx, self.samples)?;
-        for _ in 0..PILOT_ROUNDS {
-            for (k, &ratio) in AUTO_RATIOS.iter().enumerate() {
-                if !self.kernels.set_light_path_ratio(pixels, ratio) {
-                    continue;
-                }
-                let t = Instant::now();
-                self.pass(spp)?;
-                seconds[k] += t.elapsed().as_secs_f64();
-                let after = self.film.sums(&self.ctx, self.samples)?;
-                let image = light_paths::pass_image(&before, &after, spp);
-                before = after;
-                match first[k].take() {
-                    None => first[k] = Some(image),
-                    Some(a) => variance[k] = light_paths::variance_per_sample(&a, &image, spp),
-                }
-            }
-        }
-        // Each pass's fixed cost (submission, fence wait) is the same whatever the ratio: left
-        // out where the pass model knows it.
-        let overhead = if self.pacing.fitted() { self.pacing.overhead() } else { 0.0 };
-        let pilots: Vec<Pilot> = AUTO_RATIOS
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| !variance[*k].is_nan())
-            .map(|(k, &ratio)| {
-                let per_pass = (seconds[k] / PILOT_ROUNDS as f64 - overhead).max(0.5 * seconds[k] / PILOT_ROUNDS as f64);
-                Pilot { ratio, variance: variance[k], seconds_per_spp: per_pass / spp as f64 }
-            })
-            .collect();
-        let chosen = light_paths::choose(&pilots, self.settings.light_path_ratio).unwrap_or(self.settings.light_path_ratio);
-        self.kernels.set_light_path_ratio(pixels, chosen);
-        self.settings.light_path_ratio = chosen;
-        // The pass model learnt several ratios' costs: it starts over from the chosen one's
-        // (its fixed cost, then a pass of the pilot's size).
-        let mut pacing = PassModel::default();
-        if let Some(p) = pilots.iter().find(|p| p.ratio == chosen) {
-            pacing.record(1, overhead + p.seconds_per_spp);
-            pacing.record(spp, overhead + p.seconds_per_spp * spp as f64);
-        }
-        self.pacing = pacing;
-        self.light_path_pilots = Some(pilots);
-        Ok(())
-    }
-
     /// Renders until `spp` samples per pixel in total, or until [`request_stop`] (then after
-    /// the pass in flight). With `--light-paths auto` the first [`light_paths::PILOT_SHARE`]
-    /// of the samples are its pilot's.
+    /// the pass in flight).
     pub fn render_spp(&mut self, spp: u32, mut progress: impl FnMut(Progress)) -> Result<(), RenderError> {
         let start = Instant::now();
-        if self.light_path_pilot_due() {
-            match light_paths::pilot_spp_for_samples(spp.saturating_sub(self.samples)) {
-                0 => self.light_path_pilots = Some(Vec::new()),
-                n => {
-                    self.run_light_path_pilot(n)?;
-                    progress(Progress { samples: self.samples, elapsed: start.elapsed() });
-                }
-            }
-        }
         while self.samples < spp && !(self.samples > 0 && stop_requested()) {
             self.adaptive_pass(spp - self.samples)?;
             progress(Progress { samples: self.samples, elapsed: start.elapsed() });
@@ -841,15 +739,6 @@ impl Renderer {
             };
             self.adaptive_pass(cap)?;
             progress(Progress { samples: self.samples, elapsed: start.elapsed() });
-            if self.light_path_pilot_due() && self.pacing.fitted() {
-                // Once the pass model knows a pass's fixed cost from its samples' (after the
-                // calibration pass and one sized pass; a calibration pass of 1 spp is mostly
-                // fixed cost, and sizing from it made the H200's pilot passes ten times too
-                // small): the pilot takes about PILOT_SHARE of the budget.
-                let n = self.pacing.spp_within(light_paths::pilot_pass_seconds(budget)).max(1);
-                self.run_light_path_pilot(n)?;
-                progress(Progress { samples: self.samples, elapsed: start.elapsed() });
-            }
         }
         Ok(())
     }

@@ -14,8 +14,6 @@ pub struct PassModel {
     last: Option<(u32, f64)>,
     /// The longest pass measured, seconds.
     longest_s: f64,
-    /// Whether `overhead_s` and `per_spp_s` come from two passes of different sizes.
-    fitted: bool,
 }
 
 /// How many times longer than the longest pass measured a budgeted pass may be
@@ -46,7 +44,6 @@ impl PassModel {
             Some((per, overhead)) => {
                 self.per_spp_s = per;
                 self.overhead_s = overhead;
-                self.fitted = true;
             }
             // One size only (or timing noise): all of it per sample, an overestimate that
             // makes the next pass smaller than it could be, never larger.
@@ -59,17 +56,6 @@ impl PassModel {
         }
         self.last = Some((spp, seconds));
         self.longest_s = self.longest_s.max(seconds);
-    }
-
-    /// Whether the model has told a pass's fixed cost from its per-sample cost (two passes of
-    /// different sizes measured).
-    pub fn fitted(&self) -> bool {
-        self.fitted
-    }
-
-    /// The fixed cost of a pass, seconds (0 until [`fitted`](Self::fitted)).
-    pub fn overhead(&self) -> f64 {
-        self.overhead_s
     }
 
     /// Predicted seconds of a pass of `spp`.
