@@ -264,6 +264,28 @@ fn one_trace_gives_the_same_image_with_every_kind_of_light() {
     finish(ctx);
 }
 
+/// The wavefront path tracer (`--wavefront`) with every kind of light at once (each builds
+/// its shadow ray its own way, here queued for the any-hit trace kernel): pt-nee gives the
+/// megakernel's image, up to the order of the film's float sums (to 1e-5 of each value).
+#[test]
+fn wavefront_gives_the_same_image_with_every_kind_of_light() {
+    let scene = every_kind_of_light_scene();
+    let ctx = gpu();
+    let image = |wavefront: bool| {
+        let mut settings = RenderSettings::new(Integrator::PtNee);
+        settings.wavefront = Some(wavefront);
+        settings.pass_target = std::time::Duration::from_secs(3600);
+        let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
+        r.render_spp(8, |_| {}).unwrap();
+        r.image().unwrap().data
+    };
+    let (on, off) = (image(true), image(false));
+    assert!(off.iter().filter(|&&v| v > 0.0).count() * 2 > off.len(), "a mostly black image");
+    let same = on.iter().zip(&off).filter(|(a, b)| (*a - *b).abs() <= 1e-5 * b.abs()).count();
+    assert_eq!(same, off.len(), "{} of {} values differ", off.len() - same, off.len());
+    finish(ctx);
+}
+
 /// The shadow-ray queue (`RenderSettings::shadow_queue`) with every kind of light at once
 /// (each builds its shadow ray its own way, and BDPT's connections theirs): pt-nee's, BDPT's
 /// and VCM's camera pass, and BDPT's and VCM's light pass (its joins to the camera), give the

@@ -247,3 +247,36 @@ fn one_trace_gives_the_same_image() {
     }
     finish(ctx);
 }
+
+/// The wavefront path tracer (`--wavefront`) runs the megakernel's path code with the same
+/// random numbers, its segments and shadow rays traced by the trace kernels between its
+/// launches (packed into queues, each ray carrying its path's stochastic-opacity seed: the tall
+/// box is half-transparent here): pt and pt-nee give the megakernel's image over every layout
+/// the integrators traverse, with one slice and three, up to the order of the film's float sums
+/// (a light sample is added to the pixel, not first to its path's sum): to 1e-5 of each value.
+#[test]
+fn wavefront_gives_the_megakernels_image() {
+    let ctx = gpu();
+    let (mut scene, camera) = small_cornell(24, 16);
+    let tall = scene.materials.iter().position(|m| m.name == "tallBox").expect("the Cornell box's tall box");
+    scene.materials[tall].blend = Some(0.5);
+    // (pt finds the small light itself: more samples for a lit image.)
+    for (integrator, spp) in [(Integrator::Pt, 64), (Integrator::PtNee, 7)] {
+        for (layout, slices) in [(BvhLayout::Cwbvh, 1), (BvhLayout::Bvh2, 3), (BvhLayout::Bvh4, 3)] {
+            let image = |wavefront: bool| {
+                let mut settings = RenderSettings::new(integrator);
+                settings.wavefront = Some(wavefront);
+                settings.bvh_layout = Some(layout);
+                settings.sample_slices = slices;
+                render_values(&ctx, &scene, &camera, settings, spp)
+            };
+            let (mega, wave) = (image(false), image(true));
+            let name = integrator.name();
+            let lit = mega.iter().filter(|&&v| v > 0.0).count();
+            assert!(lit * 3 > mega.len(), "{name}: {lit} of {} values above 0", mega.len());
+            let differ = values_differing(&wave, &mega, 1e-5);
+            assert_eq!(differ, 0, "{name} over {}, {slices} slices: {differ} of {} values differ", layout.name(), mega.len());
+        }
+    }
+    finish(ctx);
+}

@@ -645,3 +645,54 @@ fn sorted_rays_are_a_permutation_in_key_order_with_the_same_hits() {
     eprintln!("sort: {} rays over {distinct} keys, hits identical", rays.len());
     finish(ctx);
 }
+
+/// Rays a kernel queued (`Tracer::record_trace_queued`, the wavefront path tracer's): the
+/// trace kernels take the ray count from a buffer, so they trace the first count[i] rays of
+/// the buffer and no more, with the hits of tracing those rays alone, for every launch shape the
+/// wavefront tracer may use (one invocation per ray; persistent threads; dynamic fetch).
+#[test]
+fn queued_ray_counts_trace_only_the_queued_rays() {
+    use bidir::vk::{Bind, Memory};
+    let ctx = gpu();
+    let scene = bidir::scene::Scene::builtin_cornell_box();
+    let mut rng = Pcg::new(29);
+    let (lo, hi) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(556.0, 548.8, 559.2));
+    let rays = mixed_rays(&mut rng, lo, hi, 5_000);
+    let opts = BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() };
+    let bvh = Bvh::build(&scene.positions, &scene.triangles, &opts).unwrap();
+    let gbvh = GpuBvh::upload(&ctx, &bvh).unwrap();
+    let base = TraceOptions { layout: BvhLayout::Bvh4, ..TraceOptions::new(opts.tri_test) };
+    let plain = Tracer::with_options(&ctx, &base).unwrap();
+    let shapes = [
+        ("per-ray", base),
+        ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
+        ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
+    ];
+    // Queued: 1,234 rays (the count at index 1; index 0 holds a decoy).
+    let queued = 1_234usize;
+    let counts = ctx.upload_buffer("test.counts", &[4_321u32, queued as u32]).unwrap();
+    let ray_buf = ctx.upload_buffer("test.rays", &rays).unwrap();
+    let hits = ctx.create_buffer("test.hits", rays.len() as u64 * 16, Memory::Device).unwrap();
+    let stats = ctx.create_buffer("test.stats", 8, Memory::Device).unwrap();
+    const UNTOUCHED: u32 = 0xdead_beef;
+    for any_hit in [false, true] {
+        let want: Vec<GpuHit> = plain.trace(&ctx, &gbvh, &rays[..queued], any_hit).unwrap();
+        for (shape, o) in shapes {
+            let tracer = Tracer::with_options(&ctx, &TraceOptions { count_buffer: true, ..o }).unwrap();
+            ctx.submit("queued trace", |rec| {
+                rec.fill_buffer(&hits, UNTOUCHED);
+                let geometry: Vec<Bind> = gbvh.binds();
+                tracer.record_trace_queued(rec, &geometry, &ray_buf, &hits, &stats, rays.len() as u32, Some((&counts, 1)), any_hit)
+            })
+            .unwrap();
+            let got: Vec<GpuHit> = ctx.read_buffer(&hits).unwrap();
+            for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                assert_eq!((g.tri, g.t.to_bits()), (w.tri, w.t.to_bits()), "{shape}, any hit {any_hit}: ray {i}");
+            }
+            let traced_past = got[queued..].iter().filter(|h| h.tri != UNTOUCHED).count();
+            assert_eq!(traced_past, 0, "{shape}, any hit {any_hit}: {traced_past} rays past the queued count were traced");
+        }
+    }
+    drop((gbvh, plain, counts, ray_buf, hits, stats));
+    finish(ctx);
+}

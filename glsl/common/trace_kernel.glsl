@@ -20,6 +20,27 @@ layout(std430, binding = BIND_HITS) writeonly buffer Hits { GpuHit hits[]; };
 layout(std430, binding = BIND_STATS) buffer Stats { uint stat_nodes; uint stat_tris; };
 layout(std430, binding = BIND_RAY_COUNTER) coherent buffer RayCounter { uint next_ray; };
 layout(push_constant) uniform Push { TracePush pc; };
+layout(constant_id = SPEC_RAY_COUNT_BUFFER) const uint RAY_COUNT_BUFFER = 0u;
+layout(std430, binding = BIND_RAY_COUNTS) readonly buffer RayCounts { uint ray_counts[]; };
+
+// Rays to trace: pc.count, or (SPEC_RAY_COUNT_BUFFER) as many as a kernel before queued.
+uint ray_total = 0u;
+
+#ifdef TRAVERSE_WITH_ALPHA
+layout(constant_id = SPEC_RAY_SEED) const uint RAY_SEED = 0u;
+#endif
+
+// Where ray `r`'s segment starts: its tmin, or (SPEC_RAY_SEED, the wavefront path tracer's
+// rays) 0, its tmin slot then holding the path's stochastic-opacity seed, set here.
+float ray_tmin(GpuRay r) {
+#ifdef TRAVERSE_WITH_ALPHA
+    if (RAY_SEED != 0u) {
+        blend_seed = floatBitsToUint(r.origin.w);
+        return 0.0;
+    }
+#endif
+    return r.origin.w;
+}
 
 void trace_one(uint i, inout uvec2 stats) {
     GpuRay r = rays[i];
@@ -27,7 +48,7 @@ void trace_one(uint i, inout uvec2 stats) {
     // Lockstep loops (SPEC_LOCKSTEP) take every lane, a ray without a segment too (it is
     // done at once): the call then sits in no branch.
     if (LOCKSTEP != 0u || r.dir.w >= 0.0) {
-        h = trace_ray(r.origin.xyz, r.dir.xyz, r.origin.w, r.dir.w, ANY_HIT != 0u, stats);
+        h = trace_ray(r.origin.xyz, r.dir.xyz, ray_tmin(r), r.dir.w, ANY_HIT != 0u, stats);
     }
     hits[i] = GpuHit(h.t, h.prim, h.bary.x, h.bary.y);
 }
@@ -76,12 +97,12 @@ void trace_dynamic(inout uvec2 stats) {
                 // At most pc.max_batches refills per subgroup (the host sizes the launch for
                 // that; see persistent_launch: llvmpipe's loop limiter).
                 refills++;
-                exhausted = base + idle_count >= pc.count || refills >= pc.max_batches;
+                exhausted = base + idle_count >= ray_total || refills >= pc.max_batches;
                 uint i = base + subgroupBallotExclusiveBitCount(idle_lanes);
-                if (idle && i < pc.count) {
+                if (idle && i < ray_total) {
                     GpuRay r = rays[i];
                     ray = i;
-                    tmin = r.origin.w;
+                    tmin = ray_tmin(r);
                     pr = prepare_ray(r.origin.xyz, r.dir.xyz, tmin);
                     br = bvh4_ray(r.origin.xyz, r.dir.xyz);
                     idir = br.idir;
@@ -115,6 +136,7 @@ void trace_dynamic(inout uvec2 stats) {
 #endif
 
 void main() {
+    ray_total = RAY_COUNT_BUFFER != 0u ? min(ray_counts[pc.count_index], pc.count) : pc.count;
     uvec2 stats = uvec2(0u);
 #ifdef TRAVERSE_BVH4
     if (PERSISTENT != 0u && REFILL_LANES != 0u) {
@@ -137,12 +159,12 @@ void main() {
                 base = atomicAdd(next_ray, gl_SubgroupSize);
             }
             base = subgroupBroadcastFirst(base);
-            if (base >= pc.count) {
+            if (base >= ray_total) {
                 break; // uniform: every active lane holds the same base
             }
             uvec4 lanes = subgroupBallot(true);
             uint stride = subgroupBallotBitCount(lanes);
-            uint end = min(base + gl_SubgroupSize, pc.count);
+            uint end = min(base + gl_SubgroupSize, ray_total);
             for (uint i = base + subgroupBallotExclusiveBitCount(lanes); i < end; i += stride) {
                 trace_one(i, stats);
             }
@@ -154,7 +176,7 @@ void main() {
         uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
         for (uint k = 0u; k < RAYS_PER_INVOCATION; k++) {
             uint i = gl_GlobalInvocationID.x + k * stride;
-            if (i < pc.count) {
+            if (i < ray_total) {
                 trace_one(i, stats);
             }
         }

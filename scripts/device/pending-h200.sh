@@ -783,6 +783,150 @@ s16g)
     echo "== sponza $L3 --refill 28 --persistent-groups $g"; $T "$B" bench traversal "$SP" --camera CameraMain $L3 --refill 28 --persistent-groups $g 2>&1 | grep -E "^(primary|shadow|diffuse) "
   done
   ;;
+s18e)
+  # Session 18, the commit with the wavefront default (pt and pt-nee on GPUs in glossy or
+  # textured scenes without smooth mirrors or glass): the trace kernels against session 17's
+  # figures (their ray count now a variable that may come from a buffer), the defaults on
+  # every scene of s18c/s18d, pt and the rough Cornell box on and off (not measured before),
+  # and one image made both ways on this GPU. The textured Sponza as in s18c.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for q in "--quality 3" "--quality 3 --refill 28" "--quality 4"; do
+    echo "== sponza traversal bvh4 leaf 3 $q"; $T "$B" bench traversal $SP --camera CameraMain --bvh bvh4 --leaf-size 3 $q 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  SPR="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3"
+  RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 256 --height 256"
+  G=.device/scenes/gltf
+  for r in 1 2; do
+    for i in pt pt-nee bdpt; do
+      echo "== cornell $i default"; $T "$B" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator $i 2>&1 | grep -E "Msamples"
+      echo "== sponza textured $i default"; $T "$B" bench render $SPR --integrator $i 2>&1 | grep -E "Msamples"
+    done
+    echo "== caustic pt-nee default"; $T "$B" bench render $CAU --spp 1024 --warmup 1 --runs 3 --integrator pt-nee 2>&1 | grep -E "Msamples"
+    for wf in off on; do
+      echo "== rough cornell pt-nee wavefront $wf"; $T "$B" bench render $RC --spp 1024 --warmup 1 --runs 3 --integrator pt-nee --wavefront $wf 2>&1 | grep -E "Msamples"
+      echo "== sponza textured pt wavefront $wf"; $T "$B" bench render $SPR --integrator pt --wavefront $wf 2>&1 | grep -E "Msamples"
+      for m in DamagedHelmet MetalRoughSpheresNoTextures; do
+        echo "== $m pt wavefront $wf"; $T "$B" bench render $G/$m/$m.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 2 --runs 3 --integrator pt --wavefront $wf 2>&1 | grep -E "Msamples"
+      done
+      echo "== DamagedHelmet pt-nee wavefront $wf"; $T "$B" bench render $G/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 2 --runs 3 --integrator pt-nee --wavefront $wf 2>&1 | grep -E "Msamples"
+    done
+  done
+  for wf in off on; do
+    $T "$B" render $G/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --integrator pt-nee --wavefront $wf -o /tmp/dh$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== DamagedHelmet pt-nee 256 spp, wavefront against megakernel: $("$B" diff /tmp/dhon.exr /tmp/dhoff.exr 2>&1 | grep -E "RMSE|ratio" | tr '\n' ' ')"
+  echo "== sponza textured pt-nee --time 0.1 / 1 default"; for t in 0.1 1; do $T "$B" render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --time $t -o /tmp/s.exr 2>&1 | grep -iE "spp in"; done
+  ;;
+s18c)
+  # Session 18: the wavefront path tracer (slots now ~4 million by default) on the textured
+  # Sponza (.device/scenes/sponza-full: the whole folder, its eight largest PNG textures
+  # re-encoded as JPEG (quality 92; none of them alpha-tested) to travel under 64 MiB without
+  # the validation layer and the geometry-only copy); megakernel and wavefront interleaved.
+  # s18d: three glTF samples under an environment and a sun, the Cornell box and the caustic
+  # scene.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for i in pt-nee pt; do
+      for wf in off on; do
+        echo "== sponza textured 640x360 $i wavefront $wf"; $T "$B" bench render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3 --integrator $i --wavefront $wf 2>&1 | grep -E "Msamples|^pt|^trace|^shadow"
+      done
+    done
+  done
+  for wf in off on; do
+    echo "== sponza textured 1080p pt-nee wavefront $wf"; $T "$B" bench render $SP --sponza-sun-sky --camera CameraMain --width 1920 --height 1080 --spp 16 --warmup 1 --runs 3 --integrator pt-nee --wavefront $wf 2>&1 | grep -E "Msamples|^pt|^trace|^shadow"
+  done
+  for wf in off on; do
+    echo "== sponza textured pt-nee --time 1 wavefront $wf"; $T "$B" render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --wavefront $wf --time 1 -o /tmp/s$wf.exr 2>&1 | grep -iE "spp in"
+  done
+  ;;
+s18d)
+  # Session 18: see s18c.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  for m in DamagedHelmet MetalRoughSpheresNoTextures CesiumMilkTruck; do
+    for wf in off on off on; do
+      echo "== $m pt-nee wavefront $wf"; $T "$B" bench render .device/scenes/gltf/$m/$m.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 1 --runs 3 --integrator pt-nee --wavefront $wf 2>&1 | grep -E "Msamples"
+    done
+  done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  for wf in off on off on; do
+    echo "== cornell pt-nee wavefront $wf"; $T "$B" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator pt-nee --wavefront $wf 2>&1 | grep -E "Msamples"
+    echo "== caustic pt-nee wavefront $wf"; $T "$B" bench render $CAU $CB --spp 1024 --warmup 1 --runs 3 --integrator pt-nee --wavefront $wf 2>&1 | grep -E "Msamples"
+  done
+  ;;
+s18b)
+  # Session 18: s18a again with the wavefront tracer's rays packed into queues (compaction)
+  # and done slots leaving at once (measurement build: BIDIR_WF_REFILL, BIDIR_WF_DEBUG).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  SPR="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3"
+  CBR="$CB --spp 1024 --warmup 2 --runs 5"
+  BIDIR_WF_DEBUG=1 $T "$B" render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --wavefront on --sample-slices 8 --spp 64 -o /tmp/s.exr 2>&1 | grep -E "batch of|spp in" | cut -c1-1500
+  for r in 1 2; do
+    echo "== sponza pt-nee default"; $T "$B" bench render $SPR --integrator pt-nee 2>&1 | head -3 | tail -1
+    for sl in 0 8 16 32; do
+      echo "== sponza pt-nee wavefront slices $sl"; $T "$B" bench render $SPR --integrator pt-nee --wavefront on --sample-slices $sl 2>&1 | head -5
+    done
+  done
+  for rf in 0 16 24 32; do
+    echo "== sponza pt-nee wavefront slices 8 refill $rf"; BIDIR_WF_REFILL=$rf $T "$B" bench render $SPR --integrator pt-nee --wavefront on --sample-slices 8 2>&1 | head -5
+  done
+  echo "== sponza pt default"; $T "$B" bench render $SPR --integrator pt 2>&1 | head -3 | tail -1
+  echo "== sponza pt wavefront slices 8"; $T "$B" bench render $SPR --integrator pt --wavefront on --sample-slices 8 2>&1 | head -5
+  SPH="$SP --sponza-sun-sky --camera CameraMain --width 1920 --height 1080 --spp 16 --warmup 1 --runs 3"
+  echo "== sponza 1080p pt-nee default"; $T "$B" bench render $SPH --integrator pt-nee 2>&1 | head -3 | tail -1
+  echo "== sponza 1080p pt-nee wavefront"; $T "$B" bench render $SPH --integrator pt-nee --wavefront on 2>&1 | head -5
+  echo "== sponza 1080p pt-nee wavefront slices 2"; $T "$B" bench render $SPH --integrator pt-nee --wavefront on --sample-slices 2 2>&1 | head -5
+  for i in pt-nee; do
+    echo "== cornell $i default"; $T "$B" bench render $CBR --integrator $i 2>&1 | head -3 | tail -1
+    for sl in 16 64; do
+      echo "== cornell $i wavefront slices $sl"; $T "$B" bench render $CBR --integrator $i --wavefront on --sample-slices $sl 2>&1 | head -5
+    done
+  done
+  ;;
+s18a)
+  # Session 18: the wavefront path tracer (--wavefront on; measurement build: BIDIR_WF_REFILL
+  # sets the trace kernels' dynamic fetch, 0 = no persistent threads) against the megakernels.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=${SPONZA:-$PWD/.device/scenes/sponza/Sponza.gltf}
+  T="timeout -k 5 60"
+  SPR="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3"
+  CBR="$CB --spp 1024 --warmup 2 --runs 5"
+  for r in 1 2; do
+    echo "== sponza pt-nee default"; $T "$B" bench render $SPR --integrator pt-nee 2>&1 | head -8
+    for sl in 0 8 16; do
+      echo "== sponza pt-nee wavefront slices $sl"; $T "$B" bench render $SPR --integrator pt-nee --wavefront on --sample-slices $sl 2>&1 | head -6
+    done
+  done
+  for rf in 0 16 32; do
+    echo "== sponza pt-nee wavefront slices 8 refill $rf"; BIDIR_WF_REFILL=$rf $T "$B" bench render $SPR --integrator pt-nee --wavefront on --sample-slices 8 2>&1 | head -6
+  done
+  for l in bvh2 cwbvh; do
+    echo "== sponza pt-nee wavefront slices 8 $l"; $T "$B" bench render $SPR --integrator pt-nee --wavefront on --sample-slices 8 --bvh $l 2>&1 | head -6
+  done
+  echo "== sponza pt default"; $T "$B" bench render $SPR --integrator pt 2>&1 | head -6
+  echo "== sponza pt wavefront slices 8"; $T "$B" bench render $SPR --integrator pt --wavefront on --sample-slices 8 2>&1 | head -6
+  SPH="$SP --sponza-sun-sky --camera CameraMain --width 1920 --height 1080 --spp 16 --warmup 1 --runs 3"
+  echo "== sponza 1080p pt-nee default"; $T "$B" bench render $SPH --integrator pt-nee 2>&1 | head -6
+  echo "== sponza 1080p pt-nee wavefront"; $T "$B" bench render $SPH --integrator pt-nee --wavefront on 2>&1 | head -6
+  for i in pt-nee pt; do
+    echo "== cornell $i default"; $T "$B" bench render $CBR --integrator $i 2>&1 | head -6
+    for sl in 0 16 64; do
+      echo "== cornell $i wavefront slices $sl"; $T "$B" bench render $CBR --integrator $i --wavefront on --sample-slices $sl 2>&1 | head -6
+    done
+  done
+  echo "== cornell pt-nee wavefront 4096 spp against the reference"; $T "$B" render $CB --integrator pt-nee --wavefront on --spp 4096 --reference "$REF" -o /tmp/w.exr 2>&1 | grep -iE "spp in|rmse|mean"
+  echo "== cornell pt-nee megakernel 4096 spp against the reference"; $T "$B" render $CB --integrator pt-nee --spp 4096 --reference "$REF" -o /tmp/m.exr 2>&1 | grep -iE "spp in|rmse|mean"
+  echo "== diff"; "$B" diff /tmp/w.exr /tmp/m.exr 2>&1 | head -5
+  echo "== sponza pt-nee --time 1 wavefront / default"; $T "$B" render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --wavefront on --time 1 -o /tmp/sw.exr 2>&1 | grep -iE "spp in"
+  $T "$B" render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --time 1 -o /tmp/sm.exr 2>&1 | grep -iE "spp in"
+  ;;
 s17e)
   # Session 17: s17d's auto renders again, the pilot now sized once the pass model knows a
   # pass's fixed cost (in s17d the 1-spp calibration pass made every pilot too small to run).

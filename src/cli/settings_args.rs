@@ -102,6 +102,12 @@ pub struct SettingsArgs {
     /// surfaces (the faster, measured on the H200); off on CPU devices such as lavapipe.
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub one_trace: String,
+    /// pt and pt-nee: the wavefront path tracer (on), whose path kernel leaves each bounce's
+    /// segment and shadow ray to the trace kernels (on GPUs over the 4-wide BVH, with their
+    /// lockstep loops and dynamic fetch), or the megakernel that traces them itself (off). The
+    /// image is the same up to the order of float sums. auto: off.
+    #[arg(long, default_value = "auto", value_name = "auto|on|off")]
+    pub wavefront: String,
     /// Queue the shadow rays of pt-nee's kernel and of BDPT's (or VCM's) camera and light
     /// kernels for a kernel of their own that traces them after it, SLOTS per thread; pt-nee
     /// launches its kernel once per SAMPLES samples per thread (default SLOTS / 8). A thread
@@ -168,6 +174,12 @@ impl SettingsArgs {
             other => bail!("--one-trace {other}: auto | on | off"),
         };
         s.shadow_queue = parse_shadow_queue(&self.shadow_queue)?;
+        s.wavefront = match self.wavefront.as_str() {
+            "auto" => None,
+            "on" => Some(true),
+            "off" => Some(false),
+            other => bail!("--wavefront {other}: auto | on | off"),
+        };
         s.direct_light_tracing = self.direct_light_tracing;
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;

@@ -338,6 +338,13 @@ gpu_consts! {
     /// subgroup is done; N > 0 refills the done lanes with new rays as soon as N of them are
     /// (dynamic fetch, Aila & Laine 2009; glsl/common/trace_kernel.glsl).
     pub const SPEC_REFILL_LANES: u32 = 58;
+    /// Trace kernels with alpha testing (trace_alpha*.comp): 1 reads each ray's tmin slot
+    /// (`GpuRay::origin.w`) as the bits of its path's stochastic-opacity seed (BLEND) and traces
+    /// from 0, as the wavefront path tracer's rays carry it; 0: tmin, seed 0.
+    pub const SPEC_RAY_SEED: u32 = 59;
+    /// Trace kernels: 1 takes the ray count from BIND_RAY_COUNTS[`TracePush::count_index`]
+    /// (at most `TracePush::count`), where a kernel before it queued the rays; 0: `count`.
+    pub const SPEC_RAY_COUNT_BUFFER: u32 = 60;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`).
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
@@ -346,6 +353,29 @@ gpu_consts! {
     pub const PT_FRESH: u32 = 0;
     pub const PT_SUSPENDED: u32 = 1;
     pub const PT_NEXT: u32 = 2;
+    /// The wavefront path tracer (`pt_wavefront.comp`; `--wavefront`), one slot per megakernel
+    /// invocation: the segment each slot's path traces next (`GpuRay`, tmax < 0: none) and what
+    /// the closest-hit trace kernel found (`GpuHit`); the light sample's shadow ray and what the
+    /// any-hit kernel found; the contribution that shadow ray carries (rgb; w = 1: pending).
+    pub const BIND_WF_RAYS: u32 = 41;
+    pub const BIND_WF_HITS: u32 = 42;
+    pub const BIND_WF_SHADOW_RAYS: u32 = 43;
+    pub const BIND_WF_SHADOW_HITS: u32 = 44;
+    pub const BIND_WF_CONTRIB: u32 = 45;
+    /// Per launch l of `pt_wavefront.comp` in a batch (`PtWavefrontPush::launch`): the
+    /// segments (2 l) and shadow rays (2 l + 1) it queued, packed at the front of BIND_WF_RAYS
+    /// and BIND_WF_SHADOW_RAYS; the trace kernels read their count there (BIND_RAY_COUNTS) and
+    /// the host stops when a launch queues none.
+    pub const BIND_WF_COUNTS: u32 = 46;
+    /// Per slot: where its segment and shadow ray went in the queues (uvec2).
+    pub const BIND_WF_INDEX: u32 = 47;
+    /// Trace kernels with SPEC_RAY_COUNT_BUFFER: ray counts, `TracePush::count_index` selects.
+    pub const BIND_RAY_COUNTS: u32 = 48;
+    /// `PtSuspended::rng_status.w` in the wavefront tracer: the slot's samples of the pass are
+    /// all done (its rays have none).
+    pub const PT_DONE: u32 = 3;
+    /// Most launches of `pt_wavefront.comp` one submission records (half BIND_WF_COUNTS's length).
+    pub const WF_MAX_BATCH: u32 = 256;
 }
 
 gpu_structs! {
@@ -464,11 +494,13 @@ gpu_structs! {
 
     /// Push constants of the ray kernels.
     pub struct TracePush (16 bytes) {
+        /// Rays (with SPEC_RAY_COUNT_BUFFER: at most; the count is in BIND_RAY_COUNTS).
         pub count: u32,
         pub seed: u32,
         /// Persistent trace kernels: most ray batches one subgroup fetches.
         pub max_batches: u32,
-        pub pad0: u32,
+        /// With SPEC_RAY_COUNT_BUFFER: the index of the ray count in BIND_RAY_COUNTS.
+        pub count_index: u32,
     }
 
     /// Push constants of the driver's ray-generation shader (glsl/rt/trace.rgen).
@@ -690,6 +722,16 @@ gpu_structs! {
         /// Sample slices: invocations per pixel, each taking every slices-th sample of the
         /// pass into its own slice of BIND_SLICES (1: one invocation adds into the film).
         pub slices: u32,
+    }
+
+    /// Push constants of `pt_wavefront.comp`: the path tracer's, and which launch of the
+    /// submission this is (its counter in BIND_WF_ACTIVE).
+    pub struct PtWavefrontPush (128 bytes) {
+        pub pt: PtPush,
+        pub launch: u32,
+        pub pad0: u32,
+        pub pad1: u32,
+        pub pad2: u32,
     }
 
     /// A shadow ray pt-nee's megakernel queued for `shadow_queue.comp`: from `origin_tmax.xyz`

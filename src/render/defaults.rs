@@ -117,12 +117,50 @@ pub(super) fn resolve_shadow_queue(
     queue.and_then(|q| q.fit(invocations, fixed, shadow_queue::budget(ctx)))
 }
 
+/// Whether pt and pt-nee run as the wavefront path tracer (`pt_wavefront.rs`) by default: on
+/// GPUs where the scene has glossy or textured surfaces and no smooth mirror or glass. NVIDIA
+/// H200, `bench render`, pt-nee, ms per run (docs/results.md, "A wavefront path tracer"):
+/// textured Sponza under sun and sky 58.2 against 79.3 (640 x 360, 64 spp; pt 44.0 against
+/// 51.9), 120.3 against 162.5 at 1920 x 1080; DamagedHelmet 25.1 against 36.0,
+/// MetalRoughSpheres 30.8 against 37.9, CesiumMilkTruck 15.1 against 15.7 (384², 256 spp); the
+/// megakernels stay for the diffuse Cornell box (58.4 against 78.6 ms per 1024 spp: there the
+/// slots' memory traffic costs more than the trace kernels save) and the caustic scene's smooth
+/// glass (102 against 108); CPU devices (llvmpipe: 3-4x slower, its launches' fixed costs).
+pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> bool {
+    let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
+    let rich = features.glossy || features.textures;
+    matches!(integrator, Integrator::Pt | Integrator::PtNee) && !on_cpu && rich && !smooth_specular
+}
+
+/// Whether `integrator` runs as the wavefront path tracer on `ctx` with `settings`
+/// (`--wavefront`, or the default): pt and pt-nee only, and by default not where traversal is
+/// counted (`bench render --count`: the megakernels count it).
+pub(super) fn wavefront(ctx: &Context, settings: &RenderSettings, integrator: Integrator, features: &SceneFeatures) -> bool {
+    let default = || !settings.count_traversal && default_wavefront(on_cpu(ctx), integrator, features);
+    matches!(integrator, Integrator::Pt | Integrator::PtNee) && settings.wavefront.unwrap_or_else(default)
+}
+
+/// The BVH layout of the wavefront path tracer's trace kernels: on GPUs the 4-wide one, whose
+/// lockstep loops and dynamic fetch trace standalone rays fastest (`bench traversal` on the
+/// H200, docs/traversal.md); on CPU devices the compressed wide one, as for every integrator.
+pub fn wavefront_bvh_layout(on_cpu: bool) -> BvhLayout {
+    if on_cpu {
+        BvhLayout::Cwbvh
+    } else {
+        BvhLayout::Bvh4
+    }
+}
+
 /// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
 /// the default for the device, integrator and scene).
 pub(super) fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {
     // BDPT's and VCM's queue is on unless `--shadow-queue off` (default_camera_pass_queue).
     let queued = settings.shadow_queue != Some(None);
-    settings.bvh_layout.unwrap_or_else(|| default_bvh_layout(on_cpu(ctx), integrator, features, queued))
+    let default = || match wavefront(ctx, settings, integrator, features) {
+        true => wavefront_bvh_layout(on_cpu(ctx)),
+        false => default_bvh_layout(on_cpu(ctx), integrator, features, queued),
+    };
+    settings.bvh_layout.unwrap_or_else(default)
 }
 
 /// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
@@ -179,6 +217,14 @@ mod default_tests {
             assert_eq!(queue.is_some(), pt_nee == cw, "{f:?}");
             assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
             assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
+            // The wavefront path tracer: on GPUs for glossy or textured scenes without smooth
+            // mirrors or glass, for pt and pt-nee only; never on CPU devices.
+            let wave = f == rough || f == textured_ggx;
+            for i in [Integrator::Pt, Integrator::PtNee] {
+                assert_eq!(default_wavefront(false, i, &f), wave, "{f:?}");
+                assert!(!default_wavefront(true, i, &f));
+            }
+            assert!(!default_wavefront(false, Integrator::Bdpt(Join::Lvc(0)), &f));
             // BDPT's and VCM's camera pass: on GPUs, never on CPU devices.
             assert_eq!(default_camera_pass_queue(false).map(|q| q.slots), Some(64));
             assert_eq!(default_camera_pass_queue(true), None);

@@ -41,6 +41,10 @@ pub trait IntegratorKernels {
     fn slice_aligned(&self) -> bool {
         false
     }
+    /// Whether it is the wavefront path tracer (for logs and image metadata).
+    fn wavefront(&self) -> bool {
+        false
+    }
     /// The shadow-ray queue its megakernel uses, if any.
     fn shadow_queue(&self) -> Option<super::ShadowQueue> {
         None

@@ -23,14 +23,18 @@ pub mod lights;
 pub mod multi;
 mod pacing;
 mod pt;
+mod pt_wavefront;
 mod shadow_queue;
 mod stop;
 mod tonemap;
 pub mod vcm;
 
 pub use bdpt::{Bdpt, Join};
-use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue};
-pub use defaults::{default_bvh_layout, default_camera_pass_queue, default_one_trace, default_path_regeneration, default_shadow_queue};
+use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
+pub use defaults::{
+    default_bvh_layout, default_camera_pass_queue, default_one_trace, default_path_regeneration, default_shadow_queue, default_wavefront,
+    wavefront_bvh_layout,
+};
 pub use film::Film;
 pub use gpu_scene::GpuScene;
 pub use integrator::{IntegratorKernels, PassInputs};
@@ -229,6 +233,11 @@ pub struct RenderSettings {
     /// draw: less noise and fewer shadow rays (glsl/common/bdpt.glsl; docs/integrators.md).
     /// Either is unbiased.
     pub direct_light_tracing: bool,
+    /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
+    /// segments and shadow rays are traced by the trace kernels between its launches, instead
+    /// of the megakernel; `None` takes [`default_wavefront`]. Either gives the same image (up to
+    /// the order of float sums).
+    pub wavefront: Option<bool>,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
     pub count_traversal: bool,
@@ -269,6 +278,7 @@ impl RenderSettings {
             one_trace: None,
             shadow_queue: None,
             direct_light_tracing: false,
+            wavefront: None,
             count_traversal: false,
         }
     }
@@ -352,13 +362,19 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
     }
 }
 
-/// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`).
-fn sample_slices(ctx: &Context, settings: &RenderSettings, pixels: u32) -> u32 {
+/// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`) of a
+/// scene with `features`. The wavefront path tracer takes more: its trace kernels need many
+/// rays per launch (`pt_wavefront::TARGET_SLOTS`), within the memory its slots may take.
+fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatures, pixels: u32) -> u32 {
     if settings.sample_slices > 0 {
         return settings.sample_slices;
     }
     if on_cpu(ctx) {
         return 1;
+    }
+    if wavefront(ctx, settings, settings.integrator, features) {
+        let slots = pt_wavefront::TARGET_SLOTS.min(shadow_queue::budget(ctx) / pt_wavefront::SLOT_BYTES);
+        return slots.div_ceil(pixels.max(1) as u64).clamp(1, 64) as u32;
     }
     let mut s = TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64);
     if settings.integrator.stores_light_vertices() {
@@ -406,6 +422,10 @@ fn build_kernels(
     }
     let queue = resolve_shadow_queue(ctx, settings, integrator, &scene.features, scene.bvh.layout, invocations);
     Ok(match integrator {
+        Integrator::Pt | Integrator::PtNee if wavefront(ctx, settings, integrator, &scene.features) => {
+            let slots = shadow_queue::invocations(window.width(), window.height(), slices);
+            Box::new(pt_wavefront::WavefrontPathTracer::new(ctx, scene, integrator == Integrator::PtNee, settings, slots)?)
+        }
         Integrator::Pt | Integrator::PtNee => {
             // Resolved by `Renderer::new` (`None` only where kernels are built without it).
             let regenerate = settings.path_regeneration.unwrap_or(true);
@@ -447,7 +467,7 @@ impl Renderer {
         }
         let window = window(&settings, camera)?;
         let pixels = camera.width * camera.height;
-        let slices = sample_slices(ctx, &settings, slice_pixels(&settings, pixels, window));
+        let slices = sample_slices(ctx, &settings, &gscene.features, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, window, &settings, slices)?;
         let film = Film::new(ctx, window.width(), window.height(), kernels.splats(), slices)?;
         let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
@@ -540,7 +560,7 @@ impl Renderer {
         let window = window(&self.settings, camera)?;
         if (camera.width, camera.height) != (self.camera.size.x, self.camera.size.y) {
             let pixels = camera.width * camera.height;
-            let slices = sample_slices(&self.ctx, &self.settings, slice_pixels(&self.settings, pixels, window));
+            let slices = sample_slices(&self.ctx, &self.settings, &self.scene.features, slice_pixels(&self.settings, pixels, window));
             // Path tracers keep their kernels unless their shadow-ray queue is sized by the
             // film; BDPT's store is sized by the pixel count.
             let kernels = if self.kernels.sized_by_pixels() {
@@ -573,7 +593,7 @@ impl Renderer {
         let settings = self.settings.with_integrator(integrator);
         let (x0, y0) = (self.camera.window_x, self.camera.window_y);
         let window = Crop { x0, y0, x1: x0 + self.film.width, y1: y0 + self.film.height };
-        let slices = sample_slices(&self.ctx, &settings, slice_pixels(&settings, pixels, window));
+        let slices = sample_slices(&self.ctx, &settings, &self.scene.features, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(&self.ctx, &self.scene, integrator, pixels, window, &settings, slices)?;
         let film = Film::new(&self.ctx, self.film.width, self.film.height, kernels.splats(), slices)?;
         self.kernels = kernels;
@@ -604,10 +624,14 @@ impl Renderer {
     /// How the kernels run, for logs and image metadata: [`kernel_form`] of the settings, and
     /// the shadow-ray queue in use (with the slots that fit).
     pub fn kernel_form(&self) -> String {
-        match (self.kernels.shadow_queue(), self.settings.integrator) {
+        let form = match (self.kernels.shadow_queue(), self.settings.integrator) {
             (Some(q), Integrator::PtNee) => format!("{}, shadow queue {q}", kernel_form(&self.settings)),
             (Some(q), _) => format!("{}, shadow queue {}", kernel_form(&self.settings), q.slots),
             (None, _) => kernel_form(&self.settings),
+        };
+        match self.kernels.wavefront() {
+            true => format!("{form}, wavefront"),
+            false => form,
         }
     }
 

@@ -63,6 +63,12 @@ pub struct TraceOptions {
     /// Invocations per workgroup: TRACE_WG_SIZE (default), or 32, 128, 256 for the plain
     /// binary kernel (trace_wg*.comp: bvh2, geometry only, not persistent, local stack).
     pub workgroup_size: u32,
+    /// With `alpha`: each ray's tmin slot holds its path's stochastic-opacity seed and the ray
+    /// starts at 0 (SPEC_RAY_SEED; the wavefront path tracer's rays).
+    pub ray_seed: bool,
+    /// The ray count is read from a buffer a kernel before filled (SPEC_RAY_COUNT_BUFFER;
+    /// `Tracer::record_trace_queued`).
+    pub count_buffer: bool,
 }
 
 impl TraceOptions {
@@ -81,6 +87,8 @@ impl TraceOptions {
             int_slabs: true,
             rays_per_invocation: 1,
             workgroup_size: abi::TRACE_WG_SIZE,
+            ray_seed: false,
+            count_buffer: false,
         }
     }
 }
@@ -183,6 +191,7 @@ impl Tracer {
             trace_specs.push(Spec { id: abi::SPEC_REFILL_LANES, value: opts.refill_lanes });
         }
         trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
+        trace_specs.push(Spec { id: abi::SPEC_RAY_COUNT_BUFFER, value: opts.count_buffer as u32 });
         if opts.rays_per_invocation != 1 {
             if opts.persistent.is_some() || opts.rays_per_invocation == 0 {
                 let msg = format!("{} rays per invocation: 1 with persistent threads, at least 1 otherwise", opts.rays_per_invocation);
@@ -215,6 +224,7 @@ impl Tracer {
             },
             (Some(features), layout) => {
                 trace_specs.extend(features.specs());
+                trace_specs.push(Spec { id: abi::SPEC_RAY_SEED, value: opts.ray_seed as u32 });
                 match layout {
                     BvhLayout::Bvh2 => &kernels::TRACE_ALPHA,
                     BvhLayout::Cwbvh => &kernels::TRACE_ALPHA_CWBVH,
@@ -281,11 +291,31 @@ impl Tracer {
         count: u32,
         any_hit: bool,
     ) -> Result<()> {
+        self.record_trace_queued(rec, geometry, rays, hits, stats, count, None, any_hit)
+    }
+
+    /// `record_trace` of rays a kernel recorded before queued: with `counts` = (buffer, i) the
+    /// first buffer[i] of them, at most `count` (a tracer with `count_buffer`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn record_trace_queued(
+        &self,
+        rec: &mut Recorder,
+        geometry: &[Bind],
+        rays: &Buffer,
+        hits: &Buffer,
+        stats: &Buffer,
+        count: u32,
+        counts: Option<(&Buffer, u32)>,
+        any_hit: bool,
+    ) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
-        let mut push = TracePush { count, ..Default::default() };
+        assert_eq!(counts.is_some(), self.opts.count_buffer, "queued rays need a tracer with count_buffer, and only they");
+        let mut push = TracePush { count, count_index: counts.map_or(0, |c| c.1), ..Default::default() };
         let mut binds = geometry.to_vec();
         binds.extend([Bind::buffer(abi::BIND_RAYS, rays), Bind::buffer(abi::BIND_HITS, hits), Bind::buffer(abi::BIND_STATS, stats)]);
         binds.push(Bind::buffer(abi::BIND_RAY_COUNTER, &self.counter));
+        // (Read only with SPEC_RAY_COUNT_BUFFER; the counter stands in elsewhere.)
+        binds.push(Bind::buffer(abi::BIND_RAY_COUNTS, counts.map_or(&self.counter, |c| c.0)));
         let mut groups = k.groups_for(count.div_ceil(self.opts.rays_per_invocation.max(1)));
         if let Some(persistent_groups) = self.persistent {
             rec.fill_buffer(&self.counter, 0);
