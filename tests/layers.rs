@@ -19,10 +19,10 @@ const LAYERS: &[(&str, u32)] = &[
     ("compute", 3),
     ("bvh", 3),
     ("gpu_data", 4),
-    ("render", 5),
     ("trace", 5),
-    ("viewer", 6),
-    ("bench", 6),
+    ("render", 6),
+    ("viewer", 7),
+    ("bench", 7),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -783,6 +783,27 @@ s16g)
     echo "== sponza $L3 --refill 28 --persistent-groups $g"; $T "$B" bench traversal "$SP" --camera CameraMain $L3 --refill 28 --persistent-groups $g 2>&1 | grep -E "^(primary|shadow|diffuse) "
   done
   ;;
+s18f)
+  # Session 18: the wavefront tracer's trace kernels back to dynamic fetch at 28 lanes on GPUs
+  # (s18e ran one invocation per ray: textured Sponza 3-4 % slower than s18c), defaults.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPR="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3"
+  G=.device/scenes/gltf
+  for r in 1 2; do
+    for i in pt-nee pt; do
+      echo "== sponza textured $i default"; $T "$B" bench render $SPR --integrator $i 2>&1 | grep -E "Msamples"
+      echo "== DamagedHelmet $i default"; $T "$B" bench render $G/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 2 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+    done
+  done
+  for wf in off on; do
+    echo "== sponza textured 1080p pt-nee wavefront $wf"; $T "$B" bench render $SP --sponza-sun-sky --camera CameraMain --width 1920 --height 1080 --spp 16 --warmup 1 --runs 3 --integrator pt-nee --wavefront $wf 2>&1 | grep -E "Msamples"
+  done
+  for wf in off on; do
+    echo "== sponza textured pt-nee --time 0.1 / 1 wavefront $wf"; for t in 0.1 1; do $T "$B" render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee --wavefront $wf --time $t -o /tmp/s.exr 2>&1 | grep -iE "spp in"; done
+  done
+  ;;
 s18e)
   # Session 18, the commit with the wavefront default (pt and pt-nee on GPUs in glossy or
   # textured scenes without smooth mirrors or glass): the trace kernels against session 17's

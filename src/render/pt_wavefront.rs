@@ -24,19 +24,28 @@ pub const SLOT_BYTES: u64 = std::mem::size_of::<abi::PtSuspended>() as u64 + 2 *
 /// 16 slices (1 million), 78 at 64 (4.2 million) (docs/results.md, "A wavefront path tracer").
 pub const TARGET_SLOTS: u64 = 1 << 22;
 
+/// Dynamic fetch's refill (`TraceOptions::refill_lanes`) of the wavefront tracer's 4-wide
+/// trace kernels on GPUs with subgroups of 32 lanes or more.
+const REFILL_LANES: u32 = 28;
+
 /// How the trace kernels of the wavefront tracer run: over the scene's BVH (on GPUs the 4-wide
-/// one, `wavefront_bvh_layout`), one invocation per ray with the lockstep loops (persistent
-/// threads with dynamic fetch were level or slower: NVIDIA H200, Sponza 640 x 360 pt-nee, 144.7
-/// ms per 64 spp against 146.4-148.3 with refills of 16-32 lanes, their ray counter cleared
-/// before every launch), the ray count read from the queue's counter. `alpha`: where the scene
-/// has alpha-tested or blended triangles (trace_alpha*.comp), each ray carrying its path's
-/// stochastic-opacity seed.
-pub fn trace_options(scene: &GpuScene, alpha: bool) -> TraceOptions {
+/// one, `wavefront_bvh_layout`) with the lockstep loops, the ray count read from the queue's
+/// counter; over the 4-wide BVH on GPUs (`on_cpu` false, `subgroup_size` 32 or more) as
+/// persistent threads with dynamic fetch, refilled at 28 lanes as for `bench traversal`'s
+/// secondary rays. NVIDIA H200, ms per run against one invocation per ray: textured Sponza
+/// pt-nee 58.2 against 60.3, pt 44.0 against 45.9, DamagedHelmet pt-nee 25.1 against 24.6
+/// (docs/results.md, "A wavefront path tracer"). `alpha`: where the scene has alpha-tested or
+/// blended triangles (trace_alpha*.comp), each ray carrying its path's stochastic-opacity seed.
+pub fn trace_options(scene: &GpuScene, on_cpu: bool, subgroup_size: u32, alpha: bool) -> TraceOptions {
     let mut opts = TraceOptions::new(scene.bvh.tri_test);
     opts.layout = scene.bvh.layout;
     opts.alpha = alpha.then_some(scene.features);
     opts.ray_seed = alpha;
     opts.count_buffer = true;
+    if scene.bvh.layout == crate::bvh::BvhLayout::Bvh4 && !on_cpu && subgroup_size >= 32 {
+        opts.persistent = Some(0);
+        opts.refill_lanes = REFILL_LANES;
+    }
     opts
 }
 
@@ -81,7 +90,7 @@ impl WavefrontPathTracer {
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(settings.sampler.spec());
         let kernel = ctx.create_kernel(&kernels::PT_WAVEFRONT, &specs)?;
-        let opts = trace_options(scene, scene.features.alpha);
+        let opts = trace_options(scene, super::on_cpu(ctx), ctx.info().subgroup_size, scene.features.alpha);
         let tracer = Tracer::with_options(ctx, &opts)?;
         let buffer = |name: &str, bytes: u64| {
             ctx.create_buffer(name, slots * bytes, Memory::Device).map_err(|e| {

@@ -1,6 +1,7 @@
 //! Ray queries on the GPU: the BVH uploaded, closest-hit and any-hit traversal over ray
-//! buffers, and ray generation (primary, shadow, diffuse) with compaction. Integrators call
-//! the same GLSL traversal inline; this module serves the tests and the benchmark.
+//! buffers, and ray generation (primary, shadow, diffuse) with compaction. The megakernel
+//! integrators call the same GLSL traversal inline; this module serves the tests, the
+//! benchmark and the wavefront path tracer (`render::pt_wavefront`).
 
 pub mod sort;
 pub use sort::RaySorter;
