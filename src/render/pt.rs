@@ -7,6 +7,23 @@ use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
 /// Bytes pt-nee's queue needs per invocation besides its slots: the paused path.
 pub const PAUSED_PATH_BYTES: u64 = std::mem::size_of::<abi::PtSuspended>() as u64;
 
+/// The path tracers' push constants for samples `first..first + spp` of every pixel, over at
+/// most `inputs.slices` sample slices (pt.comp and pt_wavefront.comp).
+pub(super) fn pt_push(inputs: &PassInputs, first: u32, spp: u32) -> PtPush {
+    let (s, scene) = (inputs.settings, inputs.scene);
+    PtPush {
+        camera: inputs.camera,
+        sample_base: first,
+        spp,
+        seed: s.seed,
+        emitter_count: scene.emitter_count,
+        emitter_weight: scene.emitter_weight,
+        max_depth: s.max_depth,
+        rr_depth: s.rr_depth,
+        slices: inputs.slices.min(spp),
+    }
+}
+
 /// pt-nee's shadow-ray queue: its kernel and slots, its shape, the kernel that pauses paths
 /// where the slots are full (with `pause`; else every launch runs `PathTracer::kernel`, which
 /// finishes every path), and the paused paths.
@@ -121,18 +138,7 @@ impl IntegratorKernels for PathTracer {
     }
 
     fn pass(&self, ctx: &Context, inputs: &PassInputs, first: u32, spp: u32) -> std::result::Result<(), RenderError> {
-        let (s, scene, film) = (inputs.settings, inputs.scene, inputs.film);
-        let push = PtPush {
-            camera: inputs.camera,
-            sample_base: first,
-            spp,
-            seed: s.seed,
-            emitter_count: scene.emitter_count,
-            emitter_weight: scene.emitter_weight,
-            max_depth: s.max_depth,
-            rr_depth: s.rr_depth,
-            slices: inputs.slices.min(spp),
-        };
-        Ok(ctx.submit("render pass", |rec| self.record(rec, scene, film, &push))?)
+        let push = pt_push(inputs, first, spp);
+        Ok(ctx.submit("render pass", |rec| self.record(rec, inputs.scene, inputs.film, &push))?)
     }
 }

@@ -179,20 +179,10 @@ impl IntegratorKernels for WavefrontPathTracer {
     }
 
     fn pass(&self, ctx: &Context, inputs: &PassInputs, first: u32, spp: u32) -> std::result::Result<(), RenderError> {
-        let (s, scene, film) = (inputs.settings, inputs.scene, inputs.film);
-        let slices = inputs.slices.min(spp).max(1);
-        let pt = PtPush {
-            camera: inputs.camera,
-            sample_base: first,
-            spp,
-            seed: s.seed,
-            emitter_count: scene.emitter_count,
-            emitter_weight: scene.emitter_weight,
-            max_depth: s.max_depth,
-            rr_depth: s.rr_depth,
-            slices,
-        };
-        let push = PtWavefrontPush { pt, ..Default::default() };
+        let (scene, film) = (inputs.scene, inputs.film);
+        let pt = super::pt::pt_push(inputs, first, spp);
+        let slices = pt.slices.max(1);
+        let push = PtWavefrontPush { pt: PtPush { slices, ..pt }, ..Default::default() };
         let slots = crate::gpu_data::tiled_invocations(film.width, film.height) * slices;
         assert!(slots as u64 <= self.slots, "a pass of {slots} slots on storage for {}", self.slots);
         let geometry = scene.binds();
