@@ -1,10 +1,10 @@
 #version 460
 // The thesis' megakernel path tracer: one invocation per pixel (and sample slice), its paths
-// one after another with path regeneration (PathState,
-// glsl/common/pt_path.glsl), summed into the film. With NEE
-// (pt-nee, the thesis' "explicit sampling") every non-delta vertex also samples an emitter by
-// power and traces a shadow ray; emission found by BSDF sampling is then weighted
-// with the power heuristic (Veach 1997, eq. 9.13) so nothing counts twice.
+// one after another with path regeneration (PathState, glsl/common/pt_path.glsl), summed into
+// the film. With NEE (pt-nee, the thesis' "explicit sampling") every non-delta vertex also
+// samples an emitter by power and traces a shadow ray; emission found by BSDF sampling is then
+// weighted with the power heuristic (Veach 1997, eq. 9.13) so nothing counts twice. The
+// wavefront form of the same paths is pt_wavefront.comp.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
