@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18c-s18f (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -781,6 +781,27 @@ s16g)
   L3="--bvh bvh4 --leaf-size 3 --quality 3"
   for g in 4224 1056 2112 8448 16896; do
     echo "== sponza $L3 --refill 28 --persistent-groups $g"; $T "$B" bench traversal "$SP" --camera CameraMain $L3 --refill 28 --persistent-groups $g 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s18h)
+  # Session 18 (measurement build, not committed): any-hit rays visit a 4-wide node's hit
+  # children in an order fixed per node at build time (a table in the node's last word: leaves,
+  # then the largest boxes first) instead of slot order; against s18e/s18f's figures of the same day (5.20 / 6.54 / 2.02 at quality 3,
+  # --refill 28 5.06 / 6.73 / 2.12, quality 4 5.63 / 6.22 / 2.10; textured Sponza pt-nee
+  # 58.3 ms, pt 44.1). Carried as s18c (textured Sponza), without the glTF samples.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for q in "--quality 3" "--quality 3 --refill 28" "--quality 4" "--quality 4 --refill 28"; do
+      echo "== sponza traversal bvh4 leaf 3 $q"; $T "$B" bench traversal $SP --camera CameraMain --bvh bvh4 --leaf-size 3 $q 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  SPR="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3"
+  for r in 1 2; do
+    for i in pt-nee pt; do
+      echo "== sponza textured $i default"; $T "$B" bench render $SPR --integrator $i 2>&1 | grep -E "Msamples"
+    done
   done
   ;;
 s18f)
