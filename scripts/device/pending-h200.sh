@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -781,6 +781,20 @@ s16g)
   L3="--bvh bvh4 --leaf-size 3 --quality 3"
   for g in 4224 1056 2112 8448 16896; do
     echo "== sponza $L3 --refill 28 --persistent-groups $g"; $T "$B" bench traversal "$SP" --camera CameraMain $L3 --refill 28 --persistent-groups $g 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s18i)
+  # Session 18: equal-time error of the wavefront path tracer against the megakernel on the
+  # textured Sponza under sun and sky (carried as s18c): a 40 s pt-nee reference (seed 99),
+  # then 1 s renders, three seeds each, interleaved.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  S="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --integrator pt-nee"
+  timeout -k 5 120 "$B" render $S --time 40 --seed 99 -o /tmp/ref.exr 2>&1 | grep -E "spp in"
+  for s in 1 2 3; do
+    for wf in on off; do
+      echo "== --time 1 wavefront $wf seed $s"; timeout -k 5 60 "$B" render $S --wavefront $wf --time 1 --seed $s --reference /tmp/ref.exr -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
   done
   ;;
 s18h)
