@@ -227,7 +227,10 @@ impl IntegratorKernels for WavefrontPathTracer {
             }
         }
         self.launches_per_sample.set(done as f64 / samples_per_slot as f64);
-        Ok(ctx.submit("wavefront film", |rec| film.record_add_slices(rec, slices))?)
+        if slices > 1 {
+            ctx.submit("wavefront film", |rec| film.record_add_slices(rec, slices))?;
+        }
+        Ok(())
     }
 }
 
