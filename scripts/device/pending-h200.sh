@@ -23,6 +23,38 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s19a)
+  # Session 19: BDPT's camera pass as a wavefront (`--wavefront on`) against the megakernel,
+  # interleaved; carried as s18c (textured Sponza and three glTF samples, no base build):
+  # the textured Sponza under sun and sky, DamagedHelmet, the Cornell box and the caustic
+  # scene; then the same images (fixed slices) and the Cornell box at equal time.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  K="Msamples|^bdpt|^trace|^shadow|^lvc|^scan|^film"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  for r in 1 2; do
+    for wf in off on; do
+      echo "== sponza textured 640x360 bdpt wavefront $wf"; $T "$B" bench render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3 --integrator bdpt --wavefront $wf 2>&1 | grep -E "$K"
+    done
+  done
+  for sl in 2 4 12; do
+    echo "== sponza textured bdpt wavefront on --sample-slices $sl"; $T "$B" bench render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3 --integrator bdpt --wavefront on --sample-slices $sl 2>&1 | grep -E "Msamples"
+  done
+  for wf in off on off on; do
+    echo "== DamagedHelmet bdpt wavefront $wf"; $T "$B" bench render .device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 1 --runs 3 --integrator bdpt --wavefront $wf 2>&1 | grep -E "Msamples"
+    echo "== cornell bdpt wavefront $wf"; $T "$B" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator bdpt --wavefront $wf 2>&1 | grep -E "$K"
+    echo "== caustic bdpt wavefront $wf"; $T "$B" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator bdpt --wavefront $wf 2>&1 | grep -E "Msamples"
+  done
+  for wf in off on; do
+    $T "$B" render $CB --integrator bdpt --spp 64 --sample-slices 4 --wavefront $wf -o /tmp/c-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render .device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --integrator bdpt --spp 64 --sample-slices 4 --wavefront $wf -o /tmp/h-$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same image: cornell, helmet"; "$B" diff /tmp/c-on.exr /tmp/c-off.exr | head -5; "$B" diff /tmp/h-on.exr /tmp/h-off.exr | head -5
+  for wf in off on off on; do
+    echo "== cornell bdpt --time 1 wavefront $wf"; $T "$B" render --integrator bdpt --time 1 --wavefront $wf --reference "$REF" -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+  done
+  ;;
 speed)
   # #16/#13: path regeneration, the 128-byte GpuMaterial, the alpha-only first-hit pass.
   for i in pt-nee bdpt; do

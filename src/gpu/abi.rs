@@ -367,13 +367,19 @@ gpu_consts! {
     /// and BIND_WF_SHADOW_RAYS; the trace kernels read their count there (BIND_RAY_COUNTS) and
     /// the host stops when a launch queues none.
     pub const BIND_WF_COUNTS: u32 = 46;
-    /// Per slot: where its segment and shadow ray went in the queues (uvec2).
+    /// Per slot: where its segment and shadow ray went in the queues (uvec2; the wavefront
+    /// camera pass: its segment, its first shadow ray and their count, uvec4). The wavefront
+    /// camera pass keeps its paths in BIND_PT_SUSPENDED (`BdptCameraState`) and the
+    /// contribution of each queued shadow ray in BIND_WF_CONTRIB at the ray's place.
     pub const BIND_WF_INDEX: u32 = 47;
     /// Trace kernels with SPEC_RAY_COUNT_BUFFER: ray counts, `TracePush::count_index` selects.
     pub const BIND_RAY_COUNTS: u32 = 48;
     /// `PtSuspended::rng_status.w` in the wavefront tracer: the slot's samples of the pass are
     /// all done (its rays have none).
     pub const PT_DONE: u32 = 3;
+    /// Shadow rays a slot of the wavefront camera pass (`bdpt_camera_wavefront.comp`) may queue
+    /// per launch: the light sample and up to three connections (`--join lvc=N`, N <= 3).
+    pub const BDPT_WF_SHADOW_RAYS: u32 = 4;
     /// Most launches of `pt_wavefront.comp` one submission records (half BIND_WF_COUNTS's length).
     pub const WF_MAX_BATCH: u32 = 256;
 }
@@ -773,6 +779,22 @@ gpu_structs! {
         pub rng_status: UVec4,
     }
 
+    /// A camera subpath of the wavefront camera pass between its launches (BIND_PT_SUSPENDED;
+    /// glsl/common/bdpt_camera_path.glsl's `CameraPath` without VCM's terms).
+    pub struct BdptCameraState (80 bytes) {
+        /// Origin of the next segment, then the vertex count (bits).
+        pub o_depth: Vec4,
+        /// Its direction, then dVCM.
+        pub d_dvcm: Vec4,
+        /// Throughput, then dVC.
+        pub beta_dvc: Vec4,
+        /// sigma_a where the next segment leaves its surface, then the stochastic-opacity seed
+        /// (bits).
+        pub sigma_seed: Vec4,
+        /// The random-number state (state, index, dim), then PT_FRESH / PT_SUSPENDED / PT_DONE.
+        pub rng_status: UVec4,
+    }
+
     /// A stored light-subpath vertex (a diffuse-capable hit), for BDPT connections. MIS
     /// quantities follow Georgiev 2012 ("Implementing Vertex Connection and Merging"),
     /// power heuristic. Scenes that read none of its glossy, volume and merging fields store
@@ -868,6 +890,27 @@ gpu_structs! {
         /// into the film).
         pub camera_samples: u32,
         /// Light paths traced in this iteration: light_paths x camera_samples.
+        pub light_path_total: u32,
+    }
+
+    /// Push constants of `bdpt_camera_wavefront.comp`: BdptPush's, with the launch of the
+    /// submission (its counters in BIND_WF_COUNTS) in the join's place (the wavefront camera
+    /// pass joins through the light vertex cache only).
+    pub struct BdptWavefrontPush (128 bytes) {
+        pub camera: GpuCamera,
+        pub sample_base: u32,
+        pub seed: u32,
+        pub emitter_count: u32,
+        pub emitter_weight: f32,
+        pub max_depth: u32,
+        pub rr_depth: u32,
+        pub light_path_len: u32,
+        pub launch: u32,
+        /// Light vertices drawn from the cache per camera vertex (0: as many as a light path
+        /// stores on average).
+        pub join_k: u32,
+        pub light_paths: u32,
+        pub camera_samples: u32,
         pub light_path_total: u32,
     }
 

@@ -1,3 +1,4 @@
+use super::bdpt_wavefront::WavefrontCameraPass;
 use super::integrator::{IntegratorKernels, PassInputs};
 use super::{film::Film, gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::LightVertex, kernels};
@@ -105,6 +106,8 @@ pub struct Bdpt {
     /// The shadow-ray queue of the camera pass and of the light pass's joins to the camera
     /// (`--shadow-queue`), if any.
     queue: Option<(super::shadow_queue::ShadowQueueTracer, super::ShadowQueue)>,
+    /// The wavefront camera pass (`--wavefront`), in place of the camera megakernel.
+    wavefront: Option<WavefrontCameraPass>,
 }
 
 /// What `--integrator vcm` adds to BDPT with the light vertex cache.
@@ -136,7 +139,8 @@ impl Bdpt {
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together). `vcm`: vertex connection and merging (the light vertex
     /// cache's join). `queue`: the camera and light passes' shadow-ray queue, for launches of up
-    /// to `invocations` invocations (`queue_invocations`).
+    /// to `invocations` invocations (`queue_invocations`). `wavefront`: the camera pass as a
+    /// wavefront (bdpt_wavefront.rs) of up to this many slots, instead of the megakernel.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         ctx: &Context,
@@ -148,6 +152,7 @@ impl Bdpt {
         vcm: Option<VcmConfig>,
         queue: Option<super::ShadowQueue>,
         invocations: u64,
+        wavefront: Option<u64>,
     ) -> Result<Bdpt, RenderError> {
         let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
         let ratio = settings.light_path_ratio;
@@ -189,6 +194,13 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
         specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
         let capacity = paths.saturating_mul(light_path_len);
+        let wavefront = match wavefront {
+            Some(_) if vcm.is_some() => {
+                return Err(RenderError::Unsupported("VCM's camera pass has no wavefront form: add --wavefront off".into()))
+            }
+            Some(slots) => Some(WavefrontCameraPass::new(ctx, scene, &specs, settings, join, slots)?),
+            None => None,
+        };
         if let Some(v) = vcm {
             if !matches!(join, Join::Lvc(_)) {
                 return Err(RenderError::Unsupported("VCM merges over the light vertex cache (join lvc)".into()));
@@ -255,11 +267,12 @@ impl Bdpt {
             max_camera_samples: camera_samples,
             vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
             queue,
+            wavefront,
         })
     }
 
-    /// Records one iteration: all light subpaths, then all camera subpaths.
-    pub fn record(&self, rec: &mut Recorder, scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
+    /// The buffers an iteration's kernels bind.
+    fn binds<'a>(&'a self, scene: &'a GpuScene, film: &'a Film) -> Vec<Bind<'a>> {
         let mut binds = scene.binds();
         binds.push(Bind::buffer(abi::BIND_LIGHT_VERTICES, &self.vertices));
         binds.push(Bind::buffer(abi::BIND_LIGHT_COUNTS, &self.counts));
@@ -289,19 +302,36 @@ impl Bdpt {
             Some((tracer, _)) => binds.extend(tracer.binds()),
             None => binds.extend(super::shadow_queue::ShadowQueueTracer::unused_binds(film)),
         }
+        if let Some(w) = &self.wavefront {
+            binds.extend(w.binds());
+        }
+        binds
+    }
+
+    /// Records an iteration's light pass: all light subpaths, their joins to the camera, and
+    /// the light vertex cache's listing (and VCM's grid).
+    fn record_light(&self, rec: &mut Recorder, binds: &[Bind], push: &BdptPush) -> Result<()> {
         let total = push.light_path_total;
         assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
-        rec.dispatch(&self.light, &binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
+        rec.dispatch(&self.light, binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
         if let Some((tracer, _)) = &self.queue {
-            tracer.record_splats(rec, &binds, total, self.light.groups_for(total))?;
+            tracer.record_splats(rec, binds, total, self.light.groups_for(total))?;
         }
         if let Some(lvc) = &self.lvc {
             lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;
-            rec.dispatch(&lvc.compact, &binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
+            rec.dispatch(&lvc.compact, binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
         }
         if let Some(grid) = &self.grid {
-            grid.record(rec, &binds, push)?;
+            grid.record(rec, binds, push)?;
         }
+        Ok(())
+    }
+
+    /// Records one iteration with the megakernel camera pass: all light subpaths, then all
+    /// camera subpaths.
+    pub fn record(&self, rec: &mut Recorder, scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
+        let binds = self.binds(scene, film);
+        self.record_light(rec, &binds, push)?;
         let samples = push.camera_samples.max(1);
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
         rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])?;
@@ -313,6 +343,42 @@ impl Bdpt {
         }
         film.record_add_slices(rec, samples)
     }
+
+    /// One iteration with the wavefront camera pass: the light pass and the camera pass's first
+    /// batch in one submission, then batches until a launch queues no ray.
+    fn iterate_wavefront(
+        &self,
+        ctx: &Context,
+        w: &WavefrontCameraPass,
+        scene: &GpuScene,
+        film: &Film,
+        push: &BdptPush,
+    ) -> std::result::Result<(), RenderError> {
+        let binds = self.binds(scene, film);
+        let geometry = scene.binds();
+        let samples = push.camera_samples.max(1);
+        let slots = WavefrontCameraPass::slots_for(film.width, film.height, samples);
+        let mut launches = 0;
+        ctx.submit("bdpt light pass and wavefront camera pass", |rec| {
+            self.record_light(rec, &binds, push)?;
+            if samples > 1 {
+                // The camera pass adds into the slices as its contributions arise.
+                rec.fill_buffer(film.slices_buffer(), 0);
+            }
+            launches = w.record_start(rec, &binds, &geometry, push, slots)?;
+            Ok(())
+        })?;
+        let mut done = 0;
+        while let Some(next) = w.after_batch(done, launches)? {
+            done += launches;
+            launches = next;
+            ctx.submit("bdpt wavefront camera pass", |rec| w.record_batch(rec, &binds, &geometry, push, slots, launches))?;
+        }
+        if samples > 1 {
+            ctx.submit("bdpt film", |rec| film.record_add_slices(rec, samples))?;
+        }
+        Ok(())
+    }
 }
 
 impl IntegratorKernels for Bdpt {
@@ -321,6 +387,7 @@ impl IntegratorKernels for Bdpt {
     fn kernels(&self) -> Vec<&Kernel> {
         let mut k = vec![&self.light, &self.camera];
         k.extend(self.queue.iter().flat_map(|q| q.0.kernels()));
+        k.extend(self.wavefront.iter().flat_map(|w| w.kernels()));
         if let Some(g) = &self.grid {
             k.extend(g.kernels());
         }
@@ -328,7 +395,11 @@ impl IntegratorKernels for Bdpt {
     }
 
     fn storage_bytes(&self) -> u64 {
-        self.vertex_bytes + self.queue.as_ref().map_or(0, |q| q.0.bytes())
+        self.vertex_bytes + self.queue.as_ref().map_or(0, |q| q.0.bytes()) + self.wavefront.as_ref().map_or(0, |w| w.bytes())
+    }
+
+    fn wavefront(&self) -> bool {
+        self.wavefront.is_some()
     }
 
     fn shadow_queue(&self) -> Option<super::ShadowQueue> {
@@ -354,36 +425,36 @@ impl IntegratorKernels for Bdpt {
             Join::K(k) => (abi::JOIN_K, k),
             Join::Lvc(k) => (abi::JOIN_LVC, k),
         };
-        ctx.submit("bdpt pass", |rec| {
-            // Iterations of up to `slices` camera samples per pixel, their light paths traced
-            // together. Iterations start at multiples of `slices` whatever the pass sizes, so
-            // the light paths (and the light vertex cache) of a sample depend on its index
-            // only: passes, sample ranges and devices split one render exactly.
-            let mut done = 0;
-            while done < spp {
-                let base = first + done;
-                let samples = (slices - base % slices).min(spp - done);
-                let push = BdptPush {
-                    camera: inputs.camera,
-                    sample_base: base,
-                    seed: s.seed,
-                    emitter_count: scene.emitter_count,
-                    emitter_weight: scene.emitter_weight,
-                    max_depth: s.max_depth,
-                    rr_depth: s.rr_depth,
-                    light_path_len: self.light_path_len,
-                    join,
-                    join_k,
-                    light_paths: self.light_paths,
-                    camera_samples: samples,
-                    light_path_total: self.light_paths * samples,
-                };
-                self.record(rec, scene, inputs.film, &push)?;
-                done += samples;
-            }
-            Ok(())
-        })?;
-        Ok(())
+        // Iterations of up to `slices` camera samples per pixel, their light paths traced
+        // together. Iterations start at multiples of `slices` whatever the pass sizes, so the
+        // light paths (and the light vertex cache) of a sample depend on its index only:
+        // passes, sample ranges and devices split one render exactly.
+        let mut pushes = Vec::new();
+        let mut done = 0;
+        while done < spp {
+            let base = first + done;
+            let samples = (slices - base % slices).min(spp - done);
+            pushes.push(BdptPush {
+                camera: inputs.camera,
+                sample_base: base,
+                seed: s.seed,
+                emitter_count: scene.emitter_count,
+                emitter_weight: scene.emitter_weight,
+                max_depth: s.max_depth,
+                rr_depth: s.rr_depth,
+                light_path_len: self.light_path_len,
+                join,
+                join_k,
+                light_paths: self.light_paths,
+                camera_samples: samples,
+                light_path_total: self.light_paths * samples,
+            });
+            done += samples;
+        }
+        match &self.wavefront {
+            Some(w) => pushes.iter().try_for_each(|push| self.iterate_wavefront(ctx, w, scene, inputs.film, push)),
+            None => Ok(ctx.submit("bdpt pass", |rec| pushes.iter().try_for_each(|push| self.record(rec, scene, inputs.film, push)))?),
+        }
     }
 }
 

@@ -132,12 +132,22 @@ pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneF
     matches!(integrator, Integrator::Pt | Integrator::PtNee) && !on_cpu && rich && !smooth_specular
 }
 
-/// Whether `integrator` runs as the wavefront path tracer on `ctx` with `settings`
-/// (`--wavefront`, or the default): pt and pt-nee only, and by default not where traversal is
-/// counted (`bench render --count`: the megakernels count it).
+/// Whether `integrator` has a wavefront form: pt and pt-nee (pt_wavefront.rs), and BDPT's
+/// camera pass with the light vertex cache's fixed joins (bdpt_wavefront.rs).
+pub fn wavefront_supported(integrator: Integrator) -> bool {
+    match integrator {
+        Integrator::Pt | Integrator::PtNee => true,
+        Integrator::Bdpt(join) => super::bdpt_wavefront::shadow_rays_per_slot(join).is_some(),
+        Integrator::Vcm(_) => false,
+    }
+}
+
+/// Whether `integrator` runs in its wavefront form on `ctx` with `settings` (`--wavefront`,
+/// or the default), and by default not where traversal is counted (`bench render --count`:
+/// the megakernels count it).
 pub(super) fn wavefront(ctx: &Context, settings: &RenderSettings, integrator: Integrator, features: &SceneFeatures) -> bool {
     let default = || !settings.count_traversal && default_wavefront(on_cpu(ctx), integrator, features);
-    matches!(integrator, Integrator::Pt | Integrator::PtNee) && settings.wavefront.unwrap_or_else(default)
+    wavefront_supported(integrator) && settings.wavefront.unwrap_or_else(default)
 }
 
 /// The BVH layout of the wavefront path tracer's trace kernels: on GPUs the 4-wide one, whose

@@ -41,7 +41,8 @@ pub trait IntegratorKernels {
     fn slice_aligned(&self) -> bool {
         false
     }
-    /// Whether it is the wavefront path tracer (for logs and image metadata).
+    /// Whether it runs as a wavefront (its paths' rays traced by the trace kernels between its
+    /// launches; for logs and image metadata).
     fn wavefront(&self) -> bool {
         false
     }

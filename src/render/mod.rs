@@ -13,6 +13,7 @@
 //! ```
 
 mod bdpt;
+mod bdpt_wavefront;
 mod defaults;
 pub mod env;
 mod film;
@@ -28,6 +29,7 @@ mod shadow_queue;
 mod stop;
 mod tonemap;
 pub mod vcm;
+mod wavefront_queues;
 
 pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
@@ -235,8 +237,10 @@ pub struct RenderSettings {
     pub direct_light_tracing: bool,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
-    /// of the megakernel; `None` takes [`default_wavefront`]. Either gives the same image (up to
-    /// the order of float sums).
+    /// of the megakernel; bdpt with the light vertex cache's fixed joins: its camera pass so
+    /// (bdpt_wavefront.rs). `None` takes [`default_wavefront`]; `Some(true)` for an integrator
+    /// without a wavefront form is an error. Either gives the same image (up to the order of
+    /// float sums).
     pub wavefront: Option<bool>,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
@@ -372,11 +376,16 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
     if on_cpu(ctx) {
         return 1;
     }
-    if wavefront(ctx, settings, settings.integrator, features) {
-        let slots = pt_wavefront::TARGET_SLOTS.min(shadow_queue::budget(ctx) / pt_wavefront::SLOT_BYTES);
-        return slots.div_ceil(pixels.max(1) as u64).clamp(1, 64) as u32;
-    }
-    let mut s = TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64);
+    let mut s = if wavefront(ctx, settings, settings.integrator, features) {
+        let slot_bytes = match settings.integrator {
+            Integrator::Bdpt(join) => bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1)),
+            _ => pt_wavefront::SLOT_BYTES,
+        };
+        let slots = pt_wavefront::TARGET_SLOTS.min(shadow_queue::budget(ctx) / slot_bytes);
+        slots.div_ceil(pixels.max(1) as u64).clamp(1, 64)
+    } else {
+        TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64)
+    };
     if settings.integrator.stores_light_vertices() {
         let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
@@ -420,6 +429,14 @@ fn build_kernels(
     if integrator.stores_light_vertices() {
         invocations = bdpt::queue_invocations(invocations, pixels, settings.light_path_ratio, slices);
     }
+    if settings.wavefront == Some(true) && !defaults::wavefront_supported(integrator) {
+        return Err(RenderError::Unsupported(format!(
+            "{} has no wavefront form (pt, pt-nee, and bdpt with the light vertex cache's 1 to 3 connections have): drop --wavefront on",
+            integrator.name()
+        )));
+    }
+    let wavefront_slots =
+        wavefront(ctx, settings, integrator, &scene.features).then(|| shadow_queue::invocations(window.width(), window.height(), slices));
     let queue = resolve_shadow_queue(ctx, settings, integrator, &scene.features, scene.bvh.layout, invocations);
     Ok(match integrator {
         Integrator::Pt | Integrator::PtNee if wavefront(ctx, settings, integrator, &scene.features) => {
@@ -433,10 +450,12 @@ fn build_kernels(
             let nee = integrator == Integrator::PtNee;
             Box::new(PathTracer::new(ctx, scene, nee, settings, regenerate, one_trace, queue, invocations)?)
         }
-        Integrator::Bdpt(join) => Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None, queue, invocations)?),
+        Integrator::Bdpt(join) => {
+            Box::new(Bdpt::new(ctx, scene, pixels, settings, join, slices, None, queue, invocations, wavefront_slots)?)
+        }
         Integrator::Vcm(mode) => {
             let config = bdpt::VcmConfig { mode, radius: settings.vcm_radius.resolve(0.0), alpha: settings.vcm_alpha };
-            Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::DEFAULT, slices, Some(config), queue, invocations)?)
+            Box::new(Bdpt::new(ctx, scene, pixels, settings, Join::DEFAULT, slices, Some(config), queue, invocations, None)?)
         }
     })
 }

@@ -8,64 +8,30 @@
 use std::cell::Cell;
 
 use super::integrator::{IntegratorKernels, PassInputs};
+use super::wavefront_queues::{queue_bytes, slot_buffer, Queues};
 use super::{gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::PtPush, abi::PtWavefrontPush, kernels};
-use crate::trace::{TraceOptions, Tracer};
-use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
+use crate::vk::{Bind, Buffer, Context, Kernel, Spec};
 
 /// Bytes per slot: the path (`PtSuspended`), two rays, two hits, the pending contribution and
 /// where its rays went in the queues.
-pub const SLOT_BYTES: u64 = std::mem::size_of::<abi::PtSuspended>() as u64 + 2 * 32 + 2 * 16 + 16 + 8;
+pub const SLOT_BYTES: u64 = std::mem::size_of::<abi::PtSuspended>() as u64 + queue_bytes(1) + 16 + 8;
 
-/// Slots the wavefront tracer's passes aim for on GPUs (sample slices enough for about this
-/// many): fewer leave its trace kernels' launches too short to fill the GPU. NVIDIA H200,
-/// `bench render`, Sponza 640 x 360 pt-nee, 64 spp: 201 ms at 2 slices (0.46 million slots),
-/// 147 at 8 and 16 (1.8 and 3.7 million), 153 at 32; Cornell box 256 x 256, 1024 spp: 91 ms at
-/// 16 slices (1 million), 78 at 64 (4.2 million) (docs/results.md, "A wavefront path tracer").
+/// Slots the wavefront integrators' passes aim for on GPUs (sample slices enough for about
+/// this many): fewer leave their trace kernels' launches too short to fill the GPU. NVIDIA
+/// H200, `bench render`, Sponza 640 x 360 pt-nee, 64 spp: 201 ms at 2 slices (0.46 million
+/// slots), 147 at 8 and 16 (1.8 and 3.7 million), 153 at 32; Cornell box 256 x 256, 1024 spp:
+/// 91 ms at 16 slices (1 million), 78 at 64 (4.2 million) (docs/results.md, "A wavefront path
+/// tracer").
 pub const TARGET_SLOTS: u64 = 1 << 22;
-
-/// Dynamic fetch's refill (`TraceOptions::refill_lanes`) of the wavefront tracer's 4-wide
-/// trace kernels on GPUs with subgroups of 32 lanes or more.
-const REFILL_LANES: u32 = 28;
-
-/// How the trace kernels of the wavefront tracer run: over the scene's BVH (on GPUs the 4-wide
-/// one, `wavefront_bvh_layout`) with the lockstep loops, the ray count read from the queue's
-/// counter; over the 4-wide BVH on GPUs (`on_cpu` false, `subgroup_size` 32 or more) as
-/// persistent threads with dynamic fetch, refilled at 28 lanes as for `bench traversal`'s
-/// secondary rays. NVIDIA H200, ms per run against one invocation per ray: textured Sponza
-/// pt-nee 58.2 against 60.3, pt 44.0 against 45.9, DamagedHelmet pt-nee 25.1 against 24.6
-/// (docs/results.md, "A wavefront path tracer"). `alpha`: where the scene has alpha-tested or
-/// blended triangles (trace_alpha*.comp), each ray carrying its path's stochastic-opacity seed.
-pub fn trace_options(scene: &GpuScene, on_cpu: bool, subgroup_size: u32, alpha: bool) -> TraceOptions {
-    let mut opts = TraceOptions::new(scene.bvh.tri_test);
-    opts.layout = scene.bvh.layout;
-    opts.alpha = alpha.then_some(scene.features);
-    opts.ray_seed = alpha;
-    opts.count_buffer = true;
-    if scene.bvh.layout == crate::bvh::BvhLayout::Bvh4 && !on_cpu && subgroup_size >= 32 {
-        opts.persistent = Some(0);
-        opts.refill_lanes = REFILL_LANES;
-    }
-    opts
-}
 
 /// The wavefront path tracer's kernels and per-slot storage for passes of up to `slots` slots.
 pub struct WavefrontPathTracer {
     kernel: Kernel,
-    tracer: Tracer,
+    queues: Queues,
     state: Buffer,
-    rays: Buffer,
-    hits: Buffer,
-    shadow_rays: Buffer,
-    shadow_hits: Buffer,
     contrib: Buffer,
     index: Buffer,
-    /// Per launch of a batch, the segments and shadow rays it queued; copied to `counts_read`
-    /// at its end.
-    counts: Buffer,
-    counts_read: Buffer,
-    /// The trace kernels' node and triangle counters (unused: not counted).
-    trace_stats: Buffer,
     slots: u64,
     /// Launches a pass took per sample of a slot, learnt from the last pass: sizes the first
     /// batch of the next.
@@ -90,62 +56,17 @@ impl WavefrontPathTracer {
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(settings.sampler.spec());
         let kernel = ctx.create_kernel(&kernels::PT_WAVEFRONT, &specs)?;
-        let opts = trace_options(scene, super::on_cpu(ctx), ctx.info().subgroup_size, scene.features.alpha);
-        let tracer = Tracer::with_options(ctx, &opts)?;
-        let buffer = |name: &str, bytes: u64| {
-            ctx.create_buffer(name, slots * bytes, Memory::Device).map_err(|e| {
-                RenderError::Memory(format!(
-                    "the wavefront path tracer's {slots} slots ({} MiB) do not fit ({e}): lower --sample-slices or the image size, or add --wavefront off",
-                    (slots * SLOT_BYTES) >> 20
-                ))
-            })
-        };
-        let state = buffer("pt_wavefront.state", std::mem::size_of::<abi::PtSuspended>() as u64)?;
-        let rays = buffer("pt_wavefront.rays", 32)?;
-        let hits = buffer("pt_wavefront.hits", 16)?;
-        let shadow_rays = buffer("pt_wavefront.shadow_rays", 32)?;
-        let shadow_hits = buffer("pt_wavefront.shadow_hits", 16)?;
-        let contrib = buffer("pt_wavefront.contrib", 16)?;
-        let index = buffer("pt_wavefront.queue_index", 8)?;
-        let batch_bytes = abi::WF_MAX_BATCH as u64 * 8;
+        let what = ("the wavefront path tracer", "pt_wavefront");
+        let buffer = |name: &str, bytes: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, bytes, SLOT_BYTES);
         Ok(WavefrontPathTracer {
             kernel,
-            tracer,
-            state,
-            rays,
-            hits,
-            shadow_rays,
-            shadow_hits,
-            contrib,
-            index,
-            counts: ctx.create_buffer("pt_wavefront.counts", batch_bytes, Memory::Device)?,
-            counts_read: ctx.create_buffer("pt_wavefront.counts_read", batch_bytes, Memory::Readback)?,
-            trace_stats: ctx.create_buffer("pt_wavefront.trace_stats", 8, Memory::Device)?,
+            queues: Queues::new(ctx, scene, what, slots, 1, SLOT_BYTES)?,
+            state: buffer("state", std::mem::size_of::<abi::PtSuspended>() as u64)?,
+            contrib: buffer("contrib", 16)?,
+            index: buffer("queue_index", 8)?,
             slots,
             launches_per_sample: Cell::new(8.0),
         })
-    }
-
-    /// Records `launches` launches of the path kernel, each followed by the two traces.
-    fn record_batch(
-        &self,
-        rec: &mut Recorder,
-        binds: &[Bind],
-        geometry: &[Bind],
-        push: &PtWavefrontPush,
-        slots: u32,
-        launches: u32,
-    ) -> Result<()> {
-        rec.fill_buffer(&self.counts, 0);
-        let groups = self.kernel.groups_for(slots);
-        for launch in 0..launches {
-            rec.dispatch(&self.kernel, binds, bytemuck::bytes_of(&PtWavefrontPush { launch, ..*push }), [groups, 1, 1])?;
-            let (ext, shadow) = (Some((&self.counts, 2 * launch)), Some((&self.counts, 2 * launch + 1)));
-            self.tracer.record_trace_queued(rec, geometry, &self.rays, &self.hits, &self.trace_stats, slots, ext, false)?;
-            self.tracer.record_trace_queued(rec, geometry, &self.shadow_rays, &self.shadow_hits, &self.trace_stats, slots, shadow, true)?;
-        }
-        rec.copy_buffer(&self.counts, &self.counts_read, self.counts.size());
-        Ok(())
     }
 }
 
@@ -162,7 +83,7 @@ fn batch_launches(first: bool, samples_per_slot: u32, launches_per_sample: f64, 
 
 impl IntegratorKernels for WavefrontPathTracer {
     fn kernels(&self) -> Vec<&Kernel> {
-        let [closest, any] = self.tracer.trace_kernels();
+        let [closest, any] = self.queues.kernels();
         vec![&self.kernel, closest, any]
     }
 
@@ -192,14 +113,10 @@ impl IntegratorKernels for WavefrontPathTracer {
             Bind::buffer(abi::BIND_RENDER_STATS, &film.stats),
             Bind::buffer(abi::BIND_SLICES, film.slices_buffer()),
             Bind::buffer(abi::BIND_PT_SUSPENDED, &self.state),
-            Bind::buffer(abi::BIND_WF_RAYS, &self.rays),
-            Bind::buffer(abi::BIND_WF_HITS, &self.hits),
-            Bind::buffer(abi::BIND_WF_SHADOW_RAYS, &self.shadow_rays),
-            Bind::buffer(abi::BIND_WF_SHADOW_HITS, &self.shadow_hits),
             Bind::buffer(abi::BIND_WF_CONTRIB, &self.contrib),
             Bind::buffer(abi::BIND_WF_INDEX, &self.index),
-            Bind::buffer(abi::BIND_WF_COUNTS, &self.counts),
         ]);
+        binds.extend(self.queues.binds());
         let samples_per_slot = spp.div_ceil(slices);
         let mut done = 0u32;
         loop {
@@ -213,14 +130,15 @@ impl IntegratorKernels for WavefrontPathTracer {
                         rec.fill_buffer(film.slices_buffer(), 0);
                     }
                 }
-                self.record_batch(rec, &binds, &geometry, &push, slots, launches)
+                let groups = self.kernel.groups_for(slots);
+                self.queues.record_batch(rec, &geometry, slots, launches, |rec, launch| {
+                    rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(&PtWavefrontPush { launch, ..push }), [groups, 1, 1])
+                })
             })?;
-            let counts: Vec<u32> = self.counts_read.read()?;
-            let queued: Vec<u32> = counts.chunks(2).take(launches as usize).map(|c| c[0] + c[1]).collect();
             // The first launch that queued no ray ends the pass (the rest found nothing to do).
-            match queued.iter().position(|&n| n == 0) {
+            match self.queues.first_idle_launch(launches)? {
                 Some(last) => {
-                    done += last as u32 + 1;
+                    done += last + 1;
                     break;
                 }
                 None => done += launches,
