@@ -52,18 +52,35 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 
 #include "bdpt_camera_path.glsl"
 
-// The camera sample through image position `xy` (pixels) whose light path (for the full and
-// k-step joins) is `path`: its radiance, its shadow rays' queued.
+// `path`: the light path of this camera sample (megakernel joins).
 vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
+    if (HAS_ALPHA != 0u) {
+        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+    }
     uvec2 stats = uvec2(0u);
+    vec3 o = pc.camera.eye.xyz;
+    vec3 d = camera_direction(pc.camera, xy);
+    vec3 beta = vec3(1.0);
     vec3 radiance = vec3(0.0);
-    CameraJoin join = camera_join(path);
-    CameraPath p = camera_path_start(xy, rng);
-    for (;;) {
-        TraceHit h = trace_ray(p.o, p.d, 0.0, 3.0e38, false, stats);
-        if (!camera_scatter(p, h, join, rng, radiance, stats)) {
-            break;
-        }
+    float d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
+    float d_vc = 0.0;
+    // dVC at the second vertex less light tracing's term: the merging term of the first
+    // vertex (0 in BDPT), for the emitter hits there (vcm.glsl, emitter_hit_d_vc).
+    float d_vc_merge = 0.0;
+    float d_vm = 0.0;
+    VcmFactors k = vcm_factors(pc.sample_base, pc.light_path_total);
+    // Merging at a light vertex joined to this camera vertex is a strategy only when merging
+    // runs everywhere; at this camera vertex, also while every earlier vertex scattered
+    // through a delta lobe (`merge_pending`; vcm.glsl).
+    float vm_light = k.vm * vcm_light_merge_terms();
+    bool merge_pending = true;
+    uvec2 lc = light_counts[path];   // (stored, seen) of this sample's light path (megakernel joins)
+    uint base = path * pc.light_path_len;
+    vec3 sigma_near = vec3(0.0); // sigma_a where the next segment leaves its surface (volume.glsl)
+
+    for (uint depth = 1u;; depth++) {
+        TraceHit h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
+#include "bdpt_camera_step.glsl"
     }
     return radiance;
 }

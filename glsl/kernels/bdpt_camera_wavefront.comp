@@ -1,14 +1,14 @@
 #version 460
 // BDPT's camera pass as a wavefront (`--wavefront` with bdpt and the light vertex cache; after
 // Laine, Karras & Aila 2013, as pt_wavefront.comp does for the path tracers): the megakernel's
-// camera subpaths (glsl/common/bdpt_camera_path.glsl) with their segments, light samples'
-// shadow rays and connections' shadow rays traced by the trace kernels (trace_kernel.glsl)
-// between its launches.
+// camera subpaths (glsl/common/bdpt_camera_step.glsl, bdpt_camera_path.glsl) with their
+// segments, light samples' shadow rays and connections' shadow rays traced by the trace
+// kernels (trace_kernel.glsl) between its launches.
 //
 // One slot per megakernel invocation (pixel of the window and camera sample of the iteration),
 // with its random numbers. Each launch takes up what the trace kernels found for the slot's
 // last rays: the contribution of each of its shadow rays that is clear, then the scattering at
-// its segment's hit (camera_scatter), which leaves the next segment and up to
+// its segment's hit (one step of the megakernel's loop), which leaves the next segment and up to
 // BDPT_WF_SHADOW_RAYS shadow rays; or, in the first launch of a pass, the start of the slot's
 // camera sample. The host runs launch, closest-hit trace, any-hit trace, launch, ... until a
 // launch queues no ray (src/render/bdpt_wavefront.rs). The rays are packed at the front of
@@ -126,32 +126,50 @@ void main() {
         }
     }
 
-    // The camera subpath: scattered at what its segment found, or started.
-    Rng rng;
-    CameraPath path;
+    // The camera subpath: one step at what its segment found (the megakernel's loop body,
+    // bdpt_camera_step.glsl, run once), or its start.
+    Rng rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
+    blend_seed = floatBitsToUint(st.sigma_seed.w);
+    vec3 o = st.o_depth.xyz;
+    uint depth = floatBitsToUint(st.o_depth.w);
+    vec3 d = st.d_dvcm.xyz;
+    float d_vcm = st.d_dvcm.w;
+    vec3 beta = st.beta_dvc.xyz;
+    float d_vc = st.beta_dvc.w;
+    vec3 sigma_near = st.sigma_seed.xyz;
+    // BDPT's values of VCM's terms (vcm.glsl: no merging) and of the megakernel joins'.
+    float d_vc_merge = 0.0;
+    float d_vm = 0.0;
+    bool merge_pending = false;
+    VcmFactors k = VcmFactors(0.0, 0.0);
+    float vm_light = 0.0;
+    uvec2 lc = uvec2(0u);
+    uint base = 0u;
     bool alive = false;
     vec3 radiance = vec3(0.0);
     uvec2 stats = uvec2(0u);
     if (status == PT_SUSPENDED) {
-        rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
-        blend_seed = floatBitsToUint(st.sigma_seed.w);
-        path.o = st.o_depth.xyz;
-        path.depth = floatBitsToUint(st.o_depth.w);
-        path.d = st.d_dvcm.xyz;
-        path.d_vcm = st.d_dvcm.w;
-        path.beta = st.beta_dvc.xyz;
-        path.d_vc = st.beta_dvc.w;
-        path.sigma_near = st.sigma_seed.xyz;
-        // BDPT's values of VCM's terms (vcm.glsl: no merging).
-        path.d_vc_merge = 0.0;
-        path.d_vm = 0.0;
-        path.merge_pending = false;
         GpuHit gh = wf_hits[queued.x];
-        alive = camera_scatter(path, TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v)), camera_join(0u), rng, radiance, stats);
+        TraceHit h = TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v));
+        do {
+#include "bdpt_camera_step.glsl"
+            alive = true;
+            depth++;
+        } while (false);
     } else if (status == PT_FRESH) {
+        // The megakernel's start (bdpt_camera.comp: main and camera_path).
         rng = rng_init(image_pixel, pc.sample_base + slice, pc.seed);
         vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
-        path = camera_path_start(xy, rng);
+        if (HAS_ALPHA != 0u) {
+            blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+        }
+        o = pc.camera.eye.xyz;
+        d = camera_direction(pc.camera, xy);
+        beta = vec3(1.0);
+        d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
+        d_vc = 0.0;
+        sigma_near = vec3(0.0);
+        depth = 1u;
         alive = true;
         count = 1.0;
     }
@@ -161,17 +179,17 @@ void main() {
     uvec4 ext_lanes = subgroupBallot(alive);
     uint ext_count = subgroupBallotBitCount(ext_lanes);
     uint shadow_total = subgroupAdd(wf_shadow_count);
-    uvec2 base = uvec2(0u);
+    uvec2 queue_base = uvec2(0u);
     if (subgroupElect()) {
-        base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * pc.launch], ext_count) : 0u;
-        base.y = shadow_total > 0u ? atomicAdd(wf_counts[2u * pc.launch + 1u], shadow_total) : 0u;
+        queue_base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * pc.launch], ext_count) : 0u;
+        queue_base.y = shadow_total > 0u ? atomicAdd(wf_counts[2u * pc.launch + 1u], shadow_total) : 0u;
     }
-    base = subgroupBroadcastFirst(base);
-    uvec4 next = uvec4(base.x + subgroupBallotExclusiveBitCount(ext_lanes), base.y + subgroupExclusiveAdd(wf_shadow_count), wf_shadow_count, 0u);
+    queue_base = subgroupBroadcastFirst(queue_base);
+    uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count), wf_shadow_count, 0u);
     if (alive) {
-        state[g] = BdptCameraState(vec4(path.o, uintBitsToFloat(path.depth)), vec4(path.d, path.d_vcm), vec4(path.beta, path.d_vc),
-            vec4(path.sigma_near, uintBitsToFloat(blend_seed)), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
-        wf_rays[next.x] = wavefront_ray(path.o, path.d, 3.0e38, blend_seed);
+        state[g] = BdptCameraState(vec4(o, uintBitsToFloat(depth)), vec4(d, d_vcm), vec4(beta, d_vc),
+            vec4(sigma_near, uintBitsToFloat(blend_seed)), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
     } else if (status != PT_DONE) {
         state[g].rng_status.w = PT_DONE;
     }

@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -23,6 +23,37 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s19b)
+  # Session 19: after s19a. The camera megakernel compiled as before (its loop body an
+  # included fragment again) against 577dd35's build; the wavefront camera pass's slices on
+  # the textured Sponza (the default now lets its light-vertex store grow to a sixteenth of
+  # the device's memory); equal time against a 40 s pt-nee reference. Carried as s19a.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for b in .device/bidir-s18 "$B" .device/bidir-s18 "$B"; do
+    for i in bdpt vcm; do
+      echo "== cornell $i $(basename "$b")"; $T "$b" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator $i 2>&1 | grep -E "Msamples"
+    done
+    echo "== sponza textured bdpt megakernel $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt --wavefront off 2>&1 | grep -E "Msamples"
+  done
+  for r in 1 2; do
+    for sl in default 12 32; do
+      a=""; [ "$sl" = default ] || a="--sample-slices $sl"
+      echo "== sponza textured bdpt wavefront on slices $sl"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt --wavefront on $a 2>&1 | grep -E "Msamples|^bdpt|^trace"
+    done
+  done
+  for wf in off on off on; do
+    echo "== DamagedHelmet bdpt wavefront $wf"; $T "$B" bench render .device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 1 --runs 3 --integrator bdpt --wavefront $wf 2>&1 | grep -E "Msamples"
+  done
+  timeout -k 5 120 "$B" render $SPB --integrator pt-nee --time 40 --seed 99 -o /tmp/ref.exr 2>&1 | grep -E "spp in"
+  for s in 1 2; do
+    for i in "bdpt --wavefront off" "bdpt --wavefront on" "pt-nee"; do
+      echo "== sponza textured --time 1 $i seed $s"; $T "$B" render $SPB --integrator $i --time 1 --seed $s --reference /tmp/ref.exr -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  ;;
 s19a)
   # Session 19: BDPT's camera pass as a wavefront (`--wavefront on`) against the megakernel,
   # interleaved; carried as s18c (textured Sponza and three glTF samples, no base build):
@@ -54,6 +85,16 @@ s19a)
   for wf in off on off on; do
     echo "== cornell bdpt --time 1 wavefront $wf"; $T "$B" render --integrator bdpt --time 1 --wavefront $wf --reference "$REF" -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
   done
+  # The camera megakernel after its path code moved to bdpt_camera_path.glsl, against the
+  # build of session 18's last commit (.device/bidir-s18.gz, 577dd35), interleaved.
+  if [ -x .device/bidir-s18 ]; then
+    for b in .device/bidir-s18 "$B" .device/bidir-s18 "$B"; do
+      for i in bdpt vcm; do
+        echo "== cornell $i $(basename "$b")"; $T "$b" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+      echo "== sponza textured bdpt $(basename "$b")"; $T "$b" bench render $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --spp 64 --warmup 1 --runs 3 --integrator bdpt --wavefront off 2>&1 | grep -E "Msamples"
+    done
+  fi
   ;;
 speed)
   # #16/#13: path regeneration, the 128-byte GpuMaterial, the alpha-only first-hit pass.

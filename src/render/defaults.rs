@@ -126,10 +126,16 @@ pub(super) fn resolve_shadow_queue(
 /// megakernels stay for the diffuse Cornell box (58.4 against 78.6 ms per 1024 spp: there the
 /// slots' memory traffic costs more than the trace kernels save) and the caustic scene's smooth
 /// glass (102 against 108); CPU devices (llvmpipe: 3-4x slower, its launches' fixed costs).
+///
+/// The same for BDPT's camera pass (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3), ms per
+/// run: textured Sponza 91.5 against 122.0 (640 x 360, 64 spp), DamagedHelmet 273.2 against
+/// 401.5 (384², 256 spp); the Cornell box (272 against 175 ms per 1024 spp) and the caustic
+/// scene (154 against 65) keep the megakernel (docs/results.md, "BDPT's camera pass as a
+/// wavefront").
 pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> bool {
     let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
     let rich = features.glossy || features.textures;
-    matches!(integrator, Integrator::Pt | Integrator::PtNee) && !on_cpu && rich && !smooth_specular
+    wavefront_supported(integrator) && !on_cpu && rich && !smooth_specular
 }
 
 /// Whether `integrator` has a wavefront form: pt and pt-nee (pt_wavefront.rs), and BDPT's
@@ -227,14 +233,17 @@ mod default_tests {
             assert_eq!(queue.is_some(), pt_nee == cw, "{f:?}");
             assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
             assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
-            // The wavefront path tracer: on GPUs for glossy or textured scenes without smooth
-            // mirrors or glass, for pt and pt-nee only; never on CPU devices.
+            // The wavefront forms: on GPUs for glossy or textured scenes without smooth
+            // mirrors or glass, for pt, pt-nee and bdpt's fixed cache joins only; never on CPU
+            // devices.
             let wave = f == rough || f == textured_ggx;
-            for i in [Integrator::Pt, Integrator::PtNee] {
+            for i in [Integrator::Pt, Integrator::PtNee, Integrator::Bdpt(Join::Lvc(1)), Integrator::Bdpt(Join::Lvc(3))] {
                 assert_eq!(default_wavefront(false, i, &f), wave, "{f:?}");
                 assert!(!default_wavefront(true, i, &f));
             }
-            assert!(!default_wavefront(false, Integrator::Bdpt(Join::Lvc(0)), &f));
+            for i in [Integrator::Bdpt(Join::Lvc(0)), Integrator::Bdpt(Join::Full), Integrator::Vcm(vcm::VcmMode::FULL)] {
+                assert!(!default_wavefront(false, i, &f));
+            }
             // BDPT's and VCM's camera pass: on GPUs, never on CPU devices.
             assert_eq!(default_camera_pass_queue(false).map(|q| q.slots), Some(64));
             assert_eq!(default_camera_pass_queue(true), None);

@@ -376,7 +376,8 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
     if on_cpu(ctx) {
         return 1;
     }
-    let mut s = if wavefront(ctx, settings, settings.integrator, features) {
+    let wavefront = wavefront(ctx, settings, settings.integrator, features);
+    let mut s = if wavefront {
         let slot_bytes = match settings.integrator {
             Integrator::Bdpt(join) => bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1)),
             _ => pt_wavefront::SLOT_BYTES,
@@ -389,7 +390,14 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
     if settings.integrator.stores_light_vertices() {
         let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
-        let limit = SLICED_STORE_BYTES.min(ctx.info().max_storage_buffer_range as u64);
+        // The wavefront camera pass wants millions of slots, so its iterations may take more
+        // light paths: its store may grow to the shadow queue's budget (a sixteenth of the
+        // device's memory, within one buffer's range). NVIDIA H200, textured Sponza 640 x 360
+        // bdpt, 64 spp: 169.7 ms at 2 slices, 126.8 at 4, 112.3 at 6 (a 1 GiB store), 97.9 at
+        // 12, 91.5 at 19 (the default there now; docs/results.md, "BDPT's camera pass as a
+        // wavefront").
+        let budget = if wavefront { SLICED_STORE_BYTES.max(shadow_queue::budget(ctx)) } else { SLICED_STORE_BYTES };
+        let limit = budget.min(ctx.info().max_storage_buffer_range as u64);
         s = s.min((limit / store.max(1)).max(1));
     }
     s as u32
