@@ -5,7 +5,6 @@
 // the wavefront pass), the light vertex cache's buffers, and
 // `bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats)`: whether `contrib`
 // counts now (the ray was traced and is clear) rather than later (queued) or never (blocked).
-// Without BDPT_WAVEFRONT it also declares the merge queries and includes vcm_merge.glsl.
 #ifndef BIDIR_BDPT_CAMERA_PATH_GLSL
 #define BIDIR_BDPT_CAMERA_PATH_GLSL
 

@@ -10,7 +10,8 @@
 // The includer has in scope: `pc` (BdptPush's fields), BDPT_JOIN, the light vertex cache, the
 // path's o, d, beta, radiance, d_vcm, d_vc, d_vc_merge, d_vm, merge_pending, sigma_near, depth,
 // the iteration's k (VcmFactors) and vm_light, the megakernel joins' lc and base, stats, rng,
-// and camera_shadow_clear (bdpt_camera_path.glsl).
+// and camera_shadow_clear (bdpt_camera_path.glsl); without BDPT_WAVEFRONT (VCM's merges) also
+// merge_queries, g_query and g_queued, and vcm_merge.glsl.
     if (h.prim == NO_HIT) {
         // s = 0 at the environment: its vertex is a direction, so dVCM and dVC stay as
         // the last scattering left them (no distance or cosine to convert; Georgiev

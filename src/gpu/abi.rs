@@ -345,7 +345,9 @@ gpu_consts! {
     /// Trace kernels: 1 takes the ray count from BIND_RAY_COUNTS[`TracePush::count_index`]
     /// (at most `TracePush::count`), where a kernel before it queued the rays; 0: `count`.
     pub const SPEC_RAY_COUNT_BUFFER: u32 = 60;
-    /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`).
+    /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
+    /// per slot of a wavefront form, its path between launches (`PtSuspended`, or BDPT's camera
+    /// pass: `BdptCameraState`).
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
     /// buffer: its first sample is next), has a path suspended, or starts sample
@@ -731,7 +733,7 @@ gpu_structs! {
     }
 
     /// Push constants of `pt_wavefront.comp`: the path tracer's, and which launch of the
-    /// submission this is (its counter in BIND_WF_ACTIVE).
+    /// submission this is (its counters in BIND_WF_COUNTS).
     pub struct PtWavefrontPush (128 bytes) {
         pub pt: PtPush,
         pub launch: u32,

@@ -85,7 +85,7 @@ struct Lvc {
 /// the light vertex cache, a scan and a listing pass between them).
 pub struct Bdpt {
     light: Kernel,
-    camera: Kernel,
+    camera: CameraPass,
     vertices: Buffer,
     counts: Buffer,
     /// Per light path its stored count, then (scanned) its first cache entry.
@@ -106,8 +106,13 @@ pub struct Bdpt {
     /// The shadow-ray queue of the camera pass and of the light pass's joins to the camera
     /// (`--shadow-queue`), if any.
     queue: Option<(super::shadow_queue::ShadowQueueTracer, super::ShadowQueue)>,
-    /// The wavefront camera pass (`--wavefront`), in place of the camera megakernel.
-    wavefront: Option<WavefrontCameraPass>,
+}
+
+/// How the camera subpaths run: the megakernel (bdpt_camera.comp, which traces its own rays
+/// and queues its shadow rays), or as a wavefront (`--wavefront`; bdpt_wavefront.rs).
+enum CameraPass {
+    Megakernel(Kernel),
+    Wavefront(Box<WavefrontCameraPass>),
 }
 
 /// What `--integrator vcm` adds to BDPT with the light vertex cache.
@@ -198,7 +203,7 @@ impl Bdpt {
             Some(_) if vcm.is_some() => {
                 return Err(RenderError::Unsupported("VCM's camera pass has no wavefront form: add --wavefront off".into()))
             }
-            Some(slots) => Some(WavefrontCameraPass::new(ctx, scene, &specs, settings, join, slots)?),
+            Some(slots) => Some(CameraPass::Wavefront(Box::new(WavefrontCameraPass::new(ctx, scene, &specs, settings, join, slots)?))),
             None => None,
         };
         if let Some(v) = vcm {
@@ -258,7 +263,10 @@ impl Bdpt {
             lvc,
             grid,
             light: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FORMS), &specs)?,
-            camera: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &specs)?,
+            camera: match wavefront {
+                Some(w) => w,
+                None => CameraPass::Megakernel(ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &specs)?),
+            },
             vertices,
             counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
             join,
@@ -267,7 +275,6 @@ impl Bdpt {
             max_camera_samples: camera_samples,
             vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
             queue,
-            wavefront,
         })
     }
 
@@ -302,7 +309,7 @@ impl Bdpt {
             Some((tracer, _)) => binds.extend(tracer.binds()),
             None => binds.extend(super::shadow_queue::ShadowQueueTracer::unused_binds(film)),
         }
-        if let Some(w) = &self.wavefront {
+        if let CameraPass::Wavefront(w) = &self.camera {
             binds.extend(w.binds());
         }
         binds
@@ -329,14 +336,14 @@ impl Bdpt {
 
     /// Records one iteration with the megakernel camera pass: all light subpaths, then all
     /// camera subpaths.
-    pub fn record(&self, rec: &mut Recorder, scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
+    fn record(&self, rec: &mut Recorder, camera: &Kernel, scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
         let binds = self.binds(scene, film);
         self.record_light(rec, &binds, push)?;
         let samples = push.camera_samples.max(1);
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
-        rec.dispatch(&self.camera, &binds, bytemuck::bytes_of(push), [self.camera.groups_for(n), 1, 1])?;
+        rec.dispatch(camera, &binds, bytemuck::bytes_of(push), [camera.groups_for(n), 1, 1])?;
         if let Some((tracer, _)) = &self.queue {
-            tracer.record(rec, &binds, film, samples, self.camera.groups_for(n))?;
+            tracer.record(rec, &binds, film, samples, camera.groups_for(n))?;
         }
         if let Some(grid) = &self.grid {
             grid.record_merge(rec, &binds, push, film.width * film.height * samples)?;
@@ -385,9 +392,18 @@ impl IntegratorKernels for Bdpt {
     /// The kernels an iteration runs (the light-vertex cache's scan kernels are shared
     /// utilities, `compute::Scan`).
     fn kernels(&self) -> Vec<&Kernel> {
-        let mut k = vec![&self.light, &self.camera];
-        k.extend(self.queue.iter().flat_map(|q| q.0.kernels()));
-        k.extend(self.wavefront.iter().flat_map(|w| w.kernels()));
+        let mut k = vec![&self.light];
+        match &self.camera {
+            CameraPass::Megakernel(camera) => {
+                k.push(camera);
+                k.extend(self.queue.iter().flat_map(|q| q.0.kernels()));
+            }
+            CameraPass::Wavefront(w) => {
+                // The queue serves the light pass's joins alone.
+                k.extend(self.queue.iter().filter_map(|q| q.0.splat_kernel()));
+                k.extend(w.kernels());
+            }
+        }
         if let Some(g) = &self.grid {
             k.extend(g.kernels());
         }
@@ -395,11 +411,15 @@ impl IntegratorKernels for Bdpt {
     }
 
     fn storage_bytes(&self) -> u64 {
-        self.vertex_bytes + self.queue.as_ref().map_or(0, |q| q.0.bytes()) + self.wavefront.as_ref().map_or(0, |w| w.bytes())
+        let wavefront = match &self.camera {
+            CameraPass::Wavefront(w) => w.bytes(),
+            CameraPass::Megakernel(_) => 0,
+        };
+        self.vertex_bytes + self.queue.as_ref().map_or(0, |q| q.0.bytes()) + wavefront
     }
 
     fn wavefront(&self) -> bool {
-        self.wavefront.is_some()
+        matches!(self.camera, CameraPass::Wavefront(_))
     }
 
     fn shadow_queue(&self) -> Option<super::ShadowQueue> {
@@ -451,9 +471,11 @@ impl IntegratorKernels for Bdpt {
             });
             done += samples;
         }
-        match &self.wavefront {
-            Some(w) => pushes.iter().try_for_each(|push| self.iterate_wavefront(ctx, w, scene, inputs.film, push)),
-            None => Ok(ctx.submit("bdpt pass", |rec| pushes.iter().try_for_each(|push| self.record(rec, scene, inputs.film, push)))?),
+        match &self.camera {
+            CameraPass::Wavefront(w) => pushes.iter().try_for_each(|push| self.iterate_wavefront(ctx, w, scene, inputs.film, push)),
+            CameraPass::Megakernel(camera) => {
+                Ok(ctx.submit("bdpt pass", |rec| pushes.iter().try_for_each(|push| self.record(rec, camera, scene, inputs.film, push)))?)
+            }
         }
     }
 }

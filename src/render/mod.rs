@@ -367,8 +367,9 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
 }
 
 /// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`) of a
-/// scene with `features`. The wavefront path tracer takes more: its trace kernels need many
-/// rays per launch (`pt_wavefront::TARGET_SLOTS`), within the memory its slots may take.
+/// scene with `features`. The wavefront forms take more: their trace kernels need many rays
+/// per launch (`pt_wavefront::TARGET_SLOTS`), within the memory their slots (and BDPT's
+/// light-vertex store) may take.
 fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatures, pixels: u32) -> u32 {
     if settings.sample_slices > 0 {
         return settings.sample_slices;
@@ -376,8 +377,8 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
     if on_cpu(ctx) {
         return 1;
     }
-    let wavefront = wavefront(ctx, settings, settings.integrator, features);
-    let mut s = if wavefront {
+    let wave = wavefront(ctx, settings, settings.integrator, features);
+    let mut s = if wave {
         let slot_bytes = match settings.integrator {
             Integrator::Bdpt(join) => bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1)),
             _ => pt_wavefront::SLOT_BYTES,
@@ -396,7 +397,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
         // bdpt, 64 spp: 169.7 ms at 2 slices, 126.8 at 4, 112.3 at 6 (a 1 GiB store), 97.9 at
         // 12, 91.5 at 19 (the default there now; docs/results.md, "BDPT's camera pass as a
         // wavefront").
-        let budget = if wavefront { SLICED_STORE_BYTES.max(shadow_queue::budget(ctx)) } else { SLICED_STORE_BYTES };
+        let budget = if wave { SLICED_STORE_BYTES.max(shadow_queue::budget(ctx)) } else { SLICED_STORE_BYTES };
         let limit = budget.min(ctx.info().max_storage_buffer_range as u64);
         s = s.min((limit / store.max(1)).max(1));
     }
