@@ -281,36 +281,49 @@ fn wavefront_gives_the_megakernels_image() {
     finish(ctx);
 }
 
-/// BDPT's camera pass as a wavefront (`--wavefront on`, bdpt_camera_wavefront.comp): its
-/// segments, light samples' and connections' shadow rays traced by the trace kernels between
-/// its launches give the camera megakernel's image, with one and with three connections per
-/// vertex, one slice and three, over every layout, the tall box half-transparent (each ray
-/// carrying its path's stochastic-opacity seed), up to the order of the film's float sums: to
-/// 1e-5 of each value. A first version that kept each shadow ray's contribution in one buffer
-/// for the launch that reads it and the launch that writes the next failed here (one slot
-/// overwrote what another had yet to read: the image came out darker, and differed from run
-/// to run).
+/// BDPT's passes as wavefronts (`--wavefront on`, bdpt_light_wavefront.comp,
+/// bdpt_camera_wavefront.comp): their segments, the light paths' joins to the eye and the
+/// camera paths' light samples and connections traced by the trace kernels between their
+/// launches give the megakernels' image, with one and with three connections per vertex, one
+/// slice and three, twice and half as many light paths as pixels, over every layout, the tall
+/// box half-transparent (each ray carrying its path's stochastic-opacity seed), up to the order
+/// of the film's float sums: to 1e-5 of each value. A first version that kept each shadow ray's
+/// contribution in one buffer for the launch that reads it and the launch that writes the next
+/// failed here (one slot overwrote what another had yet to read: the image came out darker, and
+/// differed from run to run).
 #[test]
-fn wavefront_camera_pass_gives_the_megakernels_image() {
+fn wavefront_bdpt_gives_the_megakernels_image() {
     let ctx = gpu();
     let (mut scene, camera) = small_cornell(24, 16);
     let tall = scene.materials.iter().position(|m| m.name == "tallBox").expect("the Cornell box's tall box");
     scene.materials[tall].blend = Some(0.5);
-    for (join, layout, slices) in
-        [(Join::Lvc(1), BvhLayout::Cwbvh, 1), (Join::Lvc(1), BvhLayout::Bvh2, 3), (Join::Lvc(3), BvhLayout::Bvh4, 3)]
-    {
+    for (join, layout, slices, ratio) in [
+        (Join::Lvc(1), BvhLayout::Cwbvh, 1, 1.0),
+        (Join::Lvc(1), BvhLayout::Bvh2, 3, 1.0),
+        (Join::Lvc(3), BvhLayout::Bvh4, 3, 1.0),
+        (Join::Lvc(1), BvhLayout::Bvh4, 3, 2.0),
+        (Join::Lvc(2), BvhLayout::Bvh2, 1, 0.5),
+    ] {
         let image = |wavefront: bool| {
             let mut settings = RenderSettings::new(Integrator::Bdpt(join));
             settings.wavefront = Some(wavefront);
             settings.bvh_layout = Some(layout);
             settings.sample_slices = slices;
+            settings.light_path_ratio = ratio;
             render_values(&ctx, &scene, &camera, settings, 6)
         };
         let (mega, wave) = (image(false), image(true));
         let lit = mega.iter().filter(|&&v| v > 0.0).count();
         assert!(lit * 3 > mega.len(), "{lit} of {} values above 0", mega.len());
         let differ = values_differing(&wave, &mega, 1e-5);
-        assert_eq!(differ, 0, "bdpt:{} over {}, {slices} slices: {differ} of {} values differ", join.name(), layout.name(), mega.len());
+        assert_eq!(
+            differ,
+            0,
+            "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel: {differ} of {} values differ",
+            join.name(),
+            layout.name(),
+            mega.len()
+        );
     }
     // Joins without a fixed number of connections per vertex have no wavefront form.
     for integrator in [Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(0)), Integrator::Vcm(bidir::render::vcm::VcmMode::FULL)] {

@@ -11,7 +11,8 @@
 // its segment's hit (one step of the megakernel's loop), which leaves the next segment and up to
 // BDPT_WF_SHADOW_RAYS shadow rays; or, in the first launch of a pass, the start of the slot's
 // camera sample. The host runs launch, closest-hit trace, any-hit trace, launch, ... until a
-// launch queues no ray (src/render/bdpt_wavefront.rs). The rays are packed at the front of
+// launch queues no ray (src/render/bdpt_wavefront.rs); each launch after a pass's first runs
+// only the slots that queued a ray in the launch before (wf_active.glsl). The rays are packed at the front of
 // their queues (counted in BIND_WF_COUNTS, where the trace kernels read how many there are);
 // a shadow ray's contribution waits in BIND_WF_CONTRIB at the ray's place (in the half of
 // the buffer of the launch's parity). Sums go to the
@@ -33,6 +34,7 @@
 #include "volume.glsl"
 #include "bdpt.glsl"
 #include "vcm.glsl"
+#include "wf_active.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
@@ -88,11 +90,11 @@ void add_finite(inout vec3 sum, inout uint bad, vec3 c) {
 
 void main() {
     // Slot -> (slice, pixel of the camera's window), as bdpt_camera.comp maps its invocations.
-    uint g = gl_GlobalInvocationID.x;
     uint tiles = tiled_count(pc.camera.window_size);
     uint samples = max(pc.camera_samples, 1u);
-    if (g >= tiles * samples) {
-        return; // past the slots
+    uint g;
+    if (!wf_slot(pc.launch, tiles * samples, g)) {
+        return; // past the slots, or not listed
     }
     uint slice = g / tiles;
     bool valid;
@@ -100,9 +102,16 @@ void main() {
     if (!valid) {
         return;
     }
-    BdptCameraState st = state[g];
+    // The pass's first launch starts every slot's path: nothing to read.
+    bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
+    uint launch = wf_launch(pc.launch);
+    BdptCameraState st = BdptCameraState(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), uvec4(0u, 0u, 0u, PT_FRESH));
+    uvec4 queued = uvec4(0u); // where the last launch queued its rays
+    if (!fresh) {
+        st = state[g];
+        queued = wf_index[g];
+    }
     uint status = st.rng_status.w;
-    uvec4 queued = wf_index[g]; // where the last launch queued its rays
     if (status == PT_DONE && queued.z == 0u) {
         return; // nothing left, nothing pending
     }
@@ -118,7 +127,7 @@ void main() {
     // alternate between the buffer's halves from launch to launch (batches have even lengths),
     // so that no slot overwrites one another slot has yet to read.
     uint half_len = uint(wf_contrib.length()) / 2u;
-    uint read_half = (pc.launch & 1u) == 0u ? half_len : 0u;
+    uint read_half = (launch & 1u) == 0u ? half_len : 0u;
     uint write_half = half_len - read_half;
     for (uint i = 0u; i < queued.z; i++) {
         if (wf_shadow_hits[queued.y + i].tri == NO_HIT) {
@@ -181,8 +190,8 @@ void main() {
     uint shadow_total = subgroupAdd(wf_shadow_count);
     uvec2 queue_base = uvec2(0u);
     if (subgroupElect()) {
-        queue_base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * pc.launch], ext_count) : 0u;
-        queue_base.y = shadow_total > 0u ? atomicAdd(wf_counts[2u * pc.launch + 1u], shadow_total) : 0u;
+        queue_base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * launch], ext_count) : 0u;
+        queue_base.y = shadow_total > 0u ? atomicAdd(wf_counts[2u * launch + 1u], shadow_total) : 0u;
     }
     queue_base = subgroupBroadcastFirst(queue_base);
     uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count), wf_shadow_count, 0u);
@@ -200,6 +209,7 @@ void main() {
     if (alive || wf_shadow_count > 0u || queued.z > 0u) {
         wf_index[g] = next;
     }
+    wf_list_next(pc.launch, g, alive || wf_shadow_count > 0u);
 
     if (count > 0.0 || any(notEqual(sum, vec3(0.0)))) {
         if (samples == 1u) {

@@ -23,6 +23,104 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s20c)
+  # Session 20, after s20b: each wavefront pass's first batch recorded while the GPU runs the
+  # submission before it, against s20b's build (.device/bidir-s20b.gz), interleaved; wall
+  # times and equal time. Carried as s20a with bidir-s20b.gz in place of bidir-s19.gz.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384"
+  for r in 1 2; do
+    for b in .device/bidir-s20b "$B"; do
+      echo "== sponza textured bdpt $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+      echo "== DamagedHelmet bdpt $(basename "$b")"; $T "$b" bench render $HB --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+      echo "== sponza textured pt-nee $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator pt-nee 2>&1 | grep -E "Msamples"
+    done
+  done
+  timeout -k 5 120 "$B" render $SPB --integrator pt-nee --time 40 --seed 99 -o /tmp/ref.exr 2>&1 | grep -E "spp in"
+  for s in 1 2; do
+    for b in .device/bidir-s20b "$B"; do
+      echo "== sponza textured --time 1 bdpt seed $s $(basename "$b")"; $T "$b" render $SPB --integrator bdpt --time 1 --seed $s --reference /tmp/ref.exr -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+      echo "== DamagedHelmet --time 1 bdpt seed $s $(basename "$b")"; $T "$b" render $HB --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --integrator bdpt --time 1 --seed $s -o /tmp/t.exr 2>&1 | grep -E "spp in"
+    done
+  done
+  for wf in off on; do
+    $T "$B" render $SPB --integrator bdpt --spp 16 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/s-$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same image: sponza"; "$B" diff /tmp/s-on.exr /tmp/s-off.exr | head -2
+  ;;
+s20b)
+  # Session 20, after s20a: both wavefront passes run only the slots whose paths are live
+  # (slot lists and indirect dispatches). Against session 19's build (camera pass alone) and
+  # the megakernels, interleaved; the Cornell box and the caustic scene too. Carried as s20a.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  K="Msamples|^bdpt|^trace|^wf_|^lvc|^scan|^film"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  for r in 1 2; do
+    for b in .device/bidir-s19 "$B"; do
+      echo "== sponza textured bdpt $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "$K"
+      echo "== DamagedHelmet bdpt $(basename "$b")"; $T "$b" bench render .device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "$K"
+    done
+    for wf in off on; do
+      echo "== cornell bdpt wavefront $wf"; $T "$B" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator bdpt --wavefront $wf 2>&1 | grep -E "$K"
+      echo "== caustic bdpt wavefront $wf"; $T "$B" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator bdpt --wavefront $wf 2>&1 | grep -E "Msamples"
+    done
+  done
+  echo "== sponza textured bdpt megakernels"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt --wavefront off 2>&1 | grep -E "Msamples"
+  for sl in 8 12 32; do
+    echo "== sponza textured bdpt --sample-slices $sl"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt --sample-slices $sl 2>&1 | grep -E "Msamples"
+  done
+  for wf in off on; do
+    $T "$B" render $SPB --integrator bdpt --spp 16 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/s-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $CB --integrator bdpt --spp 64 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/c-$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same image: sponza, cornell"; "$B" diff /tmp/s-on.exr /tmp/s-off.exr | head -2; "$B" diff /tmp/c-on.exr /tmp/c-off.exr | head -2
+  timeout -k 5 120 "$B" render $SPB --integrator pt-nee --time 40 --seed 99 -o /tmp/ref.exr 2>&1 | grep -E "spp in"
+  for s in 1 2; do
+    for b in .device/bidir-s19 "$B"; do
+      echo "== sponza textured --time 1 bdpt seed $s $(basename "$b")"; $T "$b" render $SPB --integrator bdpt --time 1 --seed $s --reference /tmp/ref.exr -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  ;;
+s20a)
+  # Session 20: BDPT's light pass as a wavefront too (`--wavefront on`: both passes) against
+  # session 19's build (.device/bidir-s19.gz, 72b1857: the camera pass alone), interleaved;
+  # carried as s19a. Then slices, the same image on this device, and equal time.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  K="Msamples|^bdpt|^trace|^lvc|^scan|^film"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2 --width 384 --height 384"
+  for r in 1 2; do
+    for b in .device/bidir-s19 "$B"; do
+      echo "== sponza textured bdpt $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "$K"
+      echo "== DamagedHelmet bdpt $(basename "$b")"; $T "$b" bench render .device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+      for i in bdpt vcm; do
+        echo "== cornell $i $(basename "$b")"; $T "$b" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  for sl in 12 32; do
+    echo "== sponza textured bdpt --sample-slices $sl"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt --sample-slices $sl 2>&1 | grep -E "Msamples"
+  done
+  for wf in off on; do
+    $T "$B" render $SPB --integrator bdpt --spp 16 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/s-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render .device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --width 384 --height 384 --integrator bdpt --spp 64 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/h-$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same image: sponza, helmet"; "$B" diff /tmp/s-on.exr /tmp/s-off.exr | head -5; "$B" diff /tmp/h-on.exr /tmp/h-off.exr | head -5
+  timeout -k 5 120 "$B" render $SPB --integrator pt-nee --time 40 --seed 99 -o /tmp/ref.exr 2>&1 | grep -E "spp in"
+  for s in 1 2; do
+    for b in .device/bidir-s19 "$B"; do
+      echo "== sponza textured --time 1 bdpt seed $s $(basename "$b")"; $T "$b" render $SPB --integrator bdpt --time 1 --seed $s --reference /tmp/ref.exr -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  ;;
 s19b)
   # Session 19: after s19a. The camera megakernel compiled as before (its loop body an
   # included fragment again) against 577dd35's build; the wavefront camera pass's slices on

@@ -105,7 +105,8 @@ pub struct SettingsArgs {
     /// pt and pt-nee: the wavefront path tracer (on), whose path kernel leaves each bounce's
     /// segment and shadow ray to the trace kernels (on GPUs over the 4-wide BVH, with their
     /// lockstep loops and dynamic fetch), or the megakernel that traces them itself (off); bdpt
-    /// (the light vertex cache with 1 to 3 connections: bdpt, bdpt:lvc=N): its camera pass so.
+    /// (the light vertex cache with 1 to 3 connections: bdpt, bdpt:lvc=N): its light and camera
+    /// passes so.
     /// The image is the same up to the order of float sums. auto: on GPUs where it was measured
     /// faster (`render::default_wavefront`), off on CPU devices such as lavapipe.
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]

@@ -347,7 +347,7 @@ gpu_consts! {
     pub const SPEC_RAY_COUNT_BUFFER: u32 = 60;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
     /// per slot of a wavefront form, its path between launches (`PtSuspended`, or BDPT's camera
-    /// pass: `BdptCameraState`).
+    /// and light passes: `BdptCameraState`, `BdptLightState`).
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
     /// buffer: its first sample is next), has a path suspended, or starts sample
@@ -369,10 +369,11 @@ gpu_consts! {
     /// and BIND_WF_SHADOW_RAYS; the trace kernels read their count there (BIND_RAY_COUNTS) and
     /// the host stops when a launch queues none.
     pub const BIND_WF_COUNTS: u32 = 46;
-    /// Per slot: where its segment and shadow ray went in the queues (uvec2; the wavefront
-    /// camera pass: its segment, its first shadow ray and their count, uvec4). The wavefront
-    /// camera pass keeps its paths in BIND_PT_SUSPENDED (`BdptCameraState`) and the
-    /// contribution of each queued shadow ray in BIND_WF_CONTRIB at the ray's place.
+    /// Per slot: where its segment and shadow ray went in the queues (uvec2; BDPT's wavefront
+    /// passes: its segment, its first shadow ray and their count, uvec4). They keep their paths
+    /// in BIND_PT_SUSPENDED (`BdptCameraState`, `BdptLightState`) and the contribution of each
+    /// queued shadow ray in BIND_WF_CONTRIB at the ray's place (the light pass: the film pixel
+    /// of its join to the eye in w).
     pub const BIND_WF_INDEX: u32 = 47;
     /// Trace kernels with SPEC_RAY_COUNT_BUFFER: ray counts, `TracePush::count_index` selects.
     pub const BIND_RAY_COUNTS: u32 = 48;
@@ -384,6 +385,19 @@ gpu_consts! {
     pub const BDPT_WF_SHADOW_RAYS: u32 = 4;
     /// Most launches of `pt_wavefront.comp` one submission records (half BIND_WF_COUNTS's length).
     pub const WF_MAX_BATCH: u32 = 256;
+    /// BDPT's wavefront passes (bdpt_light_wavefront.comp, bdpt_camera_wavefront.comp): which
+    /// slots each launch runs. First the indirect dispatches of a batch's launches, `uvec4`
+    /// (groups, 1, 1, slots) for launch l at entry l (WF_DISPATCH_ENTRIES of them; the last
+    /// launch's successor is copied to entry 0 for the next batch), then two halves of slot
+    /// lists: a launch of parity p runs the slots listed in half p and lists in half 1 - p those
+    /// that queued a ray, which run next (stream compaction: a launch costs what its live paths
+    /// do, not what the pass's slots do).
+    pub const BIND_WF_ACTIVE: u32 = 39;
+    /// Entries of BIND_WF_ACTIVE's indirect dispatches: one per launch of a batch and one more.
+    pub const WF_DISPATCH_ENTRIES: u32 = WF_MAX_BATCH + 1;
+    /// Set in `BdptWavefrontPush::launch`: the pass's first launch, which runs every slot (from
+    /// a direct dispatch) and starts its path; the launch in the batch is in the other bits.
+    pub const WF_ALL_SLOTS: u32 = 0x8000_0000;
 }
 
 gpu_structs! {
@@ -797,6 +811,26 @@ gpu_structs! {
         pub rng_status: UVec4,
     }
 
+    /// A light subpath of the wavefront light pass between its launches (BIND_PT_SUSPENDED;
+    /// bdpt_light_wavefront.comp; the light megakernel's loop state without VCM's dVM).
+    pub struct BdptLightState (96 bytes) {
+        /// Origin of the next segment, then the throughput's largest channel leaving the light
+        /// (Russian roulette's reference).
+        pub o_beta0: Vec4,
+        /// Its direction, then dVCM.
+        pub d_dvcm: Vec4,
+        /// Throughput, then dVC.
+        pub beta_dvc: Vec4,
+        /// sigma_a where the next segment leaves its surface; w unused.
+        pub sigma: Vec4,
+        /// The vertex count, the diffuse-capable vertices seen so far, those stored (bit 31: the
+        /// light is at infinity), then the stochastic-opacity seed. Integers in integer words:
+        /// small ones in a float's bits are denormals, which a device may flush to zero.
+        pub counts: UVec4,
+        /// The random-number state (state, index, dim), then PT_FRESH / PT_SUSPENDED / PT_DONE.
+        pub rng_status: UVec4,
+    }
+
     /// A stored light-subpath vertex (a diffuse-capable hit), for BDPT connections. MIS
     /// quantities follow Georgiev 2012 ("Implementing Vertex Connection and Merging"),
     /// power heuristic. Scenes that read none of its glossy, volume and merging fields store
@@ -895,9 +929,9 @@ gpu_structs! {
         pub light_path_total: u32,
     }
 
-    /// Push constants of `bdpt_camera_wavefront.comp`: BdptPush's, with the launch of the
-    /// submission (its counters in BIND_WF_COUNTS) in the join's place (the wavefront camera
-    /// pass joins through the light vertex cache only).
+    /// Push constants of `bdpt_camera_wavefront.comp` and `bdpt_light_wavefront.comp`:
+    /// BdptPush's, with the launch of the submission (its counters in BIND_WF_COUNTS) in the
+    /// join's place (the wavefront camera pass joins through the light vertex cache only).
     pub struct BdptWavefrontPush (128 bytes) {
         pub camera: GpuCamera,
         pub sample_base: u32,
@@ -922,6 +956,15 @@ gpu_structs! {
         pub slices: u32,
         pub pad0: u32,
         pub pad1: u32,
+    }
+
+    /// Push constants of `wf_dispatch.comp`: the entry of BIND_WF_ACTIVE's indirect dispatches
+    /// whose group count it sets from its slot count.
+    pub struct WfDispatchPush (16 bytes) {
+        pub entry: u32,
+        pub pad0: u32,
+        pub pad1: u32,
+        pub pad2: u32,
     }
 
     /// Push constants of `tonemap.comp`: the film's estimate (as `Film::resolve`) scaled by

@@ -1,4 +1,4 @@
-use super::bdpt_wavefront::WavefrontCameraPass;
+use super::bdpt_wavefront::{Pass, WavefrontPasses};
 use super::integrator::{IntegratorKernels, PassInputs};
 use super::{film::Film, gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::LightVertex, kernels};
@@ -84,8 +84,7 @@ struct Lvc {
 /// BDPT: a light-subpath pass and a camera-subpath pass per iteration (with
 /// the light vertex cache, a scan and a listing pass between them).
 pub struct Bdpt {
-    light: Kernel,
-    camera: CameraPass,
+    passes: Passes,
     vertices: Buffer,
     counts: Buffer,
     /// Per light path its stored count, then (scanned) its first cache entry.
@@ -108,11 +107,11 @@ pub struct Bdpt {
     queue: Option<(super::shadow_queue::ShadowQueueTracer, super::ShadowQueue)>,
 }
 
-/// How the camera subpaths run: the megakernel (bdpt_camera.comp, which traces its own rays
-/// and queues its shadow rays), or as a wavefront (`--wavefront`; bdpt_wavefront.rs).
-enum CameraPass {
-    Megakernel(Kernel),
-    Wavefront(Box<WavefrontCameraPass>),
+/// How the subpaths run: the megakernels (bdpt_light.comp, bdpt_camera.comp, which trace their
+/// own rays and queue their shadow rays), or as wavefronts (`--wavefront`; bdpt_wavefront.rs).
+enum Passes {
+    Megakernels { light: Kernel, camera: Kernel },
+    Wavefront(Box<WavefrontPasses>),
 }
 
 /// What `--integrator vcm` adds to BDPT with the light vertex cache.
@@ -144,8 +143,9 @@ impl Bdpt {
     /// `camera_samples`: most camera samples per pixel one iteration runs at once (their light
     /// paths are traced together). `vcm`: vertex connection and merging (the light vertex
     /// cache's join). `queue`: the camera and light passes' shadow-ray queue, for launches of up
-    /// to `invocations` invocations (`queue_invocations`). `wavefront`: the camera pass as a
-    /// wavefront (bdpt_wavefront.rs) of up to this many slots, instead of the megakernel.
+    /// to `invocations` invocations (`queue_invocations`). `wavefront`: the passes as wavefronts
+    /// (bdpt_wavefront.rs) whose camera pass takes up to this many slots, instead of the
+    /// megakernels (the queue is then unused).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         ctx: &Context,
@@ -200,12 +200,12 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
         let capacity = paths.saturating_mul(light_path_len);
         let wavefront = match wavefront {
-            Some(_) if vcm.is_some() => {
-                return Err(RenderError::Unsupported("VCM's camera pass has no wavefront form: add --wavefront off".into()))
-            }
-            Some(slots) => Some(CameraPass::Wavefront(Box::new(WavefrontCameraPass::new(ctx, scene, &specs, settings, join, slots)?))),
+            Some(_) if vcm.is_some() => return Err(RenderError::Unsupported("VCM has no wavefront form: add --wavefront off".into())),
+            // A slot per light path in the light pass, per pixel and camera sample in the other.
+            Some(slots) => Some(WavefrontPasses::new(ctx, scene, &specs, settings, join, slots.max(paths as u64))?),
             None => None,
         };
+        let queue = if wavefront.is_some() { None } else { queue };
         if let Some(v) = vcm {
             if !matches!(join, Join::Lvc(_)) {
                 return Err(RenderError::Unsupported("VCM merges over the light vertex cache (join lvc)".into()));
@@ -262,10 +262,12 @@ impl Bdpt {
             lvc_offsets: ctx.create_buffer("bdpt.lvc_offsets", paths as u64 * 4, Memory::Device)?,
             lvc,
             grid,
-            light: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FORMS), &specs)?,
-            camera: match wavefront {
-                Some(w) => w,
-                None => CameraPass::Megakernel(ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &specs)?),
+            passes: match wavefront {
+                Some(w) => Passes::Wavefront(Box::new(w)),
+                None => Passes::Megakernels {
+                    light: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FORMS), &specs)?,
+                    camera: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &specs)?,
+                },
             },
             vertices,
             counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
@@ -309,21 +311,27 @@ impl Bdpt {
             Some((tracer, _)) => binds.extend(tracer.binds()),
             None => binds.extend(super::shadow_queue::ShadowQueueTracer::unused_binds(film)),
         }
-        if let CameraPass::Wavefront(w) = &self.camera {
+        if let Passes::Wavefront(w) = &self.passes {
             binds.extend(w.binds());
         }
         binds
     }
 
-    /// Records an iteration's light pass: all light subpaths, their joins to the camera, and
-    /// the light vertex cache's listing (and VCM's grid).
-    fn record_light(&self, rec: &mut Recorder, binds: &[Bind], push: &BdptPush) -> Result<()> {
+    /// Records an iteration's light pass with the megakernel: all light subpaths and their
+    /// joins to the camera, then the light vertex cache's listing (and VCM's grid).
+    fn record_light(&self, rec: &mut Recorder, light: &Kernel, binds: &[Bind], push: &BdptPush) -> Result<()> {
         let total = push.light_path_total;
         assert!(total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
-        rec.dispatch(&self.light, binds, bytemuck::bytes_of(push), [self.light.groups_for(total), 1, 1])?;
+        rec.dispatch(light, binds, bytemuck::bytes_of(push), [light.groups_for(total), 1, 1])?;
         if let Some((tracer, _)) = &self.queue {
-            tracer.record_splats(rec, binds, total, self.light.groups_for(total))?;
+            tracer.record_splats(rec, binds, total, light.groups_for(total))?;
         }
+        self.record_cache(rec, binds, push)
+    }
+
+    /// Records the light vertex cache's listing of the stored vertices (and VCM's grid).
+    fn record_cache(&self, rec: &mut Recorder, binds: &[Bind], push: &BdptPush) -> Result<()> {
+        let total = push.light_path_total;
         if let Some(lvc) = &self.lvc {
             lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;
             rec.dispatch(&lvc.compact, binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
@@ -334,11 +342,11 @@ impl Bdpt {
         Ok(())
     }
 
-    /// Records one iteration with the megakernel camera pass: all light subpaths, then all
-    /// camera subpaths.
-    fn record(&self, rec: &mut Recorder, camera: &Kernel, scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
+    /// Records one iteration with the megakernels: all light subpaths, then all camera
+    /// subpaths.
+    fn record(&self, rec: &mut Recorder, [light, camera]: [&Kernel; 2], scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
         let binds = self.binds(scene, film);
-        self.record_light(rec, &binds, push)?;
+        self.record_light(rec, light, &binds, push)?;
         let samples = push.camera_samples.max(1);
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
         rec.dispatch(camera, &binds, bytemuck::bytes_of(push), [camera.groups_for(n), 1, 1])?;
@@ -351,38 +359,77 @@ impl Bdpt {
         film.record_add_slices(rec, samples)
     }
 
-    /// One iteration with the wavefront camera pass: the light pass and the camera pass's first
-    /// batch in one submission, then batches until a launch queues no ray.
+    /// Iterations with the wavefront passes: each iteration the light pass's batches until a
+    /// launch queues no ray, then the light vertex cache's listing and the camera pass's batches
+    /// likewise, then the slices' sum. Each pass's first batch is recorded while the GPU runs
+    /// the submission before it (the camera pass's during the light pass; the next iteration's
+    /// light pass, after this one's slices, during the camera pass): the host's recording of
+    /// tens of launches then costs the GPU no idle time.
     fn iterate_wavefront(
         &self,
         ctx: &Context,
-        w: &WavefrontCameraPass,
+        w: &WavefrontPasses,
         scene: &GpuScene,
         film: &Film,
-        push: &BdptPush,
+        pushes: &[BdptPush],
     ) -> std::result::Result<(), RenderError> {
         let binds = self.binds(scene, film);
         let geometry = scene.binds();
-        let samples = push.camera_samples.max(1);
-        let slots = WavefrontCameraPass::slots_for(film.width, film.height, samples);
-        let mut launches = 0;
-        ctx.submit("bdpt light pass and wavefront camera pass", |rec| {
-            self.record_light(rec, &binds, push)?;
-            if samples > 1 {
-                // The camera pass adds into the slices as its contributions arise.
-                rec.fill_buffer(film.slices_buffer(), 0);
+        let (binds, geometry) = (&binds[..], &geometry[..]);
+        let slots = |pass, push: &BdptPush| WavefrontPasses::slots_for(pass, push, film.width, film.height);
+        // The first batch of a light pass, after the slices' sum of the iteration before.
+        // Iteration i's light pass (the slices of iteration i - 1 summed first).
+        let record_light = |i: usize| {
+            let (push, before) = (&pushes[i], i.checked_sub(1).map(|b| &pushes[b]));
+            assert!(push.light_path_total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
+            let launches = w.first_batch(Pass::Light);
+            let recorded = ctx.record("bdpt wavefront light pass", move |rec| {
+                if let Some(before) = before.filter(|b| b.camera_samples > 1) {
+                    film.record_add_slices(rec, before.camera_samples)?;
+                }
+                if push.camera_samples > 1 {
+                    // The camera pass adds into the slices as its contributions arise.
+                    rec.fill_buffer(film.slices_buffer(), 0);
+                }
+                w.record_start(rec, Pass::Light, binds, geometry, push, slots(Pass::Light, push), launches)
+            });
+            recorded.map(|r| (r, launches))
+        };
+        let record_camera = |i: usize| {
+            let push = &pushes[i];
+            let launches = w.first_batch(Pass::Camera);
+            let recorded = ctx.record("bdpt wavefront camera pass", move |rec| {
+                self.record_cache(rec, binds, push)?;
+                w.record_start(rec, Pass::Camera, binds, geometry, push, slots(Pass::Camera, push), launches)
+            });
+            recorded.map(|r| (r, launches))
+        };
+        // Batches after the first until a launch queues no ray.
+        let finish = |pass, push: &BdptPush, mut launches| -> std::result::Result<(), RenderError> {
+            let mut done = 0;
+            while let Some(next) = w.after_batch(pass, done, launches)? {
+                done += launches;
+                launches = next;
+                let name = format!("bdpt wavefront {pass:?} pass");
+                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, slots(pass, push), launches))?;
             }
-            launches = w.record_start(rec, &binds, &geometry, push, slots)?;
             Ok(())
-        })?;
-        let mut done = 0;
-        while let Some(next) = w.after_batch(done, launches)? {
-            done += launches;
-            launches = next;
-            ctx.submit("bdpt wavefront camera pass", |rec| w.record_batch(rec, &binds, &geometry, push, slots, launches))?;
+        };
+        if pushes.is_empty() {
+            return Ok(());
         }
-        if samples > 1 {
-            ctx.submit("bdpt film", |rec| film.record_add_slices(rec, samples))?;
+        let mut light = Some(record_light(0)?);
+        for (i, push) in pushes.iter().enumerate() {
+            let (recorded, launches) = light.take().expect("recorded while the camera pass before ran");
+            let camera = ctx.run(recorded, || record_camera(i))??;
+            finish(Pass::Light, push, launches)?;
+            let (recorded, launches) = camera;
+            let next_light = ctx.run(recorded, || (i + 1 < pushes.len()).then(|| record_light(i + 1)).transpose())??;
+            finish(Pass::Camera, push, launches)?;
+            light = next_light;
+            if light.is_none() && push.camera_samples > 1 {
+                ctx.submit("bdpt film", |rec| film.record_add_slices(rec, push.camera_samples))?;
+            }
         }
         Ok(())
     }
@@ -392,18 +439,14 @@ impl IntegratorKernels for Bdpt {
     /// The kernels an iteration runs (the light-vertex cache's scan kernels are shared
     /// utilities, `compute::Scan`).
     fn kernels(&self) -> Vec<&Kernel> {
-        let mut k = vec![&self.light];
-        match &self.camera {
-            CameraPass::Megakernel(camera) => {
-                k.push(camera);
+        let mut k = match &self.passes {
+            Passes::Megakernels { light, camera } => {
+                let mut k = vec![light, camera];
                 k.extend(self.queue.iter().flat_map(|q| q.0.kernels()));
+                k
             }
-            CameraPass::Wavefront(w) => {
-                // The queue serves the light pass's joins alone.
-                k.extend(self.queue.iter().filter_map(|q| q.0.splat_kernel()));
-                k.extend(w.kernels());
-            }
-        }
+            Passes::Wavefront(w) => w.kernels(),
+        };
         if let Some(g) = &self.grid {
             k.extend(g.kernels());
         }
@@ -411,15 +454,15 @@ impl IntegratorKernels for Bdpt {
     }
 
     fn storage_bytes(&self) -> u64 {
-        let wavefront = match &self.camera {
-            CameraPass::Wavefront(w) => w.bytes(),
-            CameraPass::Megakernel(_) => 0,
+        let wavefront = match &self.passes {
+            Passes::Wavefront(w) => w.bytes(),
+            Passes::Megakernels { .. } => 0,
         };
         self.vertex_bytes + self.queue.as_ref().map_or(0, |q| q.0.bytes()) + wavefront
     }
 
     fn wavefront(&self) -> bool {
-        matches!(self.camera, CameraPass::Wavefront(_))
+        matches!(self.passes, Passes::Wavefront(_))
     }
 
     fn shadow_queue(&self) -> Option<super::ShadowQueue> {
@@ -471,11 +514,11 @@ impl IntegratorKernels for Bdpt {
             });
             done += samples;
         }
-        match &self.camera {
-            CameraPass::Wavefront(w) => pushes.iter().try_for_each(|push| self.iterate_wavefront(ctx, w, scene, inputs.film, push)),
-            CameraPass::Megakernel(camera) => {
-                Ok(ctx.submit("bdpt pass", |rec| pushes.iter().try_for_each(|push| self.record(rec, camera, scene, inputs.film, push)))?)
-            }
+        match &self.passes {
+            Passes::Wavefront(w) => self.iterate_wavefront(ctx, w, scene, inputs.film, &pushes),
+            Passes::Megakernels { light, camera } => Ok(ctx.submit("bdpt pass", |rec| {
+                pushes.iter().try_for_each(|push| self.record(rec, [light, camera], scene, inputs.film, push))
+            })?),
         }
     }
 }

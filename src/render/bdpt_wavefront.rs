@@ -1,11 +1,11 @@
-//! BDPT's camera pass as a wavefront (`--wavefront` with bdpt; `glsl/kernels/
-//! bdpt_camera_wavefront.comp`): the megakernel's camera subpaths with their segments and
-//! shadow rays (light samples and connections) traced by the trace kernels of `crate::trace`,
-//! as the wavefront path tracer does (pt_wavefront.rs). The light pass, the light vertex cache
-//! and the light pass's joins to the camera stay as they are. A camera pass is a loop of
-//! launches (camera kernel, closest-hit trace of the segments, any-hit trace of the shadow
-//! rays), recorded in batches, each ending in a read of how many rays each launch queued,
-//! until a launch queues none.
+//! BDPT's passes as wavefronts (`--wavefront` with bdpt; `glsl/kernels/bdpt_light_wavefront.comp`,
+//! `bdpt_camera_wavefront.comp`): the megakernels' light and camera subpaths with their segments
+//! and shadow rays (the light paths' joins to the eye; the camera paths' light samples and
+//! connections) traced by the trace kernels of `crate::trace`, as the wavefront path tracer
+//! does (pt_wavefront.rs). The light vertex cache between them is the megakernels'. Each pass is
+//! a loop of launches (path kernel, closest-hit trace of the segments, any-hit trace of the
+//! shadow rays), recorded in batches, each ending in a read of how many rays each launch
+//! queued, until a launch queues none. The two passes share their slots' storage.
 
 use std::cell::Cell;
 
@@ -25,28 +25,54 @@ pub fn shadow_rays_per_slot(join: Join) -> Option<u32> {
     }
 }
 
-/// Bytes per slot with `shadow` shadow rays: the path (`BdptCameraState`), its rays and hits,
-/// the shadow rays' contributions (twice: launches of alternate parity), and where its rays
-/// went in the queues.
+/// Bytes of a slot's path: the larger of a camera path's (`BdptCameraState`) and a light
+/// path's (`BdptLightState`).
+const STATE_BYTES: u64 = {
+    let (camera, light) = (std::mem::size_of::<abi::BdptCameraState>(), std::mem::size_of::<abi::BdptLightState>());
+    (if camera > light { camera } else { light }) as u64
+};
+
+/// Bytes per slot with `shadow` shadow rays: the path, its rays and hits, the shadow rays'
+/// contributions (twice: launches of alternate parity), where its rays went in the queues, and
+/// its places in the two lists of slots to run (BIND_WF_ACTIVE). A light path queues one shadow
+/// ray a launch (its join to the eye), a camera path `shadow`.
 pub fn slot_bytes(shadow: u32) -> u64 {
-    std::mem::size_of::<abi::BdptCameraState>() as u64 + queue_bytes(shadow) + shadow as u64 * 2 * 16 + 16
+    STATE_BYTES + queue_bytes(shadow) + shadow as u64 * 2 * 16 + 16 + 2 * 4
 }
 
-/// The wavefront camera pass's kernel and per-slot storage for iterations of up to `slots`
-/// slots (pixels of the window times camera samples).
-pub struct WavefrontCameraPass {
-    kernel: Kernel,
+/// Bytes of BIND_WF_ACTIVE's indirect dispatches, before its slot lists.
+const DISPATCH_BYTES: u64 = abi::WF_DISPATCH_ENTRIES as u64 * 16;
+
+/// One of BDPT's two passes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pass {
+    /// The light subpaths (bdpt_light_wavefront.comp): a slot per light path of the iteration.
+    Light,
+    /// The camera subpaths (bdpt_camera_wavefront.comp): a slot per pixel of the window and
+    /// camera sample of the iteration.
+    Camera,
+}
+
+/// The wavefront passes' kernels and the per-slot storage they share, for iterations of up to
+/// `slots` slots (light paths, or pixels of the window times camera samples).
+pub struct WavefrontPasses {
+    light: Kernel,
+    camera: Kernel,
+    /// Sizes each launch's indirect dispatch (wf_dispatch.comp).
+    dispatch: Kernel,
     queues: Queues,
     state: Buffer,
     contrib: Buffer,
     index: Buffer,
+    /// The launches' indirect dispatches and the slots each runs (BIND_WF_ACTIVE).
+    active: Buffer,
     slots: u64,
     shadow_per_slot: u32,
-    /// Launches the last camera pass took: sizes the first batch of the next.
-    launches: Cell<u32>,
+    /// Launches the last light and camera pass took: sizes the first batch of the next.
+    launches: [Cell<u32>; 2],
 }
 
-impl WavefrontCameraPass {
+impl WavefrontPasses {
     /// `specs`: the BDPT kernels' specialisation constants (without VCM's).
     pub fn new(
         ctx: &Context,
@@ -68,26 +94,44 @@ impl WavefrontCameraPass {
                 join.name()
             ))
         })?;
-        let kernel = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, specs)?;
-        let what = ("the wavefront camera pass", "bdpt_wavefront");
+        let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, specs)?;
+        let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, specs)?;
+        let dispatch = ctx.create_kernel(&kernels::WF_DISPATCH, &[])?;
+        let what = ("BDPT's wavefront passes", "bdpt_wavefront");
         let bytes = slot_bytes(shadow);
         let buffer = |name: &str, b: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, b, bytes);
-        Ok(WavefrontCameraPass {
-            kernel,
+        let active = ctx.create_indirect_buffer("bdpt_wavefront.active", DISPATCH_BYTES + slots * 2 * 4).map_err(|e| {
+            RenderError::Memory(format!(
+                "{}'s {slots} slots do not fit ({e}): lower --sample-slices or the image size, or add --wavefront off",
+                what.0
+            ))
+        })?;
+        Ok(WavefrontPasses {
+            light,
+            camera,
+            dispatch,
+            active,
             queues: Queues::new(ctx, scene, what, slots, shadow, bytes)?,
-            state: buffer("state", std::mem::size_of::<abi::BdptCameraState>() as u64)?,
+            state: buffer("state", STATE_BYTES)?,
             // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
             contrib: buffer("contrib", 2 * 16 * shadow as u64)?,
             index: buffer("queue_index", 16)?,
             slots,
             shadow_per_slot: shadow,
-            launches: Cell::new(12),
+            launches: [Cell::new(12), Cell::new(12)],
         })
     }
 
     pub fn kernels(&self) -> Vec<&Kernel> {
         let [closest, any] = self.queues.kernels();
-        vec![&self.kernel, closest, any]
+        vec![&self.light, &self.camera, &self.dispatch, closest, any]
+    }
+
+    fn kernel(&self, pass: Pass) -> &Kernel {
+        match pass {
+            Pass::Light => &self.light,
+            Pass::Camera => &self.camera,
+        }
     }
 
     pub fn bytes(&self) -> u64 {
@@ -100,50 +144,98 @@ impl WavefrontCameraPass {
             Bind::buffer(abi::BIND_PT_SUSPENDED, &self.state),
             Bind::buffer(abi::BIND_WF_CONTRIB, &self.contrib),
             Bind::buffer(abi::BIND_WF_INDEX, &self.index),
+            Bind::buffer(abi::BIND_WF_ACTIVE, &self.active),
         ];
         b.extend(self.queues.binds());
         b
     }
 
-    /// Slots of an iteration of `samples` camera samples on a window of `width` x `height`.
-    pub fn slots_for(width: u32, height: u32, samples: u32) -> u32 {
-        crate::gpu_data::tiled_invocations(width, height) * samples.max(1)
+    /// Slots of `pass` in an iteration of `push` (its light paths, or its camera samples on a
+    /// window of `width` x `height`).
+    pub fn slots_for(pass: Pass, push: &BdptPush, width: u32, height: u32) -> u32 {
+        match pass {
+            Pass::Light => push.light_path_total,
+            Pass::Camera => crate::gpu_data::tiled_invocations(width, height) * push.camera_samples.max(1),
+        }
     }
 
-    /// Records the start of a camera pass (every slot fresh, nothing pending) and its first
-    /// batch of launches; returns how many.
-    pub fn record_start(&self, rec: &mut Recorder, binds: &[Bind], geometry: &[Bind], push: &BdptPush, slots: u32) -> Result<u32> {
-        rec.fill_buffer(&self.state, 0);
-        rec.fill_buffer(&self.index, 0);
-        let launches = even_batch(self.launches.get() + 2);
-        self.record_batch(rec, binds, geometry, push, slots, launches)?;
-        Ok(launches)
+    /// Launches of the first batch of `pass`: as many as the last such pass took, and two more.
+    pub fn first_batch(&self, pass: Pass) -> u32 {
+        even_batch(self.launches[pass as usize].get() + 2)
     }
 
-    /// Records `launches` launches of a camera pass, each followed by the two traces, and the
-    /// read-back of their ray counts.
-    pub fn record_batch(
+    /// Records the start of `pass` over `slots` slots (its first launch starts every slot's
+    /// path) and its first batch of `launches` launches (`first_batch`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn record_start(
         &self,
         rec: &mut Recorder,
+        pass: Pass,
         binds: &[Bind],
         geometry: &[Bind],
         push: &BdptPush,
         slots: u32,
         launches: u32,
     ) -> Result<()> {
-        let groups = self.kernel.groups_for(slots);
-        self.queues.record_batch(rec, geometry, slots, launches, |rec, launch| {
-            rec.dispatch(&self.kernel, binds, bytemuck::bytes_of(&wavefront_push(push, launch)), [groups, 1, 1])
-        })
+        self.record_launches(rec, pass, binds, geometry, push, slots, launches, true)
     }
 
-    /// After a batch of `launches` (with `done` before it): None where a launch queued no ray
-    /// (the pass is over; its length is remembered for the next pass), else the launches of
-    /// the next batch (a quarter of those so far, at least 4).
-    pub fn after_batch(&self, done: u32, launches: u32) -> Result<Option<u32>> {
+    /// Records `launches` more launches of `pass`, each followed by the two traces, and the
+    /// read-back of their ray counts.
+    #[allow(clippy::too_many_arguments)]
+    pub fn record_batch(
+        &self,
+        rec: &mut Recorder,
+        pass: Pass,
+        binds: &[Bind],
+        geometry: &[Bind],
+        push: &BdptPush,
+        slots: u32,
+        launches: u32,
+    ) -> Result<()> {
+        self.record_launches(rec, pass, binds, geometry, push, slots, launches, false)
+    }
+
+    /// A batch: the pass's first launch (`start`) runs every slot; every other launch l runs
+    /// the slots the launch before listed, from the indirect dispatch at entry l, which the
+    /// launch before sized (wf_dispatch.comp); the last launch's entry moves to entry 0 for
+    /// the next batch.
+    #[allow(clippy::too_many_arguments)]
+    fn record_launches(
+        &self,
+        rec: &mut Recorder,
+        pass: Pass,
+        binds: &[Bind],
+        geometry: &[Bind],
+        push: &BdptPush,
+        slots: u32,
+        launches: u32,
+        start: bool,
+    ) -> Result<()> {
+        let kernel = self.kernel(pass);
+        rec.fill_buffer_range(&self.active, 16, launches as u64 * 16, 0);
+        self.queues.record_batch(rec, geometry, slots, launches, |rec, launch| {
+            if start && launch == 0 {
+                let push = wavefront_push(push, launch | abi::WF_ALL_SLOTS);
+                rec.dispatch(kernel, binds, bytemuck::bytes_of(&push), [kernel.groups_for(slots), 1, 1])?;
+            } else {
+                let push = wavefront_push(push, launch);
+                rec.dispatch_indirect(kernel, binds, bytemuck::bytes_of(&push), &self.active, launch as u64 * 16)?;
+            }
+            let entry = abi::WfDispatchPush { entry: launch + 1, pad0: 0, pad1: 0, pad2: 0 };
+            rec.dispatch(&self.dispatch, &[Bind::buffer(abi::BIND_WF_ACTIVE, &self.active)], bytemuck::bytes_of(&entry), [1, 1, 1])
+        })?;
+        rec.copy_buffer_range(&self.active, launches as u64 * 16, &self.active, 0, 16);
+        Ok(())
+    }
+
+    /// After a batch of `launches` of `pass` (with `done` before it): None where a launch
+    /// queued no ray (the pass is over; its length is remembered for the next), else the
+    /// launches of the next batch (a quarter of those so far, at least 4).
+    pub fn after_batch(&self, pass: Pass, done: u32, launches: u32) -> Result<Option<u32>> {
         Ok(match self.queues.first_idle_launch(launches)? {
             Some(last) => {
-                self.launches.set(done + last + 1);
+                self.launches[pass as usize].set(done + last + 1);
                 None
             }
             None => Some(even_batch((done + launches) / 4)),
@@ -159,7 +251,7 @@ fn even_batch(n: u32) -> u32 {
     (n.clamp(4, abi::WF_MAX_BATCH) + 1) & !1
 }
 
-/// The camera kernel's push constants for launch `launch` of a batch.
+/// The path kernels' push constants for launch `launch` of a batch.
 fn wavefront_push(p: &BdptPush, launch: u32) -> BdptWavefrontPush {
     debug_assert_eq!(p.join, abi::JOIN_LVC);
     BdptWavefrontPush {

@@ -97,7 +97,7 @@ pub fn default_shadow_queue(on_cpu: bool, layout: BvhLayout, features: &SceneFea
 /// The shadow-ray queue of `integrator`'s megakernel for launches of `invocations`
 /// invocations: `--shadow-queue` or the default (`default_shadow_queue` for pt-nee,
 /// `default_camera_pass_queue` for BDPT and VCM), with fewer slots where they would not fit in
-/// `shadow_queue::budget`.
+/// `shadow_queue::budget`; none for the wavefront forms, whose trace kernels trace every ray.
 pub(super) fn resolve_shadow_queue(
     ctx: &Context,
     settings: &RenderSettings,
@@ -106,6 +106,9 @@ pub(super) fn resolve_shadow_queue(
     layout: BvhLayout,
     invocations: u64,
 ) -> Option<ShadowQueue> {
+    if wavefront(ctx, settings, integrator, features) {
+        return None;
+    }
     let (queue, fixed) = match integrator {
         Integrator::Pt => return None,
         Integrator::PtNee => {
@@ -127,10 +130,10 @@ pub(super) fn resolve_shadow_queue(
 /// slots' memory traffic costs more than the trace kernels save) and the caustic scene's smooth
 /// glass (102 against 108); CPU devices (llvmpipe: 3-4x slower, its launches' fixed costs).
 ///
-/// The same for BDPT's camera pass (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3), ms per
-/// run: textured Sponza 91.5 against 122.0 (640 x 360, 64 spp), DamagedHelmet 273.2 against
-/// 401.5 (384², 256 spp); the Cornell box (272 against 175 ms per 1024 spp) and the caustic
-/// scene (154 against 65) keep the megakernel (docs/results.md, "BDPT's camera pass as a
+/// The same for BDPT's passes (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3), ms per
+/// run: textured Sponza 82.7 against 123.1 (640 x 360, 64 spp), DamagedHelmet 250.4 against
+/// 401.5 (384², 256 spp); the Cornell box (227 against 175 ms per 1024 spp) and the caustic
+/// scene (85 against 66) keep the megakernels (docs/results.md, "BDPT's light pass as a
 /// wavefront").
 pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> bool {
     let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
@@ -139,7 +142,7 @@ pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneF
 }
 
 /// Whether `integrator` has a wavefront form: pt and pt-nee (pt_wavefront.rs), and BDPT's
-/// camera pass with the light vertex cache's fixed joins (bdpt_wavefront.rs).
+/// passes with the light vertex cache's fixed joins (bdpt_wavefront.rs).
 pub fn wavefront_supported(integrator: Integrator) -> bool {
     match integrator {
         Integrator::Pt | Integrator::PtNee => true,

@@ -237,8 +237,8 @@ pub struct RenderSettings {
     pub direct_light_tracing: bool,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
-    /// of the megakernel; bdpt with the light vertex cache's fixed joins: its camera pass so
-    /// (bdpt_wavefront.rs). `None` takes [`default_wavefront`]; `Some(true)` for an integrator
+    /// of the megakernel; bdpt with the light vertex cache's fixed joins: its light and camera
+    /// passes so (bdpt_wavefront.rs). `None` takes [`default_wavefront`]; `Some(true)` for an integrator
     /// without a wavefront form is an error. Either gives the same image (up to the order of
     /// float sums).
     pub wavefront: Option<bool>,
@@ -380,7 +380,11 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
     let wave = wavefront(ctx, settings, settings.integrator, features);
     let mut s = if wave {
         let slot_bytes = match settings.integrator {
-            Integrator::Bdpt(join) => bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1)),
+            // BDPT's passes share their slots: a light path's, or a pixel's camera sample's.
+            Integrator::Bdpt(join) => {
+                let bytes = bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1));
+                (bytes as f64 * settings.light_path_ratio.max(1.0) as f64).ceil() as u64
+            }
             _ => pt_wavefront::SLOT_BYTES,
         };
         let slots = pt_wavefront::TARGET_SLOTS.min(shadow_queue::budget(ctx) / slot_bytes);
@@ -391,12 +395,13 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
     if settings.integrator.stores_light_vertices() {
         let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
-        // The wavefront camera pass wants millions of slots, so its iterations may take more
-        // light paths: its store may grow to the shadow queue's budget (a sixteenth of the
+        // BDPT's wavefront passes want millions of slots, so their iterations may take more
+        // light paths: the store may grow to the shadow queue's budget (a sixteenth of the
         // device's memory, within one buffer's range). NVIDIA H200, textured Sponza 640 x 360
-        // bdpt, 64 spp: 169.7 ms at 2 slices, 126.8 at 4, 112.3 at 6 (a 1 GiB store), 97.9 at
-        // 12, 91.5 at 19 (the default there now; docs/results.md, "BDPT's camera pass as a
-        // wavefront").
+        // bdpt, 64 spp, the camera pass alone as a wavefront (session 19): 169.7 ms at 2
+        // slices, 126.8 at 4, 112.3 at 6 (a 1 GiB store), 97.9 at 12, 91.5 at 19; both passes
+        // (session 20): 101.4 at 8, 91.9 at 12, 82.7 at 19 (the default there; docs/results.md,
+        // "BDPT's light pass as a wavefront").
         let budget = if wave { SLICED_STORE_BYTES.max(shadow_queue::budget(ctx)) } else { SLICED_STORE_BYTES };
         let limit = budget.min(ctx.info().max_storage_buffer_range as u64);
         s = s.min((limit / store.max(1)).max(1));

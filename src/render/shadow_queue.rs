@@ -115,11 +115,6 @@ impl ShadowQueueTracer {
         std::iter::once(&self.trace).chain(self.splat.as_ref())
     }
 
-    /// The splatting kernel alone, where made (BDPT's light pass).
-    pub fn splat_kernel(&self) -> Option<&Kernel> {
-        self.splat.as_ref()
-    }
-
     pub fn bytes(&self) -> u64 {
         self.queue.size() + self.counts.size()
     }

@@ -57,22 +57,52 @@ impl<'a> Recorder<'a> {
     }
 
     fn barrier(&mut self) {
-        let stages = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER;
+        let src = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER;
+        // Writes also reach the next indirect dispatch's read of its group counts.
+        let dst = src | vk::PipelineStageFlags::DRAW_INDIRECT;
         let mb = [vk::MemoryBarrier::default()
             .src_access_mask(vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE)
             .dst_access_mask(
                 vk::AccessFlags::SHADER_READ
                     | vk::AccessFlags::SHADER_WRITE
                     | vk::AccessFlags::TRANSFER_READ
-                    | vk::AccessFlags::TRANSFER_WRITE,
+                    | vk::AccessFlags::TRANSFER_WRITE
+                    | vk::AccessFlags::INDIRECT_COMMAND_READ,
             )];
         // SAFETY: recording into a command buffer in the recording state.
-        unsafe { self.shared.device.cmd_pipeline_barrier(self.cmd, stages, stages, vk::DependencyFlags::empty(), &mb, &[], &[]) };
+        unsafe { self.shared.device.cmd_pipeline_barrier(self.cmd, src, dst, vk::DependencyFlags::empty(), &mb, &[], &[]) };
     }
 
     /// Dispatches `kernel` over `groups` workgroups with `binds` and push constants `push`.
     /// Every binding the kernel uses must be given; extra ones (optimised away) are ignored.
     pub fn dispatch(&mut self, kernel: &Kernel, binds: &[Bind], push: &[u8], groups: [u32; 3]) -> Result<()> {
+        self.bind(kernel, binds, push)?;
+        // SAFETY: recording state; `bind` bound the kernel's pipeline and descriptors.
+        unsafe { self.shared.device.cmd_dispatch(self.cmd, groups[0], groups[1], groups[2]) };
+        self.barrier();
+        self.mark(kernel.name());
+        Ok(())
+    }
+
+    /// `dispatch` with the group counts read on the GPU from `args` at byte `offset` (three
+    /// u32, written by earlier commands; a buffer made by `Context::create_indirect_buffer`).
+    pub fn dispatch_indirect(&mut self, kernel: &Kernel, binds: &[Bind], push: &[u8], args: &Buffer, offset: u64) -> Result<()> {
+        assert!(
+            args.indirect && offset % 4 == 0 && offset + 12 <= args.size(),
+            "indirect dispatch arguments at {offset} of {}",
+            args.name()
+        );
+        self.bind(kernel, binds, push)?;
+        // SAFETY: recording state; `bind` bound the kernel's pipeline and descriptors; `args`
+        // has INDIRECT_BUFFER usage and holds the arguments at `offset` (checked above).
+        unsafe { self.shared.device.cmd_dispatch_indirect(self.cmd, args.raw, offset) };
+        self.barrier();
+        self.mark(kernel.name());
+        Ok(())
+    }
+
+    /// Binds `kernel`'s pipeline, its descriptors from `binds` and its push constants.
+    fn bind(&mut self, kernel: &Kernel, binds: &[Bind], push: &[u8]) -> Result<()> {
         let kerr = |msg: String| VkError::Kernel { kernel: kernel.name().into(), msg };
         if push.len() as u32 != kernel.push_size() {
             return Err(kerr(format!("push constants of {} bytes given, the kernel declares {}", push.len(), kernel.push_size())));
@@ -137,16 +167,19 @@ impl<'a> Recorder<'a> {
             if !push.is_empty() {
                 d.cmd_push_constants(self.cmd, kernel.0.pipeline_layout, vk::ShaderStageFlags::COMPUTE, 0, push);
             }
-            d.cmd_dispatch(self.cmd, groups[0], groups[1], groups[2]);
         }
-        self.barrier();
-        self.mark(kernel.name());
         Ok(())
     }
 
     /// Copies `bytes` from the start of `src` to the start of `dst`.
     pub fn copy_buffer(&mut self, src: &Buffer, dst: &Buffer, bytes: u64) {
-        let region = [vk::BufferCopy { src_offset: 0, dst_offset: 0, size: bytes }];
+        self.copy_buffer_range(src, 0, dst, 0, bytes);
+    }
+
+    /// Copies `bytes` from byte `src_offset` of `src` to byte `dst_offset` of `dst` (the same
+    /// buffer if the ranges do not overlap).
+    pub fn copy_buffer_range(&mut self, src: &Buffer, src_offset: u64, dst: &Buffer, dst_offset: u64, bytes: u64) {
+        let region = [vk::BufferCopy { src_offset, dst_offset, size: bytes }];
         // SAFETY: recording state, live buffers.
         unsafe { self.shared.device.cmd_copy_buffer(self.cmd, src.raw, dst.raw, &region) };
         self.barrier();
@@ -271,6 +304,36 @@ impl Context {
     where
         F: FnOnce(&mut Recorder) -> Result<()>,
     {
+        let recorded = self.record_commands(what, record)?;
+        self.execute(recorded, wait, signal, || ())
+    }
+
+    /// Records commands with `record` for a later [`Context::run`], which submits them: the
+    /// recording of one submission may then overlap the GPU's work on another. The resources
+    /// the recording borrows stay borrowed (`'a`) until the commands are dropped or have run.
+    pub fn record<'a, F>(&self, what: &str, record: F) -> Result<Recorded<'a>>
+    where
+        F: FnOnce(&mut Recorder) -> Result<()> + 'a,
+    {
+        let inner = self.record_commands(what, record)?;
+        Ok(Recorded { inner: Some(inner), _borrows: std::marker::PhantomData })
+    }
+
+    /// Submits `recorded`, calls `meanwhile` while the GPU runs it (to record the next
+    /// submission, say), then waits for it (up to the context's GPU timeout); returns what
+    /// `meanwhile` returned.
+    pub fn run<T>(&self, mut recorded: Recorded, meanwhile: impl FnOnce() -> T) -> Result<T> {
+        let inner = recorded.inner.take().expect("recorded commands run once");
+        let mut out = None;
+        self.execute(inner, &[], &[], || out = Some(meanwhile()))?;
+        Ok(out.expect("called before the wait"))
+    }
+
+    /// Allocates a command buffer and records into it.
+    fn record_commands<F>(&self, what: &str, record: F) -> Result<RecordedInner>
+    where
+        F: FnOnce(&mut Recorder) -> Result<()>,
+    {
         let s = &*self.shared;
         let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
         let alloc =
@@ -278,7 +341,7 @@ impl Context {
         // SAFETY: the pool is externally synchronised by its mutex, held through recording.
         let cmd = unsafe { s.device.allocate_command_buffers(&alloc) }.ctx(|| format!("allocate command buffer for {what}"))?[0];
         s.name(cmd, what);
-        // SAFETY: the pool mutex is held for the whole submission; a buffer is freed once, after it ran or failed.
+        // SAFETY: the pool mutex is held; the buffer was never submitted.
         let free = |cmd| unsafe { s.device.free_command_buffers(*pool, &[cmd]) };
         // SAFETY: fresh command buffer.
         if let Err(result) = unsafe {
@@ -301,16 +364,24 @@ impl Context {
             free(cmd);
             return Err(VkError::Vk { what: format!("end {what}"), result });
         }
+        Ok(RecordedInner { shared: self.shared.clone(), cmd, what: what.into(), profile, untimed })
+    }
+
+    /// Submits recorded commands, calls `meanwhile`, waits for them, frees them and reads
+    /// their profile.
+    fn execute(
+        &self,
+        mut r: RecordedInner,
+        wait: &[(vk::Semaphore, vk::PipelineStageFlags)],
+        signal: &[vk::Semaphore],
+        meanwhile: impl FnOnce(),
+    ) -> Result<()> {
+        let s = &*self.shared;
+        let what = r.what.clone();
         // SAFETY: live device.
-        let fence = match unsafe { s.device.create_fence(&vk::FenceCreateInfo::default(), None) } {
-            Ok(f) => f,
-            Err(result) => {
-                free(cmd);
-                return Err(VkError::Vk { what: format!("fence for {what}"), result });
-            }
-        };
+        let fence = unsafe { s.device.create_fence(&vk::FenceCreateInfo::default(), None) }.ctx(|| format!("fence for {what}"))?;
         s.name(fence, &format!("{what}.fence"));
-        let cmds = [cmd];
+        let cmds = [r.cmd];
         let wait_semaphores: Vec<vk::Semaphore> = wait.iter().map(|w| w.0).collect();
         let wait_stages: Vec<vk::PipelineStageFlags> = wait.iter().map(|w| w.1).collect();
         let submit = [vk::SubmitInfo::default()
@@ -323,32 +394,23 @@ impl Context {
         let submitted = unsafe { s.device.queue_submit(*queue, &submit, fence) };
         drop(queue);
         if let Err(result) = submitted {
-            // SAFETY: the fence is not in use: the submission failed, or it signalled.
+            // SAFETY: the fence is not in use: the submission failed.
             unsafe { s.device.destroy_fence(fence, None) };
-            free(cmd);
             return Err(VkError::Vk { what: format!("submit {what}"), result });
         }
+        // From here the commands are the GPU's until the fence signals: not freed on drop.
+        let cmd = std::mem::replace(&mut r.cmd, vk::CommandBuffer::null());
+        // The wait below must happen whatever `meanwhile` does (it may unwind).
+        let waited = WaitOnDrop { shared: s, fence, cmd };
+        meanwhile();
         let timeout_ns = s.gpu_timeout.as_nanos().min(u64::MAX as u128) as u64;
-        // SAFETY: waiting on a fence of this device.
-        match unsafe { s.device.wait_for_fences(&[fence], true, timeout_ns) } {
-            Ok(()) => {
-                // SAFETY: the fence is not in use: the submission failed, or it signalled.
-                unsafe { s.device.destroy_fence(fence, None) };
-                free(cmd);
-                match (profile, s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_mut()) {
-                    (Some(rp), Some(p)) => p.finish(s, rp, untimed),
-                    _ => Ok(()),
-                }
-            }
-            Err(vk::Result::TIMEOUT) => {
-                // The GPU may still run this work: leak rather than destroy in-flight objects.
-                s.poisoned.store(true, Ordering::SeqCst);
-                Err(VkError::Timeout(what.into(), s.gpu_timeout))
-            }
-            Err(result) => {
-                s.poisoned.store(true, Ordering::SeqCst);
-                Err(VkError::Vk { what: format!("wait for {what}"), result })
-            }
+        match waited.wait(timeout_ns) {
+            Ok(()) => match (r.profile.take(), s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_mut()) {
+                (Some(rp), Some(p)) => p.finish(s, rp, r.untimed),
+                _ => Ok(()),
+            },
+            Err(vk::Result::TIMEOUT) => Err(VkError::Timeout(what, s.gpu_timeout)),
+            Err(result) => Err(VkError::Vk { what: format!("wait for {what}"), result }),
         }
     }
 
@@ -408,5 +470,76 @@ impl Drop for Timer {
         }
         // SAFETY: no pending submission uses it (submit waits).
         unsafe { self.shared.device.destroy_query_pool(self.pool, None) };
+    }
+}
+
+/// Commands recorded by [`Context::record`], not yet run; they keep the resources they use
+/// borrowed (`'a`). Dropped unrun, they are freed.
+pub struct Recorded<'a> {
+    inner: Option<RecordedInner>,
+    _borrows: std::marker::PhantomData<&'a ()>,
+}
+
+/// A recorded command buffer (null once submitted) with its profile.
+struct RecordedInner {
+    shared: Arc<Shared>,
+    cmd: vk::CommandBuffer,
+    what: String,
+    profile: Option<RecordingProfile>,
+    untimed: u64,
+}
+
+impl Drop for RecordedInner {
+    fn drop(&mut self) {
+        if self.cmd != vk::CommandBuffer::null() {
+            let pool = self.shared.command_pool.lock().unwrap_or_else(|e| e.into_inner());
+            // SAFETY: never submitted (a submitted buffer's handle is taken out); pool locked.
+            unsafe { self.shared.device.free_command_buffers(*pool, &[self.cmd]) };
+        }
+    }
+}
+
+/// A submitted command buffer and its fence: `wait` (or a drop, as when unwinding) waits for
+/// the fence before freeing both, so that nothing the GPU still uses is released. On a timeout
+/// or a lost device it leaks them and marks the context poisoned.
+struct WaitOnDrop<'s> {
+    shared: &'s Shared,
+    fence: vk::Fence,
+    cmd: vk::CommandBuffer,
+}
+
+impl WaitOnDrop<'_> {
+    fn wait(self, timeout_ns: u64) -> std::result::Result<(), vk::Result> {
+        let s = self.shared;
+        // SAFETY: waiting on a fence of this device.
+        let r = unsafe { s.device.wait_for_fences(&[self.fence], true, timeout_ns) };
+        match r {
+            Ok(()) => self.release(),
+            // The GPU may still run this work: leak rather than destroy in-flight objects.
+            Err(_) => s.poisoned.store(true, Ordering::SeqCst),
+        }
+        std::mem::forget(self);
+        r
+    }
+
+    fn release(&self) {
+        let s = self.shared;
+        // SAFETY: the fence signalled: neither the fence nor the command buffer is in use.
+        unsafe { s.device.destroy_fence(self.fence, None) };
+        let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
+        // SAFETY: as above; the pool is externally synchronised by its mutex.
+        unsafe { s.device.free_command_buffers(*pool, &[self.cmd]) };
+    }
+}
+
+impl Drop for WaitOnDrop<'_> {
+    fn drop(&mut self) {
+        let s = self.shared;
+        let timeout_ns = s.gpu_timeout.as_nanos().min(u64::MAX as u128) as u64;
+        // SAFETY: waiting on a fence of this device.
+        match unsafe { s.device.wait_for_fences(&[self.fence], true, timeout_ns) } {
+            Ok(()) => self.release(),
+            Err(_) => s.poisoned.store(true, Ordering::SeqCst),
+        }
     }
 }

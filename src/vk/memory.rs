@@ -40,6 +40,8 @@ pub struct Buffer {
     size: u64,
     memory: Memory,
     name: String,
+    /// Made with INDIRECT_BUFFER usage: may hold indirect dispatch arguments.
+    pub(super) indirect: bool,
 }
 
 impl Buffer {
@@ -165,6 +167,12 @@ impl Context {
         self.create_buffer_with_usage(name, bytes, memory, vk::BufferUsageFlags::empty())
     }
 
+    /// A device buffer that may also hold indirect dispatch arguments
+    /// (`Recorder::dispatch_indirect`).
+    pub fn create_indirect_buffer(&self, name: &str, bytes: u64) -> Result<Buffer> {
+        self.create_buffer_with_usage(name, bytes, Memory::Device, vk::BufferUsageFlags::INDIRECT_BUFFER)
+    }
+
     /// `create_buffer` with `extra` usages (acceleration-structure storage and inputs, shader
     /// binding tables, device addresses: the ray-tracing yardstick, `rt.rs`).
     pub(crate) fn create_buffer_with_usage(&self, name: &str, bytes: u64, memory: Memory, extra: vk::BufferUsageFlags) -> Result<Buffer> {
@@ -200,7 +208,8 @@ impl Context {
                 return Err(VkError::Alloc { name: name.into(), bytes: size, source });
             }
         };
-        let buffer = Buffer { shared: s.clone(), raw, allocation: Some(allocation), size, memory, name: name.into() };
+        let indirect = usage.contains(vk::BufferUsageFlags::INDIRECT_BUFFER);
+        let buffer = Buffer { shared: s.clone(), raw, allocation: Some(allocation), size, memory, name: name.into(), indirect };
         let a = buffer.allocation.as_ref().expect("just set");
         // SAFETY: memory and offset come from an allocation made for these requirements.
         unsafe { s.device.bind_buffer_memory(raw, a.memory(), a.offset()) }.ctx(|| format!("vkBindBufferMemory '{name}'"))?;

@@ -37,7 +37,7 @@ mod rt;
 mod swapchain;
 
 pub use ash::vk::{Format, PhysicalDeviceType};
-pub use commands::{Bind, Recorder, Resource, Timer};
+pub use commands::{Bind, Recorded, Recorder, Resource, Timer};
 pub use context::{Context, ContextOptions};
 pub use error::{Result, VkError};
 pub use instance::{choose_device, list_devices, DeviceInfo, MemoryHeap, SubgroupOps};

@@ -1,0 +1,16 @@
+#version 460
+// The indirect dispatch of the next launch of one of BDPT's wavefront passes
+// (glsl/common/wf_active.glsl): from the slots the launch before listed, the workgroups of the
+// path kernels (PT_WG_SIZE wide) that run them.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#include "bidir_abi.glsl"
+#include "wf_active.glsl"
+
+layout(local_size_x = 1) in;
+layout(push_constant) uniform Push { WfDispatchPush pc; };
+
+void main() {
+    uint n = wf_dispatch[pc.entry].w;
+    wf_dispatch[pc.entry].xyz = uvec3((n + PT_WG_SIZE - 1u) / PT_WG_SIZE, 1u, 1u);
+}
