@@ -10,7 +10,7 @@
 use std::cell::Cell;
 
 use super::bdpt::Join;
-use super::wavefront_queues::{queue_bytes, slot_buffer, Queues};
+use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues, LIVE_SLOT_BYTES};
 use super::{gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::BdptWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Recorder, Result, Spec};
@@ -32,16 +32,13 @@ const STATE_BYTES: u64 = {
     (if camera > light { camera } else { light }) as u64
 };
 
-/// Bytes per slot with `shadow` shadow rays: the path, its rays and hits, the shadow rays'
-/// contributions (twice: launches of alternate parity), where its rays went in the queues, and
-/// its places in the two lists of slots to run (BIND_WF_ACTIVE). A light path queues one shadow
-/// ray a launch (its join to the eye), a camera path `shadow`.
+/// Bytes per slot with `shadow` shadow rays: the path, its rays and hits (and its places in the
+/// lists of live slots), the shadow rays' contributions (twice: launches of alternate parity),
+/// and where its rays went in the queues. A light path queues one shadow ray a launch (its
+/// join to the eye), a camera path `shadow`.
 pub fn slot_bytes(shadow: u32) -> u64 {
-    STATE_BYTES + queue_bytes(shadow) + shadow as u64 * 2 * 16 + 16 + 2 * 4
+    STATE_BYTES + queue_bytes(shadow) + LIVE_SLOT_BYTES + shadow as u64 * 2 * 16 + 16
 }
-
-/// Bytes of BIND_WF_ACTIVE's indirect dispatches, before its slot lists.
-const DISPATCH_BYTES: u64 = abi::WF_DISPATCH_ENTRIES as u64 * 16;
 
 /// One of BDPT's two passes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,14 +55,10 @@ pub enum Pass {
 pub struct WavefrontPasses {
     light: Kernel,
     camera: Kernel,
-    /// Sizes each launch's indirect dispatch (wf_dispatch.comp).
-    dispatch: Kernel,
     queues: Queues,
     state: Buffer,
     contrib: Buffer,
     index: Buffer,
-    /// The launches' indirect dispatches and the slots each runs (BIND_WF_ACTIVE).
-    active: Buffer,
     slots: u64,
     shadow_per_slot: u32,
     /// Launches the last light and camera pass took: sizes the first batch of the next.
@@ -96,22 +89,13 @@ impl WavefrontPasses {
         })?;
         let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, specs)?;
         let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, specs)?;
-        let dispatch = ctx.create_kernel(&kernels::WF_DISPATCH, &[])?;
         let what = ("BDPT's wavefront passes", "bdpt_wavefront");
         let bytes = slot_bytes(shadow);
         let buffer = |name: &str, b: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, b, bytes);
-        let active = ctx.create_indirect_buffer("bdpt_wavefront.active", DISPATCH_BYTES + slots * 2 * 4).map_err(|e| {
-            RenderError::Memory(format!(
-                "{}'s {slots} slots do not fit ({e}): lower --sample-slices or the image size, or add --wavefront off",
-                what.0
-            ))
-        })?;
         Ok(WavefrontPasses {
             light,
             camera,
-            dispatch,
-            active,
-            queues: Queues::new(ctx, scene, what, slots, shadow, bytes)?,
+            queues: Queues::new(ctx, scene, what, slots, shadow, bytes, true)?,
             state: buffer("state", STATE_BYTES)?,
             // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
             contrib: buffer("contrib", 2 * 16 * shadow as u64)?,
@@ -123,8 +107,9 @@ impl WavefrontPasses {
     }
 
     pub fn kernels(&self) -> Vec<&Kernel> {
-        let [closest, any] = self.queues.kernels();
-        vec![&self.light, &self.camera, &self.dispatch, closest, any]
+        let mut k = vec![&self.light, &self.camera];
+        k.extend(self.queues.kernels());
+        k
     }
 
     fn kernel(&self, pass: Pass) -> &Kernel {
@@ -144,7 +129,6 @@ impl WavefrontPasses {
             Bind::buffer(abi::BIND_PT_SUSPENDED, &self.state),
             Bind::buffer(abi::BIND_WF_CONTRIB, &self.contrib),
             Bind::buffer(abi::BIND_WF_INDEX, &self.index),
-            Bind::buffer(abi::BIND_WF_ACTIVE, &self.active),
         ];
         b.extend(self.queues.binds());
         b
@@ -196,10 +180,8 @@ impl WavefrontPasses {
         self.record_launches(rec, pass, binds, geometry, push, slots, launches, false)
     }
 
-    /// A batch: the pass's first launch (`start`) runs every slot; every other launch l runs
-    /// the slots the launch before listed, from the indirect dispatch at entry l, which the
-    /// launch before sized (wf_dispatch.comp); the last launch's entry moves to entry 0 for
-    /// the next batch.
+    /// A batch: the pass's first launch (`start`) runs every slot, every other the slots the
+    /// launch before listed (`Queues::record_batch`).
     #[allow(clippy::too_many_arguments)]
     fn record_launches(
         &self,
@@ -213,20 +195,10 @@ impl WavefrontPasses {
         start: bool,
     ) -> Result<()> {
         let kernel = self.kernel(pass);
-        rec.fill_buffer_range(&self.active, 16, launches as u64 * 16, 0);
-        self.queues.record_batch(rec, geometry, slots, launches, |rec, launch| {
-            if start && launch == 0 {
-                let push = wavefront_push(push, launch | abi::WF_ALL_SLOTS);
-                rec.dispatch(kernel, binds, bytemuck::bytes_of(&push), [kernel.groups_for(slots), 1, 1])?;
-            } else {
-                let push = wavefront_push(push, launch);
-                rec.dispatch_indirect(kernel, binds, bytemuck::bytes_of(&push), &self.active, launch as u64 * 16)?;
-            }
-            let entry = abi::WfDispatchPush { entry: launch + 1, pad0: 0, pad1: 0, pad2: 0 };
-            rec.dispatch(&self.dispatch, &[Bind::buffer(abi::BIND_WF_ACTIVE, &self.active)], bytemuck::bytes_of(&entry), [1, 1, 1])
-        })?;
-        rec.copy_buffer_range(&self.active, launches as u64 * 16, &self.active, 0, 16);
-        Ok(())
+        self.queues.record_batch(rec, geometry, slots, launches, start, |rec, word| {
+            let push = wavefront_push(push, word);
+            self.queues.dispatch_path(rec, kernel, binds, bytemuck::bytes_of(&push), slots, word)
+        })
     }
 
     /// After a batch of `launches` of `pass` (with `done` before it): None where a launch
@@ -241,14 +213,6 @@ impl WavefrontPasses {
             None => Some(even_batch((done + launches) / 4)),
         })
     }
-}
-
-/// Launches of a batch: `n`, at least 4 and at most `WF_MAX_BATCH`, rounded up to an even
-/// number so that every batch starts at an even launch (the contributions' halves alternate
-/// with the launch's parity within the pass).
-fn even_batch(n: u32) -> u32 {
-    const _: () = assert!(abi::WF_MAX_BATCH % 2 == 0);
-    (n.clamp(4, abi::WF_MAX_BATCH) + 1) & !1
 }
 
 /// The path kernels' push constants for launch `launch` of a batch.
@@ -274,14 +238,6 @@ fn wavefront_push(p: &BdptPush, launch: u32) -> BdptWavefrontPush {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn batches_are_even() {
-        assert_eq!(even_batch(0), 4);
-        assert_eq!(even_batch(5), 6);
-        assert_eq!(even_batch(14), 14);
-        assert_eq!(even_batch(1000), abi::WF_MAX_BATCH);
-    }
 
     #[test]
     fn only_fixed_cache_joins_run_as_a_wavefront() {

@@ -8,7 +8,7 @@
 use std::cell::Cell;
 
 use super::integrator::{IntegratorKernels, PassInputs};
-use super::wavefront_queues::{queue_bytes, slot_buffer, Queues};
+use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues};
 use super::{gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::PtPush, abi::PtWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Spec};
@@ -60,7 +60,7 @@ impl WavefrontPathTracer {
         let buffer = |name: &str, bytes: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, bytes, SLOT_BYTES);
         Ok(WavefrontPathTracer {
             kernel,
-            queues: Queues::new(ctx, scene, what, slots, 1, SLOT_BYTES)?,
+            queues: Queues::new(ctx, scene, what, slots, 1, SLOT_BYTES, false)?,
             state: buffer("state", std::mem::size_of::<abi::PtSuspended>() as u64)?,
             contrib: buffer("contrib", 16)?,
             index: buffer("queue_index", 8)?,
@@ -72,19 +72,19 @@ impl WavefrontPathTracer {
 
 /// Launches of the next batch: the first of a pass sized by what the last pass took per
 /// sample of a slot (a few more, so most passes take one batch), later ones a quarter of the
-/// launches so far (the tail of the longest paths).
+/// launches so far (the tail of the longest paths); even (`even_batch`).
 fn batch_launches(first: bool, samples_per_slot: u32, launches_per_sample: f64, done: u32) -> u32 {
-    let n = match first {
+    even_batch(match first {
         true => (samples_per_slot as f64 * launches_per_sample * 1.1).ceil() as u32 + 2,
         false => done / 4,
-    };
-    n.clamp(4, abi::WF_MAX_BATCH)
+    })
 }
 
 impl IntegratorKernels for WavefrontPathTracer {
     fn kernels(&self) -> Vec<&Kernel> {
-        let [closest, any] = self.queues.kernels();
-        vec![&self.kernel, closest, any]
+        let mut k = vec![&self.kernel];
+        k.extend(self.queues.kernels());
+        k
     }
 
     fn storage_bytes(&self) -> u64 {
@@ -130,9 +130,10 @@ impl IntegratorKernels for WavefrontPathTracer {
                         rec.fill_buffer(film.slices_buffer(), 0);
                     }
                 }
-                let groups = self.kernel.groups_for(slots);
-                self.queues.record_batch(rec, &geometry, slots, launches, |rec, launch| {
-                    rec.dispatch(&self.kernel, &binds, bytemuck::bytes_of(&PtWavefrontPush { launch, ..push }), [groups, 1, 1])
+                // Every launch runs every slot (the queues without lists of live slots).
+                self.queues.record_batch(rec, &geometry, slots, launches, false, |rec, launch| {
+                    let push = PtWavefrontPush { launch, ..push };
+                    self.queues.dispatch_path(rec, &self.kernel, &binds, bytemuck::bytes_of(&push), slots, launch)
                 })
             })?;
             // The first launch that queued no ray ends the pass (the rest found nothing to do).
@@ -158,12 +159,12 @@ mod tests {
 
     #[test]
     fn batches_cover_the_pass_and_stay_bounded() {
-        // The first batch of a pass: the last pass's launches per sample, 10 % and 2 more.
-        assert_eq!(batch_launches(true, 8, 6.0, 0), 55);
+        // The first batch of a pass: the last pass's launches per sample, 10 % and 2 more, even.
+        assert_eq!(batch_launches(true, 8, 6.0, 0), 56);
         assert_eq!(batch_launches(true, 1, 1.0, 0), 4);
         assert_eq!(batch_launches(true, 1000, 8.0, 0), abi::WF_MAX_BATCH);
-        // Later ones: a quarter of the launches so far, at least 4.
-        assert_eq!(batch_launches(false, 8, 6.0, 55), 13);
+        // Later ones: a quarter of the launches so far, at least 4, even.
+        assert_eq!(batch_launches(false, 8, 6.0, 56), 14);
         assert_eq!(batch_launches(false, 8, 6.0, 5), 4);
     }
 }

@@ -1,10 +1,11 @@
 //! What the wavefront integrators share (pt_wavefront.rs, bdpt_wavefront.rs): the ray queues
-//! between a path kernel and the trace kernels of `crate::trace`, and the batches of launches
-//! (path kernel, closest-hit trace of the segments, any-hit trace of the shadow rays) that end
-//! in a read of how many rays each launch queued.
+//! between a path kernel and the trace kernels of `crate::trace`, the lists of live slots each
+//! launch runs (glsl/common/wf_active.glsl), and the batches of launches (path kernel,
+//! closest-hit trace of the segments, any-hit trace of the shadow rays) that end in a read of
+//! how many rays each launch queued.
 
 use super::{gpu_scene::GpuScene, RenderError};
-use crate::gpu::abi;
+use crate::gpu::{abi, kernels};
 use crate::trace::{TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result};
 
@@ -47,6 +48,8 @@ pub struct Queues {
     counts_read: Buffer,
     /// The trace kernels' node and triangle counters (unused: not counted).
     trace_stats: Buffer,
+    /// Where each launch runs only the slots the launch before listed (BDPT's passes).
+    live: Option<LiveSlots>,
     slots: u32,
     shadow: u32,
 }
@@ -56,6 +59,29 @@ pub struct Queues {
 pub const fn queue_bytes(shadow: u32) -> u64 {
     (1 + shadow as u64) * (32 + 16)
 }
+
+/// Bytes per slot of the lists of live slots (`Queues::new` with `live`): its places in both.
+pub const LIVE_SLOT_BYTES: u64 = 2 * 4;
+
+/// The lists of live slots: the launches' indirect dispatches and the slots each runs
+/// (BIND_WF_ACTIVE; glsl/common/wf_active.glsl), and the kernel that sizes each dispatch.
+struct LiveSlots {
+    active: Buffer,
+    dispatch: Kernel,
+}
+
+/// Launches of a batch: `n`, at least 4 and at most `WF_MAX_BATCH`, rounded up to an even
+/// number so that every batch starts at an even launch: the lists of live slots (and BDPT's
+/// shadow-ray contributions) alternate between two halves with the launch's parity within the
+/// pass. (The path tracer's first version of the lists took batches of odd length: a batch's
+/// first launch then ran a stale list, 3 of 1152 values off in the test against the megakernel.)
+pub fn even_batch(n: u32) -> u32 {
+    const _: () = assert!(abi::WF_MAX_BATCH % 2 == 0);
+    (n.clamp(4, abi::WF_MAX_BATCH) + 1) & !1
+}
+
+/// Bytes of BIND_WF_ACTIVE's indirect dispatches, before its slot lists.
+const DISPATCH_BYTES: u64 = abi::WF_DISPATCH_ENTRIES as u64 * 16;
 
 /// A buffer of `bytes` per slot for `slots` slots, named `name`; where it does not fit, an
 /// error that says how much the `what`'s slots take in all (`slot_bytes` each) and what to do.
@@ -76,7 +102,14 @@ pub fn slot_buffer(
 }
 
 impl Queues {
-    /// `what` names the integrator in errors (as `slot_buffer`), `prefix` its buffers.
+    /// `what` names the integrator in errors (as `slot_buffer`), `prefix` its buffers. `live`:
+    /// each launch after a pass's first runs only the slots that queued a ray in the launch
+    /// before, from lists the path kernel writes (wf_active.glsl). BDPT's passes take them
+    /// (their light paths' long tails); the path tracer does not: on the H200 they sped its
+    /// 64-spp passes up 2-8 % but slowed its 1 s renders of the textured Sponza 2 % and the
+    /// Cornell box's passes 12 % (a global atomic per subgroup and launch for paths that
+    /// regenerate and so stay live; docs/results.md, "BDPT's light pass as a wavefront").
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         ctx: &Context,
         scene: &GpuScene,
@@ -84,6 +117,7 @@ impl Queues {
         slots: u64,
         shadow: u32,
         slot_bytes: u64,
+        live: bool,
     ) -> std::result::Result<Self, RenderError> {
         let opts = trace_options(scene, super::on_cpu(ctx), ctx.info().subgroup_size, scene.features.alpha);
         let buffer = |name: &str, bytes: u64| slot_buffer(ctx, what, &format!("{prefix}.{name}"), slots, bytes, slot_bytes);
@@ -97,43 +131,86 @@ impl Queues {
             counts: ctx.create_buffer(&format!("{prefix}.counts"), batch_bytes, Memory::Device)?,
             counts_read: ctx.create_buffer(&format!("{prefix}.counts_read"), batch_bytes, Memory::Readback)?,
             trace_stats: ctx.create_buffer(&format!("{prefix}.trace_stats"), 8, Memory::Device)?,
+            live: match live {
+                true => Some(LiveSlots {
+                    active: ctx.create_indirect_buffer(&format!("{prefix}.active"), DISPATCH_BYTES + slots * LIVE_SLOT_BYTES).map_err(
+                        |e| {
+                            RenderError::Memory(format!(
+                                "{what}'s {slots} slots ({} MiB) do not fit ({e}): lower --sample-slices or the image size, or add --wavefront off",
+                                (slots * slot_bytes) >> 20
+                            ))
+                        },
+                    )?,
+                    dispatch: ctx.create_kernel(&kernels::WF_DISPATCH, &[])?,
+                }),
+                false => None,
+            },
             slots: u32::try_from(slots).map_err(|_| RenderError::Memory(format!("{what}: {slots} slots are too many")))?,
             shadow,
         })
     }
 
-    /// The trace kernels (closest hit, any hit).
-    pub fn kernels(&self) -> [&Kernel; 2] {
-        self.tracer.trace_kernels()
+    /// The kernels besides the path kernel: the trace kernels (closest hit, any hit) and, with
+    /// the lists of live slots, the one that sizes each launch's dispatch.
+    pub fn kernels(&self) -> Vec<&Kernel> {
+        let [closest, any] = self.tracer.trace_kernels();
+        let mut k = vec![closest, any];
+        k.extend(self.live.as_ref().map(|l| &l.dispatch));
+        k
     }
 
     /// The queues' bindings for the path kernel.
-    pub fn binds(&self) -> [Bind<'_>; 5] {
-        [
+    pub fn binds(&self) -> Vec<Bind<'_>> {
+        let mut b = vec![
             Bind::buffer(abi::BIND_WF_RAYS, &self.rays),
             Bind::buffer(abi::BIND_WF_HITS, &self.hits),
             Bind::buffer(abi::BIND_WF_SHADOW_RAYS, &self.shadow_rays),
             Bind::buffer(abi::BIND_WF_SHADOW_HITS, &self.shadow_hits),
             Bind::buffer(abi::BIND_WF_COUNTS, &self.counts),
-        ]
+        ];
+        b.extend(self.live.as_ref().map(|l| Bind::buffer(abi::BIND_WF_ACTIVE, &l.active)));
+        b
     }
 
-    /// Records `launches` launches over `slots` slots: `launch(rec, l)` records the path kernel's
-    /// launch l of the batch, then the segments and shadow rays it queued are traced; the ray
-    /// counts are read back at the end (`queued`).
+    /// Records the path kernel's launch `word` (its launch in the batch, with WF_ALL_SLOTS for
+    /// a pass's first): over all `slots` slots, or with the lists of live slots (after a pass's
+    /// first launch) over the slots the launch before listed, from the indirect dispatch sized
+    /// after it.
+    pub fn dispatch_path(&self, rec: &mut Recorder, kernel: &Kernel, binds: &[Bind], push: &[u8], slots: u32, word: u32) -> Result<()> {
+        match &self.live {
+            Some(l) if word & abi::WF_ALL_SLOTS == 0 => rec.dispatch_indirect(kernel, binds, push, &l.active, word as u64 * 16),
+            _ => rec.dispatch(kernel, binds, push, [kernel.groups_for(slots), 1, 1]),
+        }
+    }
+
+    /// Records `launches` launches over `slots` slots: `launch(rec, word)` records the path
+    /// kernel's launch (`dispatch_path`; `word` is the launch in the batch, with WF_ALL_SLOTS
+    /// for a pass's first where `start`), then the next launch's dispatch is sized from the
+    /// slots it listed and the segments and shadow rays it queued are traced; the last launch's
+    /// dispatch moves to entry 0 for the next batch, and the ray counts are read back at the
+    /// end (`first_idle_launch`).
     pub fn record_batch(
         &self,
         rec: &mut Recorder,
         geometry: &[Bind],
         slots: u32,
         launches: u32,
+        start: bool,
         mut launch: impl FnMut(&mut Recorder, u32) -> Result<()>,
     ) -> Result<()> {
         assert!(slots <= self.slots, "a pass of {slots} slots on storage for {}", self.slots);
-        assert!(launches <= abi::WF_MAX_BATCH);
+        assert!(launches <= abi::WF_MAX_BATCH && launches % 2 == 0, "a batch of {launches} launches (even_batch)");
         rec.fill_buffer(&self.counts, 0);
+        if let Some(live) = &self.live {
+            rec.fill_buffer_range(&live.active, 16, launches as u64 * 16, 0);
+        }
         for l in 0..launches {
-            launch(rec, l)?;
+            launch(rec, if start && l == 0 { l | abi::WF_ALL_SLOTS } else { l })?;
+            if let Some(live) = &self.live {
+                let entry = abi::WfDispatchPush { entry: l + 1, pad0: 0, pad1: 0, pad2: 0 };
+                let bind = [Bind::buffer(abi::BIND_WF_ACTIVE, &live.active)];
+                rec.dispatch(&live.dispatch, &bind, bytemuck::bytes_of(&entry), [1, 1, 1])?;
+            }
             let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
             self.tracer.record_trace_queued(rec, geometry, &self.rays, &self.hits, &self.trace_stats, slots, ext, false)?;
             let shadow_slots = slots * self.shadow;
@@ -148,6 +225,9 @@ impl Queues {
                 true,
             )?;
         }
+        if let Some(live) = &self.live {
+            rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);
+        }
         rec.copy_buffer(&self.counts, &self.counts_read, self.counts.size());
         Ok(())
     }
@@ -158,5 +238,18 @@ impl Queues {
         let counts: Vec<u32> = self.counts_read.read()?;
         let queued = counts.chunks(2).take(launches as usize).map(|c| c[0] + c[1]);
         Ok(queued.enumerate().find(|&(_, n)| n == 0).map(|(l, _)| l as u32))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn batches_are_even() {
+        assert_eq!(even_batch(0), 4);
+        assert_eq!(even_batch(5), 6);
+        assert_eq!(even_batch(14), 14);
+        assert_eq!(even_batch(1000), abi::WF_MAX_BATCH);
     }
 }
