@@ -102,8 +102,8 @@ pub struct Bdpt {
     /// Bytes of light-vertex storage (vertices, per-path counts, the cache's list, VCM's
     /// merge grid).
     pub vertex_bytes: u64,
-    /// The shadow-ray queue of the camera pass and of the light pass's joins to the camera
-    /// (`--shadow-queue`), if any.
+    /// The megakernels' shadow-ray queue of the camera pass and of the light pass's joins to
+    /// the camera (`--shadow-queue`), if any (none with the wavefront passes).
     queue: Option<(super::shadow_queue::ShadowQueueTracer, super::ShadowQueue)>,
 }
 
@@ -377,8 +377,8 @@ impl Bdpt {
         let geometry = scene.binds();
         let (binds, geometry) = (&binds[..], &geometry[..]);
         let slots = |pass, push: &BdptPush| WavefrontPasses::slots_for(pass, push, film.width, film.height);
-        // The first batch of a light pass, after the slices' sum of the iteration before.
-        // Iteration i's light pass (the slices of iteration i - 1 summed first).
+        // The first batch of iteration i's light pass (the slices of iteration i - 1 summed
+        // first).
         let record_light = |i: usize| {
             let (push, before) = (&pushes[i], i.checked_sub(1).map(|b| &pushes[b]));
             assert!(push.light_path_total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
