@@ -131,7 +131,7 @@ pub(super) fn resolve_shadow_queue(
 /// glass (102 against 108); CPU devices (llvmpipe: 3-4x slower, its launches' fixed costs).
 ///
 /// The same for BDPT's passes (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3), ms per
-/// run: textured Sponza 82.7 against 123.1 (640 x 360, 64 spp), DamagedHelmet 250.4 against
+/// run: textured Sponza 80.3 against 123.1 (640 x 360, 64 spp), DamagedHelmet 215 against
 /// 401.5 (384², 256 spp); the Cornell box (227 against 175 ms per 1024 spp) and the caustic
 /// scene (85 against 66) keep the megakernels (docs/results.md, "BDPT's light pass as a
 /// wavefront").

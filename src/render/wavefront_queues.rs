@@ -207,23 +207,21 @@ impl Queues {
         for l in 0..launches {
             launch(rec, if start && l == 0 { l | abi::WF_ALL_SLOTS } else { l })?;
             if let Some(live) = &self.live {
+                // The next launch's dispatch, and the traces' ray counters reset.
                 let entry = abi::WfDispatchPush { entry: l + 1, pad0: 0, pad1: 0, pad2: 0 };
-                let bind = [Bind::buffer(abi::BIND_WF_ACTIVE, &live.active)];
+                let [closest, any] = self.tracer.ray_counters();
+                let bind = [
+                    Bind::buffer(abi::BIND_WF_ACTIVE, &live.active),
+                    Bind::buffer(abi::BIND_RAY_COUNTER, closest),
+                    Bind::buffer(abi::BIND_RAY_COUNTER_ANY, any),
+                ];
                 rec.dispatch(&live.dispatch, &bind, bytemuck::bytes_of(&entry), [1, 1, 1])?;
             }
             let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
-            self.tracer.record_trace_queued(rec, geometry, &self.rays, &self.hits, &self.trace_stats, slots, ext, false)?;
+            let (t, stats, reset) = (&self.tracer, &self.trace_stats, self.live.is_none());
+            t.record_trace_counted(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, reset)?;
             let shadow_slots = slots * self.shadow;
-            self.tracer.record_trace_queued(
-                rec,
-                geometry,
-                &self.shadow_rays,
-                &self.shadow_hits,
-                &self.trace_stats,
-                shadow_slots,
-                shadow,
-                true,
-            )?;
+            t.record_trace_counted(rec, geometry, &self.shadow_rays, &self.shadow_hits, stats, shadow_slots, shadow, true, reset)?;
         }
         if let Some(live) = &self.live {
             rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);

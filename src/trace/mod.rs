@@ -154,8 +154,11 @@ pub struct Tracer {
     opts: TraceOptions,
     /// Persistent kernels: workgroups launched.
     persistent: Option<u32>,
-    /// Their ray counter (bound to every trace kernel, which declares it).
+    /// Their ray counters (bound to every trace kernel, which declares one): the closest-hit
+    /// kernels' and the any-hit kernels', so that both may be reset before either runs
+    /// (`ray_counters`).
     counter: Buffer,
+    counter_any: Buffer,
     /// Most ray batches one subgroup of a persistent kernel fetches.
     max_batches: u32,
     /// The device's subgroup size (dynamic fetch's launch).
@@ -254,6 +257,7 @@ impl Tracer {
             opts: *opts,
             persistent,
             counter: ctx.create_buffer("trace.ray_counter", 4, Memory::Device)?,
+            counter_any: ctx.create_buffer("trace.ray_counter_any", 4, Memory::Device)?,
             max_batches: persistent_batch_cap(ctx.info()),
             subgroup_size: ctx.info().subgroup_size,
         })
@@ -309,17 +313,44 @@ impl Tracer {
         counts: Option<(&Buffer, u32)>,
         any_hit: bool,
     ) -> Result<()> {
+        self.record_trace_counted(rec, geometry, rays, hits, stats, count, counts, any_hit, true)
+    }
+
+    /// The persistent kernels' ray counters, closest-hit and any-hit (each must be 0 when its
+    /// kernel starts: `record_trace_counted` with `reset` false leaves that to the caller).
+    pub fn ray_counters(&self) -> [&Buffer; 2] {
+        [&self.counter, &self.counter_any]
+    }
+
+    /// `record_trace_queued`; `reset`: fill the persistent kernel's ray counter with 0 first
+    /// (a transfer and a barrier), else the caller has (`ray_counters`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn record_trace_counted(
+        &self,
+        rec: &mut Recorder,
+        geometry: &[Bind],
+        rays: &Buffer,
+        hits: &Buffer,
+        stats: &Buffer,
+        count: u32,
+        counts: Option<(&Buffer, u32)>,
+        any_hit: bool,
+        reset: bool,
+    ) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
+        let counter = if any_hit { &self.counter_any } else { &self.counter };
         assert_eq!(counts.is_some(), self.opts.count_buffer, "queued rays need a tracer with count_buffer, and only they");
         let mut push = TracePush { count, count_index: counts.map_or(0, |c| c.1), ..Default::default() };
         let mut binds = geometry.to_vec();
         binds.extend([Bind::buffer(abi::BIND_RAYS, rays), Bind::buffer(abi::BIND_HITS, hits), Bind::buffer(abi::BIND_STATS, stats)]);
-        binds.push(Bind::buffer(abi::BIND_RAY_COUNTER, &self.counter));
+        binds.push(Bind::buffer(abi::BIND_RAY_COUNTER, counter));
         // (Read only with SPEC_RAY_COUNT_BUFFER; the counter stands in elsewhere.)
-        binds.push(Bind::buffer(abi::BIND_RAY_COUNTS, counts.map_or(&self.counter, |c| c.0)));
+        binds.push(Bind::buffer(abi::BIND_RAY_COUNTS, counts.map_or(counter, |c| c.0)));
         let mut groups = k.groups_for(count.div_ceil(self.opts.rays_per_invocation.max(1)));
         if let Some(persistent_groups) = self.persistent {
-            rec.fill_buffer(&self.counter, 0);
+            if reset {
+                rec.fill_buffer(counter, 0);
+            }
             let rays_per_batch = match self.opts.refill_lanes {
                 0 => abi::TRACE_WG_SIZE,
                 n => refill_rays_per_batch(n, self.subgroup_size),
