@@ -253,3 +253,48 @@ fn profiling_times_each_dispatch_by_kernel() {
     drop((k, input, sum));
     finish(ctx);
 }
+
+/// Commands recorded now and run later (`Context::record`, `Context::run`): the next submission
+/// recorded while the GPU runs one, both results right; commands dropped unrun are freed; and
+/// commands recorded with profiling on refuse to run once it has been switched (their
+/// timestamps would go to a pool that no longer exists).
+#[test]
+fn recorded_commands_run_later_and_not_across_a_profiling_switch() {
+    let ctx = gpu();
+    let values: Vec<u32> = (0..50_000).collect();
+    let input = ctx.upload_buffer("recorded.in", &values).unwrap();
+    let sums =
+        [ctx.create_buffer("recorded.sum0", 4, Memory::Device).unwrap(), ctx.create_buffer("recorded.sum1", 4, Memory::Device).unwrap()];
+    let k = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
+    let push = abi::ScanPush { count: 50_000, ..Default::default() };
+    let record = |i: usize| {
+        let (k, input, sum) = (&k, &input, &sums[i]);
+        ctx.record("recorded sum", move |rec| {
+            rec.fill_buffer(sum, 0);
+            let binds = [Bind::buffer(abi::REDUCE_BIND_INPUT, input), Bind::buffer(abi::REDUCE_BIND_OUTPUT, sum)];
+            rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [k.groups_for(50_000), 1, 1])
+        })
+    };
+    let expected = (0..50_000u32).fold(0u32, |a, v| a.wrapping_add(v));
+    let first = record(0).unwrap();
+    let second = ctx.run(first, || record(1)).unwrap().unwrap();
+    ctx.run(second, || ()).unwrap();
+    for sum in &sums {
+        assert_eq!(ctx.read_buffer::<u32>(sum).unwrap(), vec![expected]);
+    }
+    drop(record(0).unwrap()); // never run: freed
+    if ctx.info().timestamp_valid_bits > 0 {
+        // Off, and off then on again (a new pool).
+        for again in [false, true] {
+            ctx.set_profiling(true).unwrap();
+            let profiled = record(0).unwrap();
+            ctx.set_profiling(false).unwrap();
+            ctx.set_profiling(again).unwrap();
+            let err = ctx.run(profiled, || ()).err().map(|e| e.to_string()).unwrap_or_default();
+            assert!(err.contains("profiling was switched"), "{err:?}");
+        }
+        ctx.set_profiling(false).unwrap();
+    }
+    drop((k, input, sums));
+    finish(ctx);
+}

@@ -311,6 +311,8 @@ impl Context {
     /// Records commands with `record` for a later [`Context::run`], which submits them: the
     /// recording of one submission may then overlap the GPU's work on another. The resources
     /// the recording borrows stay borrowed (`'a`) until the commands are dropped or have run.
+    /// Commands recorded with profiling on do not run once it has been switched
+    /// (`set_profiling`): `run` returns an error.
     pub fn record<'a, F>(&self, what: &str, record: F) -> Result<Recorded<'a>>
     where
         F: FnOnce(&mut Recorder) -> Result<()> + 'a,
@@ -378,6 +380,16 @@ impl Context {
     ) -> Result<()> {
         let s = &*self.shared;
         let what = r.what.clone();
+        if let Some(rp) = &r.profile {
+            // Its timestamps go to the pool of the profiler it was recorded under.
+            let current = s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_ref().is_some_and(|p| p.is_current(rp));
+            if !current {
+                return Err(VkError::Usage {
+                    name: what,
+                    msg: "profiling was switched between recording these commands and running them: record them again".into(),
+                });
+            }
+        }
         // SAFETY: live device.
         let fence = unsafe { s.device.create_fence(&vk::FenceCreateInfo::default(), None) }.ctx(|| format!("fence for {what}"))?;
         s.name(fence, &format!("{what}.fence"));

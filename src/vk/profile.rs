@@ -27,6 +27,8 @@ pub struct KernelTime {
 /// The query pool and the table (in `Shared`, behind a mutex).
 pub(crate) struct Profiler {
     pool: vk::QueryPool,
+    /// Which turning-on this is (`set_profiling`): a recording made under another may not run.
+    generation: u64,
     totals: BTreeMap<String, (f64, u64)>,
     /// Dispatches a submission recorded beyond `QUERIES`.
     pub untimed: u64,
@@ -36,6 +38,8 @@ pub(crate) struct Profiler {
 pub(crate) struct RecordingProfile {
     pub pool: vk::QueryPool,
     pub names: Vec<String>,
+    /// The profiler's generation when recorded.
+    pub generation: u64,
 }
 
 impl RecordingProfile {
@@ -52,13 +56,19 @@ impl RecordingProfile {
 impl Profiler {
     /// Starts a recording: resets the pool and writes timestamp 0.
     pub(crate) fn begin(&self, device: &ash::Device, cmd: vk::CommandBuffer) -> RecordingProfile {
-        // SAFETY: `cmd` is recording; the pool is live and no submission in flight uses it
-        // (submissions are serialised by the command pool's mutex and waited for).
+        // SAFETY: `cmd` is recording; the pool is live. The reset runs when `cmd` does, after
+        // every earlier submission has completed and had its timestamps read (each is waited
+        // for before the next is submitted), and only under this profiler (`is_current`).
         unsafe {
             device.cmd_reset_query_pool(cmd, self.pool, 0, QUERIES);
             device.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.pool, 0);
         }
-        RecordingProfile { pool: self.pool, names: Vec::new() }
+        RecordingProfile { pool: self.pool, names: Vec::new(), generation: self.generation }
+    }
+
+    /// Whether `rec` was recorded under this profiler (its pool still live).
+    pub(crate) fn is_current(&self, rec: &RecordingProfile) -> bool {
+        rec.generation == self.generation
     }
 
     /// Adds a completed submission's dispatch times to the table.
@@ -112,7 +122,9 @@ impl Context {
         // SAFETY: live device.
         let pool = unsafe { s.device.create_query_pool(&info, None) }.ctx(|| "profiling query pool".into())?;
         s.name(pool, "bidir.profiling");
-        *slot = Some(Profiler { pool, totals: BTreeMap::new(), untimed: 0 });
+        static GENERATION: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+        let generation = GENERATION.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        *slot = Some(Profiler { pool, generation, totals: BTreeMap::new(), untimed: 0 });
         Ok(())
     }
 
