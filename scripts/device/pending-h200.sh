@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset by the dispatch sizing; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz or .device/bidir-s20e.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -23,6 +23,37 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s20g)
+  # Session 20, after s20f: the wavefront path tracer's kernel resets the trace kernels' ray
+  # counters itself (no fills), against s20f's build (.device/bidir-s20f.gz), interleaved; the
+  # same images. Carried as s20f with bidir-s20f.gz.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384"
+  for r in 1 2; do
+    for b in .device/bidir-s20f "$B"; do
+      for i in pt-nee pt; do
+        echo "== sponza textured $i $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+      echo "== DamagedHelmet pt-nee $(basename "$b")"; $T "$b" bench render $HB --env 0.6,0.6,0.6 --sun "0.4,1,0.7;2.5,2.5,2.5;2" --spp 256 --warmup 1 --runs 3 --integrator pt-nee 2>&1 | grep -E "Msamples"
+      echo "== cornell pt-nee wavefront on $(basename "$b")"; $T "$b" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator pt-nee --wavefront on 2>&1 | grep -E "Msamples"
+      echo "== sponza textured bdpt $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+    done
+  done
+  for wf in off on; do
+    $T "$B" render $SPB --integrator pt-nee --spp 64 --bvh bvh4 --wavefront $wf -o /tmp/s-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $CB --integrator pt-nee --spp 256 --bvh bvh4 --wavefront $wf -o /tmp/c-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $SPB --integrator bdpt --spp 16 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/b-$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same image: sponza pt-nee, cornell pt-nee, sponza bdpt"; for x in s c b; do "$B" diff /tmp/$x-on.exr /tmp/$x-off.exr | head -1; done
+  for s in 1 2; do
+    for b in .device/bidir-s20f "$B"; do
+      echo "== sponza textured --time 1 pt-nee seed $s $(basename "$b")"; $T "$b" render $SPB --integrator pt-nee --time 1 --seed $s -o /tmp/t.exr 2>&1 | grep -E "spp in"
+    done
+  done
+  ;;
 s20f)
   # Session 20, after s20e: the dispatch-sizing kernel also resets the persistent trace
   # kernels' ray counters (no fill and barrier per trace), against s20e's build

@@ -393,9 +393,9 @@ gpu_consts! {
     /// that queued a ray, which run next (stream compaction: a launch costs what its live paths
     /// do, not what the pass's slots do).
     pub const BIND_WF_ACTIVE: u32 = 39;
-    /// wf_dispatch.comp: the any-hit trace kernel's ray counter (at BIND_RAY_COUNTER the
-    /// closest-hit one's), both reset there for the launch's two traces (without a fill and
-    /// barrier of their own; `Tracer::ray_counters`).
+    /// wf_dispatch.comp (BDPT's wavefront passes) and pt_wavefront.comp: the any-hit trace
+    /// kernel's ray counter (at BIND_RAY_COUNTER the closest-hit one's), both reset there for
+    /// the launch's two traces (without a fill and barrier of their own; `Tracer::ray_counters`).
     pub const BIND_RAY_COUNTER_ANY: u32 = 49;
     /// Entries of BIND_WF_ACTIVE's indirect dispatches: one per launch of a batch and one more.
     pub const WF_DISPATCH_ENTRIES: u32 = WF_MAX_BATCH + 1;

@@ -169,6 +169,9 @@ impl Queues {
             Bind::buffer(abi::BIND_WF_COUNTS, &self.counts),
         ];
         b.extend(self.live.as_ref().map(|l| Bind::buffer(abi::BIND_WF_ACTIVE, &l.active)));
+        // The trace kernels' ray counters, which the path kernel resets without the lists.
+        let [closest, any] = self.tracer.ray_counters();
+        b.extend([Bind::buffer(abi::BIND_RAY_COUNTER, closest), Bind::buffer(abi::BIND_RAY_COUNTER_ANY, any)]);
         b
     }
 
@@ -218,7 +221,8 @@ impl Queues {
                 rec.dispatch(&live.dispatch, &bind, bytemuck::bytes_of(&entry), [1, 1, 1])?;
             }
             let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
-            let (t, stats, reset) = (&self.tracer, &self.trace_stats, self.live.is_none());
+            // The path kernel (pt) or the dispatch sizing (BDPT) has reset the ray counters.
+            let (t, stats, reset) = (&self.tracer, &self.trace_stats, false);
             t.record_trace_counted(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, reset)?;
             let shadow_slots = slots * self.shadow;
             t.record_trace_counted(rec, geometry, &self.shadow_rays, &self.shadow_hits, stats, shadow_slots, shadow, true, reset)?;
