@@ -682,7 +682,7 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
             ctx.submit("queued trace", |rec| {
                 rec.fill_buffer(&hits, UNTOUCHED);
                 let geometry: Vec<Bind> = gbvh.binds();
-                tracer.record_trace_queued(rec, &geometry, &ray_buf, &hits, &stats, rays.len() as u32, Some((&counts, 1)), any_hit)
+                tracer.record_trace_queued(rec, &geometry, &ray_buf, &hits, &stats, rays.len() as u32, Some((&counts, 1)), any_hit, true)
             })
             .unwrap();
             let got: Vec<GpuHit> = ctx.read_buffer(&hits).unwrap();

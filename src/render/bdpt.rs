@@ -391,7 +391,7 @@ impl Bdpt {
                     // The camera pass adds into the slices as its contributions arise.
                     rec.fill_buffer(film.slices_buffer(), 0);
                 }
-                w.record_start(rec, Pass::Light, binds, geometry, push, slots(Pass::Light, push), launches)
+                w.record_batch(rec, Pass::Light, binds, geometry, push, slots(Pass::Light, push), launches, true)
             });
             recorded.map(|r| (r, launches))
         };
@@ -400,7 +400,7 @@ impl Bdpt {
             let launches = w.first_batch(Pass::Camera);
             let recorded = ctx.record("bdpt wavefront camera pass", move |rec| {
                 self.record_cache(rec, binds, push)?;
-                w.record_start(rec, Pass::Camera, binds, geometry, push, slots(Pass::Camera, push), launches)
+                w.record_batch(rec, Pass::Camera, binds, geometry, push, slots(Pass::Camera, push), launches, true)
             });
             recorded.map(|r| (r, launches))
         };
@@ -411,7 +411,7 @@ impl Bdpt {
                 done += launches;
                 launches = next;
                 let name = format!("bdpt wavefront {pass:?} pass");
-                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, slots(pass, push), launches))?;
+                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, slots(pass, push), launches, false))?;
             }
             Ok(())
         };

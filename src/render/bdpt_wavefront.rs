@@ -148,42 +148,12 @@ impl WavefrontPasses {
         even_batch(self.launches[pass as usize].get() + 2)
     }
 
-    /// Records the start of `pass` over `slots` slots (its first launch starts every slot's
-    /// path) and its first batch of `launches` launches (`first_batch`).
-    #[allow(clippy::too_many_arguments)]
-    pub fn record_start(
-        &self,
-        rec: &mut Recorder,
-        pass: Pass,
-        binds: &[Bind],
-        geometry: &[Bind],
-        push: &BdptPush,
-        slots: u32,
-        launches: u32,
-    ) -> Result<()> {
-        self.record_launches(rec, pass, binds, geometry, push, slots, launches, true)
-    }
-
-    /// Records `launches` more launches of `pass`, each followed by the two traces, and the
-    /// read-back of their ray counts.
+    /// Records a batch of `launches` launches of `pass` over `slots` slots, each followed by the
+    /// two traces, and the read-back of their ray counts. `start`: the batch begins the pass
+    /// (its first launch starts every slot's path; `first_batch` launches); every other launch
+    /// runs the slots the launch before listed (`Queues::record_batch`).
     #[allow(clippy::too_many_arguments)]
     pub fn record_batch(
-        &self,
-        rec: &mut Recorder,
-        pass: Pass,
-        binds: &[Bind],
-        geometry: &[Bind],
-        push: &BdptPush,
-        slots: u32,
-        launches: u32,
-    ) -> Result<()> {
-        self.record_launches(rec, pass, binds, geometry, push, slots, launches, false)
-    }
-
-    /// A batch: the pass's first launch (`start`) runs every slot, every other the slots the
-    /// launch before listed (`Queues::record_batch`).
-    #[allow(clippy::too_many_arguments)]
-    fn record_launches(
         &self,
         rec: &mut Recorder,
         pass: Pass,

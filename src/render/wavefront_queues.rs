@@ -222,10 +222,10 @@ impl Queues {
             }
             let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
             // The path kernel (pt) or the dispatch sizing (BDPT) has reset the ray counters.
-            let (t, stats, reset) = (&self.tracer, &self.trace_stats, false);
-            t.record_trace_counted(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, reset)?;
+            let (t, stats) = (&self.tracer, &self.trace_stats);
+            t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, false)?;
             let shadow_slots = slots * self.shadow;
-            t.record_trace_counted(rec, geometry, &self.shadow_rays, &self.shadow_hits, stats, shadow_slots, shadow, true, reset)?;
+            t.record_trace_queued(rec, geometry, &self.shadow_rays, &self.shadow_hits, stats, shadow_slots, shadow, true, false)?;
         }
         if let Some(live) = &self.live {
             rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);

@@ -296,36 +296,21 @@ impl Tracer {
         count: u32,
         any_hit: bool,
     ) -> Result<()> {
-        self.record_trace_queued(rec, geometry, rays, hits, stats, count, None, any_hit)
-    }
-
-    /// `record_trace` of rays a kernel recorded before queued: with `counts` = (buffer, i) the
-    /// first buffer[i] of them, at most `count` (a tracer with `count_buffer`).
-    #[allow(clippy::too_many_arguments)]
-    pub fn record_trace_queued(
-        &self,
-        rec: &mut Recorder,
-        geometry: &[Bind],
-        rays: &Buffer,
-        hits: &Buffer,
-        stats: &Buffer,
-        count: u32,
-        counts: Option<(&Buffer, u32)>,
-        any_hit: bool,
-    ) -> Result<()> {
-        self.record_trace_counted(rec, geometry, rays, hits, stats, count, counts, any_hit, true)
+        self.record_trace_queued(rec, geometry, rays, hits, stats, count, None, any_hit, true)
     }
 
     /// The persistent kernels' ray counters, closest-hit and any-hit (each must be 0 when its
-    /// kernel starts: `record_trace_counted` with `reset` false leaves that to the caller).
+    /// kernel starts: `record_trace_queued` with `reset` false leaves that to the caller).
     pub fn ray_counters(&self) -> [&Buffer; 2] {
         [&self.counter, &self.counter_any]
     }
 
-    /// `record_trace_queued`; `reset`: fill the persistent kernel's ray counter with 0 first
-    /// (a transfer and a barrier), else the caller has (`ray_counters`).
+    /// `record_trace` of rays a kernel recorded before queued: with `counts` = (buffer, i) the
+    /// first buffer[i] of them, at most `count` (a tracer with `count_buffer`). `reset`: fill
+    /// the persistent kernel's ray counter with 0 first (a transfer and a barrier), else the
+    /// caller has (`ray_counters`).
     #[allow(clippy::too_many_arguments)]
-    pub fn record_trace_counted(
+    pub fn record_trace_queued(
         &self,
         rec: &mut Recorder,
         geometry: &[Bind],
