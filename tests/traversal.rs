@@ -649,7 +649,10 @@ fn sorted_rays_are_a_permutation_in_key_order_with_the_same_hits() {
 /// Rays a kernel queued (`Tracer::record_trace_queued`, the wavefront path tracer's): the
 /// trace kernels take the ray count from a buffer, so they trace the first count[i] rays of
 /// the buffer and no more, with the hits of tracing those rays alone, for every launch shape the
-/// wavefront tracer may use (one invocation per ray; persistent threads; dynamic fetch).
+/// wavefront tracer may use (one invocation per ray; persistent threads; dynamic fetch), each
+/// launched directly (over the queue's capacity) and from an indirect dispatch sized for the
+/// queued rays as wf_end_launch sizes it (glsl/common/wf_active.glsl; BDPT's wavefront passes: a workgroup per
+/// TRACE_WG_SIZE rays, at most `queued_groups` of the capacity).
 #[test]
 fn queued_ray_counts_trace_only_the_queued_rays() {
     use bidir::vk::{Bind, Memory};
@@ -675,24 +678,36 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
     let hits = ctx.create_buffer("test.hits", rays.len() as u64 * 16, Memory::Device).unwrap();
     let stats = ctx.create_buffer("test.stats", 8, Memory::Device).unwrap();
     const UNTOUCHED: u32 = 0xdead_beef;
+    // An indirect dispatch at byte 16 (entry 1), as wf_end_launch writes it.
+    let dispatch = ctx.create_indirect_buffer("test.dispatch", 32).unwrap();
     for any_hit in [false, true] {
         let want: Vec<GpuHit> = plain.trace(&ctx, &gbvh, &rays[..queued], any_hit).unwrap();
-        for (shape, o) in shapes {
-            let tracer = Tracer::with_options(&ctx, &TraceOptions { count_buffer: true, ..o }).unwrap();
-            ctx.submit("queued trace", |rec| {
-                rec.fill_buffer(&hits, UNTOUCHED);
-                let geometry: Vec<Bind> = gbvh.binds();
-                tracer.record_trace_queued(rec, &geometry, &ray_buf, &hits, &stats, rays.len() as u32, Some((&counts, 1)), any_hit, true)
-            })
-            .unwrap();
-            let got: Vec<GpuHit> = ctx.read_buffer(&hits).unwrap();
-            for (i, (g, w)) in got.iter().zip(&want).enumerate() {
-                assert_eq!((g.tri, g.t.to_bits()), (w.tri, w.t.to_bits()), "{shape}, any hit {any_hit}: ray {i}");
+        for ((shape, o), indirect) in shapes.iter().flat_map(|s| [(s, false), (s, true)]) {
+            let tracer = Tracer::with_options(&ctx, &TraceOptions { count_buffer: true, ..*o }).unwrap();
+            let capacity = rays.len() as u32;
+            let groups = (queued as u32).div_ceil(bidir::gpu::abi::TRACE_WG_SIZE).min(tracer.queued_groups(capacity));
+            let shape = format!("{shape}{}", if indirect { format!(", indirect ({groups} groups)") } else { String::new() });
+            // Twice with one tracer: a persistent launch leaves its ray counter at 0 for the
+            // next (no fill between them).
+            for trace in ["first", "second"] {
+                ctx.submit("queued trace", |rec| {
+                    rec.fill_buffer(&hits, UNTOUCHED);
+                    rec.fill_buffer_range(&dispatch, 16, 4, groups);
+                    rec.fill_buffer_range(&dispatch, 20, 8, 1);
+                    let geometry: Vec<Bind> = gbvh.binds();
+                    let sized = indirect.then_some((&dispatch, 16));
+                    tracer.record_trace_queued(rec, &geometry, &ray_buf, &hits, &stats, capacity, Some((&counts, 1)), any_hit, sized)
+                })
+                .unwrap();
+                let got: Vec<GpuHit> = ctx.read_buffer(&hits).unwrap();
+                for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                    assert_eq!((g.tri, g.t.to_bits()), (w.tri, w.t.to_bits()), "{shape}, any hit {any_hit}, {trace} trace: ray {i}");
+                }
+                let traced_past = got[queued..].iter().filter(|h| h.tri != UNTOUCHED).count();
+                assert_eq!(traced_past, 0, "{shape}, any hit {any_hit}: {traced_past} rays past the queued count were traced");
             }
-            let traced_past = got[queued..].iter().filter(|h| h.tri != UNTOUCHED).count();
-            assert_eq!(traced_past, 0, "{shape}, any hit {any_hit}: {traced_past} rays past the queued count were traced");
         }
     }
-    drop((gbvh, plain, counts, ray_buf, hits, stats));
+    drop((gbvh, plain, counts, ray_buf, hits, stats, dispatch));
     finish(ctx);
 }

@@ -18,7 +18,9 @@ layout(constant_id = SPEC_RAYS_PER_INVOCATION) const uint RAYS_PER_INVOCATION = 
 layout(std430, binding = BIND_RAYS) readonly buffer Rays { GpuRay rays[]; };
 layout(std430, binding = BIND_HITS) writeonly buffer Hits { GpuHit hits[]; };
 layout(std430, binding = BIND_STATS) buffer Stats { uint stat_nodes; uint stat_tris; };
-layout(std430, binding = BIND_RAY_COUNTER) coherent buffer RayCounter { uint next_ray; };
+// Persistent kernels: the next ray to fetch, and the launch's finished workgroups; the last
+// to finish leaves both at 0 for the next launch (`Tracer` zeroes them once, when made).
+layout(std430, binding = BIND_RAY_COUNTER) coherent buffer RayCounter { uint next_ray; uint groups_done; };
 layout(push_constant) uniform Push { TracePush pc; };
 layout(constant_id = SPEC_RAY_COUNT_BUFFER) const uint RAY_COUNT_BUFFER = 0u;
 layout(std430, binding = BIND_RAY_COUNTS) readonly buffer RayCounts { uint ray_counts[]; };
@@ -186,6 +188,17 @@ void main() {
         if (subgroupElect()) {
             atomicAdd(stat_nodes, s.x);
             atomicAdd(stat_tris, s.y);
+        }
+    }
+    if (PERSISTENT != 0u) {
+        // The counter reset for the next launch by the last workgroup to finish (every other
+        // one is done fetching), so that no fill and barrier precede a launch: the pattern of
+        // CUDA's threadFenceReduction sample, each workgroup's fetches ordered before its count.
+        memoryBarrierBuffer();
+        barrier();
+        if (gl_LocalInvocationIndex == 0u && atomicAdd(groups_done, 1u) + 1u == gl_NumWorkGroups.x) {
+            atomicExchange(next_ray, 0u);
+            atomicExchange(groups_done, 0u);
         }
     }
 }

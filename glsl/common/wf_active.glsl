@@ -1,14 +1,24 @@
 // Which slots a launch of BDPT's wavefront passes runs (BIND_WF_ACTIVE; src/gpu/abi.rs): the
 // pass's first launch runs every slot; each later one runs the slots the launch before it
-// listed, those that queued a ray, from an indirect dispatch sized by wf_dispatch.comp.
+// listed, those that queued a ray, from an indirect dispatch its last workgroup sized
+// (wf_end_launch), as it sized the launch's two traces from the rays it queued.
 // `launch_word` is the kernel's BdptWavefrontPush::launch (the launch in its batch, and
 // WF_ALL_SLOTS for the pass's first).
 #ifndef BIDIR_WF_ACTIVE_GLSL
 #define BIDIR_WF_ACTIVE_GLSL
 
-layout(std430, binding = BIND_WF_ACTIVE) buffer Active {
+// Per launch l of a batch: the segments (2 l) and shadow rays (2 l + 1) it queued.
+layout(std430, binding = BIND_WF_COUNTS) coherent buffer Counts { uint wf_counts[]; };
+// The most workgroups a trace kernel of these launches starts (`Tracer::queued_groups`: a
+// persistent kernel's resident workgroups; unbounded for one invocation per ray).
+layout(constant_id = SPEC_WF_TRACE_GROUPS) const uint WF_TRACE_GROUPS = 0xffffffffu;
+
+layout(std430, binding = BIND_WF_ACTIVE) coherent buffer Active {
     // Per launch of the batch: (groups, 1, 1, listed slots); entry l + 1 is filled by launch l.
     uvec4 wf_dispatch[WF_DISPATCH_ENTRIES];
+    // Per launch l of the batch: its traces' (groups, 1, 1, -), closest hit at 2 l, any hit at
+    // 2 l + 1 (wf_end_launch); w of the first counts the launch's finished workgroups.
+    uvec4 wf_trace_dispatch[WF_TRACE_DISPATCH_ENTRIES];
     // Two halves of slot lists, by the launches' parity.
     uint wf_active[];
 };
@@ -50,6 +60,40 @@ void wf_list_next(uint launch_word, uint slot, bool listed) {
     if (listed) {
         uint half_len = uint(wf_active.length()) / 2u;
         wf_active[((launch + 1u) & 1u) * half_len + base + subgroupBallotExclusiveBitCount(lanes)] = slot;
+    }
+}
+
+// A trace kernel's dispatch for `rays` queued rays: a workgroup per TRACE_WG_SIZE of them (each
+// lane's first fetch takes one), at most WF_TRACE_GROUPS.
+uvec4 wf_trace_dispatch_for(uint rays) {
+    return uvec4(min((rays + TRACE_WG_SIZE - 1u) / TRACE_WG_SIZE, WF_TRACE_GROUPS), 1u, 1u, 0u);
+}
+
+shared bool wf_last_group;
+
+// Ends the launch; every invocation calls it last, in uniform control flow. The launch's last
+// workgroup to finish (its finished workgroups counted in wf_trace_dispatch[2 l].w, which the
+// host zeroes with the batch's entries) sizes the next launch's dispatch from the slots this one
+// listed and this one's two traces from the rays it queued (where a pass's tail queues few rays,
+// a persistent trace kernel would otherwise start all its workgroups for them): no kernel
+// between a launch and its traces (the atomic-counter
+// pattern of CUDA's threadFenceReduction sample: each workgroup's writes made visible before it
+// counts itself, the counts read with atomics).
+void wf_end_launch(uint launch_word) {
+    uint launch = wf_launch(launch_word);
+    memoryBarrierBuffer();
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) {
+        uint finished = atomicAdd(wf_trace_dispatch[2u * launch].w, 1u);
+        wf_last_group = finished + 1u == gl_NumWorkGroups.x;
+    }
+    barrier();
+    if (wf_last_group && gl_LocalInvocationIndex == 0u) {
+        memoryBarrierBuffer();
+        uint listed = atomicAdd(wf_dispatch[launch + 1u].w, 0u);
+        wf_dispatch[launch + 1u].xyz = uvec3((listed + PT_WG_SIZE - 1u) / PT_WG_SIZE, 1u, 1u);
+        wf_trace_dispatch[2u * launch] = wf_trace_dispatch_for(atomicAdd(wf_counts[2u * launch], 0u));
+        wf_trace_dispatch[2u * launch + 1u] = wf_trace_dispatch_for(atomicAdd(wf_counts[2u * launch + 1u], 0u));
     }
 }
 

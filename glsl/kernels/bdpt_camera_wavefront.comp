@@ -49,7 +49,6 @@ layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; 
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
-layout(std430, binding = BIND_WF_COUNTS) buffer Counts { uint wf_counts[]; };
 layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec4 wf_index[]; };
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
 #define BDPT_JOIN JOIN_LVC
@@ -88,7 +87,8 @@ void add_finite(inout vec3 sum, inout uint bad, vec3 c) {
     }
 }
 
-void main() {
+// One launch's work for this invocation's slot, if it has one.
+void run_slot() {
     // Slot -> (slice, pixel of the camera's window), as bdpt_camera.comp maps its invocations.
     uint tiles = tiled_count(pc.camera.window_size);
     uint samples = max(pc.camera_samples, 1u);
@@ -221,4 +221,9 @@ void main() {
     if (bad > 0u) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], bad);
     }
+}
+
+void main() {
+    run_slot();
+    wf_end_launch(pc.launch);
 }

@@ -47,7 +47,6 @@ layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; 
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
-layout(std430, binding = BIND_WF_COUNTS) buffer Counts { uint wf_counts[]; };
 layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec4 wf_index[]; };
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
 #include "bdpt_light_path.glsl"
@@ -96,7 +95,8 @@ GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
     return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
 }
 
-void main() {
+// One launch's work for this invocation's slot, if it has one.
+void run_slot() {
     uint path;
     if (!wf_slot(pc.launch, pc.light_path_total, path)) {
         return; // past the slots, or not listed
@@ -200,4 +200,9 @@ void main() {
     if (wf_bad > 0u) {
         atomicAdd(render_stats[STAT_NAN_SAMPLES], wf_bad);
     }
+}
+
+void main() {
+    run_slot();
+    wf_end_launch(pc.launch);
 }

@@ -49,8 +49,6 @@ layout(std430, binding = BIND_WF_COUNTS) buffer Counts { uint wf_counts[]; };
 layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec2 wf_index[]; };
 layout(push_constant) uniform Push { PtWavefrontPush wpc; };
 // The persistent trace kernels' ray counters, reset here for this launch's traces.
-layout(std430, binding = BIND_RAY_COUNTER) writeonly buffer ClosestCounter { uint closest_next_ray; };
-layout(std430, binding = BIND_RAY_COUNTER_ANY) writeonly buffer AnyCounter { uint any_next_ray; };
 #define pc wpc.pt
 
 // The light sample's shadow ray of this launch's bounce, if any (add_if_clear).
@@ -69,11 +67,6 @@ GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
 void main() {
     // Slot -> (slice, pixel of the camera's window), as pt.comp maps its invocations.
     uint g = gl_GlobalInvocationID.x;
-    if (g == 0u) {
-        // (Every launch runs invocation 0; the traces run after this kernel.)
-        closest_next_ray = 0u;
-        any_next_ray = 0u;
-    }
     uint tiles = tiled_count(pc.camera.window_size);
     uint slices = max(pc.slices, 1u);
     if (g >= tiles * slices) {

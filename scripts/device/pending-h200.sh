@@ -23,6 +23,73 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s21b)
+  # Session 21, after s21a: each BDPT launch's last workgroup sizes the next launch and its
+  # traces (no sizing kernel), the two traces run without a barrier between them, and the
+  # persistent trace kernels leave their ray counters at 0 themselves (the path tracer's kernel
+  # no longer resets them); against fc53e19's build (.device/bidir-s20g.gz), interleaved, with
+  # the megakernels (`--wavefront off`) in the same run; the same images. Carried as s21a.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2; do
+    for b in .device/bidir-s20g "$B"; do
+      for i in bdpt pt-nee; do
+        echo "== sponza textured $i $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples|trace|wavefront|wf_"
+        echo "== DamagedHelmet $i $(basename "$b")"; $T "$b" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples|trace|wavefront|wf_"
+        echo "== cornell $i wavefront on $(basename "$b")"; $T "$b" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator $i --wavefront on 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  for i in bdpt pt-nee; do
+    echo "== sponza textured $i megakernels"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i --wavefront off 2>&1 | grep -E "Msamples"
+  done
+  for wf in off on; do
+    $T "$B" render $SPB --integrator bdpt --spp 16 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/s-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $HB --integrator bdpt --spp 64 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/h-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $CB --integrator bdpt --spp 64 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/c-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $SPB --integrator pt-nee --spp 16 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/p-$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same image: sponza, helmet, cornell bdpt; sponza pt-nee"; for x in s h c p; do "$B" diff /tmp/$x-on.exr /tmp/$x-off.exr | head -1; done
+  for s in 1 2; do
+    for b in .device/bidir-s20g "$B"; do
+      for i in bdpt pt-nee; do
+        echo "== sponza textured --time 1 $i seed $s $(basename "$b")"; $T "$b" render $SPB --integrator $i --time 1 --seed $s -o /tmp/t.exr 2>&1 | grep -E "spp in"
+      done
+    done
+  done
+  ;;
+s21a)
+  # Session 21: the trace kernels of BDPT's wavefront launches dispatched indirectly, sized by
+  # wf_dispatch.comp from the rays each launch queued (no full persistent launch in a pass's
+  # tail), against fc53e19's build (.device/bidir-s20g.gz), interleaved; the same images.
+  # Carried as s20f with bidir-s20g.gz.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2; do
+    for b in .device/bidir-s20g "$B"; do
+      echo "== sponza textured bdpt $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples|trace|wavefront|wf_"
+      echo "== DamagedHelmet bdpt $(basename "$b")"; $T "$b" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples|trace|wavefront|wf_"
+      echo "== cornell bdpt wavefront on $(basename "$b")"; $T "$b" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator bdpt --wavefront on 2>&1 | grep -E "Msamples"
+    done
+  done
+  for wf in off on; do
+    $T "$B" render $SPB --integrator bdpt --spp 16 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/s-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $HB --integrator bdpt --spp 64 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/h-$wf.exr 2>&1 | grep -E "spp in"
+    $T "$B" render $CB --integrator bdpt --spp 64 --sample-slices 4 --bvh bvh4 --wavefront $wf -o /tmp/c-$wf.exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same image: sponza, helmet, cornell"; for x in s h c; do "$B" diff /tmp/$x-on.exr /tmp/$x-off.exr | head -1; done
+  for s in 1 2; do
+    for b in .device/bidir-s20g "$B"; do
+      echo "== sponza textured --time 1 bdpt seed $s $(basename "$b")"; $T "$b" render $SPB --integrator bdpt --time 1 --seed $s -o /tmp/t.exr 2>&1 | grep -E "spp in"
+    done
+  done
+  ;;
 s20g)
   # Session 20, after s20f: the wavefront path tracer's kernel resets the trace kernels' ray
   # counters itself (no fills), against s20f's build (.device/bidir-s20f.gz), interleaved; the

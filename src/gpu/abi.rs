@@ -85,7 +85,8 @@ gpu_consts! {
     pub const BIND_STATS: u32 = 5;
     pub const BIND_RAYS_OUT: u32 = 6;
     pub const BIND_FLAGS: u32 = 7;
-    /// Persistent trace kernels: the next ray to fetch (one u32, zeroed before each launch).
+    /// Persistent trace kernels: the next ray to fetch and the launch's finished workgroups
+    /// (two u32, left at 0 by each launch's last workgroup).
     pub const BIND_RAY_COUNTER: u32 = 26;
 
     // ---- Bindings: the driver's ray-tracing pipeline (glsl/rt/, vk::DriverTracer) ----------
@@ -345,6 +346,10 @@ gpu_consts! {
     /// Trace kernels: 1 takes the ray count from BIND_RAY_COUNTS[`TracePush::count_index`]
     /// (at most `TracePush::count`), where a kernel before it queued the rays; 0: `count`.
     pub const SPEC_RAY_COUNT_BUFFER: u32 = 60;
+    /// BDPT's wavefront path kernels (wf_active.glsl): the most workgroups each of a launch's
+    /// trace kernels starts, `Tracer::queued_groups` of the pass's slots (a persistent kernel's
+    /// resident workgroups); the default, u32::MAX, bounds nothing.
+    pub const SPEC_WF_TRACE_GROUPS: u32 = 61;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
     /// per slot of a wavefront form, its path between launches (`PtSuspended`, or BDPT's camera
     /// and light passes: `BdptCameraState`, `BdptLightState`).
@@ -388,17 +393,19 @@ gpu_consts! {
     /// BDPT's wavefront passes (bdpt_light_wavefront.comp, bdpt_camera_wavefront.comp): which
     /// slots each launch runs. First the indirect dispatches of a batch's launches, `uvec4`
     /// (groups, 1, 1, slots) for launch l at entry l (WF_DISPATCH_ENTRIES of them; the last
-    /// launch's successor is copied to entry 0 for the next batch), then two halves of slot
+    /// launch's successor is copied to entry 0 for the next batch), then the launches' traces'
+    /// (WF_TRACE_DISPATCH_ENTRIES; both sized by each launch's last workgroup), then two halves of slot
     /// lists: a launch of parity p runs the slots listed in half p and lists in half 1 - p those
     /// that queued a ray, which run next (stream compaction: a launch costs what its live paths
     /// do, not what the pass's slots do).
     pub const BIND_WF_ACTIVE: u32 = 39;
-    /// wf_dispatch.comp (BDPT's wavefront passes) and pt_wavefront.comp: the any-hit trace
-    /// kernel's ray counter (at BIND_RAY_COUNTER the closest-hit one's), both reset there for
-    /// the launch's two traces (without a fill and barrier of their own; `Tracer::ray_counters`).
-    pub const BIND_RAY_COUNTER_ANY: u32 = 49;
     /// Entries of BIND_WF_ACTIVE's indirect dispatches: one per launch of a batch and one more.
     pub const WF_DISPATCH_ENTRIES: u32 = WF_MAX_BATCH + 1;
+    /// Entries of BIND_WF_ACTIVE's indirect dispatches of the trace kernels, after the path
+    /// kernel's: per launch l of a batch, its segments' closest-hit trace at 2 l and its shadow
+    /// rays' any-hit trace at 2 l + 1, sized by the launch's last workgroup from the rays it
+    /// queued, so that a launch of a pass's tail does not start a full persistent launch.
+    pub const WF_TRACE_DISPATCH_ENTRIES: u32 = 2 * WF_MAX_BATCH;
     /// Set in `BdptWavefrontPush::launch`: the pass's first launch, which runs every slot (from
     /// a direct dispatch) and starts its path; the launch in the batch is in the other bits.
     pub const WF_ALL_SLOTS: u32 = 0x8000_0000;
@@ -960,15 +967,6 @@ gpu_structs! {
         pub slices: u32,
         pub pad0: u32,
         pub pad1: u32,
-    }
-
-    /// Push constants of `wf_dispatch.comp`: the entry of BIND_WF_ACTIVE's indirect dispatches
-    /// whose group count it sets from its slot count.
-    pub struct WfDispatchPush (16 bytes) {
-        pub entry: u32,
-        pub pad0: u32,
-        pub pad1: u32,
-        pub pad2: u32,
     }
 
     /// Push constants of `tonemap.comp`: the film's estimate (as `Film::resolve`) scaled by

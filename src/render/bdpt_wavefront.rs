@@ -87,15 +87,17 @@ impl WavefrontPasses {
                 join.name()
             ))
         })?;
-        let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, specs)?;
-        let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, specs)?;
         let what = ("BDPT's wavefront passes", "bdpt_wavefront");
         let bytes = slot_bytes(shadow);
+        let queues = Queues::new(ctx, scene, what, slots, shadow, bytes, true)?;
+        let specs = [specs, &[queues.trace_groups_spec()]].concat();
+        let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, &specs)?;
+        let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, &specs)?;
         let buffer = |name: &str, b: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, b, bytes);
         Ok(WavefrontPasses {
             light,
             camera,
-            queues: Queues::new(ctx, scene, what, slots, shadow, bytes, true)?,
+            queues,
             state: buffer("state", STATE_BYTES)?,
             // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
             contrib: buffer("contrib", 2 * 16 * shadow as u64)?,

@@ -5,9 +5,9 @@
 //! how many rays each launch queued.
 
 use super::{gpu_scene::GpuScene, RenderError};
-use crate::gpu::{abi, kernels};
+use crate::gpu::abi;
 use crate::trace::{TraceOptions, Tracer};
-use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result};
+use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
 
 /// Dynamic fetch's refill (`TraceOptions::refill_lanes`) of the wavefront integrators' 4-wide
 /// trace kernels on GPUs with subgroups of 32 lanes or more.
@@ -63,11 +63,11 @@ pub const fn queue_bytes(shadow: u32) -> u64 {
 /// Bytes per slot of the lists of live slots (`Queues::new` with `live`): its places in both.
 pub const LIVE_SLOT_BYTES: u64 = 2 * 4;
 
-/// The lists of live slots: the launches' indirect dispatches and the slots each runs
-/// (BIND_WF_ACTIVE; glsl/common/wf_active.glsl), and the kernel that sizes each dispatch.
+/// The lists of live slots: the launches' indirect dispatches (the path kernel's and its two
+/// traces', which each launch's last workgroup sizes) and the slots each runs (BIND_WF_ACTIVE;
+/// glsl/common/wf_active.glsl).
 struct LiveSlots {
     active: Buffer,
-    dispatch: Kernel,
 }
 
 /// Launches of a batch: `n`, at least 4 and at most `WF_MAX_BATCH`, rounded up to an even
@@ -80,8 +80,15 @@ pub fn even_batch(n: u32) -> u32 {
     (n.clamp(4, abi::WF_MAX_BATCH) + 1) & !1
 }
 
-/// Bytes of BIND_WF_ACTIVE's indirect dispatches, before its slot lists.
-const DISPATCH_BYTES: u64 = abi::WF_DISPATCH_ENTRIES as u64 * 16;
+/// Bytes of BIND_WF_ACTIVE's indirect dispatches (the path kernel's, then the trace kernels'),
+/// before its slot lists.
+const DISPATCH_BYTES: u64 = (abi::WF_DISPATCH_ENTRIES + abi::WF_TRACE_DISPATCH_ENTRIES) as u64 * 16;
+
+/// Byte offset in BIND_WF_ACTIVE of launch `l`'s closest-hit (`any_hit` false) or any-hit
+/// trace's indirect dispatch.
+fn trace_dispatch_offset(l: u32, any_hit: bool) -> u64 {
+    (abi::WF_DISPATCH_ENTRIES + 2 * l + any_hit as u32) as u64 * 16
+}
 
 /// A buffer of `bytes` per slot for `slots` slots, named `name`; where it does not fit, an
 /// error that says how much the `what`'s slots take in all (`slot_bytes` each) and what to do.
@@ -141,7 +148,6 @@ impl Queues {
                             ))
                         },
                     )?,
-                    dispatch: ctx.create_kernel(&kernels::WF_DISPATCH, &[])?,
                 }),
                 false => None,
             },
@@ -150,13 +156,18 @@ impl Queues {
         })
     }
 
-    /// The kernels besides the path kernel: the trace kernels (closest hit, any hit) and, with
-    /// the lists of live slots, the one that sizes each launch's dispatch.
+    /// The kernels besides the path kernel: the trace kernels (closest hit, any hit).
     pub fn kernels(&self) -> Vec<&Kernel> {
-        let [closest, any] = self.tracer.trace_kernels();
-        let mut k = vec![closest, any];
-        k.extend(self.live.as_ref().map(|l| &l.dispatch));
-        k
+        self.tracer.trace_kernels().to_vec()
+    }
+
+    /// With the lists of live slots: the path kernel's specialisation constant that bounds the
+    /// workgroups of the traces it sizes (SPEC_WF_TRACE_GROUPS): what a direct launch over the
+    /// most rays a launch may queue takes.
+    pub fn trace_groups_spec(&self) -> Spec {
+        let t = &self.tracer;
+        let most = t.queued_groups(self.slots).max(t.queued_groups(self.slots.saturating_mul(self.shadow)));
+        Spec { id: abi::SPEC_WF_TRACE_GROUPS, value: most }
     }
 
     /// The queues' bindings for the path kernel.
@@ -169,9 +180,6 @@ impl Queues {
             Bind::buffer(abi::BIND_WF_COUNTS, &self.counts),
         ];
         b.extend(self.live.as_ref().map(|l| Bind::buffer(abi::BIND_WF_ACTIVE, &l.active)));
-        // The trace kernels' ray counters, which the path kernel resets without the lists.
-        let [closest, any] = self.tracer.ray_counters();
-        b.extend([Bind::buffer(abi::BIND_RAY_COUNTER, closest), Bind::buffer(abi::BIND_RAY_COUNTER_ANY, any)]);
         b
     }
 
@@ -188,10 +196,10 @@ impl Queues {
 
     /// Records `launches` launches over `slots` slots: `launch(rec, word)` records the path
     /// kernel's launch (`dispatch_path`; `word` is the launch in the batch, with WF_ALL_SLOTS
-    /// for a pass's first where `start`), then the next launch's dispatch is sized from the
-    /// slots it listed and the segments and shadow rays it queued are traced; the last launch's
-    /// dispatch moves to entry 0 for the next batch, and the ray counts are read back at the
-    /// end (`first_idle_launch`).
+    /// for a pass's first where `start`; with the lists of live slots its last workgroup sizes
+    /// the next launch's dispatch and its traces'), then the segments and shadow rays it queued
+    /// are traced; the last launch's dispatch moves to entry 0 for the next batch, and the ray
+    /// counts are read back at the end (`first_idle_launch`).
     pub fn record_batch(
         &self,
         rec: &mut Recorder,
@@ -205,27 +213,22 @@ impl Queues {
         assert!(launches <= abi::WF_MAX_BATCH && launches % 2 == 0, "a batch of {launches} launches (even_batch)");
         rec.fill_buffer(&self.counts, 0);
         if let Some(live) = &self.live {
+            // The launches' dispatches (entry 0 holds the first's) and their traces'.
             rec.fill_buffer_range(&live.active, 16, launches as u64 * 16, 0);
+            rec.fill_buffer_range(&live.active, trace_dispatch_offset(0, false), 2 * launches as u64 * 16, 0);
         }
+        let shadow_slots = slots * self.shadow;
+        let (t, stats) = (&self.tracer, &self.trace_stats);
         for l in 0..launches {
             launch(rec, if start && l == 0 { l | abi::WF_ALL_SLOTS } else { l })?;
-            if let Some(live) = &self.live {
-                // The next launch's dispatch, and the traces' ray counters reset.
-                let entry = abi::WfDispatchPush { entry: l + 1, pad0: 0, pad1: 0, pad2: 0 };
-                let [closest, any] = self.tracer.ray_counters();
-                let bind = [
-                    Bind::buffer(abi::BIND_WF_ACTIVE, &live.active),
-                    Bind::buffer(abi::BIND_RAY_COUNTER, closest),
-                    Bind::buffer(abi::BIND_RAY_COUNTER_ANY, any),
-                ];
-                rec.dispatch(&live.dispatch, &bind, bytemuck::bytes_of(&entry), [1, 1, 1])?;
-            }
             let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
-            // The path kernel (pt) or the dispatch sizing (BDPT) has reset the ray counters.
-            let (t, stats) = (&self.tracer, &self.trace_stats);
-            t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, false)?;
-            let shadow_slots = slots * self.shadow;
-            t.record_trace_queued(rec, geometry, &self.shadow_rays, &self.shadow_hits, stats, shadow_slots, shadow, true, false)?;
+            // With the lists, the path kernel has sized the traces. The two traces share no ray, hit or counter: the GPU may run them at once.
+            let sized = |any_hit| self.live.as_ref().map(|live| (&live.active, trace_dispatch_offset(l, any_hit)));
+            rec.concurrent(|rec| {
+                t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, sized(false))?;
+                let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
+                t.record_trace_queued(rec, geometry, rays, hits, stats, shadow_slots, shadow, true, sized(true))
+            })?;
         }
         if let Some(live) = &self.live {
             rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);

@@ -142,6 +142,17 @@ pub fn refill_rays_per_batch(refill_lanes: u32, subgroup_size: u32) -> u32 {
     (abi::TRACE_WG_SIZE / lanes) * refill_lanes.clamp(1, lanes)
 }
 
+/// A persistent trace kernel's ray counter (`RayCounter` in glsl/common/trace_kernel.glsl: the
+/// next ray, the finished workgroups), zeroed.
+fn zeroed(ctx: &Context, name: &str) -> Result<Buffer> {
+    let counter = ctx.create_buffer(name, 8, Memory::Device)?;
+    ctx.submit(name, |rec| {
+        rec.fill_buffer(&counter, 0);
+        Ok(())
+    })?;
+    Ok(counter)
+}
+
 /// Trace and ray-generation kernels specialised for one triangle test.
 pub struct Tracer {
     closest: Kernel,
@@ -155,8 +166,9 @@ pub struct Tracer {
     /// Persistent kernels: workgroups launched.
     persistent: Option<u32>,
     /// Their ray counters (bound to every trace kernel, which declares one): the closest-hit
-    /// kernels' and the any-hit kernels', so that both may be reset before either runs
-    /// (`ray_counters`).
+    /// kernel's and the any-hit kernel's, so that the two may run at once. Zeroed when made;
+    /// each persistent launch's last workgroup leaves its counter at 0 again
+    /// (glsl/common/trace_kernel.glsl), so a launch needs no fill before it.
     counter: Buffer,
     counter_any: Buffer,
     /// Most ray batches one subgroup of a persistent kernel fetches.
@@ -256,8 +268,8 @@ impl Tracer {
             scan: Scan::new(ctx)?,
             opts: *opts,
             persistent,
-            counter: ctx.create_buffer("trace.ray_counter", 4, Memory::Device)?,
-            counter_any: ctx.create_buffer("trace.ray_counter_any", 4, Memory::Device)?,
+            counter: zeroed(ctx, "trace.ray_counter")?,
+            counter_any: zeroed(ctx, "trace.ray_counter_any")?,
             max_batches: persistent_batch_cap(ctx.info()),
             subgroup_size: ctx.info().subgroup_size,
         })
@@ -296,19 +308,15 @@ impl Tracer {
         count: u32,
         any_hit: bool,
     ) -> Result<()> {
-        self.record_trace_queued(rec, geometry, rays, hits, stats, count, None, any_hit, true)
-    }
-
-    /// The persistent kernels' ray counters, closest-hit and any-hit (each must be 0 when its
-    /// kernel starts: `record_trace_queued` with `reset` false leaves that to the caller).
-    pub fn ray_counters(&self) -> [&Buffer; 2] {
-        [&self.counter, &self.counter_any]
+        self.record_trace_queued(rec, geometry, rays, hits, stats, count, None, any_hit, None)
     }
 
     /// `record_trace` of rays a kernel recorded before queued: with `counts` = (buffer, i) the
-    /// first buffer[i] of them, at most `count` (a tracer with `count_buffer`). `reset`: fill
-    /// the persistent kernel's ray counter with 0 first (a transfer and a barrier), else the
-    /// caller has (`ray_counters`).
+    /// first buffer[i] of them, at most `count` (a tracer with `count_buffer`). `indirect`: the
+    /// workgroups come from that indirect dispatch
+    /// (`VkDispatchIndirectCommand` at the byte offset), which a kernel before sized for the
+    /// queued rays: one workgroup per TRACE_WG_SIZE of them, at most `queued_groups(count)`
+    /// (wf_active.glsl, wf_end_launch).
     #[allow(clippy::too_many_arguments)]
     pub fn record_trace_queued(
         &self,
@@ -320,7 +328,7 @@ impl Tracer {
         count: u32,
         counts: Option<(&Buffer, u32)>,
         any_hit: bool,
-        reset: bool,
+        indirect: Option<(&Buffer, u64)>,
     ) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
         let counter = if any_hit { &self.counter_any } else { &self.counter };
@@ -331,18 +339,44 @@ impl Tracer {
         binds.push(Bind::buffer(abi::BIND_RAY_COUNTER, counter));
         // (Read only with SPEC_RAY_COUNT_BUFFER; the counter stands in elsewhere.)
         binds.push(Bind::buffer(abi::BIND_RAY_COUNTS, counts.map_or(counter, |c| c.0)));
-        let mut groups = k.groups_for(count.div_ceil(self.opts.rays_per_invocation.max(1)));
-        if let Some(persistent_groups) = self.persistent {
-            if reset {
-                rec.fill_buffer(counter, 0);
+        let groups;
+        (groups, push.max_batches) = self.launch(count);
+        match indirect {
+            Some((buffer, offset)) => {
+                assert!(self.sized_launch_covers(), "an indirect trace whose groups for the queued rays may not cover them");
+                rec.dispatch_indirect(k, &binds, bytemuck::bytes_of(&push), buffer, offset)
             }
-            let rays_per_batch = match self.opts.refill_lanes {
-                0 => abi::TRACE_WG_SIZE,
-                n => refill_rays_per_batch(n, self.subgroup_size),
-            };
-            (groups, push.max_batches) = persistent_launch(count, persistent_groups, self.max_batches, rays_per_batch);
+            None => rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [groups, 1, 1]),
         }
-        rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [groups, 1, 1])
+    }
+
+    /// Workgroups and `TracePush::max_batches` of a direct launch over `count` rays.
+    fn launch(&self, count: u32) -> (u32, u32) {
+        match self.persistent {
+            Some(persistent_groups) => persistent_launch(count, persistent_groups, self.max_batches, self.rays_per_batch()),
+            None => (self.closest.groups_for(count.div_ceil(self.opts.rays_per_invocation.max(1))), 0),
+        }
+    }
+
+    /// The fewest rays a persistent workgroup takes in one round of fetches.
+    fn rays_per_batch(&self) -> u32 {
+        match self.opts.refill_lanes {
+            0 => abi::TRACE_WG_SIZE,
+            n => refill_rays_per_batch(n, self.subgroup_size),
+        }
+    }
+
+    /// The workgroups `record_trace_queued` launches over `count` rays without `indirect`: the
+    /// most an indirect dispatch of it may ask for.
+    pub fn queued_groups(&self, count: u32) -> u32 {
+        self.launch(count).0
+    }
+
+    /// Whether an indirect launch of one workgroup per TRACE_WG_SIZE queued rays (at most
+    /// `queued_groups`) traces every one of them (a persistent kernel's
+    /// subgroups may fetch only `max_batches` times: llvmpipe's loop limiter).
+    fn sized_launch_covers(&self) -> bool {
+        self.persistent.is_none() || self.rays_per_batch() as u64 * self.max_batches as u64 >= abi::TRACE_WG_SIZE as u64
     }
 
     /// Traces host rays and returns their hits (for tests and tools).

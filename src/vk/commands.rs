@@ -42,18 +42,50 @@ pub struct Recorder<'a> {
     profile: Option<RecordingProfile>,
     /// Commands recorded after the profile's timestamps ran out.
     untimed: u64,
+    /// Inside `concurrent`: the names of the commands recorded so far (no barriers yet).
+    group: Option<Vec<String>>,
 }
 
 impl<'a> Recorder<'a> {
     /// With profiling on, writes a timestamp that closes the command `name` just recorded
     /// (after its barrier, so it brackets that command alone).
-    pub(super) fn mark(&mut self, name: &str) {
+    pub(super) fn mark(&mut self, name: &str, commands: u64) {
         let Some(p) = &mut self.profile else { return };
-        match p.next(name) {
+        match p.next(name, commands) {
             // SAFETY: recording state; the profile's pool was reset at the start of this buffer.
             Some(i) => unsafe { self.shared.device.cmd_write_timestamp(self.cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, p.pool, i) },
-            None => self.untimed += 1,
+            None => self.untimed += commands,
         }
+    }
+
+    /// After a command `name`: a barrier and its timestamp, or inside `concurrent` neither yet.
+    fn end_command(&mut self, name: &str) {
+        match &mut self.group {
+            Some(names) => names.push(name.to_string()),
+            None => {
+                self.barrier();
+                self.mark(name, 1);
+            }
+        }
+    }
+
+    /// Records `f`'s commands without barriers between them, so that the GPU may run them at
+    /// once (one kernel's tail beside the next one's start), then one barrier after them all.
+    /// The commands must not depend on each other: none may read or write what another one
+    /// writes. Profiled as one interval, named after its commands (`a+b`, or `a` where all are
+    /// `a`) and counting each. Groups do not nest.
+    pub fn concurrent<T>(&mut self, f: impl FnOnce(&mut Self) -> Result<T>) -> Result<T> {
+        assert!(self.group.is_none(), "Recorder::concurrent does not nest");
+        self.group = Some(Vec::new());
+        let out = f(self);
+        let mut names = self.group.take().unwrap_or_default();
+        if !names.is_empty() {
+            self.barrier();
+            let n = names.len() as u64;
+            names.dedup();
+            self.mark(&names.join("+"), n);
+        }
+        out
     }
 
     fn barrier(&mut self) {
@@ -79,8 +111,7 @@ impl<'a> Recorder<'a> {
         self.bind(kernel, binds, push)?;
         // SAFETY: recording state; `bind` bound the kernel's pipeline and descriptors.
         unsafe { self.shared.device.cmd_dispatch(self.cmd, groups[0], groups[1], groups[2]) };
-        self.barrier();
-        self.mark(kernel.name());
+        self.end_command(kernel.name());
         Ok(())
     }
 
@@ -96,8 +127,7 @@ impl<'a> Recorder<'a> {
         // SAFETY: recording state; `bind` bound the kernel's pipeline and descriptors; `args`
         // has INDIRECT_BUFFER usage and holds the arguments at `offset` (checked above).
         unsafe { self.shared.device.cmd_dispatch_indirect(self.cmd, args.raw, offset) };
-        self.barrier();
-        self.mark(kernel.name());
+        self.end_command(kernel.name());
         Ok(())
     }
 
@@ -182,24 +212,21 @@ impl<'a> Recorder<'a> {
         let region = [vk::BufferCopy { src_offset, dst_offset, size: bytes }];
         // SAFETY: recording state, live buffers.
         unsafe { self.shared.device.cmd_copy_buffer(self.cmd, src.raw, dst.raw, &region) };
-        self.barrier();
-        self.mark("copy");
+        self.end_command("copy");
     }
 
     /// Fills a whole buffer with a repeated u32.
     pub fn fill_buffer(&mut self, buffer: &Buffer, value: u32) {
         // SAFETY: recording state, live buffer.
         unsafe { self.shared.device.cmd_fill_buffer(self.cmd, buffer.raw, 0, vk::WHOLE_SIZE, value) };
-        self.barrier();
-        self.mark("fill");
+        self.end_command("fill");
     }
 
     /// Fills `bytes` bytes of `buffer` from byte `offset` with a repeated u32.
     pub fn fill_buffer_range(&mut self, buffer: &Buffer, offset: u64, bytes: u64, value: u32) {
         // SAFETY: recording state, live buffer.
         unsafe { self.shared.device.cmd_fill_buffer(self.cmd, buffer.raw, offset, bytes, value) };
-        self.barrier();
-        self.mark("fill");
+        self.end_command("fill");
     }
 
     /// Moves `image` from layout `old` to `new`, ordering all compute and transfer work
@@ -353,7 +380,7 @@ impl Context {
             return Err(VkError::Vk { what: format!("begin {what}"), result });
         }
         let profile = s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_ref().map(|p| p.begin(&s.device, cmd));
-        let mut rec = Recorder { shared: s, cmd, profile, untimed: 0 };
+        let mut rec = Recorder { shared: s, cmd, profile, untimed: 0, group: None };
         let recorded = record(&mut rec);
         let (profile, untimed) = (rec.profile.take(), rec.untimed);
         // SAFETY: recording state.

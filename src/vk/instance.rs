@@ -214,6 +214,10 @@ pub struct DeviceInfo {
     pub subgroup_in_compute: bool,
     pub memory_heaps: Vec<MemoryHeap>,
     pub max_storage_buffer_range: u32,
+    /// The most descriptors one kernel may bind: its set is pushed (VK_KHR_push_descriptor's
+    /// `maxPushDescriptors`), and all its storage buffers are in it
+    /// (`maxPerStageDescriptorStorageBuffers`); 32 on lavapipe and NVIDIA's driver.
+    pub max_kernel_descriptors: u32,
     pub max_shared_memory: u32,
     pub max_workgroup_invocations: u32,
     pub timestamp_period_ns: f32,
@@ -293,6 +297,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
         let mut size_control = vk::PhysicalDeviceSubgroupSizeControlProperties::default();
         let mut sm = vk::PhysicalDeviceShaderSMBuiltinsPropertiesNV::default();
+        let mut push = vk::PhysicalDevicePushDescriptorPropertiesKHR::default();
         let exts = instance.enumerate_device_extension_properties(pd).ctx(|| "vkEnumerateDeviceExtensionProperties".into())?;
         let has_ext = |n: &CStr| exts.iter().any(|e| e.extension_name_as_c_str() == Ok(n));
         {
@@ -306,6 +311,9 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             // Only queried (never enabled): how many SMs, and warps each keeps resident.
             if has_ext(ash::nv::shader_sm_builtins::NAME) {
                 props2 = props2.push_next(&mut sm);
+            }
+            if has_ext(ash::khr::push_descriptor::NAME) {
+                props2 = props2.push_next(&mut push);
             }
             instance.get_physical_device_properties2(pd, &mut props2);
         }
@@ -374,6 +382,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
                 .map(|h| MemoryHeap { bytes: h.size, device_local: h.flags.contains(vk::MemoryHeapFlags::DEVICE_LOCAL) })
                 .collect(),
             max_storage_buffer_range: base.limits.max_storage_buffer_range,
+            max_kernel_descriptors: push.max_push_descriptors.min(base.limits.max_per_stage_descriptor_storage_buffers),
             max_shared_memory: base.limits.max_compute_shared_memory_size,
             max_workgroup_invocations: base.limits.max_compute_work_group_invocations,
             timestamp_period_ns: base.limits.timestamp_period,

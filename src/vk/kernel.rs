@@ -177,6 +177,13 @@ impl Context {
         let push_size = module.push_constant_size();
         let local_size = module.local_size().unwrap_or([1, 1, 1]);
 
+        let descriptors: u32 = bindings.iter().map(|b| b.count).sum();
+        if descriptors > s.info.max_kernel_descriptors {
+            return Err(kerr(format!(
+                "binds {descriptors} descriptors; {} binds at most {} in one kernel (maxPushDescriptors, maxPerStageDescriptorStorageBuffers): the kernel must use fewer buffers",
+                s.info.name, s.info.max_kernel_descriptors
+            )));
+        }
         let layout_bindings: Vec<_> = bindings
             .iter()
             .map(|b| {

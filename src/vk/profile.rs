@@ -37,18 +37,20 @@ pub(crate) struct Profiler {
 /// What a recording with profiling on writes: the pool and the name of each timestamp's dispatch.
 pub(crate) struct RecordingProfile {
     pub pool: vk::QueryPool,
-    pub names: Vec<String>,
+    /// Each timestamp's interval: what ran in it, and how many commands.
+    pub names: Vec<(String, u64)>,
     /// The profiler's generation when recorded.
     pub generation: u64,
 }
 
 impl RecordingProfile {
-    /// The next timestamp's index for a dispatch of `name`, or None when the pool is full.
-    pub fn next(&mut self, name: &str) -> Option<u32> {
+    /// The next timestamp's index for `commands` dispatches of `name`, or None when the pool is
+    /// full.
+    pub fn next(&mut self, name: &str, commands: u64) -> Option<u32> {
         if self.names.len() as u32 + 1 >= QUERIES {
             return None;
         }
-        self.names.push(name.to_string());
+        self.names.push((name.to_string(), commands));
         Some(self.names.len() as u32)
     }
 }
@@ -84,11 +86,11 @@ impl Profiler {
         }
         .ctx(|| "read profiling timestamps".into())?;
         let (bits, period) = (shared.info.timestamp_valid_bits, shared.info.timestamp_period_ns as f64);
-        for (i, name) in rec.names.into_iter().enumerate() {
+        for (i, (name, commands)) in rec.names.into_iter().enumerate() {
             let dt = super::commands::ticks_between(ticks[i], ticks[i + 1], bits);
             let e = self.totals.entry(name).or_insert((0.0, 0));
             e.0 += dt as f64 * period;
-            e.1 += 1;
+            e.1 += commands;
         }
         Ok(())
     }

@@ -510,7 +510,7 @@ impl Recorder<'_> {
             }
             d.cmd_pipeline_barrier(self.cmd, trace, compute, vk::DependencyFlags::empty(), &after, &[], &[]);
         }
-        self.mark("rt_trace");
+        self.mark("rt_trace", 1);
         Ok(())
     }
 }
