@@ -48,7 +48,6 @@ layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
 layout(std430, binding = BIND_WF_COUNTS) buffer Counts { uint wf_counts[]; };
 layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec2 wf_index[]; };
 layout(push_constant) uniform Push { PtWavefrontPush wpc; };
-// The persistent trace kernels' ray counters, reset here for this launch's traces.
 #define pc wpc.pt
 
 // The light sample's shadow ray of this launch's bounce, if any (add_if_clear).

@@ -10,16 +10,20 @@ use crate::trace::{TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
 
 /// Dynamic fetch's refill (`TraceOptions::refill_lanes`) of the wavefront integrators' 4-wide
-/// trace kernels on GPUs with subgroups of 32 lanes or more.
-const REFILL_LANES: u32 = 28;
+/// trace kernels on GPUs with subgroups of 32 lanes or more. NVIDIA H200, ms per run with a
+/// launch's two traces running at once (session 21, measured 12 / 16 / 20 / 24 / 28 / 32):
+/// textured Sponza pt-nee 55.1 / **54.7** / 54.7 / 54.8 / 55.4 / 56.9, bdpt 72.3 / **72.0** /
+/// 72.3 / 72.7 / 73.2 / 74.5; DamagedHelmet bdpt 170.0 / **170.1** / 170.8 / - / 172.2 / -
+/// (docs/results.md). `bench traversal`'s secondary rays alone prefer 28.
+const REFILL_LANES: u32 = 16;
 
 /// How the trace kernels of the wavefront integrators run: over the scene's BVH (on GPUs the
 /// 4-wide one, `wavefront_bvh_layout`) with the lockstep loops, the ray count read from the
 /// queue's counter; over the 4-wide BVH on GPUs (`on_cpu` false, `subgroup_size` 32 or more)
-/// as persistent threads with dynamic fetch, refilled at 28 lanes as for `bench traversal`'s
-/// secondary rays. NVIDIA H200, ms per run against one invocation per ray: textured Sponza
-/// pt-nee 58.2 against 60.3, pt 44.0 against 45.9, DamagedHelmet pt-nee 25.1 against 24.6
-/// (docs/results.md, "A wavefront path tracer"). `alpha`: where the scene has alpha-tested or
+/// as persistent threads with dynamic fetch, refilled at 16 lanes (`REFILL_LANES`). NVIDIA
+/// H200, ms per run against one invocation per ray (session 18, refilled at 28): textured
+/// Sponza pt-nee 58.2 against 60.3, pt 44.0 against 45.9, DamagedHelmet pt-nee 25.1 against
+/// 24.6 (docs/results.md, "A wavefront path tracer"). `alpha`: where the scene has alpha-tested or
 /// blended triangles (trace_alpha*.comp), each ray carrying its path's stochastic-opacity seed.
 pub fn trace_options(scene: &GpuScene, on_cpu: bool, subgroup_size: u32, alpha: bool) -> TraceOptions {
     let mut opts = TraceOptions::new(scene.bvh.tri_test);
@@ -217,24 +221,27 @@ impl Queues {
             rec.fill_buffer_range(&live.active, 16, launches as u64 * 16, 0);
             rec.fill_buffer_range(&live.active, trace_dispatch_offset(0, false), 2 * launches as u64 * 16, 0);
         }
-        let shadow_slots = slots * self.shadow;
-        let (t, stats) = (&self.tracer, &self.trace_stats);
         for l in 0..launches {
             launch(rec, if start && l == 0 { l | abi::WF_ALL_SLOTS } else { l })?;
-            let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
-            // With the lists, the path kernel has sized the traces. The two traces share no ray, hit or counter: the GPU may run them at once.
-            let sized = |any_hit| self.live.as_ref().map(|live| (&live.active, trace_dispatch_offset(l, any_hit)));
-            rec.concurrent(|rec| {
-                t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, sized(false))?;
-                let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
-                t.record_trace_queued(rec, geometry, rays, hits, stats, shadow_slots, shadow, true, sized(true))
-            })?;
+            rec.concurrent(|rec| self.record_traces(rec, geometry, slots, l))?;
         }
         if let Some(live) = &self.live {
             rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);
         }
         rec.copy_buffer(&self.counts, &self.counts_read, self.counts.size());
         Ok(())
+    }
+
+    /// Records the traces of launch `l` of a batch over `slots` slots: its segments' and its
+    /// shadow rays'. With the lists, the path kernel has sized them. The two share no ray, hit
+    /// or counter: inside `Recorder::concurrent` the GPU may run them at once.
+    fn record_traces(&self, rec: &mut Recorder, geometry: &[Bind], slots: u32, l: u32) -> Result<()> {
+        let (t, stats) = (&self.tracer, &self.trace_stats);
+        let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
+        let sized = |any_hit| self.live.as_ref().map(|live| (&live.active, trace_dispatch_offset(l, any_hit)));
+        t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, sized(false))?;
+        let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
+        t.record_trace_queued(rec, geometry, rays, hits, stats, slots * self.shadow, shadow, true, sized(true))
     }
 
     /// After a batch of `launches`: the first launch that queued no ray (the pass is over after
