@@ -36,6 +36,25 @@ fn every_kernel_reflects() {
     assert_eq!(reduce.local_size(), Some([abi::SCAN_WG_SIZE, 1, 1]));
 }
 
+/// Every kernel's descriptors fit one pushed set on every device bidir runs on: a device with
+/// VK_KHR_push_descriptor pushes at least 32 (its `maxPushDescriptors`; lavapipe and NVIDIA's
+/// driver push exactly 32, and `maxPerStageDescriptorStorageBuffers` is also 32 on lavapipe).
+/// A kernel past it is refused when created (`DeviceInfo::max_kernel_descriptors`); lavapipe
+/// crashed on one before that check (session 21, a BDPT wavefront kernel at 33).
+#[test]
+fn every_kernel_fits_the_push_descriptor_minimum() {
+    const MIN_PUSH_DESCRIPTORS: u32 = 32;
+    let mut most = (0, "");
+    // (glsl/tests/ holds layout probes that are reflected, never made into pipelines.)
+    for k in kernels::ALL.iter().filter(|k| !k.file.starts_with("glsl/tests/")) {
+        let m = Module::parse(&k.spirv_words()).unwrap();
+        let n: u32 = m.bindings().unwrap().iter().map(|b| b.count).sum();
+        assert!(n <= MIN_PUSH_DESCRIPTORS, "{} binds {n} descriptors, more than the {MIN_PUSH_DESCRIPTORS} every device pushes", k.file);
+        most = most.max((n, k.file));
+    }
+    eprintln!("most descriptors in one kernel: {} ({})", most.0, most.1);
+}
+
 #[test]
 fn generated_header_carries_every_constant() {
     let h = abi::header_glsl();
