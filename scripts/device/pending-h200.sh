@@ -23,6 +23,26 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s21g)
+  # Session 21, the final build: the wavefront forms against the megakernels where the
+  # megakernels are the default (Cornell box, caustic scene, rough Cornell), interleaved; the
+  # driver's compile statistics of the textured Sponza's kernels. Carried as s21c.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 90"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  RC="assets/scenes/rough-cornell/rough-cornell.obj"
+  for r in 1 2; do
+    for wf in off on; do
+      for i in bdpt pt-nee; do
+        echo "== cornell $i wavefront $wf"; $T "$B" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator $i --wavefront $wf 2>&1 | grep -E "Msamples"
+        echo "== caustic $i wavefront $wf"; $T "$B" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator $i --wavefront $wf 2>&1 | grep -E "Msamples"
+        echo "== rough cornell $i wavefront $wf"; $T "$B" bench render $RC $CB --spp 256 --warmup 1 --runs 3 --integrator $i --wavefront $wf 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  echo "== kernel statistics, textured Sponza"; $T "$B" info --kernels $SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 2>&1 | grep -E "^(pt-nee|bdpt:lvc=1) " | grep -iE "wavefront|trace" | sed -E 's/; (Binary|Shader|Stack|Local)[^;]*//g' | head -20
+  ;;
 s21f)
   # Session 21, the final build (refill 16 in the wavefront integrators' trace kernels)
   # against fc53e19's build (.device/bidir-s20g.gz), interleaved: the integrators, the

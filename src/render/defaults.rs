@@ -131,10 +131,13 @@ pub(super) fn resolve_shadow_queue(
 /// glass (102 against 108); CPU devices (llvmpipe: 3-4x slower, its launches' fixed costs).
 ///
 /// The same for BDPT's passes (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3), ms per
-/// run: textured Sponza 80.3 against 123.1 (640 x 360, 64 spp), DamagedHelmet 215 against
-/// 401.5 (384², 256 spp); the Cornell box (227 against 175 ms per 1024 spp) and the caustic
-/// scene (85 against 66) keep the megakernels (docs/results.md, "BDPT's light pass as a
-/// wavefront").
+/// run (session 21): textured Sponza 72.4 against 123.2 (640 x 360, 64 spp), DamagedHelmet 171
+/// against 401.5 (384², 256 spp), the rough Cornell box 77.6 against 153.1 (256², 256 spp);
+/// the Cornell box (185 against 175 ms per 1024 spp) keeps the megakernels, and so does the
+/// caustic scene's smooth glass: its GPU time favours the wavefront passes (54.6 against 66.0
+/// ms per 256 spp at 256²) but not its wall time (70.3-70.9 against 69.2-69.9 ms: each launch
+/// batch waits on the host), which `--time` renders go by (docs/results.md, "Launches of
+/// three dispatches").
 pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> bool {
     let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
     let rich = features.glossy || features.textures;
