@@ -365,10 +365,19 @@ impl Context {
     {
         let s = &*self.shared;
         let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
-        let alloc =
-            vk::CommandBufferAllocateInfo::default().command_pool(*pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
-        // SAFETY: the pool is externally synchronised by its mutex, held through recording.
-        let cmd = unsafe { s.device.allocate_command_buffers(&alloc) }.ctx(|| format!("allocate command buffer for {what}"))?[0];
+        let spare = s.spare.lock().unwrap_or_else(|e| e.into_inner()).commands.pop();
+        let cmd = match spare {
+            // Reset when begun (the pool has RESET_COMMAND_BUFFER); its submission has finished.
+            Some(cmd) => cmd,
+            None => {
+                let alloc = vk::CommandBufferAllocateInfo::default()
+                    .command_pool(*pool)
+                    .level(vk::CommandBufferLevel::PRIMARY)
+                    .command_buffer_count(1);
+                // SAFETY: the pool is externally synchronised by its mutex, held through recording.
+                unsafe { s.device.allocate_command_buffers(&alloc) }.ctx(|| format!("allocate command buffer for {what}"))?[0]
+            }
+        };
         s.name(cmd, what);
         // SAFETY: the pool mutex is held; the buffer was never submitted.
         let free = |cmd| unsafe { s.device.free_command_buffers(*pool, &[cmd]) };
@@ -417,9 +426,7 @@ impl Context {
                 });
             }
         }
-        // SAFETY: live device.
-        let fence = unsafe { s.device.create_fence(&vk::FenceCreateInfo::default(), None) }.ctx(|| format!("fence for {what}"))?;
-        s.name(fence, &format!("{what}.fence"));
+        let fence = s.take_fence().ctx(|| format!("fence for {what}"))?;
         let cmds = [r.cmd];
         let wait_semaphores: Vec<vk::Semaphore> = wait.iter().map(|w| w.0).collect();
         let wait_stages: Vec<vk::PipelineStageFlags> = wait.iter().map(|w| w.1).collect();
@@ -433,8 +440,8 @@ impl Context {
         let submitted = unsafe { s.device.queue_submit(*queue, &submit, fence) };
         drop(queue);
         if let Err(result) = submitted {
-            // SAFETY: the fence is not in use: the submission failed.
-            unsafe { s.device.destroy_fence(fence, None) };
+            // The fence is not in use: the submission failed.
+            s.return_fence(fence);
             return Err(VkError::Vk { what: format!("submit {what}"), result });
         }
         // From here the commands are the GPU's until the fence signals: not freed on drop.
@@ -561,13 +568,20 @@ impl WaitOnDrop<'_> {
         r
     }
 
+    /// The fence signalled: the fence and the command buffer are kept for later submissions
+    /// (`Shared::spare`), or freed.
     fn release(&self) {
         let s = self.shared;
-        // SAFETY: the fence signalled: neither the fence nor the command buffer is in use.
-        unsafe { s.device.destroy_fence(self.fence, None) };
-        let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
-        // SAFETY: as above; the pool is externally synchronised by its mutex.
-        unsafe { s.device.free_command_buffers(*pool, &[self.cmd]) };
+        s.return_fence(self.fence);
+        let mut spare = s.spare.lock().unwrap_or_else(|e| e.into_inner());
+        if spare.commands.len() < super::context::SPARE_SUBMISSIONS {
+            spare.commands.push(self.cmd);
+        } else {
+            drop(spare);
+            let pool = s.command_pool.lock().unwrap_or_else(|e| e.into_inner());
+            // SAFETY: the submission finished; the pool is externally synchronised by its mutex.
+            unsafe { s.device.free_command_buffers(*pool, &[self.cmd]) };
+        }
     }
 }
 

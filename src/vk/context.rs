@@ -115,6 +115,12 @@ pub(crate) struct Shared {
     pub allocator: ManuallyDrop<Mutex<Allocator>>,
     pub queue: Mutex<vk::Queue>,
     pub command_pool: Mutex<vk::CommandPool>,
+    /// Command buffers and fences of finished submissions, kept for the next ones: creating
+    /// and destroying a fence and freeing a command buffer cost the NVIDIA driver about 0.7
+    /// ms a submission, with the GPU idle (docs/results.md, "Launches of three dispatches").
+    /// The command buffers are `command_pool`'s (reset when begun again); at most
+    /// `SPARE_SUBMISSIONS` of each are kept.
+    pub spare: Mutex<Spare>,
     pub info: DeviceInfo,
     pub gpu_timeout: Duration,
     /// Set when a submission timed out: the device may still be executing, so nothing is
@@ -125,7 +131,42 @@ pub(crate) struct Shared {
     _log: Arc<ValidationLog>,
 }
 
+/// Reusable submission objects (`Shared::spare`).
+#[derive(Default)]
+pub struct Spare {
+    pub commands: Vec<vk::CommandBuffer>,
+    pub fences: Vec<vk::Fence>,
+}
+
+/// The most command buffers and fences `Shared::spare` keeps (submissions in flight at once are
+/// fewer: one runs while the next is recorded).
+pub const SPARE_SUBMISSIONS: usize = 8;
+
 impl Shared {
+    /// An unsignalled fence: a spare one, or a new one.
+    pub fn take_fence(&self) -> std::result::Result<vk::Fence, vk::Result> {
+        if let Some(f) = self.spare.lock().unwrap_or_else(|e| e.into_inner()).fences.pop() {
+            return Ok(f);
+        }
+        // SAFETY: live device.
+        let fence = unsafe { self.device.create_fence(&vk::FenceCreateInfo::default(), None) }?;
+        self.name(fence, "bidir.submission_fence");
+        Ok(fence)
+    }
+
+    /// Takes back `fence` of a finished submission (signalled, no longer waited on): reset and
+    /// kept, or destroyed.
+    pub fn return_fence(&self, fence: vk::Fence) {
+        let mut spare = self.spare.lock().unwrap_or_else(|e| e.into_inner());
+        // SAFETY: the fence signalled and nothing waits on it.
+        if spare.fences.len() < SPARE_SUBMISSIONS && unsafe { self.device.reset_fences(&[fence]) }.is_ok() {
+            spare.fences.push(fence);
+        } else {
+            // SAFETY: as above.
+            unsafe { self.device.destroy_fence(fence, None) };
+        }
+    }
+
     /// Gives a Vulkan object a debug name (shown by validation messages and GPU debuggers).
     pub fn name<H: vk::Handle>(&self, handle: H, name: &str) {
         if let Some(du) = &self.debug_device {
@@ -150,6 +191,10 @@ impl Drop for Shared {
                 p.destroy(&self.device);
             }
             ManuallyDrop::drop(&mut self.allocator);
+            // (The spare command buffers go with their pool.)
+            for f in self.spare.get_mut().unwrap_or_else(|e| e.into_inner()).fences.drain(..) {
+                self.device.destroy_fence(f, None);
+            }
             self.device.destroy_command_pool(*self.command_pool.get_mut().unwrap_or_else(|e| e.into_inner()), None);
             self.device.destroy_device(None);
             if let Some(du) = &self.debug_utils {
@@ -225,6 +270,7 @@ impl Context {
                     allocator: ManuallyDrop::new(Mutex::new(allocator)),
                     queue: Mutex::new(queue),
                     command_pool: Mutex::new(pool),
+                    spare: Mutex::new(Spare::default()),
                     info,
                     gpu_timeout: opts.gpu_timeout,
                     poisoned: AtomicBool::new(false),
