@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h and s21i (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission), s21j (submissions that reuse their fences and command buffers, against .device/bidir-d768.gz) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -23,6 +23,45 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s21j)
+  # Session 21, after s21i: submissions reuse their fences and command buffers (no vkCreateFence,
+  # vkDestroyFence, vkFreeCommandBuffers per submission) against d768fe1's build
+  # (.device/bidir-d768.gz), interleaved. Carried with .device/ref.exr, without the glTF samples.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 90"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for b in .device/bidir-d768 "$B"; do
+      echo "== cornell bdpt wavefront on $(basename "$b")"; $T "$b" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator bdpt --wavefront on 2>&1 | grep -E "Msamples"
+      echo "== caustic bdpt wavefront on $(basename "$b")"; $T "$b" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator bdpt --wavefront on 2>&1 | grep -E "Msamples"
+      for i in bdpt pt-nee; do
+        echo "== sponza $i $(basename "$b")"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  for b in .device/bidir-d768 "$B"; do
+    echo "== sponza bdpt --time 1 $(basename "$b")"; $T "$b" render $SPB --integrator bdpt --time 1 --seed 1 -o /tmp/t.exr 2>&1 | grep -E "spp in"
+    for wf in on off; do
+      echo "== cornell bdpt --time 1 wavefront $wf $(basename "$b")"; $T "$b" render --integrator bdpt --time 1 --wavefront $wf --reference "$REF" -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  ;;
+s21i)
+  # Session 21, after s21h: the same measurement with the gap split (host work outside
+  # Context::execute, inside it before vkQueueSubmit, the submit, the release after the wait).
+  # Carried as .device/bidir-s21i.gz alone.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  B=.device/bidir-s21i
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 90"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  echo "== cornell bdpt wavefront on"; BIDIR_HOST_PROFILE=1 $T "$B" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator bdpt --wavefront on 2>&1 | grep -E "^run"
+  echo "== caustic bdpt wavefront on"; BIDIR_HOST_PROFILE=1 $T "$B" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator bdpt --wavefront on 2>&1 | grep -E "^run"
+  echo "== sponza bdpt wavefront on"; BIDIR_HOST_PROFILE=1 $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "^run"
+  ;;
 s21h)
   # Session 21, a measurement build (not committed): where the host's time per render goes
   # (BIDIR_HOST_PROFILE=1: submissions, recording, the work done while the GPU runs, the fence

@@ -120,8 +120,9 @@ pub(super) fn resolve_shadow_queue(
     queue.and_then(|q| q.fit(invocations, fixed, shadow_queue::budget(ctx)))
 }
 
-/// Whether pt and pt-nee run as the wavefront path tracer (`pt_wavefront.rs`) by default: on
-/// GPUs where the scene has glossy or textured surfaces and no smooth mirror or glass. NVIDIA
+/// Whether an integrator runs in its wavefront form by default. pt and pt-nee (the wavefront
+/// path tracer, `pt_wavefront.rs`): on GPUs where the scene has glossy or textured surfaces
+/// and no smooth mirror or glass. NVIDIA
 /// H200, `bench render`, pt-nee, ms per run (docs/results.md, "A wavefront path tracer"):
 /// textured Sponza under sun and sky 58.2 against 79.3 (640 x 360, 64 spp; pt 44.0 against
 /// 51.9), 120.3 against 162.5 at 1920 x 1080; DamagedHelmet 25.1 against 36.0,
@@ -130,18 +131,22 @@ pub(super) fn resolve_shadow_queue(
 /// slots' memory traffic costs more than the trace kernels save) and the caustic scene's smooth
 /// glass (102 against 108); CPU devices (llvmpipe: 3-4x slower, its launches' fixed costs).
 ///
-/// The same for BDPT's passes (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3), ms per
-/// run (session 21): textured Sponza 72.4 against 123.2 (640 x 360, 64 spp), DamagedHelmet 171
-/// against 401.5 (384², 256 spp), the rough Cornell box 77.6 against 153.1 (256², 256 spp);
-/// the Cornell box (185 against 175 ms per 1024 spp) keeps the megakernels, and so does the
-/// caustic scene's smooth glass: its GPU time favours the wavefront passes (54.6 against 66.0
-/// ms per 256 spp at 256²) but not its wall time (70.3-70.9 against 69.2-69.9 ms: each launch
-/// batch waits on the host), which `--time` renders go by (docs/results.md, "Launches of
-/// three dispatches").
+/// BDPT's passes (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3) take their wavefront form
+/// on GPUs in every scene but a plain one (untextured diffuse surfaces without mirrors or
+/// glass). NVIDIA H200, session 21, ms per run, GPU time (wall time): textured Sponza 72.4
+/// against 123.2 (640 x 360, 64 spp), DamagedHelmet 171 against 401.5 (384², 256 spp), the
+/// rough Cornell box 77.6 against 153.1 (256², 256 spp), the caustic scene's smooth glass 53.8
+/// against 66.0 (wall 58.4-59.8 against 67.9-68.3, with submissions that reuse their fences);
+/// the diffuse Cornell box keeps the megakernels (185.4 against 174.9, wall 191-193 against
+/// 179-184 ms per 1024 spp) (docs/results.md, "Launches of three dispatches").
 pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> bool {
     let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
     let rich = features.glossy || features.textures;
-    wavefront_supported(integrator) && !on_cpu && rich && !smooth_specular
+    let wins = match integrator {
+        Integrator::Bdpt(_) => rich || smooth_specular,
+        _ => rich && !smooth_specular,
+    };
+    wavefront_supported(integrator) && !on_cpu && wins
 }
 
 /// Whether `integrator` has a wavefront form: pt and pt-nee (pt_wavefront.rs), and BDPT's
@@ -239,12 +244,16 @@ mod default_tests {
             assert_eq!(queue.is_some(), pt_nee == cw, "{f:?}");
             assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
             assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
-            // The wavefront forms: on GPUs for glossy or textured scenes without smooth
-            // mirrors or glass, for pt, pt-nee and bdpt's fixed cache joins only; never on CPU
-            // devices.
+            // The wavefront forms: on GPUs, the path tracers' for glossy or textured scenes
+            // without smooth mirrors or glass, BDPT's (fixed cache joins only) for every scene
+            // but the diffuse one; never on CPU devices.
             let wave = f == rough || f == textured_ggx;
-            for i in [Integrator::Pt, Integrator::PtNee, Integrator::Bdpt(Join::Lvc(1)), Integrator::Bdpt(Join::Lvc(3))] {
+            for i in [Integrator::Pt, Integrator::PtNee] {
                 assert_eq!(default_wavefront(false, i, &f), wave, "{f:?}");
+                assert!(!default_wavefront(true, i, &f));
+            }
+            for i in [Integrator::Bdpt(Join::Lvc(1)), Integrator::Bdpt(Join::Lvc(3))] {
+                assert_eq!(default_wavefront(false, i, &f), f != diffuse, "{f:?}");
                 assert!(!default_wavefront(true, i, &f));
             }
             for i in [Integrator::Bdpt(Join::Lvc(0)), Integrator::Bdpt(Join::Full), Integrator::Vcm(vcm::VcmMode::FULL)] {
