@@ -286,7 +286,8 @@ fn wavefront_gives_the_megakernels_image() {
 /// camera paths' light samples and connections traced by the trace kernels between their
 /// launches give the megakernels' image, with one and with three connections per vertex, one
 /// slice and three, twice and half as many light paths as pixels, over every layout, the tall
-/// box half-transparent (each ray carrying its path's stochastic-opacity seed), up to the order
+/// box half-transparent (each ray carrying its path's stochastic-opacity seed), and with a
+/// glass short box and a mirror tall box, up to the order
 /// of the film's float sums: to 1e-5 of each value. A first version that kept each shadow ray's
 /// contribution in one buffer for the launch that reads it and the launch that writes the next
 /// failed here (one slot overwrote what another had yet to read: the image came out darker, and
@@ -296,13 +297,21 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
     let ctx = gpu();
     let (mut scene, camera) = small_cornell(24, 16);
     let tall = scene.materials.iter().position(|m| m.name == "tallBox").expect("the Cornell box's tall box");
+    let short = scene.materials.iter().position(|m| m.name == "shortBox").expect("the Cornell box's short box");
+    // The same box with a smooth glass short box and a mirror tall box (BDPT's wavefront passes
+    // are its default on GPUs in such scenes: paths through specular vertices).
+    let mut specular = scene.clone();
+    (specular.materials[short].refractivity, specular.materials[short].ior) = (1.0, 1.5);
+    specular.materials[tall].reflectivity = 1.0;
     scene.materials[tall].blend = Some(0.5);
-    for (join, layout, slices, ratio) in [
-        (Join::Lvc(1), BvhLayout::Cwbvh, 1, 1.0),
-        (Join::Lvc(1), BvhLayout::Bvh2, 3, 1.0),
-        (Join::Lvc(3), BvhLayout::Bvh4, 3, 1.0),
-        (Join::Lvc(1), BvhLayout::Bvh4, 3, 2.0),
-        (Join::Lvc(2), BvhLayout::Bvh2, 1, 0.5),
+    for (scene, join, layout, slices, ratio) in [
+        (&scene, Join::Lvc(1), BvhLayout::Cwbvh, 1, 1.0),
+        (&scene, Join::Lvc(1), BvhLayout::Bvh2, 3, 1.0),
+        (&scene, Join::Lvc(3), BvhLayout::Bvh4, 3, 1.0),
+        (&scene, Join::Lvc(1), BvhLayout::Bvh4, 3, 2.0),
+        (&scene, Join::Lvc(2), BvhLayout::Bvh2, 1, 0.5),
+        (&specular, Join::Lvc(1), BvhLayout::Cwbvh, 3, 1.0),
+        (&specular, Join::Lvc(3), BvhLayout::Bvh4, 1, 1.0),
     ] {
         let image = |wavefront: bool| {
             let mut settings = RenderSettings::new(Integrator::Bdpt(join));
@@ -310,16 +319,17 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
             settings.bvh_layout = Some(layout);
             settings.sample_slices = slices;
             settings.light_path_ratio = ratio;
-            render_values(&ctx, &scene, &camera, settings, 6)
+            render_values(&ctx, scene, &camera, settings, 6)
         };
         let (mega, wave) = (image(false), image(true));
         let lit = mega.iter().filter(|&&v| v > 0.0).count();
         assert!(lit * 3 > mega.len(), "{lit} of {} values above 0", mega.len());
         let differ = values_differing(&wave, &mega, 1e-5);
+        let glass = scene.materials[short].refractivity > 0.0;
         assert_eq!(
             differ,
             0,
-            "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel: {differ} of {} values differ",
+            "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel, glass and mirror {glass}: {differ} of {} values differ",
             join.name(),
             layout.name(),
             mega.len()

@@ -23,6 +23,21 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s21k)
+  # Session 21, the final build (f437688): BDPT's default on the caustic scene is now the
+  # wavefront form; against the megakernels at equal time, against its committed reference
+  # (the test's 128² camera, and 256²). Carried with the binary alone.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  CREF=assets/scenes/caustic/reference.exr
+  echo "== caustic bdpt default"; $T "$B" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+  for s in 1 2; do
+    for wf in auto off; do
+      echo "== caustic 128 bdpt --time 1 seed $s wavefront $wf"; $T "$B" render $CAU --width 128 --height 128 --integrator bdpt --time 1 --seed $s --wavefront $wf --reference $CREF -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  ;;
 s21j)
   # Session 21, after s21i: submissions reuse their fences and command buffers (no vkCreateFence,
   # vkDestroyFence, vkFreeCommandBuffers per submission) against d768fe1's build
