@@ -254,6 +254,51 @@ fn profiling_times_each_dispatch_by_kernel() {
     finish(ctx);
 }
 
+/// `Recorder::concurrent`: independent commands recorded without barriers between them, one
+/// after them all (a copy after the group reads what both wrote), profiled as one interval
+/// that counts each command; many submissions in a row reuse their fences and command buffers.
+#[test]
+fn concurrent_commands_end_in_one_barrier_and_one_profile_interval() {
+    let ctx = gpu();
+    let values: Vec<u32> = (0..10_000).collect();
+    let input = ctx.upload_buffer("concurrent.in", &values).unwrap();
+    let [a, b] = ["concurrent.a", "concurrent.b"].map(|n| ctx.create_buffer(n, 4, Memory::Device).unwrap());
+    let out = ctx.create_buffer("concurrent.out", 8, Memory::Device).unwrap();
+    let k = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
+    let push = abi::ScanPush { count: 10_000, ..Default::default() };
+    let sum_into = |rec: &mut bidir::vk::Recorder, sum: &bidir::vk::Buffer| {
+        let binds = [Bind::buffer(abi::REDUCE_BIND_INPUT, &input), Bind::buffer(abi::REDUCE_BIND_OUTPUT, sum)];
+        rec.dispatch(&k, &binds, bytemuck::bytes_of(&push), [k.groups_for(10_000), 1, 1])
+    };
+    let profiled = ctx.info().timestamp_valid_bits != 0;
+    ctx.set_profiling(profiled).unwrap();
+    let want = (0..10_000u32).sum::<u32>();
+    for round in 0..20 {
+        ctx.submit("concurrent", |rec| {
+            rec.fill_buffer(&a, 0);
+            rec.fill_buffer(&b, 0);
+            rec.concurrent(|rec| {
+                sum_into(rec, &a)?;
+                sum_into(rec, &b)
+            })?;
+            rec.copy_buffer_range(&a, 0, &out, 0, 4);
+            rec.copy_buffer_range(&b, 0, &out, 4, 4);
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(ctx.read_buffer::<u32>(&out).unwrap(), vec![want, want], "round {round}");
+    }
+    if profiled {
+        let (times, _) = ctx.take_profile();
+        let names: Vec<(&str, u64)> = times.iter().map(|t| (t.name.as_str(), t.dispatches)).collect();
+        // (Each round's read_buffer adds a copy of its own.)
+        assert!(names.contains(&("reduce_sum", 40)) && names.contains(&("fill", 40)) && names.contains(&("copy", 60)), "{names:?}");
+        ctx.set_profiling(false).unwrap();
+    }
+    drop((k, input, a, b, out));
+    finish(ctx);
+}
+
 /// Commands recorded now and run later (`Context::record`, `Context::run`): the next submission
 /// recorded while the GPU runs one, both results right; commands dropped unrun are freed; and
 /// commands recorded with profiling on refuse to run once it has been switched (their

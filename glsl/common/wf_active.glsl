@@ -73,12 +73,12 @@ shared bool wf_last_group;
 
 // Ends the launch; every invocation calls it last, in uniform control flow. The launch's last
 // workgroup to finish (its finished workgroups counted in wf_trace_dispatch[2 l].w, which the
-// host zeroes with the batch's entries) sizes the next launch's dispatch from the slots this one
-// listed and this one's two traces from the rays it queued (where a pass's tail queues few rays,
-// a persistent trace kernel would otherwise start all its workgroups for them): no kernel
-// between a launch and its traces (the atomic-counter
-// pattern of CUDA's threadFenceReduction sample: each workgroup's writes made visible before it
-// counts itself, the counts read with atomics).
+// host zeroes with the batch's entries) sizes the next launch's dispatch from the slots this
+// one listed and this one's two traces from the rays it queued (where a pass's tail queues few
+// rays, a persistent trace kernel would otherwise start all its workgroups for them), so that
+// no kernel runs between a launch and its traces. The pattern is the atomic counter of CUDA's
+// threadFenceReduction sample: each workgroup's writes are made visible before it counts
+// itself, and the counts are read with atomics.
 void wf_end_launch(uint launch_word) {
     uint launch = wf_launch(launch_word);
     memoryBarrierBuffer();

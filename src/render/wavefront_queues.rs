@@ -234,7 +234,9 @@ impl Queues {
 
     /// Records the traces of launch `l` of a batch over `slots` slots: its segments' and its
     /// shadow rays'. With the lists, the path kernel has sized them. The two share no ray, hit
-    /// or counter: inside `Recorder::concurrent` the GPU may run them at once.
+    /// or counter (their node and triangle counters, `trace_stats`, take atomics only, and only
+    /// where traversal is counted, which the wavefront forms refuse): inside
+    /// `Recorder::concurrent` the GPU may run them at once.
     fn record_traces(&self, rec: &mut Recorder, geometry: &[Bind], slots: u32, l: u32) -> Result<()> {
         let (t, stats) = (&self.tracer, &self.trace_stats);
         let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));

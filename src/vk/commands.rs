@@ -379,7 +379,8 @@ impl Context {
             }
         };
         s.name(cmd, what);
-        // SAFETY: the pool mutex is held; the buffer was never submitted.
+        // SAFETY: the pool mutex is held; the buffer is not pending (never submitted, or a
+        // spare whose submission finished).
         let free = |cmd| unsafe { s.device.free_command_buffers(*pool, &[cmd]) };
         // SAFETY: fresh command buffer.
         if let Err(result) = unsafe {
