@@ -101,17 +101,17 @@ void main() {
     // The path: scattered at what its segment found, or (ended, or none yet this pass) the
     // slot's next sample started.
     PtSuspended st = state[g];
-    uint s = status == PT_FRESH ? slice : floatBitsToUint(st.sigma_sample.w);
+    uint s = status == PT_FRESH ? slice : st.sample_index;
     Rng rng;
     PathState path;
     bool alive = false;
     uint shadow_seed = 0u;
     if (status == PT_SUSPENDED) {
         rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
-        path = PathState(st.o_depth.xyz, st.d_pdf.xyz, st.throughput_specular.xyz, st.radiance_seed.xyz,
-            st.throughput_specular.w != 0.0, st.d_pdf.w, floatBitsToUint(st.o_depth.w), st.sigma_sample.xyz,
+        path = PathState(st.o, st.d_pdf.xyz, st.throughput_specular.xyz, st.radiance,
+            st.throughput_specular.w != 0.0, st.d_pdf.w, st.depth, st.sigma,
             vec3(0.0), 0.0, vec3(0.0), false);
-        blend_seed = floatBitsToUint(st.radiance_seed.w);
+        blend_seed = st.seed;
         GpuHit gh = wf_hits[queued.x];
         uvec2 stats = uvec2(0u);
         alive = path_scatter(path, TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v)), rng, stats);
@@ -139,9 +139,9 @@ void main() {
     base = subgroupBroadcastFirst(base);
     queued = base + uvec2(subgroupBallotExclusiveBitCount(ext_lanes), subgroupBallotExclusiveBitCount(shadow_lanes));
     if (alive) {
-        state[g] = PtSuspended(vec4(path.o, uintBitsToFloat(path.depth)), vec4(path.d, path.prev_pdf_w),
-            vec4(path.throughput, path.specular ? 1.0 : 0.0), vec4(path.radiance, uintBitsToFloat(blend_seed)),
-            vec4(path.sigma_near, uintBitsToFloat(s)), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        state[g] = PtSuspended(path.o, path.depth, vec4(path.d, path.prev_pdf_w),
+            vec4(path.throughput, path.specular ? 1.0 : 0.0), path.radiance, blend_seed, path.sigma_near, s,
+            uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
         wf_rays[queued.x] = wavefront_ray(path.o, path.d, 3.0e38, blend_seed);
     } else if (status != PT_DONE) {
         state[g].rng_status.w = PT_DONE;

@@ -356,7 +356,7 @@ gpu_consts! {
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
     /// buffer: its first sample is next), has a path suspended, or starts sample
-    /// `sigma_sample.w` next.
+    /// `sample_index` next.
     pub const PT_FRESH: u32 = 0;
     pub const PT_SUSPENDED: u32 = 1;
     pub const PT_NEXT: u32 = 2;
@@ -791,17 +791,24 @@ gpu_structs! {
     /// pt.comp's `PathState` without a pending shadow ray, the sample it belongs to and the
     /// random-number state.
     pub struct PtSuspended (96 bytes) {
-        /// Origin, then the vertex count (bits).
-        pub o_depth: Vec4,
+        /// Origin of the next segment.
+        pub o: Vec3,
+        /// The vertex count.
+        pub depth: u32,
         /// Direction, then the solid-angle pdf of the last non-delta bounce.
         pub d_pdf: Vec4,
         /// Throughput, then 1 if the last bounce was a delta lobe.
         pub throughput_specular: Vec4,
-        /// The estimate so far, then the stochastic-opacity seed (bits).
-        pub radiance_seed: Vec4,
-        /// sigma_a where the next segment leaves its surface, then the sample index (bits): the
-        /// suspended path's, or the next one to start.
-        pub sigma_sample: Vec4,
+        /// The estimate so far.
+        pub radiance: Vec3,
+        /// The stochastic-opacity seed.
+        pub seed: u32,
+        /// sigma_a where the next segment leaves its surface.
+        pub sigma: Vec3,
+        /// The sample index: the suspended path's, or the next one to start. (Integers live in
+        /// integer words: kept in a float's bits, a value risks a float move that flushes it,
+        /// which lavapipe did to one such value in session 20.)
+        pub sample_index: u32,
         /// The random-number state (state, index, dim), then PT_FRESH / PT_SUSPENDED / PT_NEXT.
         pub rng_status: UVec4,
     }
@@ -809,15 +816,18 @@ gpu_structs! {
     /// A camera subpath of the wavefront camera pass between its launches (BIND_PT_SUSPENDED;
     /// glsl/common/bdpt_camera_path.glsl's `CameraPath` without VCM's terms).
     pub struct BdptCameraState (80 bytes) {
-        /// Origin of the next segment, then the vertex count (bits).
-        pub o_depth: Vec4,
+        /// Origin of the next segment.
+        pub o: Vec3,
+        /// The vertex count.
+        pub depth: u32,
         /// Its direction, then dVCM.
         pub d_dvcm: Vec4,
         /// Throughput, then dVC.
         pub beta_dvc: Vec4,
-        /// sigma_a where the next segment leaves its surface, then the stochastic-opacity seed
-        /// (bits).
-        pub sigma_seed: Vec4,
+        /// sigma_a where the next segment leaves its surface.
+        pub sigma: Vec3,
+        /// The stochastic-opacity seed.
+        pub seed: u32,
         /// The random-number state (state, index, dim), then PT_FRESH / PT_SUSPENDED / PT_DONE.
         pub rng_status: UVec4,
     }
