@@ -25,7 +25,7 @@ CB="--width 256 --height 256"
 case "${1:-speed}" in
 s21l)
   # Pending (session 21 had no device time left): PtSuspended and BdptCameraState keep their
-  # integers in integer words (bb2ef07's successor), the same bytes at the same offsets: check
+  # integers in integer words (0bf3d8a), the same bytes at the same offsets: check
   # that the H200's times did not move, against .device/bidir-base.gz = a build of 74e8721,
   # interleaved; the same images.
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
