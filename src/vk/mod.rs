@@ -34,10 +34,11 @@ mod memory;
 mod profile;
 pub mod reflect;
 mod rt;
+mod submit;
 mod swapchain;
 
 pub use ash::vk::{Format, PhysicalDeviceType};
-pub use commands::{Bind, Recorded, Recorder, Resource, Timer};
+pub use commands::{Bind, Recorder, Resource, Timer};
 pub use context::{Context, ContextOptions};
 pub use error::{Result, VkError};
 pub use instance::{choose_device, list_devices, DeviceInfo, MemoryHeap, SubgroupOps};
@@ -45,4 +46,5 @@ pub use kernel::{Kernel, KernelSource, KernelStatistic, Spec};
 pub use memory::{Buffer, Image, Memory};
 pub use profile::KernelTime;
 pub use rt::{DriverTracer, RtShaders};
+pub use submit::Recorded;
 pub use swapchain::{surface_extensions, Presented, Swapchain, Vsync, SWAPCHAIN_EXTENSION};
