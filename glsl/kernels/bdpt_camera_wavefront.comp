@@ -105,7 +105,7 @@ void run_slot() {
     // The pass's first launch starts every slot's path: nothing to read.
     bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
     uint launch = wf_launch(pc.launch);
-    BdptCameraState st = BdptCameraState(vec3(0.0), 0u, vec4(0.0), vec4(0.0), vec3(0.0), 0u, uvec4(0u, 0u, 0u, PT_FRESH));
+    BdptCameraState st = BdptCameraState(uvec4(0u), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
     uvec4 queued = uvec4(0u); // where the last launch queued its rays
     if (!fresh) {
         st = state[g];
@@ -138,14 +138,14 @@ void run_slot() {
     // The camera subpath: one step at what its segment found (the megakernel's loop body,
     // bdpt_camera_step.glsl, run once), or its start.
     Rng rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
-    blend_seed = st.seed;
-    vec3 o = st.o;
-    uint depth = st.depth;
+    blend_seed = st.sigma_seed.w;
+    vec3 o = uintBitsToFloat(st.o_depth.xyz);
+    uint depth = st.o_depth.w;
     vec3 d = st.d_dvcm.xyz;
     float d_vcm = st.d_dvcm.w;
     vec3 beta = st.beta_dvc.xyz;
     float d_vc = st.beta_dvc.w;
-    vec3 sigma_near = st.sigma;
+    vec3 sigma_near = uintBitsToFloat(st.sigma_seed.xyz);
     // BDPT's values of VCM's terms (vcm.glsl: no merging) and of the megakernel joins'.
     float d_vc_merge = 0.0;
     float d_vm = 0.0;
@@ -196,7 +196,7 @@ void run_slot() {
     queue_base = subgroupBroadcastFirst(queue_base);
     uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count), wf_shadow_count, 0u);
     if (alive) {
-        state[g] = BdptCameraState(o, depth, vec4(d, d_vcm), vec4(beta, d_vc), sigma_near, blend_seed,
+        state[g] = BdptCameraState(uvec4(floatBitsToUint(o), depth), vec4(d, d_vcm), vec4(beta, d_vc), uvec4(floatBitsToUint(sigma_near), blend_seed),
             uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
     } else if (status != PT_DONE) {

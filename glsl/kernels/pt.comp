@@ -62,7 +62,7 @@ void main() {
         uint g = gl_GlobalInvocationID.x;
         PtSuspended st = suspended[g];
         uint status = st.rng_status.w;
-        uint s = status == PT_FRESH ? slice : st.sample_index;
+        uint s = status == PT_FRESH ? slice : st.sigma_sample.w;
         shadow_queue_finish(0u);
         if (status != PT_SUSPENDED && s >= pc.spp) {
             return; // done, or nothing more in this launch
@@ -70,10 +70,10 @@ void main() {
         PathState path;
         if (status == PT_SUSPENDED) {
             rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
-            path = PathState(st.o, st.d_pdf.xyz, st.throughput_specular.xyz, st.radiance,
-                st.throughput_specular.w != 0.0, st.d_pdf.w, st.depth, st.sigma,
+            path = PathState(uintBitsToFloat(st.o_depth.xyz), st.d_pdf.xyz, st.throughput_specular.xyz, uintBitsToFloat(st.radiance_seed.xyz),
+                st.throughput_specular.w != 0.0, st.d_pdf.w, st.o_depth.w, uintBitsToFloat(st.sigma_sample.xyz),
                 vec3(0.0), 0.0, vec3(0.0), false);
-            blend_seed = st.seed;
+            blend_seed = st.radiance_seed.w;
         } else {
             path = sample_start(image_pixel, s, xy, rng);
         }
@@ -98,11 +98,12 @@ void main() {
             path = sample_start(image_pixel, s, xy, rng);
         }
         if (status == PT_SUSPENDED) {
-            suspended[g] = PtSuspended(path.o, path.depth, vec4(path.d, path.prev_pdf_w),
-                vec4(path.throughput, path.specular ? 1.0 : 0.0), path.radiance, blend_seed, path.sigma_near, s,
+            suspended[g] = PtSuspended(uvec4(floatBitsToUint(path.o), path.depth), vec4(path.d, path.prev_pdf_w),
+                vec4(path.throughput, path.specular ? 1.0 : 0.0), uvec4(floatBitsToUint(path.radiance), blend_seed),
+                uvec4(floatBitsToUint(path.sigma_near), s),
                 uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
         } else {
-            suspended[g].sample_index = s;
+            suspended[g].sigma_sample.w = s;
             suspended[g].rng_status.w = PT_NEXT;
         }
         shadow_queue_finish(shadow_queued);

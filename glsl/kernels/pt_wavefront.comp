@@ -101,17 +101,17 @@ void main() {
     // The path: scattered at what its segment found, or (ended, or none yet this pass) the
     // slot's next sample started.
     PtSuspended st = state[g];
-    uint s = status == PT_FRESH ? slice : st.sample_index;
+    uint s = status == PT_FRESH ? slice : st.sigma_sample.w;
     Rng rng;
     PathState path;
     bool alive = false;
     uint shadow_seed = 0u;
     if (status == PT_SUSPENDED) {
         rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
-        path = PathState(st.o, st.d_pdf.xyz, st.throughput_specular.xyz, st.radiance,
-            st.throughput_specular.w != 0.0, st.d_pdf.w, st.depth, st.sigma,
+        path = PathState(uintBitsToFloat(st.o_depth.xyz), st.d_pdf.xyz, st.throughput_specular.xyz, uintBitsToFloat(st.radiance_seed.xyz),
+            st.throughput_specular.w != 0.0, st.d_pdf.w, st.o_depth.w, uintBitsToFloat(st.sigma_sample.xyz),
             vec3(0.0), 0.0, vec3(0.0), false);
-        blend_seed = st.seed;
+        blend_seed = st.radiance_seed.w;
         GpuHit gh = wf_hits[queued.x];
         uvec2 stats = uvec2(0u);
         alive = path_scatter(path, TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v)), rng, stats);
@@ -139,8 +139,9 @@ void main() {
     base = subgroupBroadcastFirst(base);
     queued = base + uvec2(subgroupBallotExclusiveBitCount(ext_lanes), subgroupBallotExclusiveBitCount(shadow_lanes));
     if (alive) {
-        state[g] = PtSuspended(path.o, path.depth, vec4(path.d, path.prev_pdf_w),
-            vec4(path.throughput, path.specular ? 1.0 : 0.0), path.radiance, blend_seed, path.sigma_near, s,
+        state[g] = PtSuspended(uvec4(floatBitsToUint(path.o), path.depth), vec4(path.d, path.prev_pdf_w),
+            vec4(path.throughput, path.specular ? 1.0 : 0.0), uvec4(floatBitsToUint(path.radiance), blend_seed),
+            uvec4(floatBitsToUint(path.sigma_near), s),
             uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
         wf_rays[queued.x] = wavefront_ray(path.o, path.d, 3.0e38, blend_seed);
     } else if (status != PT_DONE) {

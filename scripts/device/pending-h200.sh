@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h and s21i (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission), s21j (submissions that reuse their fences and command buffers, against .device/bidir-d768.gz), s21k (pending, not yet run: the caustic scene's equal-time error with BDPT's new default), s21l (pending, not yet run: the path states' integers in integer words, against a build of 74e8721) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 22: s22a and s22c (a measurement build: the wavefront kernels' workgroup size as a specialisation constant, BIDIR_EXP_WG_CAMERA / _LIGHT / _PT; s22a's BDPT launches were mis-sized, see s22c), s22b and s22c (the path states' integer words: s21l's question, answered against .device/bidir-b74e.gz and .device/bidir-head.gz, builds of 74e8721 and 32eb0ea; s21k run in the s22a call) (docs/results.md, "Path states in 16-byte words"); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h and s21i (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission), s21j (submissions that reuse their fences and command buffers, against .device/bidir-d768.gz), s21k (the caustic scene's equal-time error with BDPT's new default; run in session 22), s21l (not run: s22b and s22c answer it) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -23,6 +23,91 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s22c)
+  # Session 22: (1) the path states as 16-byte words (PtSuspended, BdptCameraState: integers
+  # in uint words, floats' bits beside them) against 74e8721 (.device/bidir-b74e.gz, before
+  # the integer words; 32eb0ea's vec3 + uint members are s22b's), interleaved;
+  # (2) the camera and light wavefront kernels' workgroup sizes again, their launches now
+  # sized by a specialisation constant (s22a's were sized as if a workgroup held 1 invocation:
+  # shaderc folded gl_WorkGroupSize.x).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2; do
+    for b in .device/bidir-b74e "$B"; do
+      n=$(basename $b)
+      for i in bdpt pt-nee pt; do
+        echo "== sponza $i $n"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+      echo "== helmet pt-nee $n"; $T "$b" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator pt-nee 2>&1 | grep -E "Msamples"
+      echo "== cornell pt-nee paused queue $n"; $T "$b" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator pt-nee --shadow-queue 192/24/pause 2>&1 | grep -E "Msamples"
+      echo "== caustic bdpt $n"; $T "$b" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+    done
+  done
+  for w in 128 256 512 768 1024; do
+    echo "== info wg $w"; BIDIR_EXP_WG_CAMERA=$w BIDIR_EXP_WG_LIGHT=$w $T "$B" info --kernels $SP --sponza-sun-sky 2>&1 | grep -E "^bdpt:lvc=1 " | grep -E "wavefront" | sed -E 's/; (Binary|Shader|Stack|Local)[^;]*//g' | cut -c1-300
+  done
+  for w in 128 256 512 768 1024; do
+    echo "== sponza bdpt camera wg $w"; BIDIR_EXP_WG_CAMERA=$w $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+    echo "== sponza bdpt light wg $w"; BIDIR_EXP_WG_LIGHT=$w $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+  done
+  for b in .device/bidir-b74e "$B"; do
+    $T "$b" render $SPB --integrator pt-nee --spp 16 -o /tmp/p-$(basename "$b").exr 2>&1 | grep -E "spp in"
+    $T "$b" render $SPB --integrator bdpt --spp 16 -o /tmp/s-$(basename "$b").exr 2>&1 | grep -E "spp in"
+  done
+  echo "== same images"; "$B" diff /tmp/p-bidir-b74e.exr /tmp/p-bidir.exr | head -1; "$B" diff /tmp/s-bidir-b74e.exr /tmp/s-bidir.exr | head -1
+  ;;
+s22b)
+  # Session 22: s22a measured BDPT's wavefront passes at twice session 21's time (caustic
+  # scene 129.8 against 53.8 ms). Which commit: .device/bidir-b74e.gz (74e8721, before the
+  # integer words), .device/bidir-head.gz (32eb0ea), .device/bidir.gz (this measurement
+  # build, workgroups of 64), interleaved; caustic scene, Cornell box (wavefront), DamagedHelmet.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for b in .device/bidir-b74e .device/bidir-head "$B"; do
+    echo "== info $(basename $b)"; $T "$b" info --kernels $CAU 2>&1 | grep -E "^bdpt:lvc=1 " | grep -E "wavefront" | sed -E 's/; (Binary|Shader|Stack|Local)[^;]*//g' | cut -c1-300
+  done
+  for r in 1 2; do
+    for b in .device/bidir-b74e .device/bidir-head "$B"; do
+      n=$(basename $b)
+      echo "== caustic bdpt $n"; $T "$b" bench render $CAU $CB --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+      echo "== cornell bdpt wavefront $n"; $T "$b" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator bdpt --wavefront on 2>&1 | grep -E "Msamples"
+      echo "== helmet bdpt $n"; $T "$b" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+      echo "== helmet pt-nee $n"; $T "$b" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator pt-nee 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+s22a)
+  # Session 22, a measurement build: the wavefront path kernels' workgroup size
+  # (SPEC_WF_WG_SIZE, from BIDIR_EXP_WG_CAMERA / _LIGHT / _PT): a workgroup must fit on one
+  # SM, so a larger one caps the registers the driver gives an invocation (1024: 64, 512: 128).
+  # Registers per size, then textured Sponza 640x360 64 spp per size; then s21k's caustic runs.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for w in 64 256 512 768 1024; do
+    echo "== info wg $w"; BIDIR_EXP_WG_CAMERA=$w BIDIR_EXP_WG_LIGHT=$w BIDIR_EXP_WG_PT=$w $T "$B" info --kernels $SP --sponza-sun-sky 2>&1 | grep -E "^(pt-nee|pt|bdpt:lvc=1) " | grep -E "wavefront" | sed -E 's/; (Binary|Shader|Stack|Local)[^;]*//g' | cut -c1-300
+  done
+  for r in 1 2; do
+    for w in 64 256 512 768 1024; do
+      echo "== sponza bdpt camera wg $w"; BIDIR_EXP_WG_CAMERA=$w $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+    done
+    for w in 256 1024; do
+      echo "== sponza bdpt light wg $w"; BIDIR_EXP_WG_LIGHT=$w $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+    done
+    for w in 64 512 1024; do
+      for i in pt-nee pt; do
+        echo "== sponza $i pt wg $w"; BIDIR_EXP_WG_PT=$w $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  ;;
 s21l)
   # Pending (session 21 had no device time left): PtSuspended and BdptCameraState keep their
   # integers in integer words (0bf3d8a), the same bytes at the same offsets: check

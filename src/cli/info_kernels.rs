@@ -41,7 +41,14 @@ pub fn run(
             let stats = kernel.statistics()?;
             let line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
             let bvh = r.settings().bvh.layout.name();
-            println!("{} / {} over {bvh} ({} statistics): {}", integrator.name(), kernel.name(), stats.len(), line.join("; "));
+            let wg = kernel.local_size()[0];
+            println!(
+                "{} / {} over {bvh}, workgroups of {wg} ({} statistics): {}",
+                integrator.name(),
+                kernel.name(),
+                stats.len(),
+                line.join("; ")
+            );
         }
     }
     Ok(())

@@ -791,24 +791,22 @@ gpu_structs! {
     /// pt.comp's `PathState` without a pending shadow ray, the sample it belongs to and the
     /// random-number state.
     pub struct PtSuspended (96 bytes) {
-        /// Origin of the next segment.
-        pub o: Vec3,
-        /// The vertex count.
-        pub depth: u32,
+        /// Origin of the next segment (its floats' bits), then the vertex count.
+        pub o_depth: UVec4,
         /// Direction, then the solid-angle pdf of the last non-delta bounce.
         pub d_pdf: Vec4,
         /// Throughput, then 1 if the last bounce was a delta lobe.
         pub throughput_specular: Vec4,
-        /// The estimate so far.
-        pub radiance: Vec3,
-        /// The stochastic-opacity seed.
-        pub seed: u32,
-        /// sigma_a where the next segment leaves its surface.
-        pub sigma: Vec3,
-        /// The sample index: the suspended path's, or the next one to start. (Integers live in
-        /// integer words: kept in a float's bits, a value risks a float move that flushes it,
-        /// which lavapipe did to one such value in session 20.)
-        pub sample_index: u32,
+        /// The estimate so far (its floats' bits), then the stochastic-opacity seed.
+        pub radiance_seed: UVec4,
+        /// sigma_a where the next segment leaves its surface (its floats' bits), then the sample
+        /// index: the suspended path's, or the next one to start.
+        ///
+        /// Integers live in integer words (kept in a float's bits, a value risks a float move
+        /// that flushes it, which lavapipe did to one in session 20), and every member is a
+        /// 16-byte vector: NVIDIA's driver loads and stores those whole, where `vec3` + `uint`
+        /// members cost pt-nee 6 % on DamagedHelmet (session 22, docs/results.md).
+        pub sigma_sample: UVec4,
         /// The random-number state (state, index, dim), then PT_FRESH / PT_SUSPENDED / PT_NEXT.
         pub rng_status: UVec4,
     }
@@ -816,18 +814,15 @@ gpu_structs! {
     /// A camera subpath of the wavefront camera pass between its launches (BIND_PT_SUSPENDED;
     /// glsl/common/bdpt_camera_path.glsl's `CameraPath` without VCM's terms).
     pub struct BdptCameraState (80 bytes) {
-        /// Origin of the next segment.
-        pub o: Vec3,
-        /// The vertex count.
-        pub depth: u32,
+        /// Origin of the next segment (its floats' bits), then the vertex count.
+        pub o_depth: UVec4,
         /// Its direction, then dVCM.
         pub d_dvcm: Vec4,
         /// Throughput, then dVC.
         pub beta_dvc: Vec4,
-        /// sigma_a where the next segment leaves its surface.
-        pub sigma: Vec3,
-        /// The stochastic-opacity seed.
-        pub seed: u32,
+        /// sigma_a where the next segment leaves its surface (its floats' bits), then the
+        /// stochastic-opacity seed (integers in integer words, as in `PtSuspended`).
+        pub sigma_seed: UVec4,
         /// The random-number state (state, index, dim), then PT_FRESH / PT_SUSPENDED / PT_DONE.
         pub rng_status: UVec4,
     }
