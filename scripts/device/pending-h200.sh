@@ -11,7 +11,7 @@
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 22: s22a and s22c (a measurement build: the wavefront kernels' workgroup size as a specialisation constant, BIDIR_EXP_WG_CAMERA / _LIGHT / _PT; s22a's BDPT launches were mis-sized, see s22c), s22b and s22c (the path states' integer words: s21l's question, answered against .device/bidir-b74e.gz and .device/bidir-head.gz, builds of 74e8721 and 32eb0ea; s21k run in the s22a call) (docs/results.md, "Path states in 16-byte words"); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h and s21i (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission), s21j (submissions that reuse their fences and command buffers, against .device/bidir-d768.gz), s21k (the caustic scene's equal-time error with BDPT's new default; run in session 22), s21l (not run: s22b and s22c answer it) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 22: s22a and s22c (a measurement build: the wavefront kernels' workgroup size as a specialisation constant, BIDIR_EXP_WG_CAMERA / _LIGHT / _PT; s22a's BDPT launches were mis-sized, see s22c), s22b and s22c (the path states' integer words: s21l's question, answered against .device/bidir-b74e.gz and .device/bidir-head.gz, builds of 74e8721 and 32eb0ea; s21k run in the s22a call) (docs/results.md, "Path states in 16-byte words"); s22d (a measurement build, .device/bidir-exp.gz: BIDIR_EXP_CAMERA's bits remove parts of the camera step, BIDIR_EXP_CAP sizes the pending shadow rays' array by the join; not committed; and s21k), s22e and s22f (the wavefront forms' sample slices for small images) (docs/results.md, "Slots for small images"); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h and s21i (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission), s21j (submissions that reuse their fences and command buffers, against .device/bidir-d768.gz), s21k (the caustic scene's equal-time error with BDPT's new default; run in session 22), s21l (not run: s22b and s22c answer it) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -23,6 +23,98 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s22f)
+  # Session 22: the wavefront forms' automatic sample slices up to 1024 (were 64), so small
+  # images get about TARGET_SLOTS slots too (.device/bidir.gz, a build of that change): new
+  # auto against --sample-slices 64 (the old auto below 256²) and the megakernels; then s21k's
+  # equal-time question again, and short time budgets.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPS="$SP --sponza-sun-sky --camera CameraMain --width 320 --height 180"
+  for r in 1 2; do
+    for px in 64 128 192; do
+      for sc in "caustic|$CAU|bdpt" "helmet|$HB|bdpt" "helmet|$HB|pt-nee"; do
+        IFS='|' read -r n scene integ <<< "$sc"
+        for a in "" "--sample-slices 64" "--wavefront off"; do
+          echo "== $n $integ $px ${a:-auto}"; $T "$B" bench render $scene --width $px --height $px --spp 1024 --warmup 1 --runs 3 --integrator $integ $a 2>&1 | grep -E "Msamples"
+        done
+      done
+    done
+    for integ in bdpt pt-nee; do
+      for a in "" "--sample-slices 64"; do
+        echo "== sponza 320x180 $integ ${a:-auto}"; $T "$B" bench render $SPS --spp 256 --warmup 1 --runs 3 --integrator $integ $a 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  for s in 1 2; do
+    for wf in auto off; do
+      echo "== caustic 128 bdpt --time 1 seed $s wavefront $wf"; $T "$B" render $CAU --width 128 --height 128 --integrator bdpt --time 1 --seed $s --wavefront $wf --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  for t in 0.05 0.1; do
+    for px in 64 128; do
+      echo "== caustic $px bdpt --time $t"; $T "$B" render $CAU --width $px --height $px --integrator bdpt --time $t -o /tmp/t.exr 2>&1 | grep -E "spp in"
+    done
+  done
+  ;;
+s22e)
+  # Session 22: s21k (in s22d) found BDPT's wavefront default slower than the megakernels on
+  # the caustic scene at 128² (8,935-9,352 against 14,557-14,602 spp in 1 s), where session 21
+  # measured it faster at 256². Its slots are pixels x sample slices, the slices capped at 64:
+  # 1 M slots at 128², 4 M (the target) at 256². GPU time per 512 spp by image size and
+  # slices, wavefront against megakernels.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2; do
+    for px in 64 128 192 256; do
+      for sl in auto 64 128 256; do
+        a=""; [ "$sl" != auto ] && a="--sample-slices $sl"
+        echo "== caustic $px wavefront slices $sl"; $T "$B" bench render $CAU --width $px --height $px --spp 512 --warmup 1 --runs 3 --integrator bdpt --wavefront on $a 2>&1 | grep -E "Msamples"
+      done
+      echo "== caustic $px megakernels"; $T "$B" bench render $CAU --width $px --height $px --spp 512 --warmup 1 --runs 3 --integrator bdpt --wavefront off 2>&1 | grep -E "Msamples"
+    done
+    for px in 128 192; do
+      for sl in auto 256; do
+        a=""; [ "$sl" != auto ] && a="--sample-slices $sl"
+        echo "== helmet $px wavefront slices $sl"; $T "$B" bench render $HB --width $px --height $px --spp 512 --warmup 1 --runs 3 --integrator bdpt --wavefront on $a 2>&1 | grep -E "Msamples"
+      done
+      echo "== helmet $px megakernels"; $T "$B" bench render $HB --width $px --height $px --spp 512 --warmup 1 --runs 3 --integrator bdpt --wavefront off 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+s22d)
+  # Session 22, a measurement build (.device/bidir-exp.gz): where bdpt_camera_wavefront's 128
+  # registers go. BIDIR_EXP_CAMERA's bits remove a part of the camera step (1: the light sample,
+  # s = 1; 2: the connections to the light vertex cache; 4: emitters found, s = 0; 8: the
+  # scattering that continues the path); BIDIR_EXP_CAP=1 sizes the pending shadow rays' array
+  # by the join (2 for bdpt:lvc=1) instead of BDPT_WF_SHADOW_RAYS (4). Registers, and textured
+  # Sponza's time without each part. Then s21k again with this session's build.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  X=$PWD/.device/bidir-exp
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for e in 0 1 2 3 4 8 15; do
+    echo "== info exp $e"; BIDIR_EXP_CAMERA=$e $T "$X" info --kernels $SP --sponza-sun-sky 2>&1 | grep -E "^bdpt:lvc=1 / bdpt_camera_wavefront" | cut -c1-400
+  done
+  echo "== info cap"; BIDIR_EXP_CAP=1 $T "$X" info --kernels $SP --sponza-sun-sky 2>&1 | grep -E "^bdpt:lvc=1 / bdpt_camera_wavefront" | cut -c1-400
+  for r in 1 2; do
+    for e in 0 1 2 4 8; do
+      echo "== sponza bdpt exp $e"; BIDIR_EXP_CAMERA=$e $T "$X" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples|_wavefront|trace"
+    done
+    echo "== sponza bdpt cap"; BIDIR_EXP_CAP=1 $T "$X" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples|_wavefront|trace"
+  done
+  for s in 1 2; do
+    for wf in auto off; do
+      echo "== caustic 128 bdpt --time 1 seed $s wavefront $wf"; $T "$B" render assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128 --integrator bdpt --time 1 --seed $s --wavefront $wf --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  ;;
 s22c)
   # Session 22: (1) the path states as 16-byte words (PtSuspended, BdptCameraState: integers
   # in uint words, floats' bits beside them) against 74e8721 (.device/bidir-b74e.gz, before

@@ -138,7 +138,10 @@ pub(super) fn resolve_shadow_queue(
 /// rough Cornell box 77.6 against 153.1 (256², 256 spp), the caustic scene's smooth glass 53.8
 /// against 66.0 (wall 58.4-59.8 against 67.9-68.3, with submissions that reuse their fences);
 /// the diffuse Cornell box keeps the megakernels (185.4 against 174.9, wall 191-193 against
-/// 179-184 ms per 1024 spp) (docs/results.md, "Launches of three dispatches").
+/// 179-184 ms per 1024 spp) (docs/results.md, "Launches of three dispatches"). Small images
+/// need their slots from more sample slices (`MAX_WAVEFRONT_SLICES`): with them the caustic
+/// scene at 64² takes 12.7 against 16.5 ms per 1024 spp, DamagedHelmet 19.2 against 47.5
+/// (session 22, "Slots for small images").
 pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> bool {
     let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
     let rich = features.glossy || features.textures;

@@ -191,8 +191,9 @@ pub struct RenderSettings {
     /// measure what specialisation buys).
     pub all_material_code: bool,
     /// Samples of a pixel a pass renders at once, each by its own invocation (0: as many as
-    /// it takes to give the GPU about 2^18 invocations; 1 on CPU devices, which are full
-    /// anyway). Small images otherwise leave a large GPU mostly idle.
+    /// it takes to give the GPU about 2^18 invocations, or a wavefront form about 2^22 slots,
+    /// within their memory; 1 on CPU devices, which are full anyway). Small images otherwise
+    /// leave a large GPU mostly idle.
     pub sample_slices: u32,
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
     /// responsive and far from the GPU timeout).
@@ -341,6 +342,14 @@ pub struct Renderer {
 const TARGET_INVOCATIONS: u64 = 1 << 18;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
 const SLICED_STORE_BYTES: u64 = 1 << 30;
+/// Most automatic sample slices of a megakernel (a 64 x 64 image and smaller: 2^18 invocations).
+const MAX_SLICES: u64 = 64;
+/// Most automatic sample slices of a wavefront form: enough for TARGET_SLOTS slots in a 64 x 64
+/// image. Capped at MAX_SLICES they left small images a quarter of the slots or less, and the
+/// launches' fixed costs over too few rays: NVIDIA H200, bdpt, ms per 512 spp (session 22,
+/// docs/results.md, "Slots for small images"): caustic scene 128² 48.8 at 64 slices, 26.6 at
+/// 256 (megakernels 33.3); DamagedHelmet 128² 90.3 against 40.6 (megakernels 94.4).
+const MAX_WAVEFRONT_SLICES: u64 = 1024;
 
 /// The integrator kernels are built for the binary BVH of 64-byte nodes, the compressed
 /// wide BVH and the 4-wide one (build.rs, `WIDE_VARIANTS`): quantised nodes would be read as
@@ -387,10 +396,9 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
             }
             _ => pt_wavefront::SLOT_BYTES,
         };
-        let slots = pt_wavefront::TARGET_SLOTS.min(shadow_queue::budget(ctx) / slot_bytes);
-        slots.div_ceil(pixels.max(1) as u64).clamp(1, 64)
+        wavefront_slices(pixels, slot_bytes, shadow_queue::budget(ctx))
     } else {
-        TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, 64)
+        TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, MAX_SLICES)
     };
     if settings.integrator.stores_light_vertices() {
         let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
@@ -407,6 +415,33 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
         s = s.min((limit / store.max(1)).max(1));
     }
     s as u32
+}
+
+/// A wavefront form's sample slices for `pixels` pixels: about TARGET_SLOTS slots of
+/// `slot_bytes`, as many as fit in `budget` bytes, at most MAX_WAVEFRONT_SLICES.
+fn wavefront_slices(pixels: u32, slot_bytes: u64, budget: u64) -> u64 {
+    let slots = pt_wavefront::TARGET_SLOTS.min(budget / slot_bytes.max(1));
+    slots.div_ceil(pixels.max(1) as u64).clamp(1, MAX_WAVEFRONT_SLICES)
+}
+
+#[cfg(test)]
+mod slice_tests {
+    use super::*;
+
+    /// Small images get the slots a large one gets (up to 64 x 64), within the memory budget.
+    #[test]
+    fn wavefront_slices_fill_the_target_slots_in_small_images() {
+        let (bytes, ample) = (200, 1 << 40);
+        assert_eq!(wavefront_slices(64 * 64, bytes, ample), 1024);
+        assert_eq!(wavefront_slices(128 * 128, bytes, ample), 256);
+        assert_eq!(wavefront_slices(192 * 192, bytes, ample), 114);
+        assert_eq!(wavefront_slices(640 * 360, bytes, ample), 19);
+        assert_eq!(wavefront_slices(32 * 32, bytes, ample), MAX_WAVEFRONT_SLICES, "capped");
+        assert_eq!(wavefront_slices(1920 * 1080, bytes, ample), 3);
+        // A budget of a million slots: a quarter of the target.
+        assert_eq!(wavefront_slices(128 * 128, bytes, bytes << 20), 64);
+        assert_eq!(wavefront_slices(1 << 24, bytes, 0), 1);
+    }
 }
 
 /// The window of `camera`'s image that `settings` render (the whole image without a crop).
