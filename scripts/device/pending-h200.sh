@@ -23,6 +23,60 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s22h)
+  # Session 22, a measurement build (BIDIR_EXP_TARGET_SLOTS): the wavefront forms' target
+  # slots 4 M (TARGET_SLOTS) against 8 M, interleaved, where s22g found more slots faster
+  # (DamagedHelmet pt-nee 384² 85.1 -> 76.6 ms at 57 slices, Sponza bdpt 502 -> 488 at 24).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  MR=".device/scenes/gltf/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2; do
+    for t in 4194304 8388608; do
+      for i in bdpt pt-nee pt; do
+        echo "== sponza 640x360 $i target $t"; BIDIR_EXP_TARGET_SLOTS=$t $T "$B" bench render $SPB --width 640 --height 360 --spp 456 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+      echo "== sponza 1920x1080 pt-nee target $t"; BIDIR_EXP_TARGET_SLOTS=$t $T "$B" bench render $SPB --width 1920 --height 1080 --spp 60 --warmup 1 --runs 3 --integrator pt-nee 2>&1 | grep -E "Msamples"
+      for i in bdpt pt-nee; do
+        echo "== helmet 384 $i target $t"; BIDIR_EXP_TARGET_SLOTS=$t $T "$B" bench render $HB --width 384 --height 384 --spp 456 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+        echo "== helmet 128 $i target $t"; BIDIR_EXP_TARGET_SLOTS=$t $T "$B" bench render $HB --width 128 --height 128 --spp 1024 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+        echo "== spheres 384 $i target $t"; BIDIR_EXP_TARGET_SLOTS=$t $T "$B" bench render $MR --width 384 --height 384 --spp 456 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+      for px in 128 256; do
+        echo "== caustic $px bdpt target $t"; BIDIR_EXP_TARGET_SLOTS=$t $T "$B" bench render $CAU --width $px --height $px --spp 1024 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  ;;
+s22g)
+  # Session 22: do more slots than TARGET_SLOTS (4 M) pay in large images? Textured Sponza
+  # 640x360 (19 slices by default for both), DamagedHelmet 384² (29): --sample-slices up to
+  # twice the slots (BDPT's light-vertex store caps Sponza at 24 slices in 4 GiB).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  HB=".device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2; do
+    for sl in auto 24 32 38; do
+      a=""; [ "$sl" != auto ] && a="--sample-slices $sl"
+      echo "== sponza pt-nee slices $sl"; $T "$B" bench render $SPB --spp 456 --warmup 1 --runs 3 --integrator pt-nee $a 2>&1 | grep -E "Msamples"
+      echo "== sponza pt slices $sl"; $T "$B" bench render $SPB --spp 456 --warmup 1 --runs 3 --integrator pt $a 2>&1 | grep -E "Msamples"
+    done
+    for sl in auto 24; do
+      a=""; [ "$sl" != auto ] && a="--sample-slices $sl"
+      echo "== sponza bdpt slices $sl"; $T "$B" bench render $SPB --spp 456 --warmup 1 --runs 3 --integrator bdpt $a 2>&1 | grep -E "Msamples"
+    done
+    for sl in auto 43 57; do
+      a=""; [ "$sl" != auto ] && a="--sample-slices $sl"
+      echo "== helmet pt-nee slices $sl"; $T "$B" bench render $HB --spp 1026 --warmup 1 --runs 3 --integrator pt-nee $a 2>&1 | grep -E "Msamples"
+      echo "== helmet bdpt slices $sl"; $T "$B" bench render $HB --spp 342 --warmup 1 --runs 3 --integrator bdpt $a 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
 s22f)
   # Session 22: the wavefront forms' automatic sample slices up to 1024 (were 64), so small
   # images get about TARGET_SLOTS slots too (.device/bidir.gz, a build of that change): new

@@ -344,8 +344,8 @@ const TARGET_INVOCATIONS: u64 = 1 << 18;
 const SLICED_STORE_BYTES: u64 = 1 << 30;
 /// Most automatic sample slices of a megakernel (a 64 x 64 image and smaller: 2^18 invocations).
 const MAX_SLICES: u64 = 64;
-/// Most automatic sample slices of a wavefront form: enough for TARGET_SLOTS slots in a 64 x 64
-/// image. Capped at MAX_SLICES they left small images a quarter of the slots or less, and the
+/// Most automatic sample slices of a wavefront form: enough for 4 million slots in a 64 x 64
+/// image (TARGET_SLOTS is 8 million). Capped at MAX_SLICES they left small images a quarter of the slots or less, and the
 /// launches' fixed costs over too few rays: NVIDIA H200, bdpt, ms per 512 spp (session 22,
 /// docs/results.md, "Slots for small images"): caustic scene 128² 48.8 at 64 slices, 26.6 at
 /// 256 (megakernels 33.3); DamagedHelmet 128² 90.3 against 40.6 (megakernels 94.4).
@@ -428,17 +428,18 @@ fn wavefront_slices(pixels: u32, slot_bytes: u64, budget: u64) -> u64 {
 mod slice_tests {
     use super::*;
 
-    /// Small images get the slots a large one gets (up to 64 x 64), within the memory budget.
+    /// Small images get the slots a large one gets (down to 91 x 91; 4 million at 64 x 64),
+    /// within the memory budget.
     #[test]
     fn wavefront_slices_fill_the_target_slots_in_small_images() {
         let (bytes, ample) = (200, 1 << 40);
-        assert_eq!(wavefront_slices(64 * 64, bytes, ample), 1024);
-        assert_eq!(wavefront_slices(128 * 128, bytes, ample), 256);
-        assert_eq!(wavefront_slices(192 * 192, bytes, ample), 114);
-        assert_eq!(wavefront_slices(640 * 360, bytes, ample), 19);
-        assert_eq!(wavefront_slices(32 * 32, bytes, ample), MAX_WAVEFRONT_SLICES, "capped");
-        assert_eq!(wavefront_slices(1920 * 1080, bytes, ample), 3);
-        // A budget of a million slots: a quarter of the target.
+        assert_eq!(pt_wavefront::TARGET_SLOTS, 1 << 23);
+        assert_eq!(wavefront_slices(128 * 128, bytes, ample), 512);
+        assert_eq!(wavefront_slices(192 * 192, bytes, ample), 228);
+        assert_eq!(wavefront_slices(640 * 360, bytes, ample), 37);
+        assert_eq!(wavefront_slices(64 * 64, bytes, ample), MAX_WAVEFRONT_SLICES, "capped");
+        assert_eq!(wavefront_slices(1920 * 1080, bytes, ample), 5);
+        // A budget of a million slots: an eighth of the target.
         assert_eq!(wavefront_slices(128 * 128, bytes, bytes << 20), 64);
         assert_eq!(wavefront_slices(1 << 24, bytes, 0), 1);
     }

@@ -22,8 +22,12 @@ pub const SLOT_BYTES: u64 = std::mem::size_of::<abi::PtSuspended>() as u64 + que
 /// H200, `bench render`, Sponza 640 x 360 pt-nee, 64 spp: 201 ms at 2 slices (0.46 million
 /// slots), 147 at 8 and 16 (1.8 and 3.7 million), 153 at 32; Cornell box 256 x 256, 1024 spp:
 /// 91 ms at 16 slices (1 million), 78 at 64 (4.2 million) (docs/results.md, "A wavefront path
-/// tracer").
-pub const TARGET_SLOTS: u64 = 1 << 22;
+/// tracer"). 8 million against 4 (session 22, "Slots for small images"): DamagedHelmet 384²
+/// pt-nee 38.3 -> 35.1 ms per 456 spp, bdpt 297.9 -> 275.9; MetalRoughSpheres pt-nee 47.0 ->
+/// 43.3, bdpt 128.2 -> 122.8; caustic scene 256² bdpt 206 -> 193 per 1024 spp; textured Sponza
+/// 640 x 360 bdpt 500.3 -> 485.4 (its light-vertex store caps it at 24 slices), pt-nee and pt
+/// level (-0.7 % / 0 %).
+pub const TARGET_SLOTS: u64 = 1 << 23;
 
 /// The wavefront path tracer's kernels and per-slot storage for passes of up to `slots` slots.
 pub struct WavefrontPathTracer {
