@@ -7,6 +7,12 @@
 #ifndef BIDIR_WF_ACTIVE_GLSL
 #define BIDIR_WF_ACTIVE_GLSL
 
+// The includer's workgroup size (its local_size_x). Not gl_WorkGroupSize: glslang takes that
+// as (1, 1, 1) in code compiled before the layout declaration, which follows the includes.
+#ifndef WF_WG_SIZE
+#define WF_WG_SIZE PT_WG_SIZE
+#endif
+
 // Per launch l of a batch: the segments (2 l) and shadow rays (2 l + 1) it queued.
 layout(std430, binding = BIND_WF_COUNTS) coherent buffer Counts { uint wf_counts[]; };
 // The most workgroups a trace kernel of these launches starts (`Tracer::queued_groups`: a
@@ -91,7 +97,7 @@ void wf_end_launch(uint launch_word) {
     if (wf_last_group && gl_LocalInvocationIndex == 0u) {
         memoryBarrierBuffer();
         uint listed = atomicAdd(wf_dispatch[launch + 1u].w, 0u);
-        wf_dispatch[launch + 1u].xyz = uvec3((listed + PT_WG_SIZE - 1u) / PT_WG_SIZE, 1u, 1u);
+        wf_dispatch[launch + 1u].xyz = uvec3((listed + WF_WG_SIZE - 1u) / WF_WG_SIZE, 1u, 1u);
         wf_trace_dispatch[2u * launch] = wf_trace_dispatch_for(atomicAdd(wf_counts[2u * launch], 0u));
         wf_trace_dispatch[2u * launch + 1u] = wf_trace_dispatch_for(atomicAdd(wf_counts[2u * launch + 1u], 0u));
     }

@@ -23,6 +23,7 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #define BDPT_WAVEFRONT
 #include "bidir_abi.glsl"
+#define WF_WG_SIZE BDPT_CAMERA_WF_WG_SIZE
 #include "ray.glsl"
 #include "rng.glsl"
 #include "scene.glsl"
@@ -36,7 +37,7 @@
 #include "vcm.glsl"
 #include "wf_active.glsl"
 
-layout(local_size_x = PT_WG_SIZE) in;
+layout(local_size_x = WF_WG_SIZE) in;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };

@@ -36,7 +36,7 @@
 #include "vcm.glsl"
 #include "wf_active.glsl"
 
-layout(local_size_x = PT_WG_SIZE) in;
+layout(local_size_x = WF_WG_SIZE) in;
 layout(std430, binding = BIND_SPLAT) buffer Splat { float splat[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 // Stored vertices per path, for the light vertex cache's scan.
