@@ -166,6 +166,9 @@ fn time_snapshots_follow_render_time() {
         assert!(w[1].seconds > w[0].seconds && w[1].spp > w[0].spp, "{points:?}");
     }
     let last = points.last().unwrap();
-    assert!(last.seconds >= 0.6, "the budget is rendered in full: {points:?}");
+    // `Renderer::render_time` does not start a last pass that would overshoot what is left of
+    // its budget by more than 10 % of it, so the render may end short of the budget by up to
+    // that (seen once on lavapipe: 0.598 s of 0.6, the last call's budget 0.467 s).
+    assert!(last.seconds >= 0.6 * 0.9, "the budget is rendered (less at most a pass that would overshoot it): {points:?}");
     assert_eq!(last.rmse, bidir::imaging::metrics::rmse(&curves[0].image, &reference));
 }
