@@ -84,3 +84,30 @@ fn binding_and_spec_ids_are_unique() {
         assert!(seen.len() > 5, "{prefix}: too few constants found: {seen:?}");
     }
 }
+
+/// `gl_WorkGroupSize` is used only after the file itself declares `layout(local_size_x ...)`:
+/// glslang takes it as (1, 1, 1) in code compiled before that declaration, and kernels include
+/// their headers before theirs, so a header that reads it sizes with 1 (session 22: a launch's
+/// successor got 64x its workgroups, which no image shows). Headers take the includer's size
+/// as a macro instead (`WF_WG_SIZE` in glsl/common/wf_active.glsl).
+#[test]
+fn work_group_size_is_read_only_after_the_layout() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("glsl");
+    let mut checked = 0;
+    for dir in ["common", "kernels"] {
+        for entry in std::fs::read_dir(root.join(dir)).unwrap() {
+            let path = entry.unwrap().path();
+            let text = std::fs::read_to_string(&path).unwrap();
+            let mut declared = false;
+            for (n, line) in text.lines().enumerate() {
+                let code = line.split("//").next().unwrap_or("");
+                declared |= code.contains("layout(local_size_x");
+                if code.contains("gl_WorkGroupSize") {
+                    assert!(declared, "{}:{}: gl_WorkGroupSize before this file's layout(local_size_x ...)", path.display(), n + 1);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 0, "no use of gl_WorkGroupSize found: is the glsl/ tree where it was?");
+}
