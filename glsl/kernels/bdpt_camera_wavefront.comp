@@ -23,7 +23,6 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #define BDPT_WAVEFRONT
 #include "bidir_abi.glsl"
-#define WF_WG_SIZE BDPT_CAMERA_WF_WG_SIZE
 #include "ray.glsl"
 #include "rng.glsl"
 #include "scene.glsl"

@@ -25,7 +25,8 @@ CB="--width 256 --height 256"
 case "${1:-speed}" in
 s22k)
   # Pending (session 22 had no device time left): BDPT's wavefront camera kernel in workgroups
-  # of 512 (a build with BDPT_CAMERA_WF_WG_SIZE = 512 as .device/bidir.gz) against 64
+  # of 512 (a build with `#define WF_WG_SIZE 512` before bdpt_camera_wavefront.comp's includes,
+  # as .device/bidir.gz) against 64
   # (.device/bidir-final.gz, a build of this commit), interleaved (s22c, with the size as a
   # specialisation constant: Sponza 72.3 -> 70.8 ms at 512, one run).
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done

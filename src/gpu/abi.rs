@@ -164,11 +164,6 @@ gpu_consts! {
     pub const JOIN_LVC: u32 = 2;
     /// Invocations per workgroup of the integrator kernels (PT_WG_SIZE x 1).
     pub const PT_WG_SIZE: u32 = 64;
-    /// Invocations per workgroup of BDPT's wavefront camera kernel (bdpt_camera_wavefront.comp).
-    /// 512 measured 2 % faster on the textured Sponza in one run (session 22, s22c, with the
-    /// size as a specialisation constant); `scripts/device/pending-h200.sh s22k` is the check
-    /// still to run (a build with 512 against one with 64) before it becomes the default.
-    pub const BDPT_CAMERA_WF_WG_SIZE: u32 = 64;
     /// `GpuTexture::flags` bit: texels are sRGB-encoded.
     pub const TEXTURE_SRGB: u32 = 1;
     /// Counters in the render stats buffer.

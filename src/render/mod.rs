@@ -191,7 +191,7 @@ pub struct RenderSettings {
     /// measure what specialisation buys).
     pub all_material_code: bool,
     /// Samples of a pixel a pass renders at once, each by its own invocation (0: as many as
-    /// it takes to give the GPU about 2^18 invocations, or a wavefront form about 2^22 slots,
+    /// it takes to give the GPU about 2^18 invocations, or a wavefront form about 2^23 slots,
     /// within their memory; 1 on CPU devices, which are full anyway). Small images otherwise
     /// leave a large GPU mostly idle.
     pub sample_slices: u32,
@@ -345,8 +345,9 @@ const SLICED_STORE_BYTES: u64 = 1 << 30;
 /// Most automatic sample slices of a megakernel (a 64 x 64 image and smaller: 2^18 invocations).
 const MAX_SLICES: u64 = 64;
 /// Most automatic sample slices of a wavefront form: enough for 4 million slots in a 64 x 64
-/// image (TARGET_SLOTS is 8 million). Capped at MAX_SLICES they left small images a quarter of the slots or less, and the
-/// launches' fixed costs over too few rays: NVIDIA H200, bdpt, ms per 512 spp (session 22,
+/// image (TARGET_SLOTS is 8 million). Capped at MAX_SLICES they left small images a quarter of
+/// the slots or less, and the launches' fixed costs over too few rays: NVIDIA H200, bdpt, ms
+/// per 512 spp, at 4 million slots then (session 22,
 /// docs/results.md, "Slots for small images"): caustic scene 128² 48.8 at 64 slices, 26.6 at
 /// 256 (megakernels 33.3); DamagedHelmet 128² 90.3 against 40.6 (megakernels 94.4).
 const MAX_WAVEFRONT_SLICES: u64 = 1024;
