@@ -160,7 +160,12 @@ fn check_layout(
                     hits += 1;
                 }
             }
-            assert_eq!(any[i].tri != NO_HIT, want_any[i], "{name} {variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict");
+            assert_eq!(
+                any[i].tri != NO_HIT,
+                want_any[i],
+                "{name} {} {variant} ray {i} ({o}, {d}, tmax {tmax}): any-hit verdict",
+                opts.layout.name()
+            );
         }
         eprintln!(
             "{name} [{}, {}, {variant}]: {} rays, {hits} hits ({ties} ties), {misses} misses; {} nodes, depth {}",

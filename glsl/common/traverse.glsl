@@ -66,11 +66,16 @@ bool test_leaf_triangle(PreparedRay pr, uint i, inout TraceHit hit, inout uvec2 
     }
     float t;
     vec2 bary;
-    if (!intersect_tri(pr, bvh_tris[i], hit.t, t, bary)) {
+    GpuTri tri = bvh_tris[i];
+    if (!intersect_tri(pr, tri, hit.t, t, bary)) {
         return false;
     }
 #ifdef TRAVERSE_WITH_ALPHA
-    if (HAS_ALPHA != 0u && !traverse_alpha_hit(i, bary)) {
+    // A watertight triangle says in a.w whether its material may reject a hit (0: it never
+    // does; Bvh::alpha_marked_tris): an opaque one takes no material lookup. Woop's
+    // triangles use w, so each of their hits looks.
+    bool may_reject = TRI_TEST != TRI_TEST_WATERTIGHT || floatBitsToUint(tri.a.w) != 0u;
+    if (HAS_ALPHA != 0u && may_reject && !traverse_alpha_hit(i, bary)) {
         return false;
     }
 #endif

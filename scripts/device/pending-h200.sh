@@ -7,11 +7,12 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles).
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
 # shadow-queue, queue-exp, queue-suspend, queue-final, queue-defaults, queue-time, bdpt-queue, bdpt-queue2, queue-balanced (the queue's
-# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 22: s22a and s22c (a measurement build: the wavefront kernels' workgroup size as a specialisation constant, BIDIR_EXP_WG_CAMERA / _LIGHT / _PT; s22a's BDPT launches were mis-sized, see s22c), s22b and s22c (the path states' integer words: s21l's question, answered against .device/bidir-b74e.gz and .device/bidir-head.gz, builds of 74e8721 and 32eb0ea; s21k run in the s22a call) (docs/results.md, "Path states in 16-byte words"); s22d (a measurement build, .device/bidir-exp.gz: BIDIR_EXP_CAMERA's bits remove parts of the camera step, BIDIR_EXP_CAP sizes the pending shadow rays' array by the join; not committed; and s21k), s22e and s22f (the wavefront forms' sample slices for small images), s22g, s22h and s22i (8 M slots; s22h and s22i a measurement build, BIDIR_EXP_TARGET_SLOTS), s22j (the camera pass's connections in a kernel of their own, a build not kept, against .device/bidir-final.gz = 6d21abf), s22k (pending: the camera kernel's workgroups of 512) (docs/results.md, "Slots for small images"); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h and s21i (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission), s21j (submissions that reuse their fences and command buffers, against .device/bidir-d768.gz), s21k (the caustic scene's equal-time error with BDPT's new default; run in session 22), s21l (not run: s22b and s22c answer it) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
+# designs one after the other, see docs/results.md); in session 11: light-queue, bdpt-layout, defaults11, bdpt-slots, joins11; in session 12: sass, exp12, exp12b, trav12, cull12, final12, layout12, ffma12 (docs/traversal.md); in session 15: s15a and s15e (measurement builds, not committed: BIDIR_BDPT_EXP, BIDIR_LT_KAPPA, BIDIR_LVC_COHERENT), s15b, s15c, s15d, s15f (docs/results.md); in session 16: s16a (docs/results.md), s16s, s16b and s16c (measurement builds, not committed: BIDIR_TRAV_EXP), s16d, s16e, s16f, s16g, s16h (docs/traversal.md); in session 17: s17a, s17b and s17c (measurement builds, not committed: BIDIR_EXP_PUSH, BIDIR_EXP_T), s17d and s17e (a build of 8610e32: --light-paths auto, reverted) (docs/traversal.md); in session 22: s22a and s22c (a measurement build: the wavefront kernels' workgroup size as a specialisation constant, BIDIR_EXP_WG_CAMERA / _LIGHT / _PT; s22a's BDPT launches were mis-sized, see s22c), s22b and s22c (the path states' integer words: s21l's question, answered against .device/bidir-b74e.gz and .device/bidir-head.gz, builds of 74e8721 and 32eb0ea; s21k run in the s22a call) (docs/results.md, "Path states in 16-byte words"); s22d (a measurement build, .device/bidir-exp.gz: BIDIR_EXP_CAMERA's bits remove parts of the camera step, BIDIR_EXP_CAP sizes the pending shadow rays' array by the join; not committed; and s21k), s22e and s22f (the wavefront forms' sample slices for small images), s22g, s22h and s22i (8 M slots; s22h and s22i a measurement build, BIDIR_EXP_TARGET_SLOTS), s22j (the camera pass's connections in a kernel of their own, a build not kept, against .device/bidir-final.gz = 6d21abf), s22k (the camera kernel's workgroups of 512: run in session 23) (docs/results.md, "Slots for small images"); in session 21: s21a, s21b, s21f (launches of three dispatches, the traces sized by the path kernel and run at once, refill 16; carried with .device/bidir-s20g.gz, a build of fc53e19), s21c (a measurement build: the path tracer's slots as two interleaved halves, not kept), s21d and s21e (a measurement build: BIDIR_WF_GROUPS, BIDIR_WF_REFILL), s21g (the wavefront forms where the megakernels are the default; kernel statistics), s21h and s21i (a measurement build: BIDIR_HOST_PROFILE, the host's time per submission), s21j (submissions that reuse their fences and command buffers, against .device/bidir-d768.gz), s21k (the caustic scene's equal-time error with BDPT's new default; run in session 22), s21l (not run: s22b and s22c answer it) (docs/results.md, "Launches of three dispatches"); in session 20: s20a, s20b, s20c, s20d (a measurement build: the path tracer with lists of live slots, not kept), s20e, s20f, s20g (BDPT's light pass as a wavefront, live slots, recording while the GPU runs, the trace counters reset without fills; s20a-s20c carried .device/bidir-s19.gz, .device/bidir-s20b.gz, .device/bidir-s20c.gz, .device/bidir-s20e.gz or .device/bidir-s20f.gz beside the textured Sponza and DamagedHelmet, without .device/ref.exr) (docs/results.md, "BDPT's light pass as a wavefront"); in session 19: s19a and s19b (BDPT's camera pass as a wavefront; s19a carried .device/bidir-s18.gz, a build of 577dd35, beside the textured Sponza and DamagedHelmet alone) (docs/results.md, "BDPT's camera pass as a wavefront"); in session 18: s18a and s18b (measurement builds: BIDIR_WF_REFILL, BIDIR_WF_DEBUG), s18h (a measurement build: any-hit visit order per node, dropped), s18c-s18f and s18i (the wavefront path tracer; s18c-s18f need .device/scenes/sponza-full, the textured Sponza with its eight largest PNGs re-encoded as JPEG, and .device/scenes/gltf with three samples, carried without .device/layer, .device/scenes/sponza and bidir-base.gz to stay under 64 MiB) (docs/results.md, "A wavefront path tracer"). Rerun `final` against the commit that changes a default, with BASE = the
 # commit before it. The device tool brings back at most 8 files: archive CSVs (see vcm-first).
 set -u
 B=${B:-$PWD/.device/bidir}
@@ -23,6 +24,74 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s23c)
+  # Session 23: watertight triangles marked when their material may turn a hit away, so the
+  # alpha-tested kernels look up no material for opaque ones (.device/bidir.gz) against the
+  # build before (.device/bidir-base.gz), interleaved, two runs; the integrators also over leaf
+  # size 3, quality 3; the same image.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for b in "$BASE" "$B"; do
+      n=$(basename $b)
+      for c in "--alpha" "--alpha --refill 16"; do
+        echo "== trace $n bvh4 leaf 3 q3 $c"; $T "$b" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+      for c in "" "--bvh-leaf-size 3 --bvh-quality 3"; do
+        for i in pt-nee pt bdpt; do
+          echo "== sponza $n $i [$c]"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i $c 2>&1 | grep -E "Msamples"
+        done
+      done
+    done
+  done
+  for b in "$BASE" "$B"; do
+    $T "$b" render $SPB --spp 16 --integrator pt-nee -o /tmp/$(basename $b).exr > /dev/null 2>&1
+    $T "$b" render $SPB --spp 4 --integrator bdpt -o /tmp/$(basename $b)-bdpt.exr > /dev/null 2>&1
+  done
+  echo "== same image pt-nee"; $T "$B" diff /tmp/bidir.exr /tmp/bidir-base.exr 2>&1 | head -3
+  echo "== same image bdpt"; $T "$B" diff /tmp/bidir-bdpt.exr /tmp/bidir-base-bdpt.exr 2>&1 | head -3
+  ;;
+s23b)
+  # Session 23: what alpha masks cost the 4-wide trace kernels (textured Sponza, the kernels
+  # the integrators run) and registers; the integrators over the bench's best build (leaf size
+  # 3, quality 3 or 4) against their default (leaf size 4, quality 2), interleaved, two runs.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  H=$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb
+  HB="$H --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  T="timeout -k 5 60"
+  for c in "" "--alpha" "--refill 16" "--alpha --refill 16"; do
+    echo "== trace bvh4 leaf 3 q3 $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |^trace" | sed -E 's/; (Binary|Shader|Stack)[^;]*//g' | cut -c1-220
+  done
+  for r in 1 2; do
+    for c in "" "--bvh-leaf-size 3" "--bvh-leaf-size 3 --bvh-quality 3" "--bvh-leaf-size 3 --bvh-quality 4"; do
+      for i in pt-nee pt bdpt; do
+        echo "== sponza $i [$c]"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i $c 2>&1 | grep -E "Msamples"
+      done
+      echo "== helmet pt-nee [$c]"; $T "$B" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator pt-nee $c 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+s23a)
+  # Session 23: the 4-wide BVH with half-precision boxes (--bvh bvh4h, 64-byte nodes) against
+  # full precision (bvh4, 128 bytes), interleaved, two runs, quality 3 and 4, lockstep and
+  # dynamic fetch; the kernels' registers. Then s22k (the same binaries).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for q in 3 4; do
+      for c in "--leaf-size 3 --quality $q" "--leaf-size 3 --quality $q --refill 28"; do
+        for l in bvh4 bvh4h; do
+          echo "== sponza --bvh $l $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh $l $c 2>&1 | grep -E "^(primary|shadow|diffuse) |registers" | cut -c1-200
+        done
+      done
+    done
+  done
+  ;;
 s22k)
   # Pending (session 22 had no device time left): BDPT's wavefront camera kernel in workgroups
   # of 512 (a build with `#define WF_WG_SIZE 512` before bdpt_camera_wavefront.comp's includes,

@@ -197,6 +197,21 @@ impl Bvh {
             + std::mem::size_of_val(self.bvh4_nodes.as_slice())
     }
 
+    /// The triangles as the GPU stores them, each watertight one whose original triangle
+    /// `may_reject` (its material's alpha mask or opacity can turn a hit away) marked with
+    /// `a.w` = 1 instead of 0: the alpha-tested kernels look up the material of marked
+    /// triangles only (glsl/common/traverse.glsl, `test_leaf_triangle`). Woop's triangles
+    /// use `w` and come back as they are (their kernels look up every hit's material).
+    pub fn alpha_marked_tris(&self, may_reject: impl Fn(u32) -> bool) -> Vec<GpuTri> {
+        let mut tris = self.tris.clone();
+        if self.tri_test == TriTest::Watertight {
+            for (tri, &id) in tris.iter_mut().zip(&self.tri_ids) {
+                tri.a.w = if may_reject(id) { 1.0 } else { 0.0 };
+            }
+        }
+        tris
+    }
+
     /// Nodes of the layout built.
     pub fn node_count(&self) -> usize {
         self.nodes.len() + self.wide_nodes.len() + self.quant_nodes.len() + self.bvh4_nodes.len()

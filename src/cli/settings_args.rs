@@ -84,9 +84,13 @@ pub struct SettingsArgs {
     #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh|bvh4")]
     pub bvh: String,
     /// BVH build quality, obvhs's preset 0 (fastest build) .. 4 (slowest build, fewest nodes
-    /// visited per ray); the image is the same.
-    #[arg(long, default_value_t = 2, value_name = "0..4", value_parser = clap::value_parser!(u32).range(0..=4))]
-    pub bvh_quality: u32,
+    /// visited per ray) [default: 3 for bvh4, 2 otherwise]; the image is the same.
+    #[arg(long, value_name = "0..4", value_parser = clap::value_parser!(u32).range(0..=4))]
+    pub bvh_quality: Option<u32>,
+    /// Most triangles in a BVH leaf (the compressed wide BVH takes at most 3) [default: 3 for
+    /// bvh4, 4 otherwise]; the image is the same.
+    #[arg(long, value_name = "1..16", value_parser = clap::value_parser!(u32).range(1..=16))]
+    pub bvh_leaf_size: Option<u32>,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
     /// what kernel specialisation buys).
     #[arg(long)]
@@ -155,7 +159,8 @@ impl SettingsArgs {
         s.light_path_ratio = self.light_paths;
         s.sample_slices = self.sample_slices;
         s.bvh.tri_test = self.tri_test;
-        s.bvh.quality = self.bvh_quality;
+        s.bvh_quality = self.bvh_quality;
+        s.bvh_leaf_size = self.bvh_leaf_size;
         s.bvh_layout = match self.bvh.as_str() {
             "auto" => None,
             "bvh2" => Some(bidir::bvh::BvhLayout::Bvh2),

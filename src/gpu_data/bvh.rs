@@ -1,7 +1,7 @@
 //! The BVH in GPU memory, bound the same way by the integrators and the trace kernels.
 
 use crate::bvh::{Bvh, BvhLayout, TriTest};
-use crate::gpu::abi;
+use crate::gpu::abi::{self, GpuTri};
 use crate::gpu::kernels::LayoutForms;
 use crate::vk::{Bind, Buffer, Context, KernelSource, Result};
 
@@ -17,6 +17,13 @@ pub struct GpuBvh {
 
 impl GpuBvh {
     pub fn upload(ctx: &Context, bvh: &Bvh) -> Result<GpuBvh> {
+        GpuBvh::upload_with_tris(ctx, bvh, &bvh.tris)
+    }
+
+    /// As `upload`, with `tris` (`bvh.tris` re-encoded, e.g. `Bvh::alpha_marked_tris`) in
+    /// place of `bvh.tris`.
+    pub fn upload_with_tris(ctx: &Context, bvh: &Bvh, tris: &[GpuTri]) -> Result<GpuBvh> {
+        assert_eq!(tris.len(), bvh.tris.len(), "one GPU triangle per leaf triangle");
         let nodes = match bvh.layout {
             BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
             BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
@@ -25,7 +32,7 @@ impl GpuBvh {
         };
         Ok(GpuBvh {
             nodes,
-            tris: ctx.upload_buffer("bvh.tris", &bvh.tris)?,
+            tris: ctx.upload_buffer("bvh.tris", tris)?,
             tri_test: bvh.tri_test,
             layout: bvh.layout,
             bytes: (bvh.node_bytes() + std::mem::size_of_val(bvh.tris.as_slice())) as u64,

@@ -181,6 +181,21 @@ pub fn wavefront_bvh_layout(on_cpu: bool) -> BvhLayout {
     }
 }
 
+/// The most triangles per leaf and the obvhs quality preset a BVH of `layout` is built with
+/// for the integrators where `--bvh-leaf-size` / `--bvh-quality` do not say: the 4-wide BVH
+/// of the wavefront forms' trace kernels at 3 and 3, as `bench traversal` measured best for
+/// it (docs/traversal.md, session 17); the others at 4 and 2 (quality 3 gained the megakernels
+/// nothing on Sponza, session 7). NVIDIA H200, `bench render`, two runs (docs/results.md,
+/// session 23): textured Sponza 640x360 under sun and sky, 64 spp, pt-nee 52.3 -> 50.7 ms,
+/// pt 40.8 -> 40.2, bdpt 68.1-68.2 -> 66.6; DamagedHelmet 384² pt-nee 20.9 -> 20.4 (its tree is
+/// built once per render: Sponza's in 0.56 s against 0.26 s on a 2-core CPU).
+pub fn default_bvh_build(layout: BvhLayout) -> (u32, u32) {
+    match layout {
+        BvhLayout::Bvh4 => (3, 3),
+        _ => (4, 2),
+    }
+}
+
 /// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
 /// the default for the device, integrator and scene).
 pub(super) fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrator: Integrator, features: &SceneFeatures) -> BvhLayout {

@@ -42,7 +42,15 @@ pub struct GpuScene {
 impl GpuScene {
     pub fn upload(ctx: &Context, scene: &Scene, bvh: &Bvh) -> Result<GpuScene> {
         let mut features = SceneFeatures::of(scene);
-        let gbvh = GpuBvh::upload(ctx, bvh)?;
+        let materials: Vec<GpuMaterial> = scene.materials.iter().map(gpu_material).collect();
+        // Triangles whose material can turn a hit away are marked for the alpha-tested
+        // traversal, as traverse_alpha_hit (scene.glsl) decides: it keeps every hit on the rest.
+        let may_reject = |t: u32| {
+            let m = &materials[scene.material_ids[t as usize] as usize];
+            let opaque = m.opacity >= 1.0 && m.alpha_texture == 0;
+            m.alpha_cutoff > 0.0 || !opaque
+        };
+        let gbvh = GpuBvh::upload_with_tris(ctx, bvh, &bvh.alpha_marked_tris(may_reject))?;
         let prim_info: Vec<UVec4> = bvh
             .tri_ids
             .iter()
@@ -51,7 +59,6 @@ impl GpuScene {
                 UVec4::new(a, b, c, scene.material_ids[t as usize])
             })
             .collect();
-        let materials: Vec<GpuMaterial> = scene.materials.iter().map(gpu_material).collect();
         let lights = LightTable::build(scene);
         let placeholder = |name: &str| ctx.create_buffer(name, 4, Memory::Device);
         let normals = match (&scene.normals, features.normals) {

@@ -34,8 +34,8 @@ mod wavefront_queues;
 pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
 pub use defaults::{
-    default_bvh_layout, default_camera_pass_queue, default_one_trace, default_path_regeneration, default_shadow_queue, default_wavefront,
-    wavefront_bvh_layout,
+    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_one_trace, default_path_regeneration, default_shadow_queue,
+    default_wavefront, wavefront_bvh_layout,
 };
 pub use film::Film;
 pub use gpu_scene::GpuScene;
@@ -203,6 +203,11 @@ pub struct RenderSettings {
     /// The BVH layout the integrators traverse (`--bvh`): `bvh2` or `cwbvh`; `None` takes the
     /// device's faster one ([`default_bvh_layout`]).
     pub bvh_layout: Option<BvhLayout>,
+    /// Most triangles per BVH leaf (`--bvh-leaf-size`) and obvhs's quality preset
+    /// (`--bvh-quality`); `None` takes the layout's default ([`default_bvh_build`]). The image
+    /// is the same either way.
+    pub bvh_leaf_size: Option<u32>,
+    pub bvh_quality: Option<u32>,
     /// Index of the first sample rendered (`--sample-range START..`): a render of samples
     /// `a..b` uses the random numbers a render from 0 uses for them, so disjoint ranges are
     /// independent parts of one estimate (see `film::merge`).
@@ -274,6 +279,8 @@ impl RenderSettings {
             pass_target: Duration::from_millis(250),
             bvh: BuildOptions::default(),
             bvh_layout: None,
+            bvh_leaf_size: None,
+            bvh_quality: None,
             sample_start: 0,
             crop: None,
             first_hit: None,
@@ -525,6 +532,9 @@ impl Renderer {
         }
         let features = SceneFeatures::of(scene);
         settings.bvh.layout = auto_bvh_layout(ctx, &settings, settings.integrator, &features);
+        let (leaf_size, quality) = default_bvh_build(settings.bvh.layout);
+        settings.bvh.max_leaf_tris = settings.bvh_leaf_size.unwrap_or(leaf_size);
+        settings.bvh.quality = settings.bvh_quality.unwrap_or(quality);
         // Resolved once from what the scene has, so `settings()` says what runs.
         settings.path_regeneration = Some(settings.path_regeneration.unwrap_or_else(|| default_path_regeneration(on_cpu(ctx), &features)));
         check_layout(settings.bvh.layout)?;
