@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles).
+# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d.
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
@@ -24,6 +24,33 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s23d)
+  # Session 23, the commit after s23c: the integrators at the new defaults (4-wide BVH at leaf
+  # size 3, quality 3; alpha-marked triangles), two runs; quality 4 beside them; the
+  # megakernels (--wavefront off) for today's ratio; 1 s renders; the 4-wide BVH's build time.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  H=$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb
+  HB="$H --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for c in "" "--bvh-quality 4" "--wavefront off"; do
+      for i in pt-nee pt bdpt; do
+        echo "== sponza $i [$c]"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i $c 2>&1 | grep -E "Msamples"
+      done
+    done
+    for i in pt-nee bdpt; do
+      echo "== helmet $i"; $T "$B" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+    done
+  done
+  for i in pt-nee bdpt; do
+    echo "== sponza $i 1 s"; $T "$B" render $SPB --time 1 --integrator $i -o /tmp/s.exr 2>&1 | grep -iE "spp|samples" | head -2
+  done
+  for q in 2 3 4; do
+    echo "== build q$q"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q --reps 1 --warmup 0 2>&1 | grep -E "build" | cut -c1-200
+  done
+  ;;
 s23c)
   # Session 23: watertight triangles marked when their material may turn a hit away, so the
   # alpha-tested kernels look up no material for opaque ones (.device/bidir.gz) against the
