@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d.
+# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build).
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
@@ -24,6 +24,37 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s23e)
+  # Session 23: obvhs's parallel build (rayon): the same tree as on 2 cores (counts at 64x36),
+  # the build times, the integrators at quality 3 (the default) and 4, setup times at 1 s,
+  # `bench traversal` over the new trees.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  H=$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb
+  HB="$H --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  T="timeout -k 5 60"
+  nproc
+  for q in 2 3 4; do
+    echo "== tree q$q"; $T "$B" bench traversal "$SP" --camera CameraMain --width 64 --height 36 --bvh bvh4 --leaf-size 3 --quality $q --reps 1 --warmup 0 2>&1 | grep -E "build|^(primary|shadow|diffuse) " | cut -c1-200
+  done
+  for r in 1 2; do
+    for c in "" "--bvh-quality 4"; do
+      for i in pt-nee pt bdpt; do
+        echo "== sponza $i [$c]"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i $c 2>&1 | grep -E "Msamples"
+      done
+      echo "== helmet pt-nee [$c]"; $T "$B" bench render $HB --spp 256 --warmup 1 --runs 3 --integrator pt-nee $c 2>&1 | grep -E "Msamples"
+    done
+  done
+  for c in "" "--bvh-quality 4"; do
+    for i in pt-nee bdpt; do
+      echo "== sponza $i 1 s [$c]"; $T "$B" render $SPB --time 1 --integrator $i $c -o /tmp/s.exr 2>&1 | grep -iE "spp in" | head -1
+    done
+  done
+  for c in "--quality 3" "--quality 3 --refill 28" "--quality 4" "--quality 4 --refill 28"; do
+    echo "== trace bvh4 leaf 3 $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |build" | cut -c1-200
+  done
+  ;;
 s23d)
   # Session 23, the commit after s23c: the integrators at the new defaults (4-wide BVH at leaf
   # size 3, quality 3; alpha-marked triangles), two runs; quality 4 beside them; the

@@ -217,3 +217,48 @@ impl Bvh {
         self.nodes.len() + self.wide_nodes.len() + self.quant_nodes.len() + self.bvh4_nodes.len()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// obvhs builds in parallel (rayon); the tree, and so every image, must not depend on how
+    /// many threads build it (the same seed gives the same image on any machine).
+    #[test]
+    fn the_tree_does_not_depend_on_the_thread_count() {
+        // A soup large enough for obvhs's parallel paths (reinsertion batches, radix sorts).
+        let mut state = 7u32;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            state as f32 / u32::MAX as f32
+        };
+        let mut positions = Vec::new();
+        let mut triangles = Vec::new();
+        for i in 0..60_000u32 {
+            let o = Vec3::new(next(), next(), next()) * 100.0;
+            for _ in 0..3 {
+                positions.push(o + Vec3::new(next(), next(), next()));
+            }
+            triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
+        }
+        for (quality, layout) in [(2, BvhLayout::Bvh2), (4, BvhLayout::Bvh4), (3, BvhLayout::Cwbvh)] {
+            let opts = BuildOptions { quality, layout, max_leaf_tris: 3, ..Default::default() };
+            let build = |threads: usize| {
+                let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("a thread pool");
+                pool.install(|| Bvh::build(&positions, &triangles, &opts).expect("the soup builds"))
+            };
+            let (one, four) = (build(1), build(4));
+            let bytes = |b: &Bvh| {
+                let mut v: Vec<u8> = bytemuck::cast_slice(&b.nodes).to_vec();
+                v.extend_from_slice(bytemuck::cast_slice(&b.wide_nodes));
+                v.extend_from_slice(bytemuck::cast_slice(&b.bvh4_nodes));
+                v.extend_from_slice(bytemuck::cast_slice(&b.tri_ids));
+                v
+            };
+            assert!(one.node_count() > 1000, "{layout:?}: a real tree");
+            assert!(bytes(&one) == bytes(&four), "{layout:?} at quality {quality}: 1 and 4 threads built different trees");
+        }
+    }
+}

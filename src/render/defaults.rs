@@ -183,15 +183,17 @@ pub fn wavefront_bvh_layout(on_cpu: bool) -> BvhLayout {
 
 /// The most triangles per leaf and the obvhs quality preset a BVH of `layout` is built with
 /// for the integrators where `--bvh-leaf-size` / `--bvh-quality` do not say: the 4-wide BVH
-/// of the wavefront forms' trace kernels at 3 and 3, as `bench traversal` measured best for
+/// of the wavefront forms' trace kernels at 3 and 4, as `bench traversal` measured best for
 /// it (docs/traversal.md, session 17); the others at 4 and 2 (quality 3 gained the megakernels
-/// nothing on Sponza, session 7). NVIDIA H200, `bench render`, two runs (docs/results.md,
-/// session 23): textured Sponza 640x360 under sun and sky, 64 spp, pt-nee 52.3 -> 50.7 ms,
-/// pt 40.8 -> 40.2, bdpt 68.1-68.2 -> 66.6; DamagedHelmet 384² pt-nee 20.9 -> 20.4 (its tree is
-/// built once per render: Sponza's in 0.56 s against 0.26 s on a 2-core CPU).
+/// nothing on Sponza, session 7). NVIDIA H200, `bench render`, two runs (docs/traversal.md,
+/// "Half-precision boxes, alpha masks, the integrators' build"): textured Sponza 640x360 under
+/// sun and sky, 64 spp, pt-nee 53.6 -> 49.8 ms, pt 41.9 -> 39.4, bdpt 69.4 -> 66.4 against leaf
+/// size 4, quality 2 (with the alpha marks of the same session). obvhs builds in parallel
+/// (rayon): Sponza's 4-wide tree at quality 4 in 0.31 s on the H200's 16-core host (0.14 s at
+/// quality 2; 1.5 s at quality 4 on one core), the same tree on any number of threads.
 pub fn default_bvh_build(layout: BvhLayout) -> (u32, u32) {
     match layout {
-        BvhLayout::Bvh4 => (3, 3),
+        BvhLayout::Bvh4 => (3, 4),
         _ => (4, 2),
     }
 }
