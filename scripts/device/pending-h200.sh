@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build).
+# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material).
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
@@ -24,6 +24,30 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s23f)
+  # Session 23: the watertight triangles' marks carry the material (its load beside the
+  # vertices'; .device/bidir.gz) against marks that only flag (.device/bidir-base.gz, 0d5c9ee's
+  # code at the quality-3 default: both run --bvh-quality 4 here), interleaved, two runs; the same image.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360 --bvh-quality 4"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for b in "$BASE" "$B"; do
+      n=$(basename $b)
+      for c in "--alpha" "--alpha --refill 16"; do
+        echo "== trace $n bvh4 leaf 3 q4 $c"; $T "$b" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 4 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+      for i in pt-nee pt bdpt; do
+        echo "== sponza $n $i"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  for b in "$BASE" "$B"; do
+    $T "$b" render $SPB --spp 16 --integrator pt-nee -o /tmp/$(basename $b).exr > /dev/null 2>&1
+  done
+  echo "== same image pt-nee"; $T "$B" diff /tmp/bidir.exr /tmp/bidir-base.exr 2>&1 | head -3
+  ;;
 s23e)
   # Session 23: obvhs's parallel build (rayon): the same tree as on 2 cores (counts at 64x36),
   # the build times, the integrators at quality 3 (the default) and 4, setup times at 1 s,
