@@ -198,10 +198,12 @@ pub struct RenderSettings {
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
     /// responsive and far from the GPU timeout).
     pub pass_target: Duration,
-    /// How the BVH is built; its `layout` is set from `bvh_layout` by [`Renderer::new`].
+    /// How the BVH is built; [`Renderer::new`] sets its `layout`, `max_leaf_tris` and
+    /// `quality` from `bvh_layout`, `bvh_leaf_size` and `bvh_quality` (set those, not these).
     pub bvh: BuildOptions,
-    /// The BVH layout the integrators traverse (`--bvh`): `bvh2` or `cwbvh`; `None` takes the
-    /// device's faster one ([`default_bvh_layout`]).
+    /// The BVH layout the integrators traverse (`--bvh`): `bvh2`, `cwbvh` or `bvh4`; `None`
+    /// takes the device's faster one for the integrator and scene ([`default_bvh_layout`],
+    /// [`wavefront_bvh_layout`]).
     pub bvh_layout: Option<BvhLayout>,
     /// Most triangles per BVH leaf (`--bvh-leaf-size`) and obvhs's quality preset
     /// (`--bvh-quality`); `None` takes the layout's default ([`default_bvh_build`]). The image

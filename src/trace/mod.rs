@@ -312,7 +312,7 @@ impl Tracer {
     }
 
     /// `record_trace` of rays a kernel recorded before queued: with `counts` = (buffer, i) the
-    /// first buffer[i] of them, at most `count` (a tracer with `count_buffer`). `indirect`: the
+    /// first `buffer[i]` of them, at most `count` (a tracer with `count_buffer`). `indirect`: the
     /// workgroups come from that indirect dispatch
     /// (`VkDispatchIndirectCommand` at the byte offset), which a kernel before sized for the
     /// queued rays: one workgroup per TRACE_WG_SIZE of them, at most `queued_groups(count)`
