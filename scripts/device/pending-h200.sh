@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material).
+# Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
 # join-default; in session 8: driver-rt, int-slabs (as separate calls then); in session 10:
@@ -24,6 +24,27 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s23g)
+  # Session 23, the final commit: the scenes the session's changes should leave alone or speed
+  # up (Cornell box and caustic scene: no alpha, their own layouts; MetalRoughSpheres and
+  # DamagedHelmet: 4-wide BVH at quality 4 now), against the figures of session 22.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 60"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  H=$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb
+  M=$PWD/.device/scenes/gltf/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb
+  L="--width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for i in pt-nee bdpt; do
+    echo "== cornell $i"; $T "$B" bench render $CB --spp 1024 --warmup 2 --runs 5 --integrator $i 2>&1 | grep -E "Msamples"
+    echo "== helmet $i"; $T "$B" bench render $H $L --spp 256 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+    echo "== spheres $i"; $T "$B" bench render $M $L --spp 256 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+  done
+  echo "== caustic 128 bdpt"; $T "$B" bench render $CAU --width 128 --height 128 --spp 1024 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+  echo "== caustic 256 bdpt"; $T "$B" bench render $CAU $CB --spp 1024 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "Msamples"
+  for i in pt-nee bdpt; do
+    echo "== cornell $i 1 s"; $T "$B" render $CB --time 1 --integrator $i --reference $REF -o /tmp/c.exr 2>&1 | grep -iE "spp in|RMSE" | head -2
+  done
+  ;;
 s23f)
   # Session 23: the watertight triangles' marks carry the material (its load beside the
   # vertices'; .device/bidir.gz) against marks that only flag (.device/bidir-base.gz, 0d5c9ee's
