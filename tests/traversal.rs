@@ -6,7 +6,7 @@ mod common;
 use bidir::bvh::{intersect::TriHit, BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
 use bidir::gpu_data::GpuBvh;
-use bidir::trace::sort::{sort_key, sort_push};
+use bidir::trace::sort::{direction_cell, sort_key, sort_push};
 use bidir::trace::{RaySorter, TraceOptions, Tracer};
 use bidir::vk::Context;
 use common::{finish, geometry, gpu, Pcg};
@@ -648,6 +648,65 @@ fn sorted_rays_are_a_permutation_in_key_order_with_the_same_hits() {
     }
     drop((gbvh, tracer, sorter));
     eprintln!("sort: {} rays over {distinct} keys, hits identical", rays.len());
+    finish(ctx);
+}
+
+/// The local ray sort (`bench traversal --sort-local GRID,BLOCK`): a permutation that keeps
+/// every ray in its block of consecutive rays, puts each block in the order of its rays'
+/// direction cells (the cells the CPU computes, but for a division's rounding on a cell's
+/// border), and leaves every ray's hit (and any-hit verdict) as it is unsorted. A last block
+/// shorter than the others and a grid of one cell included.
+#[test]
+fn locally_sorted_rays_stay_in_their_blocks_in_direction_order_with_the_same_hits() {
+    let ctx = gpu();
+    let scene = bidir::scene::Scene::builtin_cornell_box();
+    let mut rng = Pcg::new(17);
+    let (lo, hi) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(556.0, 548.8, 559.2));
+    let rays = mixed_rays(&mut rng, lo, hi, 30_000);
+    let sorter = RaySorter::new(&ctx, rays.len() as u32).unwrap();
+    let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions::default()).unwrap();
+    let gbvh = GpuBvh::upload(&ctx, &bvh).unwrap();
+    let tracer = Tracer::new(&ctx, TriTest::Watertight, false).unwrap();
+    let unsorted: Vec<_> = [false, true].map(|any_hit| tracer.trace(&ctx, &gbvh, &rays, any_hit).unwrap()).into();
+    for (grid, block) in [(4u32, 1024u32), (8, 256), (16, 4096), (1, 1000), (3, 7)] {
+        let (sorted, order, cells) = sorter.sort_local(&ctx, &rays, grid, block).unwrap();
+        let mut seen = vec![false; rays.len()];
+        let (mut moved, mut on_border) = (0, 0);
+        let mut distinct = std::collections::HashSet::new();
+        for (j, (&i, r)) in order.iter().zip(&sorted).enumerate() {
+            let i = i as usize;
+            assert!(!std::mem::replace(&mut seen[i], true), "{grid}x{grid}, blocks of {block}: ray {i} placed twice");
+            assert!(
+                r.origin == rays[i].origin && r.dir == rays[i].dir,
+                "{grid}x{grid}, blocks of {block}: slot {j} holds a different ray than {i}"
+            );
+            assert_eq!(i / block as usize, j / block as usize, "{grid}x{grid}: ray {i} left its block of {block} for slot {j}");
+            if j % block as usize != 0 {
+                assert!(
+                    cells[j] >= cells[j - 1],
+                    "{grid}x{grid}, blocks of {block}: slot {j} has cell {} after {}",
+                    cells[j],
+                    cells[j - 1]
+                );
+            }
+            let cell = direction_cell(grid, r.dir.truncate());
+            on_border += (cell != cells[j]) as usize;
+            moved += (i != j) as usize;
+            distinct.insert(cells[j]);
+        }
+        assert!(on_border <= 3, "{grid}x{grid}: {on_border} rays in another cell than the CPU's");
+        assert!(distinct.len() as u32 == grid * grid, "{grid}x{grid}: the rays must reach every cell ({})", distinct.len());
+        assert!(grid == 1 || moved > rays.len() / 2, "{grid}x{grid}, blocks of {block}: only {moved} rays moved");
+        for (k, any_hit) in [false, true].into_iter().enumerate() {
+            let hits = tracer.trace(&ctx, &gbvh, &sorted, any_hit).unwrap();
+            for (j, &i) in order.iter().enumerate() {
+                let (a, b) = (unsorted[k][i as usize], hits[j]);
+                assert!(a.tri == b.tri && a.t.to_bits() == b.t.to_bits(), "ray {i} (any hit: {any_hit}): {a:?} unsorted, {b:?} sorted");
+            }
+        }
+        eprintln!("local sort {grid}x{grid}, blocks of {block}: {moved} of {} rays moved, {on_border} on a border", rays.len());
+    }
+    drop((gbvh, tracer, sorter));
     finish(ctx);
 }
 

@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts run in session 24: s24a (secondary rays sorted within blocks by direction).
 # Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
@@ -24,6 +25,21 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s24a)
+  # Session 24: shadow and diffuse rays sorted within blocks of consecutive rays by direction
+  # (--sort-local GRID,BLOCK, one pass) against unsorted and the global sort (--sort); the
+  # 4-wide BVH at leaf size 3, quality 4 and 3; one run each.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for q in 4 3; do
+    for c in "" "--refill 28" "--sort" "--sort-local 4,1024" "--sort-local 8,1024" "--sort-local 4,4096" \
+             "--sort-local 8,4096" "--sort-local 16,4096" "--sort-local 2,256" "--sort-local 4,256" \
+             "--sort-local 4,1024 --refill 28" "--sort-local 8,4096 --refill 28"; do
+      echo "== q$q $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  ;;
 s23g)
   # Session 23, the final commit: the scenes the session's changes should leave alone or speed
   # up (Cornell box and caustic scene: no alpha, their own layouts; MetalRoughSpheres and

@@ -11,6 +11,7 @@ use crate::gpu::abi::GpuCamera;
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::render::GpuScene;
 use crate::scene::Scene;
+use crate::trace::sort::SortKind;
 use crate::trace::{RaySorter, Secondary, TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Memory, VkError};
 use glam::Vec3;
@@ -66,9 +67,9 @@ pub struct Options {
     pub int_slabs: bool,
     /// Rays each invocation traces (one-invocation-per-ray kernels; default 1).
     pub rays_per_invocation: u32,
-    /// Sort shadow and diffuse rays by direction octant and origin cell before tracing
-    /// (`trace::RaySorter`); the sort is timed apart.
-    pub sort: bool,
+    /// Sort shadow and diffuse rays before tracing (`trace::RaySorter`: globally by
+    /// direction octant and origin cell, or locally by direction); the sort is timed apart.
+    pub sort: Option<SortKind>,
     /// Invocations per workgroup of the trace kernel (see `TraceOptions::workgroup_size`).
     pub workgroup_size: u32,
     /// Trace the same rays through the driver's ray-tracing pipeline too (`driver_rt.rs`);
@@ -93,7 +94,7 @@ impl Default for Options {
             short_stack: false,
             int_slabs: true,
             rays_per_invocation: 1,
-            sort: false,
+            sort: None,
             workgroup_size: crate::gpu::abi::TRACE_WG_SIZE,
             driver_rt: false,
         }
@@ -138,7 +139,7 @@ pub struct Report {
     pub short_stack: bool,
     pub int_slabs: bool,
     pub rays_per_invocation: u32,
-    pub sort: bool,
+    pub sort: Option<SortKind>,
     pub workgroup_size: u32,
     /// The driver's compile statistics of the timed closest- and any-hit kernels ("name
     /// value; ..."), where it reports them (VK_KHR_pipeline_executable_properties).
@@ -239,10 +240,10 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     let hits = ctx.create_buffer("bench.hits", n as u64 * 16, Memory::Device)?;
     let stats = ctx.create_buffer("bench.stats", 8, Memory::Device)?;
     let timer = ctx.create_timer("bench.timer", 3)?;
-    let sorter = if opts.sort { Some(RaySorter::new(ctx, n)?) } else { None };
+    let sorter = if opts.sort.is_some() { Some(RaySorter::new(ctx, n)?) } else { None };
     let driver = if opts.driver_rt { Some(Driver::new(ctx, positions, triangles, n)?) } else { None };
-    let sorted = ctx.create_buffer("bench.sorted_rays", if opts.sort { ray_bytes } else { 32 }, Memory::Device)?;
-    let order = ctx.create_buffer("bench.sort_order", if opts.sort { n as u64 * 4 } else { 4 }, Memory::Device)?;
+    let sorted = ctx.create_buffer("bench.sorted_rays", if opts.sort.is_some() { ray_bytes } else { 32 }, Memory::Device)?;
+    let order = ctx.create_buffer("bench.sort_order", if opts.sort.is_some() { n as u64 * 4 } else { 4 }, Memory::Device)?;
 
     // Primary rays and their hits (the origin of the secondary rays).
     ctx.submit("bench primary", |rec| {
@@ -278,7 +279,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
                 rec.reset_timer(&timer);
                 rec.timestamp(&timer, 0);
                 if let Some(sorter) = sort {
-                    sorter.record(rec, &secondary, &sorted, &order, count, lo, hi)?;
+                    sorter.record_kind(rec, opts.sort.expect("a sorter only with a sort"), &secondary, &sorted, &order, count, lo, hi)?;
                 }
                 rec.timestamp(&timer, 1);
                 timing.record_trace(rec, &geometry, rays, &hits, &stats, count, any_hit)?;
@@ -369,7 +370,7 @@ impl Report {
             ("short_stack", Json::Bool(self.short_stack)),
             ("int_slabs", Json::Bool(self.int_slabs)),
             ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
-            ("sort", Json::Bool(self.sort)),
+            ("sort", self.sort.map_or(Json::Bool(false), |k| Json::Str(k.describe()))),
             ("workgroup_size", Json::Int(self.workgroup_size as i64)),
             ("kernel_statistics", Json::obj(self.kernel_stats.iter().map(|(k, v)| (k.as_str(), Json::Str(v.clone()))).collect())),
             ("width", Json::Int(self.width as i64)),
@@ -433,7 +434,7 @@ impl Report {
                 + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
                 + if !self.int_slabs { ", float slab test" } else { "" }
                 + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
-                + if self.sort { ", secondary rays sorted (octant, origin cell)" } else { "" }
+                + &self.sort.map_or(String::new(), |k| format!(", secondary rays {}", k.describe()))
                 + &format!(", workgroups of {}", self.workgroup_size),
             self.width,
             self.height,

@@ -118,8 +118,14 @@ pub struct TraversalArgs {
     pub rays_per_invocation: u32,
     /// Sort shadow and diffuse rays by direction octant and origin cell (a counting sort on
     /// the GPU) before tracing; the sort's time is reported beside the trace's.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "sort_local")]
     pub sort: bool,
+    /// Sort shadow and diffuse rays locally before tracing: blocks of BLOCK consecutive rays
+    /// (pixel-tile order, so nearby origins), each by its rays' direction cells on a GRID x
+    /// GRID octahedral grid (one pass on the GPU); the sort's time is reported beside the
+    /// trace's.
+    #[arg(long, value_name = "GRID,BLOCK", value_parser = parse_local_sort)]
+    pub sort_local: Option<bidir::trace::sort::SortKind>,
     /// Invocations per workgroup of the trace kernel: 64 (default; every variant), or 32, 128,
     /// 256 (bvh2 without --alpha, --short-stack or --persistent).
     #[arg(long, value_name = "N", default_value_t = 64)]
@@ -220,7 +226,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.short_stack = a.short_stack;
     o.int_slabs = !a.float_slabs;
     o.rays_per_invocation = a.rays_per_invocation;
-    o.sort = a.sort;
+    o.sort = if a.sort { Some(bidir::trace::sort::SortKind::Cells) } else { a.sort_local };
     o.workgroup_size = a.workgroup_size;
     o.driver_rt = a.driver_rt;
     o.persistent = match (a.persistent || a.refill.is_some(), a.persistent_groups) {
@@ -244,4 +250,11 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         println!("wrote {}", path.display());
     }
     Ok(())
+}
+
+/// `--sort-local GRID,BLOCK`.
+fn parse_local_sort(v: &str) -> Result<bidir::trace::sort::SortKind, String> {
+    let (g, b) = v.split_once(',').ok_or_else(|| format!("`{v}`: expected GRID,BLOCK, e.g. 4,1024"))?;
+    let num = |x: &str| x.trim().parse::<u32>().map_err(|e| format!("`{x}` in `{v}`: {e}"));
+    bidir::trace::sort::SortKind::local(num(g)?, num(b)?)
 }

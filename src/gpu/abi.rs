@@ -110,6 +110,12 @@ gpu_consts! {
     /// Morton code (3 x RAY_SORT_CELL_BITS bits).
     pub const RAY_SORT_CELL_BITS: u32 = 4;
     pub const RAY_SORT_KEYS: u32 = 32768;
+    /// The local sort (`ray_sort_local.comp`): invocations per workgroup (one workgroup sorts
+    /// one block of consecutive rays), the largest block, and the largest octahedral grid of
+    /// direction cells (per side).
+    pub const RAY_SORT_LOCAL_WG: u32 = 256;
+    pub const RAY_SORT_LOCAL_MAX_BLOCK: u32 = 4096;
+    pub const RAY_SORT_LOCAL_MAX_GRID: u32 = 16;
 
     // ---- Scene and integrator bindings (glsl/common/scene.glsl) ----------------------------
     pub const BIND_PRIM_INFO: u32 = 8;
@@ -498,6 +504,16 @@ gpu_structs! {
         pub count: u32,
         /// Cells per unit length on each axis (2^RAY_SORT_CELL_BITS / extent).
         pub cells_per_unit: Vec3,
+        pub pad0: u32,
+    }
+
+    /// Push constants of the local ray sort (`ray_sort_local.comp`): the rays, the block of
+    /// consecutive rays a workgroup sorts, and the side of the octahedral grid of direction
+    /// cells they are sorted by.
+    pub struct RaySortLocalPush (16 bytes) {
+        pub count: u32,
+        pub block: u32,
+        pub grid: u32,
         pub pad0: u32,
     }
 
