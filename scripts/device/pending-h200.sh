@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 24: s24a (secondary rays sorted within blocks by direction).
+# Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot).
 # Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
@@ -25,6 +25,57 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s24e)
+  # Session 24: a measurement build (.device/bidir-exp.gz, not committed; counts as in s24c):
+  # the lockstep loops with a second postponed-leaf slot (BIDIR_EXP_LEAF_SLOTS=2) against one,
+  # interleaved, two runs.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for c in "--quality 4" "--quality 4 --refill 28" "--quality 3 --refill 28"; do
+      for ls in 1 2; do
+        echo "== slots $ls $c"; BIDIR_EXP_LEAF_SLOTS=$ls $T .device/bidir-exp bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  ;;
+s24c)
+  # Session 24: a measurement build (.device/bidir-exp.gz, not committed) whose traversal
+  # counts, in the lockstep loops, every lane's descent iterations (working or idle) as
+  # "nodes/ray" and the subgroup's longest leaf phase (triangle tests) per lane as "tris/ray";
+  # against the node steps and triangle tests of s24a, the subgroups' SIMD efficiency.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for q in 4 3; do
+    echo "== exp q$q"; $T .device/bidir-exp bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q --reps 5 --warmup 1 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    echo "== exp q$q sort-local 8,1024"; $T .device/bidir-exp bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q --reps 5 --warmup 1 --sort-local 8,1024 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s24d)
+  # Session 24: the measurement build of s24c, its dynamic fetch counted too (iterations per
+  # lane of the descent, the subgroup's longest leaf phase), refills of 4 to 32 lanes.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  T="timeout -k 5 60"
+  for r in 4 8 16 28 32; do
+    echo "== exp q4 refill $r"; $T .device/bidir-exp bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 4 --reps 5 --warmup 1 --refill $r 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s24b)
+  # Session 24: where the wavefront path tracer's pass goes on the textured Sponza: the
+  # kernel table (launches = the path kernel's dispatches) at 16, 64 and 256 spp.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza-full/Sponza.gltf
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  T="timeout -k 5 60"
+  for i in pt-nee pt; do
+    for n in 16 64 256; do
+      echo "== sponza $i $n spp"; $T "$B" bench render $SPB --spp $n --warmup 1 --runs 3 --integrator $i 2>&1 | grep -vE "^\s*$" | tail -12
+    done
+  done
+  ;;
 s24a)
   # Session 24: shadow and diffuse rays sorted within blocks of consecutive rays by direction
   # (--sort-local GRID,BLOCK, one pass) against unsorted and the global sort (--sort); the
