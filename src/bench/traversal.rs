@@ -370,7 +370,7 @@ impl Report {
             ("short_stack", Json::Bool(self.short_stack)),
             ("int_slabs", Json::Bool(self.int_slabs)),
             ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
-            ("sort", self.sort.map_or(Json::Bool(false), |k| Json::Str(k.describe()))),
+            ("sort", Json::Str(self.sort.map_or("none".to_string(), |k| k.name()))),
             ("workgroup_size", Json::Int(self.workgroup_size as i64)),
             ("kernel_statistics", Json::obj(self.kernel_stats.iter().map(|(k, v)| (k.as_str(), Json::Str(v.clone()))).collect())),
             ("width", Json::Int(self.width as i64)),

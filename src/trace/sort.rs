@@ -72,6 +72,14 @@ impl SortKind {
         Ok(SortKind::Local { grid, block })
     }
 
+    /// The kind as reports name it: `cells`, or `local GRIDxGRID/BLOCK`.
+    pub fn name(&self) -> String {
+        match self {
+            SortKind::Cells => "cells".to_string(),
+            SortKind::Local { grid, block } => format!("local {grid}x{grid}/{block}"),
+        }
+    }
+
     /// A short description for reports.
     pub fn describe(&self) -> String {
         match self {
