@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot).
+# Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot); s24f (issue #16's table).
 # Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
 # defaults, final; in session 7: light-paths, vcm-first, bvh-quality, bdpt-joins,
@@ -25,6 +25,32 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s24f)
+  # Session 24: issue #16's table at this commit (time-budgeted renders, the Cornell box against
+  # the sharper reference, the caustic scene at the test's 128² camera against its committed
+  # reference; the rates), and the registers of s24e's measurement build (.device/bidir-exp.gz)
+  # with one and two postponed-leaf slots.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35"
+  T="timeout -k 5 60"
+  for t in 0.1 1; do
+    for i in pt pt-nee bdpt bdpt:full; do
+      echo "== cornell $i --time $t"; $T "$B" render $CB --integrator $i --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      echo "== caustic $i --time $t"; $T "$B" render $CAU --width 128 --height 128 --integrator $i --time $t --reference assets/scenes/caustic/reference.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+  done
+  for i in pt pt-nee bdpt bdpt:full vcm; do
+    echo "== cornell $i"; $T "$B" bench render $CB --integrator $i --spp 1024 2>&1 | grep -E "Msamples" | head -1
+  done
+  for i in pt-nee bdpt; do
+    echo "== caustic $i"; $T "$B" bench render $CAU --width 256 --height 256 --integrator $i --spp 256 2>&1 | grep -E "Msamples" | head -1
+  done
+  if [ -x .device/bidir-exp ] && [ -d .device/scenes/sponza-full ]; then
+    for ls in 1 2; do
+      echo "== exp slots $ls"; BIDIR_EXP_LEAF_SLOTS=$ls $T .device/bidir-exp bench traversal .device/scenes/sponza-full/Sponza.gltf --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 4 --rays diffuse --reps 5 --warmup 1 2>&1 | grep -vE "^\s*$" | tail -4 | cut -c1-400
+    done
+  fi
+  ;;
 s24e)
   # Session 24: a measurement build (.device/bidir-exp.gz, not committed; counts as in s24c):
   # the lockstep loops with a second postponed-leaf slot (BIDIR_EXP_LEAF_SLOTS=2) against one,
