@@ -205,25 +205,30 @@ impl RaySorter {
     /// Sorts host rays locally (for tests and tools): the sorted rays, each one's input index
     /// and its direction cell.
     pub fn sort_local(&self, ctx: &Context, rays: &[GpuRay], grid: u32, block: u32) -> Result<(Vec<GpuRay>, Vec<u32>, Vec<u32>)> {
-        let count = rays.len() as u32;
-        let input = ctx.upload_buffer("ray_sort.input", rays)?;
-        let out = ctx.create_buffer("ray_sort.out", count.max(1) as u64 * 32, Memory::Device)?;
-        let order = ctx.create_buffer("ray_sort.order", count.max(1) as u64 * 4, Memory::Device)?;
-        ctx.submit("ray sort (local)", |rec| self.record_local(rec, &input, &out, &order, count, grid, block))?;
-        let sorted: Vec<GpuRay> = ctx.read_buffer(&out)?;
-        let order: Vec<u32> = ctx.read_buffer(&order)?;
+        let (sorted, order) =
+            self.sort_on_host(ctx, rays, |rec, input, out, order, count| self.record_local(rec, input, out, order, count, grid, block))?;
         let cells: Vec<u32> = ctx.read_buffer(&self.keys)?;
-        let n = rays.len();
-        Ok((sorted[..n].to_vec(), order[..n].to_vec(), cells[..n].to_vec()))
+        Ok((sorted, order, cells[..rays.len()].to_vec()))
     }
 
     /// Sorts host rays (for tests and tools): the sorted rays and each one's input index.
     pub fn sort(&self, ctx: &Context, rays: &[GpuRay], lo: Vec3, hi: Vec3) -> Result<(Vec<GpuRay>, Vec<u32>)> {
+        self.sort_on_host(ctx, rays, |rec, input, out, order, count| self.record(rec, input, out, order, count, lo, hi))
+    }
+
+    /// Uploads `rays`, runs `record` (input, output, order, count) on them, reads back the
+    /// sorted rays and their input indices.
+    fn sort_on_host(
+        &self,
+        ctx: &Context,
+        rays: &[GpuRay],
+        record: impl FnOnce(&mut Recorder, &Buffer, &Buffer, &Buffer, u32) -> Result<()>,
+    ) -> Result<(Vec<GpuRay>, Vec<u32>)> {
         let count = rays.len() as u32;
         let input = ctx.upload_buffer("ray_sort.input", rays)?;
         let out = ctx.create_buffer("ray_sort.out", count.max(1) as u64 * 32, Memory::Device)?;
         let order = ctx.create_buffer("ray_sort.order", count.max(1) as u64 * 4, Memory::Device)?;
-        ctx.submit("ray sort", |rec| self.record(rec, &input, &out, &order, count, lo, hi))?;
+        ctx.submit("ray sort", |rec| record(rec, &input, &out, &order, count))?;
         let sorted: Vec<GpuRay> = ctx.read_buffer(&out)?;
         let order: Vec<u32> = ctx.read_buffer(&order)?;
         Ok((sorted[..rays.len()].to_vec(), order[..rays.len()].to_vec()))
