@@ -155,7 +155,7 @@ fn kernels_are_compiled_once_per_specialisation() {
 }
 
 #[test]
-fn dispatch_rejects_wrong_bindings_and_push_constants() {
+fn dispatch_rejects_wrong_bindings_push_constants_and_group_counts() {
     let ctx = gpu();
     let k = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
     let buf = ctx.create_buffer("b", 64, Memory::Device).unwrap();
@@ -177,6 +177,19 @@ fn dispatch_rejects_wrong_bindings_and_push_constants() {
         rec.dispatch(&k, &[Bind::buffer(abi::REDUCE_BIND_INPUT, &buf), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &buf)], &[0u8; 4], [1, 1, 1])
     });
     assert!(short.unwrap_err().to_string().contains("push constants"));
+    let binds = [Bind::buffer(abi::REDUCE_BIND_INPUT, &buf), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &buf)];
+    let limit = ctx.info().max_workgroup_count;
+    for axis in 0..3 {
+        if limit[axis] == u32::MAX {
+            eprintln!("skipped: axis {axis} allows every u32 workgroup count");
+            continue;
+        }
+        let mut groups = [1u32; 3];
+        groups[axis] = limit[axis] + 1;
+        let many = ctx.submit("too many groups", |rec| rec.dispatch(&k, &binds, bytemuck::bytes_of(&push), groups));
+        let err = many.unwrap_err().to_string();
+        assert!(err.contains("workgroups in one dispatch"), "axis {axis}: {err}");
+    }
     drop((k, buf, img));
     finish(ctx);
 }

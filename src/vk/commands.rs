@@ -119,7 +119,16 @@ impl<'a> Recorder<'a> {
 
     /// Dispatches `kernel` over `groups` workgroups with `binds` and push constants `push`.
     /// Every binding the kernel uses must be given; extra ones (optimised away) are ignored.
+    /// More workgroups on an axis than the device allows (`DeviceInfo::max_workgroup_count`)
+    /// is an error, not undefined behaviour.
     pub fn dispatch(&mut self, kernel: &Kernel, binds: &[Bind], push: &[u8], groups: [u32; 3]) -> Result<()> {
+        let limit = self.shared.info.max_workgroup_count;
+        if groups.iter().zip(limit).any(|(&g, l)| g > l) {
+            return Err(VkError::Kernel {
+                kernel: kernel.name().into(),
+                msg: format!("{groups:?} workgroups in one dispatch, more than the device allows ({limit:?}); launch fewer or larger ones"),
+            });
+        }
         self.bind(kernel, binds, push)?;
         // SAFETY: recording state; `bind` bound the kernel's pipeline and descriptors.
         unsafe { self.shared.device.cmd_dispatch(self.cmd, groups[0], groups[1], groups[2]) };

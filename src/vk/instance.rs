@@ -220,6 +220,9 @@ pub struct DeviceInfo {
     pub max_kernel_descriptors: u32,
     pub max_shared_memory: u32,
     pub max_workgroup_invocations: u32,
+    /// The most workgroups one dispatch may launch on each axis
+    /// (`maxComputeWorkGroupCount`; 65,535 is the least a device may offer).
+    pub max_workgroup_count: [u32; 3],
     pub timestamp_period_ns: f32,
     pub timestamp_valid_bits: u32,
     pub queue_family: Option<u32>,
@@ -385,6 +388,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             max_kernel_descriptors: push.max_push_descriptors.min(base.limits.max_per_stage_descriptor_storage_buffers),
             max_shared_memory: base.limits.max_compute_shared_memory_size,
             max_workgroup_invocations: base.limits.max_compute_work_group_invocations,
+            max_workgroup_count: base.limits.max_compute_work_group_count,
             timestamp_period_ns: base.limits.timestamp_period,
             timestamp_valid_bits,
             queue_family: family,
