@@ -183,6 +183,9 @@ fn numbers_out_of_range_are_rejected_with_the_flag() {
     fails(&["bench", "traversal", "--workgroup-size", "128", "--bvh", "bvh2q"], &["--workgroup-size 128", "only with --bvh bvh2"]);
     fails(&["bench", "traversal", "--rays-per-invocation", "2", "--persistent"], &["--rays-per-invocation 2", "1 with --persistent"]);
     fails(&["bench", "traversal", "--driver-rt", "--alpha"], &["--driver-rt", "leave out --alpha"]);
+    fails(&["bench", "traversal", "--ploc", "7,0"], &["--ploc", "DISTANCE one of 1, 2, 6, 14, 24, 32"]);
+    fails(&["bench", "traversal", "--ploc", "6"], &["--ploc", "expected DISTANCE,DEPTH"]);
+    fails(&["bench", "traversal", "--ploc", "6,0", "--quality", "5"], &["--ploc", "quality 5 builds its own candidates"]);
     fails(
         &["info", "--builtin", "--width", "100000", "--height", "100000"],
         &["100000x100000", "limit of 134,217,728 pixels", "--width/--height"],

@@ -25,6 +25,118 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s26f)
+  # Session 26: the tree lottery (s26b) again with this commit's binary: the sixteen trees of
+  # build quality 5's candidates (`--ploc DISTANCE,DEPTH` at quality 4), each with its SAH, on
+  # Sponza's four cameras, lockstep, the warm-up at least 1 s (s26b's exp build warmed up 3
+  # runs only, after a build and a CPU-side ray sample of seconds: some of its runs were timed
+  # at a low clock).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  for s in 6 14 24 32; do
+    for d in 0 1 2 3; do
+      for cam in CameraMain CameraAlternate CameraBalcony CameraAlcove; do
+        echo "== ploc $s,$d $cam"; $T "$B" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 4 --ploc $s,$d 2>&1 | grep -E "^(primary|shadow|diffuse) |ms build" | sed -e 's/.*bvh4 /bvh4 /'
+      done
+    done
+  done
+  ;;
+s26e)
+  # Session 26: s26d again, the warm-up at least 1 s (after 0.25 s some runs were still at a
+  # low clock), and quality 3 beside it.
+  bash "$0" s26d
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  for c in "" "--refill 28"; do
+    echo "== CameraMain quality 3 $c"; timeout -k 5 90 "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s26d)
+  # Session 26: s26c's traversal runs again, with the warm-up that lasts at least 0.25 s (in
+  # s26c quality 5's 5.8 s build left the GPU at its idle clock through the timed runs).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for q in 4 5; do
+      for c in "" "--refill 28"; do
+        echo "== CameraMain quality $q $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q $c 2>&1 | grep -E "^(primary|shadow|diffuse) |ms build" | sed -e 's/.*bvh4 /bvh4 /'
+      done
+    done
+  done
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for q in 4 5; do
+      echo "== $cam quality $q"; $T "$B" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality $q 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  ;;
+s26c)
+  # Session 26: build quality 5 (sixteen quality-4 trees, the one of least SAH kept) against
+  # quality 4: the traversal benchmark on Sponza's four cameras, and the integrators on Sponza
+  # under the sun and sky (geometry only: .device/scenes/sponza has no textures).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for q in 4 5; do
+      for c in "" "--refill 28"; do
+        echo "== CameraMain quality $q $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q $c 2>&1 | grep -E "^(primary|shadow|diffuse) |ms build" | sed -e 's/.*bvh4 /bvh4 /'
+      done
+    done
+  done
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for q in 4 5; do
+      echo "== $cam quality $q"; $T "$B" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality $q 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for i in pt-nee bdpt; do
+      for q in 4 5; do
+        echo "== sponza $i --bvh-quality $q"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i --bvh-quality $q 2>&1 | grep -E "Msamples|ms per"
+      done
+    done
+  done
+  ;;
+s26b)
+  # Session 26: the tree lottery, wider: sixteen trees (PLOC search distance x the depth below
+  # which it searches one neighbour; quality 4's other settings) on Sponza's four cameras,
+  # lockstep, with each tree's SAH and its camera-free sampled cost (.device/bidir-exp.gz).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  for s in 6 14 24 32; do
+    for d in 0 1 2 3; do
+      for cam in CameraMain CameraAlternate CameraBalcony CameraAlcove; do
+        echo "== search $s depth $d $cam"; BIDIR_EXP_BUILD=1 BIDIR_EXP_SEARCH=$s BIDIR_EXP_DEPTH=$d $T .device/bidir-exp bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 4 --reps 5 --warmup 2 2>&1 | grep -E "^(primary|shadow|diffuse) |exp: (SAH|sampled)"
+      done
+    done
+  done
+  ;;
+s26a)
+  # Session 26: the tree lottery. A measurement build (.device/bidir-exp.gz, not committed:
+  # BIDIR_EXP_BUILD and BIDIR_EXP_SEARCH / _DEPTH set obvhs' PLOC search distance and the depth
+  # below which it searches one neighbour) beside this commit's quality-4 build, on Sponza's
+  # four cameras, geometry only (.device/scenes/sponza).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  for cam in CameraMain CameraAlternate CameraBalcony CameraAlcove; do
+    R='""'; [ $cam = CameraMain ] && R='"" "--refill 28"'
+    for v in "base" "14 2" "24 3" "6 3" "32 3"; do
+      eval "set -- $R"
+      for c in "$@"; do
+        if [ "$v" = base ]; then
+          echo "== $cam base $c"; $T .device/bidir bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 4 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+        else
+          set -- $v
+          echo "== $cam search $1 depth $2 $c"; BIDIR_EXP_BUILD=1 BIDIR_EXP_SEARCH=$1 BIDIR_EXP_DEPTH=$2 $T .device/bidir-exp bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 4 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+        fi
+      done
+    done
+    [ $cam = CameraMain ] && for c in "" "--refill 28"; do echo "== $cam base quality 3 $c"; $T .device/bidir bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 3 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "; done
+  done
+  ;;
 s24f)
   # Session 24: issue #16's table at this commit (time-budgeted renders, the Cornell box against
   # the sharper reference, the caustic scene at the test's 128² camera against its committed

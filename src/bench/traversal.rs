@@ -36,6 +36,9 @@ impl RayKind {
     pub const ALL: [RayKind; 3] = [RayKind::Primary, RayKind::Shadow, RayKind::Diffuse];
 }
 
+/// The least time the untimed warm-up runs of each ray kind take (when any are asked for).
+pub const WARMUP_TIME: std::time::Duration = std::time::Duration::from_secs(1);
+
 /// Benchmark settings.
 #[derive(Clone, Debug)]
 pub struct Options {
@@ -149,6 +152,12 @@ pub struct Report {
     pub bvh_leaves: usize,
     pub bvh_depth: usize,
     pub bvh_bytes: u64,
+    /// The tree's SAH (`Bvh::sah_cost`; binary and 4-wide layouts).
+    pub bvh_sah: Option<f64>,
+    /// The build quality (`BuildOptions::quality`), and PLOC's search distance and
+    /// single-neighbour depth where set (`BuildOptions::ploc`).
+    pub quality: u32,
+    pub ploc: Option<(u32, usize)>,
     pub width: u32,
     pub height: u32,
     pub light: Vec3,
@@ -274,7 +283,13 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         let sort = sorter.as_ref().filter(|_| kind != RayKind::Primary);
         let rays = if sort.is_some() { &sorted } else { rays };
         let (mut times, mut sort_times) = (Vec::new(), Vec::new());
-        for rep in 0..opts.warmup + opts.repetitions {
+        // Warm-up: `warmup` runs and, where there are any, at least WARMUP_TIME of them. A GPU
+        // left idle (a slow BVH build: quality 5 takes seconds) drops to its idle clock and
+        // three runs of a millisecond do not raise it again: the H200 then timed every kind
+        // 5.5x slower, and after 0.25 s of runs still some (session 26, docs/traversal.md).
+        let warm_start = std::time::Instant::now();
+        let mut warm_runs = 0;
+        while times.len() < opts.repetitions {
             ctx.submit("bench trace", |rec| {
                 rec.reset_timer(&timer);
                 rec.timestamp(&timer, 0);
@@ -286,7 +301,9 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
                 rec.timestamp(&timer, 2);
                 Ok(())
             })?;
-            if rep >= opts.warmup {
+            if warm_runs < opts.warmup || (opts.warmup > 0 && warm_start.elapsed() < WARMUP_TIME) {
+                warm_runs += 1;
+            } else {
                 sort_times.push(timer.elapsed_ns(0, 1)? * 1e-6);
                 times.push(timer.elapsed_ns(1, 2)? * 1e-6);
             }
@@ -343,6 +360,9 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         bvh_leaves: bvh.leaves,
         bvh_depth: bvh.depth,
         bvh_bytes: gbvh.bytes,
+        bvh_sah: bvh.sah_cost(),
+        quality: opts.build.quality,
+        ploc: opts.build.ploc,
         width: camera.size.x,
         height: camera.size.y,
         light,
@@ -391,6 +411,14 @@ impl Report {
                     ("leaves", Json::Int(self.bvh_leaves as i64)),
                     ("depth", Json::Int(self.bvh_depth as i64)),
                     ("bytes", Json::Int(self.bvh_bytes as i64)),
+                    ("sah", self.bvh_sah.map_or(Json::Null, Json::Num)),
+                    ("quality", Json::Int(self.quality as i64)),
+                    (
+                        "ploc",
+                        self.ploc.map_or(Json::Null, |(d, k)| {
+                            Json::obj(vec![("distance", Json::Int(d as i64)), ("depth", Json::Int(k as i64))])
+                        }),
+                    ),
                 ]),
             ),
             (
@@ -421,7 +449,7 @@ impl Report {
 
     pub fn print(&self) {
         println!(
-            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build, {} nodes of {} B, {} leaves, depth {}, {:.1} MiB",
+            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build{}, {} nodes of {} B, {} leaves, depth {}, {:.1} MiB{}",
             self.device,
             self.triangles,
             self.tri_test.name(),
@@ -440,11 +468,13 @@ impl Report {
             self.height,
             self.layout.name(),
             self.bvh_build_ms,
+            format!(" (quality {}", self.quality) + &self.ploc.map_or(String::new(), |(d, k)| format!(", PLOC {d},{k}")) + ")",
             self.bvh_nodes,
             self.layout.node_size(),
             self.bvh_leaves,
             self.bvh_depth,
-            self.bvh_bytes as f64 / (1 << 20) as f64
+            self.bvh_bytes as f64 / (1 << 20) as f64,
+            self.bvh_sah.map_or(String::new(), |c| format!(", SAH {c:.2}"))
         );
         println!(
             "{:<8} {:>10} {:>10} {:>12} {:>11} {:>12} {:>10} {:>6} {:>8}",

@@ -15,6 +15,7 @@ mod cpu;
 pub mod intersect;
 mod layout;
 mod quant;
+mod select;
 mod wide4;
 
 pub use cpu::CpuTracer;
@@ -75,12 +76,19 @@ impl std::str::FromStr for BvhLayout {
 use glam::Vec3;
 use std::time::{Duration, Instant};
 
+/// The PLOC search distances obvhs offers (`BuildOptions::ploc`).
+pub const PLOC_DISTANCES: [u32; 6] = [1, 2, 6, 14, 24, 32];
+
+/// The build quality that builds several trees and keeps the cheapest (`BuildOptions::quality`).
+pub const BEST_OF_QUALITY: u32 = 5;
+
 /// How to build.
 #[derive(Clone, Copy, Debug)]
 pub struct BuildOptions {
     /// Intersection test the triangles are encoded for.
     pub tri_test: TriTest,
-    /// obvhs quality preset: 0 fastest .. 4 very slow.
+    /// obvhs quality preset: 0 fastest .. 4 very slow; 5 builds sixteen trees at 4's
+    /// settings with different PLOC searches and keeps the one of least SAH (`select`).
     pub quality: u32,
     /// Split large triangles' boxes before building (the role the thesis' SBVH spatial splits
     /// play); a triangle can then sit in several leaves.
@@ -88,11 +96,15 @@ pub struct BuildOptions {
     /// Most triangles in a leaf (1..=16; 1..=3 for the compressed wide BVH).
     pub max_leaf_tris: u32,
     pub layout: BvhLayout,
+    /// PLOC's search distance (1, 2, 6, 14, 24 or 32 neighbours) and the depth below which it
+    /// searches one neighbour, in place of the quality preset's (below quality 5): trees of
+    /// nearly equal SAH that trace differently (docs/traversal.md, "The tree lottery").
+    pub ploc: Option<(u32, usize)>,
 }
 
 impl Default for BuildOptions {
     fn default() -> Self {
-        BuildOptions { tri_test: TriTest::Watertight, quality: 2, pre_split: true, max_leaf_tris: 4, layout: BvhLayout::Bvh2 }
+        BuildOptions { tri_test: TriTest::Watertight, quality: 2, pre_split: true, max_leaf_tris: 4, layout: BvhLayout::Bvh2, ploc: None }
     }
 }
 
@@ -107,6 +119,8 @@ pub enum BvhError {
     TooDeep { depth: usize, max: u32 },
     #[error("node {0}'s box cannot be quantised (coordinates not finite?)")]
     Quantize(usize),
+    #[error("a PLOC search distance of {0} neighbours: obvhs searches 1, 2, 6, 14, 24 or 32")]
+    PlocDistance(u32),
     #[error("{0} triangles exceed what the GPU layout can address (2^27)")]
     TooMany(usize),
 }
@@ -139,6 +153,37 @@ pub struct Bvh {
 impl Bvh {
     /// Builds over indexed triangles.
     pub fn build(positions: &[Vec3], triangles: &[[u32; 3]], opts: &BuildOptions) -> Result<Bvh, BvhError> {
+        if opts.quality < BEST_OF_QUALITY {
+            return Self::build_one(positions, triangles, opts);
+        }
+        // Quality 5: the candidates at quality 4's settings, priced in the layout itself where
+        // `select::sah` can (binary, 4-wide), else in the binary layout and the cheapest built
+        // again in the one asked for.
+        let start = Instant::now();
+        let scored = match opts.layout {
+            BvhLayout::Bvh2 | BvhLayout::Bvh4 => *opts,
+            BvhLayout::Bvh2q => BuildOptions { layout: BvhLayout::Bvh2, ..*opts },
+            BvhLayout::Cwbvh => BuildOptions { layout: BvhLayout::Bvh2, max_leaf_tris: 1, ..*opts },
+        };
+        let quality4 = BuildOptions { quality: 4, ..scored };
+        let mut best: Option<(f64, (u32, usize), Bvh)> = None;
+        for c in select::CANDIDATES {
+            let bvh = Self::build_one(positions, triangles, &BuildOptions { ploc: Some(c), ..quality4 })?;
+            let cost = select::sah(&bvh);
+            if best.as_ref().is_none_or(|b| cost < b.0) {
+                best = Some((cost, c, bvh));
+            }
+        }
+        let (_, chosen, mut bvh) = best.expect("candidates");
+        if scored.layout != opts.layout {
+            bvh = Self::build_one(positions, triangles, &BuildOptions { quality: 4, ploc: Some(chosen), ..*opts })?;
+        }
+        bvh.build_time = start.elapsed();
+        Ok(bvh)
+    }
+
+    /// One tree (`build` below quality 5).
+    fn build_one(positions: &[Vec3], triangles: &[[u32; 3]], opts: &BuildOptions) -> Result<Bvh, BvhError> {
         if triangles.is_empty() {
             return Err(BvhError::Empty);
         }
@@ -167,6 +212,13 @@ impl Bvh {
             _ => obvhs::BvhBuildParams::very_slow_build(),
         };
         params.pre_split = opts.pre_split;
+        if let Some((distance, depth)) = opts.ploc {
+            if !PLOC_DISTANCES.contains(&distance) {
+                return Err(BvhError::PlocDistance(distance));
+            }
+            params.ploc_search_distance = distance.into();
+            params.search_depth_threshold = depth;
+        }
         params.max_prims_per_leaf = match opts.layout {
             BvhLayout::Bvh2 | BvhLayout::Bvh2q | BvhLayout::Bvh4 => opts.max_leaf_tris.clamp(1, abi::LEAF_MAX_TRIS),
             // The wide conversion chooses its own leaves (SAH) from single-triangle ones.
@@ -182,6 +234,12 @@ impl Bvh {
         };
         bvh.build_time = start.elapsed();
         Ok(bvh)
+    }
+
+    /// The tree's surface area cost in node visits and triangle tests per ray through the
+    /// root's box (what build quality 5 minimises); binary and 4-wide layouts only.
+    pub fn sah_cost(&self) -> Option<f64> {
+        matches!(self.layout, BvhLayout::Bvh2 | BvhLayout::Bvh4).then(|| select::sah(self))
     }
 
     /// Bytes the BVH takes on the GPU (nodes, triangles, index map).

@@ -59,10 +59,13 @@ pub struct TraversalArgs {
     /// Timed repetitions (at least 5); the median is reported.
     #[arg(long, default_value_t = 9)]
     pub reps: usize,
+    /// Untimed runs of each ray kind before the timed ones; when not 0, they also last at
+    /// least 1 s, so that a GPU left idle during the build is back at its clock.
     #[arg(long, default_value_t = 3)]
     pub warmup: usize,
-    /// obvhs build quality 0 (fastest) .. 4 (slowest, best).
-    #[arg(long, default_value_t = 2)]
+    /// obvhs build quality 0 (fastest) .. 4 (slowest, best); 5: sixteen quality-4 builds with
+    /// different PLOC searches, the one of least SAH kept (docs/traversal.md, "The tree lottery").
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u32).range(0..=5))]
     pub quality: u32,
     /// BVH node layout: bvh2 (binary, Aila & Laine) | cwbvh (compressed 8-wide, Ylitie et al.
     /// 2017; leaves of at most 3 triangles) | bvh2q (binary, 32-byte quantised nodes) | bvh4
@@ -75,6 +78,11 @@ pub struct TraversalArgs {
     /// Disable spatial pre-splits.
     #[arg(long)]
     pub no_pre_split: bool,
+    /// PLOC's search distance (1, 2, 6, 14, 24 or 32) and the depth below which it searches one
+    /// neighbour, in place of the quality preset's (below quality 5): another of the trees of
+    /// nearly equal SAH that trace differently (docs/traversal.md, "The tree lottery").
+    #[arg(long, value_name = "DISTANCE,DEPTH")]
+    pub ploc: Option<String>,
     /// Honour alpha masks as the integrators do (skip triangles where their alpha texture is
     /// below the cutoff); default: geometry only.
     #[arg(long)]
@@ -204,6 +212,10 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     if a.driver_rt && a.alpha {
         anyhow::bail!("--driver-rt traces the geometry alone: leave out --alpha");
     }
+    let ploc = a.ploc.as_deref().map(parse_ploc).transpose()?;
+    if ploc.is_some() && a.quality >= bidir::bvh::BEST_OF_QUALITY {
+        anyhow::bail!("--ploc sets the search of one tree; quality {} builds its own candidates: leave out one of them", a.quality);
+    }
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;
     }
@@ -219,6 +231,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.max_leaf_tris = leaf_size;
     o.build.pre_split = !a.no_pre_split;
     o.build.layout = a.bvh;
+    o.build.ploc = ploc;
     o.alpha = a.alpha;
     o.speculative = !a.no_speculative;
     o.lockstep = !a.divergent_loops;
@@ -257,4 +270,13 @@ fn parse_local_sort(v: &str) -> Result<bidir::trace::sort::SortKind, String> {
     let (g, b) = v.split_once(',').ok_or_else(|| format!("`{v}`: expected GRID,BLOCK, e.g. 4,1024"))?;
     let num = |x: &str| x.trim().parse::<u32>().map_err(|e| format!("`{x}` in `{v}`: {e}"));
     bidir::trace::sort::SortKind::local(num(g)?, num(b)?)
+}
+
+/// `--ploc DISTANCE,DEPTH`.
+fn parse_ploc(s: &str) -> anyhow::Result<(u32, usize)> {
+    let parsed = s.split_once(',').and_then(|(d, k)| Some((d.trim().parse::<u32>().ok()?, k.trim().parse::<usize>().ok()?)));
+    match parsed {
+        Some((d, k)) if bidir::bvh::PLOC_DISTANCES.contains(&d) && k <= 64 => Ok((d, k)),
+        _ => anyhow::bail!("--ploc {s}: expected DISTANCE,DEPTH with DISTANCE one of 1, 2, 6, 14, 24, 32 and DEPTH at most 64"),
+    }
 }
