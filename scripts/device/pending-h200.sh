@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery").
 # Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot); s24f (issue #16's table).
 # Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
 # Parts run in session 6 (their figures are in docs/results.md): speed, rough, vcm, trav,
