@@ -43,39 +43,38 @@ pub(crate) fn order_for_occlusion(nodes: &mut [Bvh4Node], leaf_tri_area: impl Fn
     // Children come after their parents (depth first), so a reverse sweep sees them first.
     for i in (0..nodes.len()).rev() {
         let n = nodes[i];
-        let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        let mut keyed: Vec<(f32, usize)> = Vec::with_capacity(4);
-        let mut slot_stats = [(0.0f32, 0.0f32, 0.0f32); 4]; // (area of triangles, cost, box half area)
-        for s in 0..4 {
+        // (slot, box half area, triangle area, work) of each used slot.
+        let used: Vec<(usize, f32, f32, f32)> = (0..4)
+            .filter_map(|s| {
+                let (l, h) = bounds(&n, s);
+                (l.x <= h.x).then_some((s, l, h))
+            })
+            .map(|(s, l, h)| {
+                let p = n.children[s];
+                let (tri_area, cost) = if p >= 0 {
+                    let st = memo[p as usize].as_ref().expect("children after parents");
+                    (st.tri_area, st.cost)
+                } else {
+                    let (first, count) = leaf_range(p);
+                    ((first..first + count).map(&leaf_tri_area).sum(), count as f32)
+                };
+                (s, half_area(l, h), tri_area, cost)
+            })
+            .collect();
+        let (lo, hi) = used.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &(s, ..)| {
             let (l, h) = bounds(&n, s);
-            if l.x > h.x {
-                continue;
-            }
-            (lo, hi) = (lo.min(l), hi.max(h));
-            let p = n.children[s];
-            let (tri_area, cost) = if p >= 0 {
-                let st = memo[p as usize].as_ref().expect("children after parents");
-                (st.tri_area, st.cost)
-            } else {
-                let (first, count) = leaf_range(p);
-                ((first..first + count).map(&leaf_tri_area).sum(), count as f32)
-            };
-            slot_stats[s] = (tri_area, cost, half_area(l, h));
-        }
+            (lo.min(l), hi.max(h))
+        });
         let node_area = half_area(lo, hi).max(f32::MIN_POSITIVE);
-        let mut total_area = 0.0;
-        let mut cost = 1.0;
-        for s in 0..4 {
-            let (l, h) = bounds(&n, s);
-            if l.x > h.x {
-                continue;
-            }
-            let (tri_area, child_cost, box_area) = slot_stats[s];
-            total_area += tri_area;
-            cost += box_area / node_area * child_cost;
-            let p = if box_area > 0.0 { (tri_area / box_area).min(1.0) } else { 1.0 };
-            keyed.push((p / child_cost.max(f32::MIN_POSITIVE), s));
-        }
+        let total_area: f32 = used.iter().map(|u| u.2).sum();
+        let cost = 1.0 + used.iter().map(|&(_, box_area, _, c)| box_area / node_area * c).sum::<f32>();
+        let mut keyed: Vec<(f32, usize)> = used
+            .iter()
+            .map(|&(s, box_area, tri_area, c)| {
+                let p = if box_area > 0.0 { (tri_area / box_area).min(1.0) } else { 1.0 };
+                (p / c.max(f32::MIN_POSITIVE), s)
+            })
+            .collect();
         memo[i] = Some(Stats { tri_area: total_area, cost });
         // Highest p / C first; ties keep their slot order.
         keyed.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
