@@ -32,25 +32,25 @@ if (INT_SLABS != 0u) {
 bvec4 hit4 = lessThanEqual(t_near, t_far * BOX_EXIT_SCALE);
 if (any_hit) {
     // Any hit ends the ray: no keys, no sorting network (session 13: faster than
-    // the distance order), but the order the build chose for occlusion
-    // (bvh::occlusion: the likeliest occluder per unit of work first), kept in
-    // any_hit.x as 2-bit slot indices; the slots themselves stay in the order the
-    // closest-hit rays' ties want. The first hit slot of that order next; the
-    // others pushed last first, so that they pop in order (session 26: Sponza's
-    // shadow rays 5-43 % faster).
+    // the distance order), but the slots' own order, which the build chose for
+    // occlusion (bvh::occlusion: the likeliest occluder per unit of work first).
+    // The lowest hit slot next; the others pushed highest first, so that they pop
+    // in slot order (session 26: Sponza's shadow rays 5-43 % faster).
     uint m = (hit4.x ? 1u : 0u) | (hit4.y ? 2u : 0u) | (hit4.z ? 4u : 0u) | (hit4.w ? 8u : 0u);
-    uint order = bvh4_nodes[node].any_hit.x;
-    uint om = ((m >> (order & 3u)) & 1u) | (((m >> ((order >> 2u) & 3u)) & 1u) << 1u)
-            | (((m >> ((order >> 4u) & 3u)) & 1u) << 2u) | (((m >> (order >> 6u)) & 1u) << 3u);
-    TRAVERSAL_STACK_NEXT(node, om == 0u, pick4(children, (order >> (2u * (uint(findLSB(om)) & 3u))) & 3u), 0);
-    om &= om - 1u;
-    for (int i = 0; i < 3 && om != 0u; i++) {
-        uint k = uint(findMSB(om));
-        TRAVERSAL_STACK_PUSH(pick4(children, (order >> (2u * k)) & 3u), 0);
-        om &= ~(1u << k);
+    TRAVERSAL_STACK_NEXT(node, m == 0u, pick4(children, uint(findLSB(m))), 0);
+    m &= m - 1u;
+    for (int i = 0; i < 3 && m != 0u; i++) {
+        uint s = uint(findMSB(m));
+        TRAVERSAL_STACK_PUSH(pick4(children, s), 0);
+        m &= ~(1u << s);
     }
 } else {
-    uvec4 key = mix(uvec4(0xffffffffu), (floatBitsToUint(t_near) & ~3u) | uvec4(0u, 1u, 2u, 3u), hit4);
+    // Keys in reversed slot order, so that entry distances that tie (an origin inside
+    // several boxes) take the last slot first: the slots are in occlusion order for
+    // the any-hit rays (bvh::occlusion), cheap likely occluders first, and a
+    // closest-hit ray should open the big subtrees first instead.
+    children = children.wzyx;
+    uvec4 key = mix(uvec4(0xffffffffu), (floatBitsToUint(t_near.wzyx) & ~3u) | uvec4(0u, 1u, 2u, 3u), hit4.wzyx);
     // Sorting network (0,1) (2,3) (0,2) (1,3) (1,2): k0 nearest .. k3 farthest.
     uint a = min(key.x, key.y), b = max(key.x, key.y);
     uint c = min(key.z, key.w), e = max(key.z, key.w);

@@ -8,11 +8,13 @@
 //! Both come from surface areas, as the SAH does: a random line through a convex box of area
 //! S crosses a flat triangle of area a inside it with probability 2a / S, so p = min(1, sum of
 //! the triangles' areas / the box's half area); C is the subtree's SAH in node visits and
-//! triangle tests. The order is kept beside the slots (`Bvh4Node::any_hit`), which stay as the
-//! collapse left them: closest-hit rays sort their children by distance and break ties by
-//! slot, and the occlusion order as slot order made them slower (session 26: Sponza's primary
-//! rays 5.65 -> 5.50 Grays/s, 4.3 -> 5.7 triangle tests a ray). The any-hit node step reads
-//! the order (glsl/common/traverse_bvh4_step.glsl).
+//! triangle tests. The any-hit node step takes the hit slots in slot order
+//! (glsl/common/traverse_bvh4_step.glsl). Closest-hit rays sort their children by entry
+//! distance and break ties (an origin inside several boxes) in reverse slot order, the big
+//! subtrees first: with ties in slot order, cheap leaves first, the H200 traced Sponza's primary
+//! rays 3 % and its diffuse rays 11 % slower (4.3 -> 5.7 and 6.7 -> 8.7 triangle tests a ray), and the order kept beside the slots
+//! instead (a permutation the any-hit step decodes) cost the shadow rays all they gained
+//! (session 26, docs/traversal.md).
 //! On the NVIDIA H200 it made Sponza's shadow rays 5-43 % faster from three cameras of four
 //! (docs/traversal.md, "Child slots in occlusion order").
 
@@ -36,9 +38,8 @@ struct Stats {
     cost: f32,
 }
 
-/// Sets every node's any-hit order (`Bvh4Node::any_hit.x`) to its used slots by p / C,
-/// highest first, then its empty ones; `leaf_tri_area(i)` is the area of the triangle at leaf
-/// entry i.
+/// Reorders every node's slots by p / C, highest first (empty slots last); `leaf_tri_area(i)`
+/// is the area of the triangle at leaf entry i.
 pub(crate) fn order_for_occlusion(nodes: &mut [Bvh4Node], leaf_tri_area: impl Fn(usize) -> f32) {
     if nodes.is_empty() {
         return;
@@ -80,12 +81,23 @@ pub(crate) fn order_for_occlusion(nodes: &mut [Bvh4Node], leaf_tri_area: impl Fn
             })
             .collect();
         memo[i] = Some(Stats { tri_area: total_area, cost });
-        // Highest p / C first; ties keep their slot order; empty slots after.
+        // Highest p / C first; ties keep their slot order.
         keyed.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
-        let mut order: Vec<usize> = keyed.iter().map(|k| k.1).collect();
-        let empty: Vec<usize> = (0..4).filter(|s| !order.contains(s)).collect();
-        order.extend(empty);
-        nodes[i].any_hit.x = order.iter().enumerate().map(|(k, &s)| (s as u32) << (2 * k)).sum();
+        let mut out = n;
+        for (k, &(_, s)) in keyed.iter().enumerate() {
+            out.children[k] = n.children[s];
+            for plane in 0..6 {
+                out.planes[plane][k] = n.planes[plane][s];
+            }
+        }
+        for k in keyed.len()..4 {
+            out.children[k] = 0;
+            for axis in 0..3 {
+                out.planes[2 * axis][k] = f32::INFINITY;
+                out.planes[2 * axis + 1][k] = f32::NEG_INFINITY;
+            }
+        }
+        nodes[i] = out;
     }
 }
 
@@ -105,7 +117,7 @@ mod tests {
             }
             children[s] = p;
         }
-        Bvh4Node { planes: planes.try_into().unwrap(), children: IVec4::from_array(children), any_hit: UVec4::ZERO }
+        Bvh4Node { planes: planes.try_into().unwrap(), children: IVec4::from_array(children), reserved: UVec4::ZERO }
     }
 
     /// Three leaves of one triangle each in unit boxes: the one whose triangle fills its box
@@ -124,14 +136,18 @@ mod tests {
             (d.0, d.1, leaf_pointer(0, 1)),
         ])];
         order_for_occlusion(&mut nodes, |i| areas[i]);
-        let order: Vec<u32> = (0..4).map(|k| nodes[0].any_hit.x >> (2 * k) & 3).collect();
-        // The full leaf (slot 1), three triangles of the same fill (2), then the slivers in slot order.
-        assert_eq!(order, [1, 2, 0, 3]);
+        let n = nodes[0];
+        assert_eq!(n.children.x, leaf_pointer(1, 1), "the full leaf first");
+        assert_eq!(n.children.y, leaf_pointer(2, 3), "then three triangles of the same fill");
+        // The boxes moved with their children.
+        assert_eq!((n.planes[0].x, n.planes[0].y), (2.0, 4.0));
+        assert_eq!((n.planes[1].x, n.planes[1].y), (3.0, 5.0));
     }
 
-    /// The order is a permutation of the slots, used ones first; boxes and children stay.
+    /// Reordering permutes each node's (box, child) pairs and keeps empty slots last: the
+    /// same tree for every closest-hit ray.
     #[test]
-    fn the_order_permutes_the_slots_and_moves_nothing() {
+    fn slots_are_permuted_not_changed() {
         let mut state = 3u32;
         let mut next = move || {
             state ^= state << 13;
@@ -148,19 +164,22 @@ mod tests {
             triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
         }
         let bvh = Bvh::build(&positions, &triangles, &BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() }).unwrap();
-        let mut after = bvh.bvh4_nodes.clone();
+        let before: Vec<Bvh4Node> = bvh.bvh4_nodes.clone();
+        let mut after = before.clone();
+        // Ordered again under other areas: another permutation of the same slots.
         order_for_occlusion(&mut after, |i| 1.0 + (i % 7) as f32);
-        let mut reordered = 0;
-        for (x, y) in bvh.bvh4_nodes.iter().zip(&after) {
-            assert_eq!((x.planes, x.children), (y.planes, y.children), "boxes and children stay");
-            let order: Vec<usize> = (0..4).map(|k| (y.any_hit.x >> (2 * k) & 3) as usize).collect();
-            let mut sorted = order.clone();
-            sorted.sort();
-            assert_eq!(sorted, [0, 1, 2, 3], "a permutation: {order:?}");
-            let used = (0..4).filter(|&s| y.planes[0][s] <= y.planes[1][s]).count();
-            assert!(order[..used].iter().all(|&s| y.planes[0][s] <= y.planes[1][s]), "used slots first: {order:?}");
-            reordered += usize::from(x.any_hit != y.any_hit);
+        let slots = |n: &Bvh4Node| {
+            let mut v: Vec<(i32, [u32; 6])> = (0..4)
+                .filter(|&s| n.planes[0][s] <= n.planes[1][s])
+                .map(|s| (n.children[s], std::array::from_fn(|p| n.planes[p][s].to_bits())))
+                .collect();
+            v.sort();
+            v
+        };
+        for (x, y) in before.iter().zip(&after) {
+            assert_eq!(slots(x), slots(y));
+            let used = slots(y).len();
+            assert!((0..4).all(|s| (y.planes[0][s] <= y.planes[1][s]) == (s < used)), "empty slots last");
         }
-        assert!(reordered > 0, "other areas, another order somewhere");
     }
 }

@@ -10,9 +10,6 @@ use super::{layout::leaf_range, Bvh, BvhError, BvhLayout};
 use crate::gpu::abi::{self, Bvh4Node, BvhNode};
 use glam::{IVec4, UVec4, Vec3, Vec4};
 
-/// `Bvh4Node::any_hit.x` taking the slots as they stand (0, 1, 2, 3).
-const IDENTITY_ORDER: u32 = 0b11_10_01_00;
-
 /// A child of a node being collapsed: its box and its binary-layout pointer.
 #[derive(Clone, Copy)]
 struct Child {
@@ -81,11 +78,8 @@ impl Collapse<'_> {
                 planes[2 * axis + 1][slot] = c.hi[axis];
             }
         }
-        self.out[index] = Bvh4Node {
-            planes: planes.try_into().expect("six planes"),
-            children: IVec4::from_array(ptrs),
-            any_hit: UVec4::new(IDENTITY_ORDER, 0, 0, 0),
-        };
+        self.out[index] =
+            Bvh4Node { planes: planes.try_into().expect("six planes"), children: IVec4::from_array(ptrs), reserved: UVec4::ZERO };
         // Visiting this node pushes all hit children but the nearest.
         (index as i32, depth, below + kids.len() - 1)
     }
@@ -97,7 +91,7 @@ pub(crate) fn convert(mut bvh: Bvh, positions: &[Vec3], triangles: &[[u32; 3]]) 
     let mut c = Collapse { binary: &bvh.nodes, out: Vec::with_capacity(bvh.nodes.len() / 2 + 1) };
     let (_, depth, stack) = c.node(0);
     let mut nodes = c.out;
-    // The order in which any-hit rays take the hit slots: the likeliest occluders first.
+    // Any-hit rays take the hit slots in slot order: the likeliest occluders first.
     let area = |i: usize| {
         let [a, b, c] = triangles[bvh.tri_ids[i] as usize].map(|v| positions[v as usize]);
         0.5 * (b - a).cross(c - a).length()

@@ -495,9 +495,7 @@ gpu_structs! {
         /// Child pointers like `BvhNode::children` (>= 0 inner node, < 0 leaf); 0 in empty
         /// slots (never followed).
         pub children: IVec4,
-        /// `x`: the order in which an any-hit ray takes its hit slots (`bvh::occlusion`), slot
-        /// indices of 2 bits each from bit 0, used slots first; `y`, `z`, `w`: 0.
-        pub any_hit: UVec4,
+        pub reserved: UVec4,
     }
 
     /// Push constants of the ray sort kernels: the grid of origin cells over the scene bounds.
