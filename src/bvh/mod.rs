@@ -14,7 +14,6 @@
 mod cpu;
 pub mod intersect;
 mod layout;
-mod occlusion;
 mod quant;
 mod select;
 mod wide4;
@@ -231,7 +230,7 @@ impl Bvh {
             BvhLayout::Bvh2 => layout::convert(bvh2, positions, triangles, opts.tri_test)?,
             BvhLayout::Cwbvh => layout::convert_wide(bvh2, positions, triangles, opts.tri_test, opts.max_leaf_tris.clamp(1, 3))?,
             BvhLayout::Bvh2q => quant::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
-            BvhLayout::Bvh4 => wide4::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?, positions, triangles)?,
+            BvhLayout::Bvh4 => wide4::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
         };
         bvh.build_time = start.elapsed();
         Ok(bvh)

@@ -3,8 +3,7 @@
 //! largest surface area until it holds four (the usual collapse, e.g. Wald et al. 2008,
 //! "Getting Rid of Packets"). Leaves and triangles stay exactly the binary layout's, so the
 //! same rays hit the same triangles; a ray visits about half as many nodes, each one a single
-//! 128-byte line with no decoding. Each node's slots are then ordered for any-hit rays
-//! (`occlusion`).
+//! 128-byte line with no decoding.
 
 use super::{layout::leaf_range, Bvh, BvhError, BvhLayout};
 use crate::gpu::abi::{self, Bvh4Node, BvhNode};
@@ -86,17 +85,11 @@ impl Collapse<'_> {
 }
 
 /// Converts a binary-layout BVH (`BvhLayout::Bvh2`) to the 4-wide one.
-pub(crate) fn convert(mut bvh: Bvh, positions: &[Vec3], triangles: &[[u32; 3]]) -> Result<Bvh, BvhError> {
+pub(crate) fn convert(mut bvh: Bvh) -> Result<Bvh, BvhError> {
     debug_assert_eq!(bvh.layout, BvhLayout::Bvh2);
     let mut c = Collapse { binary: &bvh.nodes, out: Vec::with_capacity(bvh.nodes.len() / 2 + 1) };
     let (_, depth, stack) = c.node(0);
-    let mut nodes = c.out;
-    // Any-hit rays take the hit slots in slot order: the likeliest occluders first.
-    let area = |i: usize| {
-        let [a, b, c] = triangles[bvh.tri_ids[i] as usize].map(|v| positions[v as usize]);
-        0.5 * (b - a).cross(c - a).length()
-    };
-    super::occlusion::order_for_occlusion(&mut nodes, area);
+    let nodes = c.out;
     // The stack holds the sentinel below the pushed entries.
     if stack + 1 > abi::TRAVERSAL_STACK_SIZE as usize {
         return Err(BvhError::TooDeep { depth, max: abi::TRAVERSAL_STACK_SIZE });
