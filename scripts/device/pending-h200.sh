@@ -136,21 +136,11 @@ s26c)
   # Session 26: build quality 5 (sixteen quality-4 trees, the one of least SAH kept) against
   # quality 4: the traversal benchmark on Sponza's four cameras, and the integrators on Sponza
   # under the sun and sky (geometry only: .device/scenes/sponza has no textures).
+  # The traversal runs are s26d's (run here with the 3-run warm-up of that day's binary).
+  bash "$0" s26d
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
   SP=$PWD/.device/scenes/sponza/Sponza.gltf
   T="timeout -k 5 90"
-  for r in 1 2; do
-    for q in 4 5; do
-      for c in "" "--refill 28"; do
-        echo "== CameraMain quality $q $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q $c 2>&1 | grep -E "^(primary|shadow|diffuse) |ms build" | sed -e 's/.*bvh4 /bvh4 /'
-      done
-    done
-  done
-  for cam in CameraAlternate CameraBalcony CameraAlcove; do
-    for q in 4 5; do
-      echo "== $cam quality $q"; $T "$B" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality $q 2>&1 | grep -E "^(primary|shadow|diffuse) "
-    done
-  done
   SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   for r in 1 2; do
     for i in pt-nee bdpt; do

@@ -9,7 +9,7 @@
 //! The SAH is a weak but camera-free predictor of that time (correlation 0.49 there): the kept
 //! tree is better on average, not on every view.
 
-use super::{layout::leaf_range, Bvh, BvhLayout};
+use super::{layout::leaf_range, wide4, Bvh, BvhLayout};
 use glam::Vec3;
 
 /// PLOC's search distance and the depth below which it searches a single neighbour (obvhs'
@@ -39,16 +39,7 @@ fn half_area(lo: Vec3, hi: Vec3) -> f64 {
 pub(crate) fn sah(bvh: &Bvh) -> f64 {
     // (lower, upper, child pointer) of every child slot of every node.
     let slots: Vec<(Vec3, Vec3, i32)> = match bvh.layout {
-        BvhLayout::Bvh2 => bvh
-            .nodes
-            .iter()
-            .flat_map(|n| {
-                [
-                    (Vec3::new(n.c0_xy.x, n.c0_xy.z, n.c01_z.x), Vec3::new(n.c0_xy.y, n.c0_xy.w, n.c01_z.y), n.children.x),
-                    (Vec3::new(n.c1_xy.x, n.c1_xy.z, n.c01_z.z), Vec3::new(n.c1_xy.y, n.c1_xy.w, n.c01_z.w), n.children.y),
-                ]
-            })
-            .collect(),
+        BvhLayout::Bvh2 => (0..bvh.nodes.len()).flat_map(|i| wide4::children(&bvh.nodes, i)).map(|c| (c.lo, c.hi, c.ptr)).collect(),
         BvhLayout::Bvh4 => bvh
             .bvh4_nodes
             .iter()

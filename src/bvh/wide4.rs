@@ -11,10 +11,10 @@ use glam::{IVec4, UVec4, Vec3, Vec4};
 
 /// A child of a node being collapsed: its box and its binary-layout pointer.
 #[derive(Clone, Copy)]
-struct Child {
-    lo: Vec3,
-    hi: Vec3,
-    ptr: i32,
+pub(super) struct Child {
+    pub(super) lo: Vec3,
+    pub(super) hi: Vec3,
+    pub(super) ptr: i32,
 }
 
 impl Child {
@@ -25,7 +25,7 @@ impl Child {
 }
 
 /// The two children of binary node `i`.
-fn children(nodes: &[BvhNode], i: usize) -> [Child; 2] {
+pub(super) fn children(nodes: &[BvhNode], i: usize) -> [Child; 2] {
     let n = &nodes[i];
     [
         Child { lo: Vec3::new(n.c0_xy.x, n.c0_xy.z, n.c01_z.x), hi: Vec3::new(n.c0_xy.y, n.c0_xy.w, n.c01_z.y), ptr: n.children.x },
