@@ -3,10 +3,10 @@
 //! cosine-distributed about the geometric normal at each primary hit), then only the
 //! traversal kernel timed with GPU timestamps: warm-up runs, then repetitions, median.
 
-use super::driver_rt::{Driver, DriverKindResult};
+use super::driver_rt::Driver;
 use super::median;
 use crate::bvh::BvhError;
-use crate::bvh::{BuildOptions, Bvh, BvhLayout, TriTest};
+use crate::bvh::{BuildOptions, Bvh, BvhLayout};
 use crate::gpu::abi::GpuCamera;
 use crate::gpu_data::{GpuBvh, SceneFeatures};
 use crate::render::GpuScene;
@@ -16,6 +16,9 @@ use crate::trace::{RaySorter, Secondary, TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Memory, VkError};
 use glam::Vec3;
 use std::time::Instant;
+
+mod report;
+pub use report::{KindResult, Report};
 
 /// The ray sets the benchmark can time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -102,68 +105,6 @@ impl Default for Options {
             driver_rt: false,
         }
     }
-}
-
-/// One ray kind's measurement.
-#[derive(Clone, Debug)]
-pub struct KindResult {
-    pub kind: RayKind,
-    pub rays: u32,
-    pub times_ms: Vec<f64>,
-    pub median_ms: f64,
-    /// Median time of the ray sort before the trace (secondary rays with `Options::sort`).
-    pub sort_median_ms: Option<f64>,
-    pub mrays_per_s: f64,
-    pub nodes_per_ray: f64,
-    /// Bytes of node data fetched per ray (nodes visited × the layout's node size).
-    pub node_bytes_per_ray: f64,
-    pub tris_per_ray: f64,
-    pub hit_fraction: f64,
-    /// The same rays through the driver's ray-tracing pipeline (`Options::driver_rt`).
-    pub driver: Option<DriverKindResult>,
-}
-
-/// The whole report.
-#[derive(Clone, Debug)]
-pub struct Report {
-    pub device: String,
-    pub triangles: usize,
-    pub tri_test: TriTest,
-    pub layout: BvhLayout,
-    /// Alpha masks honoured (`Options::alpha`), and how many materials have one.
-    pub alpha: bool,
-    pub alpha_materials: usize,
-    /// Workgroups of the persistent kernel (None: one invocation per ray).
-    pub persistent_groups: Option<u32>,
-    pub speculative: bool,
-    pub lockstep: bool,
-    pub refill_lanes: u32,
-    pub postpone: bool,
-    pub short_stack: bool,
-    pub int_slabs: bool,
-    pub rays_per_invocation: u32,
-    pub sort: Option<SortKind>,
-    pub workgroup_size: u32,
-    /// The driver's compile statistics of the timed closest- and any-hit kernels ("name
-    /// value; ..."), where it reports them (VK_KHR_pipeline_executable_properties).
-    pub kernel_stats: Vec<(String, String)>,
-    pub bvh_build_ms: f64,
-    pub bvh_nodes: usize,
-    pub bvh_leaves: usize,
-    pub bvh_depth: usize,
-    pub bvh_bytes: u64,
-    /// The tree's SAH (`Bvh::sah_cost`; binary and 4-wide layouts).
-    pub bvh_sah: Option<f64>,
-    /// The build quality (`BuildOptions::quality`), and PLOC's search distance and
-    /// single-neighbour depth where set (`BuildOptions::ploc`).
-    pub quality: u32,
-    pub ploc: Option<(u32, usize)>,
-    pub width: u32,
-    pub height: u32,
-    pub light: Vec3,
-    pub results: Vec<KindResult>,
-    /// The driver's bottom-level acceleration structure: GPU build time (ms) and bytes.
-    pub driver_build: Option<(f64, u64)>,
 }
 
 /// Why the benchmark could not run.
@@ -369,143 +310,6 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         results,
         driver_build: driver.as_ref().map(|d| (d.build_ms, d.bytes)),
     })
-}
-
-impl Report {
-    pub fn to_json(&self) -> super::json::Json {
-        use super::json::Json;
-        Json::obj(vec![
-            ("device", Json::Str(self.device.clone())),
-            ("triangles", Json::Int(self.triangles as i64)),
-            ("tri_test", Json::Str(self.tri_test.name().into())),
-            ("bvh_layout", Json::Str(self.layout.name().into())),
-            ("alpha", Json::Bool(self.alpha)),
-            ("alpha_materials", Json::Int(self.alpha_materials as i64)),
-            ("persistent", Json::Bool(self.persistent_groups.is_some())),
-            ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
-            ("speculative", Json::Bool(self.speculative)),
-            ("lockstep", Json::Bool(self.lockstep)),
-            ("refill_lanes", Json::Int(self.refill_lanes as i64)),
-            ("postpone", Json::Bool(self.postpone)),
-            ("short_stack", Json::Bool(self.short_stack)),
-            ("int_slabs", Json::Bool(self.int_slabs)),
-            ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
-            ("sort", Json::Str(self.sort.map_or("none".to_string(), |k| k.name()))),
-            ("workgroup_size", Json::Int(self.workgroup_size as i64)),
-            ("kernel_statistics", Json::obj(self.kernel_stats.iter().map(|(k, v)| (k.as_str(), Json::Str(v.clone()))).collect())),
-            ("width", Json::Int(self.width as i64)),
-            ("height", Json::Int(self.height as i64)),
-            ("light", Json::Arr(self.light.to_array().iter().map(|&x| Json::Num(x as f64)).collect())),
-            (
-                "driver_rt_build",
-                match self.driver_build {
-                    None => Json::Null,
-                    Some((ms, bytes)) => Json::obj(vec![("blas_build_ms", Json::Num(ms)), ("blas_bytes", Json::Int(bytes as i64))]),
-                },
-            ),
-            (
-                "bvh",
-                Json::obj(vec![
-                    ("build_ms", Json::Num(self.bvh_build_ms)),
-                    ("nodes", Json::Int(self.bvh_nodes as i64)),
-                    ("leaves", Json::Int(self.bvh_leaves as i64)),
-                    ("depth", Json::Int(self.bvh_depth as i64)),
-                    ("bytes", Json::Int(self.bvh_bytes as i64)),
-                    ("sah", self.bvh_sah.map_or(Json::Null, Json::Num)),
-                    ("quality", Json::Int(self.quality as i64)),
-                    (
-                        "ploc",
-                        self.ploc.map_or(Json::Null, |(d, k)| {
-                            Json::obj(vec![("distance", Json::Int(d as i64)), ("depth", Json::Int(k as i64))])
-                        }),
-                    ),
-                ]),
-            ),
-            (
-                "results",
-                Json::Arr(
-                    self.results
-                        .iter()
-                        .map(|r| {
-                            Json::obj(vec![
-                                ("rays", Json::Str(r.kind.name().into())),
-                                ("count", Json::Int(r.rays as i64)),
-                                ("median_ms", Json::Num(r.median_ms)),
-                                ("sort_median_ms", Json::Num(r.sort_median_ms.unwrap_or(f64::NAN))),
-                                ("mrays_per_s", Json::Num(r.mrays_per_s)),
-                                ("nodes_per_ray", Json::Num(r.nodes_per_ray)),
-                                ("node_bytes_per_ray", Json::Num(r.node_bytes_per_ray)),
-                                ("tris_per_ray", Json::Num(r.tris_per_ray)),
-                                ("hit_fraction", Json::Num(r.hit_fraction)),
-                                ("times_ms", Json::Arr(r.times_ms.iter().map(|&t| Json::Num(t)).collect())),
-                                ("driver_rt", r.driver.as_ref().map_or(Json::Null, DriverKindResult::to_json)),
-                            ])
-                        })
-                        .collect(),
-                ),
-            ),
-        ])
-    }
-
-    pub fn print(&self) {
-        println!(
-            "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build{}, {} nodes of {} B, {} leaves, depth {}, {:.1} MiB{}",
-            self.device,
-            self.triangles,
-            self.tri_test.name(),
-            if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
-                + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
-                + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
-                + if self.layout != BvhLayout::Cwbvh && self.speculative && !self.lockstep { ", divergent loops" } else { "" }
-                + &if self.refill_lanes > 0 { format!(", dynamic fetch at {} done lanes", self.refill_lanes) } else { String::new() }
-                + if self.postpone { ", triangle postponing" } else { "" }
-                + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
-                + if !self.int_slabs { ", float slab test" } else { "" }
-                + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
-                + &self.sort.map_or(String::new(), |k| format!(", secondary rays {}", k.describe()))
-                + &format!(", workgroups of {}", self.workgroup_size),
-            self.width,
-            self.height,
-            self.layout.name(),
-            self.bvh_build_ms,
-            format!(" (quality {}", self.quality) + &self.ploc.map_or(String::new(), |(d, k)| format!(", PLOC {d},{k}")) + ")",
-            self.bvh_nodes,
-            self.layout.node_size(),
-            self.bvh_leaves,
-            self.bvh_depth,
-            self.bvh_bytes as f64 / (1 << 20) as f64,
-            self.bvh_sah.map_or(String::new(), |c| format!(", SAH {c:.2}"))
-        );
-        println!(
-            "{:<8} {:>10} {:>10} {:>12} {:>11} {:>12} {:>10} {:>6} {:>8}",
-            "rays", "count", "median ms", "Mrays/s", "nodes/ray", "node B/ray", "tris/ray", "hit %", "sort ms"
-        );
-        for r in &self.results {
-            println!(
-                "{:<8} {:>10} {:>10.3} {:>12.1} {:>11.1} {:>12.0} {:>10.1} {:>6.1} {:>8}",
-                r.kind.name(),
-                r.rays,
-                r.median_ms,
-                r.mrays_per_s,
-                r.nodes_per_ray,
-                r.node_bytes_per_ray,
-                r.tris_per_ray,
-                100.0 * r.hit_fraction,
-                r.sort_median_ms.map_or("-".to_string(), |t| format!("{t:.3}"))
-            );
-        }
-        if let Some((ms, bytes)) = self.driver_build {
-            super::driver_rt::print_header(ms, bytes);
-            for r in &self.results {
-                if let Some(d) = &r.driver {
-                    d.print(r.kind.name(), r.rays, r.mrays_per_s);
-                }
-            }
-        }
-        for (kernel, stats) in &self.kernel_stats {
-            println!("{kernel}: {stats}");
-        }
-    }
 }
 
 #[cfg(test)]
