@@ -775,3 +775,53 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
     drop((gbvh, plain, counts, ray_buf, hits, stats, dispatch));
     finish(ctx);
 }
+
+/// Any-hit rays over the 4-wide layout traverse their own copy of the nodes
+/// (`Bvh::bvh4_any_nodes`, slots in occlusion order) from the root node 0 names, and closest-hit
+/// rays the tree itself, in every loop the kernels have (lockstep, divergent, dynamic fetch):
+/// with the copy's root emptied every any-hit ray misses and no closest hit moves; without a
+/// copy (`occlusion_copy: false`) the verdicts are the copy's.
+#[test]
+fn any_hit_rays_traverse_their_own_copy_of_the_4_wide_nodes() {
+    let ctx = gpu();
+    let scene = bidir::scene::Scene::builtin_cornell_box();
+    let mut rng = Pcg::new(31);
+    let (lo, hi) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(556.0, 548.8, 559.2));
+    let rays = mixed_rays(&mut rng, lo, hi, 4_000);
+    let opts = BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() };
+    let bvh = Bvh::build(&scene.positions, &scene.triangles, &opts).unwrap();
+    let plain = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { occlusion_copy: false, ..opts }).unwrap();
+    let mut emptied = bvh.clone();
+    let root = &mut emptied.bvh4_any_nodes[0];
+    for s in 0..4 {
+        for axis in 0..3 {
+            root.planes[2 * axis][s] = f32::INFINITY;
+            root.planes[2 * axis + 1][s] = f32::NEG_INFINITY;
+        }
+    }
+    let [gbvh, gplain, gemptied] = [&bvh, &plain, &emptied].map(|b| GpuBvh::upload(&ctx, b).unwrap());
+    let base = TraceOptions { layout: BvhLayout::Bvh4, ..TraceOptions::new(opts.tri_test) };
+    for (loop_kind, o) in [
+        ("lockstep", base),
+        ("divergent loops", TraceOptions { lockstep: false, ..base }),
+        ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
+    ] {
+        let tracer = Tracer::with_options(&ctx, &o).unwrap();
+        let closest = tracer.trace(&ctx, &gbvh, &rays, false).unwrap();
+        let any = tracer.trace(&ctx, &gbvh, &rays, true).unwrap();
+        let blocked = any.iter().filter(|h| h.tri != NO_HIT).count();
+        assert!(blocked > rays.len() / 4, "{loop_kind}: only {blocked} of {} rays blocked", rays.len());
+        let any_plain = tracer.trace(&ctx, &gplain, &rays, true).unwrap();
+        for (i, (a, b)) in any.iter().zip(&any_plain).enumerate() {
+            assert_eq!(a.tri != NO_HIT, b.tri != NO_HIT, "{loop_kind}: ray {i}'s verdict differs without the copy");
+        }
+        let closest_emptied = tracer.trace(&ctx, &gemptied, &rays, false).unwrap();
+        for (i, (a, b)) in closest.iter().zip(&closest_emptied).enumerate() {
+            assert_eq!((a.tri, a.t.to_bits()), (b.tri, b.t.to_bits()), "{loop_kind}: ray {i}'s closest hit read the any-hit copy");
+        }
+        let missed = tracer.trace(&ctx, &gemptied, &rays, true).unwrap().iter().filter(|h| h.tri == NO_HIT).count();
+        assert_eq!(missed, rays.len(), "{loop_kind}: any-hit rays found hits past the copy's empty root");
+    }
+    drop((gbvh, gplain, gemptied));
+    finish(ctx);
+}

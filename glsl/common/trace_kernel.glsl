@@ -67,6 +67,7 @@ layout(constant_id = SPEC_REFILL_LANES) const uint REFILL_LANES = 0u;
 void trace_dynamic(inout uvec2 stats) {
     const uint NO_RAY = 0xffffffffu;
     bool any_hit = ANY_HIT != 0u;
+    int root = bvh4_root(any_hit);
     uint ray = NO_RAY;
     bool exhausted = false;
     uint refills = 0u;
@@ -116,7 +117,7 @@ void trace_dynamic(inout uvec2 stats) {
                     hit = TraceHit(r.dir.w, NO_HIT, vec2(0.0));
                     sp = 0;
                     // A ray without a segment (tmax < 0) is done at once, as trace_one has it.
-                    node = r.dir.w >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
+                    node = r.dir.w >= 0.0 ? root : int(TRAVERSAL_SENTINEL);
                     leaf = 0;
                 }
             }

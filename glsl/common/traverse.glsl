@@ -274,7 +274,11 @@ TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit
     TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
     TRAVERSAL_STACK_INIT();
     // A ray without a segment (tmax < 0) is done at once (no branch around the loops).
+#ifdef TRAVERSE_BVH4
+    int node = tmax >= 0.0 ? bvh4_root(any_hit) : int(TRAVERSAL_SENTINEL);
+#else
     int node = tmax >= 0.0 ? 0 : int(TRAVERSAL_SENTINEL);
+#endif
     int leaf = 0;
     while (true) {
         while (true) {

@@ -9,9 +9,16 @@
 // children are ordered by entry distance with a five-comparator sorting network on keys that
 // hold the distance's bits with the child's slot in the two lowest (distances are not
 // negative, so their bits sort as unsigned integers; the two bits only break near-ties). The
-// nearest is visited next, the others pushed far to near. Any-hit rays skip the ordering.
+// nearest is visited next, the others pushed far to near. Any-hit rays skip the ordering:
+// they traverse their own copy of the nodes (src/bvh/occlusion.rs), whose slots the build
+// ordered for them, from the root that node 0's reserved.x names (0: the one tree).
 
 layout(std430, binding = BIND_NODES) readonly buffer Bvh4Nodes { Bvh4Node bvh4_nodes[]; };
+
+// Where a ray starts: the root of the any-hit copy for any-hit rays, else node 0.
+int bvh4_root(bool any_hit) {
+    return any_hit ? int(bvh4_nodes[0].reserved.x) : 0;
+}
 
 // Child pointer of slot (s & 3), as selects (see pick3 in intersect.glsl).
 int pick4(ivec4 v, uint s) {
@@ -64,7 +71,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
 
     TraceHit hit = TraceHit(tmax, NO_HIT, vec2(0.0));
     TRAVERSAL_STACK_INIT();
-    int node = 0;   // root
+    int node = bvh4_root(any_hit);
     int leaf = 0;   // postponed leaf (< 0), none if >= 0
 
     while (node != int(TRAVERSAL_SENTINEL)) {

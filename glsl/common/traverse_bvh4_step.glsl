@@ -31,17 +31,18 @@ if (INT_SLABS != 0u) {
 }
 bvec4 hit4 = lessThanEqual(t_near, t_far * BOX_EXIT_SCALE);
 if (any_hit) {
-    // Any hit ends the ray, so the order of the hit children matters less than
-    // the work of ordering them: the lowest hit slot next, the others pushed as
-    // they come (no keys, no sorting network). H200, Sponza, leaf size 3, quality
-    // 3: shadow rays 6.30-6.32 against 5.97-6.02 Grays/s sorted, though they
-    // visit 15.8 nodes against 14.8 (session 13).
+    // Any hit ends the ray: no keys, no sorting network (session 13: faster than the
+    // distance order), but the slots' own order, which the build chose for occlusion in
+    // any-hit rays' copy of the nodes (src/bvh/occlusion.rs: the likeliest occluder per
+    // unit of work first). The lowest hit slot next; the others pushed highest first, so
+    // that they pop in slot order (session 27: Sponza's shadow rays 10-43 % faster).
     uint m = (hit4.x ? 1u : 0u) | (hit4.y ? 2u : 0u) | (hit4.z ? 4u : 0u) | (hit4.w ? 8u : 0u);
     TRAVERSAL_STACK_NEXT(node, m == 0u, pick4(children, uint(findLSB(m))), 0);
     m &= m - 1u;
     for (int i = 0; i < 3 && m != 0u; i++) {
-        TRAVERSAL_STACK_PUSH(pick4(children, uint(findLSB(m))), 0);
-        m &= m - 1u;
+        uint s = uint(findMSB(m));
+        TRAVERSAL_STACK_PUSH(pick4(children, s), 0);
+        m &= ~(1u << s);
     }
 } else {
     uvec4 key = mix(uvec4(0xffffffffu), (floatBitsToUint(t_near) & ~3u) | uvec4(0u, 1u, 2u, 3u), hit4);

@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4).
 # Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery"); s26g (a measurement build: the 4-wide slots in occlusion order for any-hit rays); s26h (every ray kind: the occlusion order as slot order slowed closest-hit rays); s26i (the same with the order beside the slots); s26j (the order as slot order again, closest-hit ties in reverse slot order).
 # Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot); s24f (issue #16's table).
 # Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
@@ -26,6 +27,36 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s27a)
+  # Session 27: any-hit rays over their own copy of the 4-wide nodes, slots in occlusion order
+  # (this commit), against the one tree (--no-occlusion-copy), interleaved: every ray kind from
+  # CameraMain at quality 4 and 5, lockstep and --refill 28, two runs; shadow rays from the
+  # other cameras; the integrators over bvh4 on Sponza under the sun and sky, and by default.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for q in 4 5; do
+      for c in "" "--refill 28"; do
+        for occ in "" "--no-occlusion-copy"; do
+          echo "== CameraMain quality $q $c $occ"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q $c $occ 2>&1 | grep -E "^(primary|shadow|diffuse) "
+        done
+      done
+    done
+  done
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for occ in "" "--no-occlusion-copy"; do
+      echo "== $cam quality 5 $occ"; $T "$B" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 5 $occ 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for i in pt-nee bdpt; do
+    for occ in "" "--bvh-no-occlusion-copy"; do
+      echo "== sponza $i bvh4 $occ"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i --bvh bvh4 $occ 2>&1 | grep -E "Msamples"
+    done
+    echo "== sponza $i default"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+  done
+  ;;
 s26j)
   # Session 26: s26h again with the occlusion order as the slot order and the closest-hit
   # rays' distance ties broken in reverse slot order.

@@ -14,6 +14,7 @@
 mod cpu;
 pub mod intersect;
 mod layout;
+mod occlusion;
 mod quant;
 mod select;
 mod wide4;
@@ -100,11 +101,23 @@ pub struct BuildOptions {
     /// searches one neighbour, in place of the quality preset's (below quality 5): trees of
     /// nearly equal SAH that trace differently (docs/traversal.md, "The tree lottery").
     pub ploc: Option<(u32, usize)>,
+    /// 4-wide layout only: a second copy of the nodes for any-hit (shadow) rays, each node's
+    /// slots in occlusion order (`occlusion`), stored after the closest-hit nodes on the GPU.
+    /// Twice the node memory; the hits are the same either way.
+    pub occlusion_copy: bool,
 }
 
 impl Default for BuildOptions {
     fn default() -> Self {
-        BuildOptions { tri_test: TriTest::Watertight, quality: 2, pre_split: true, max_leaf_tris: 4, layout: BvhLayout::Bvh2, ploc: None }
+        BuildOptions {
+            tri_test: TriTest::Watertight,
+            quality: 2,
+            pre_split: true,
+            max_leaf_tris: 4,
+            layout: BvhLayout::Bvh2,
+            ploc: None,
+            occlusion_copy: true,
+        }
     }
 }
 
@@ -135,8 +148,14 @@ pub struct Bvh {
     pub wide_nodes: Vec<CwbvhNode>,
     /// Nodes of the quantised binary layout; the root is node 0 (empty for other layouts).
     pub quant_nodes: Vec<QuantNode>,
-    /// Nodes of the 4-wide layout; the root is node 0 (empty for other layouts).
+    /// Nodes of the 4-wide layout; the root is node 0 (empty for other layouts). Node 0's
+    /// `reserved.x` is where any-hit rays start: `bvh4_nodes.len()`, the root of
+    /// `bvh4_any_nodes`, or 0 (this tree) without them.
     pub bvh4_nodes: Vec<Bvh4Node>,
+    /// The 4-wide nodes again for any-hit rays (`BuildOptions::occlusion_copy`; else empty),
+    /// indexed as the GPU stores them, after `bvh4_nodes`: node i here is node
+    /// `bvh4_nodes.len() + i` there, and so are its inner children's pointers.
+    pub bvh4_any_nodes: Vec<Bvh4Node>,
     /// Triangles in leaf order.
     pub tris: Vec<GpuTri>,
     /// Original triangle index of each entry of `tris`.
@@ -230,7 +249,14 @@ impl Bvh {
             BvhLayout::Bvh2 => layout::convert(bvh2, positions, triangles, opts.tri_test)?,
             BvhLayout::Cwbvh => layout::convert_wide(bvh2, positions, triangles, opts.tri_test, opts.max_leaf_tris.clamp(1, 3))?,
             BvhLayout::Bvh2q => quant::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
-            BvhLayout::Bvh4 => wide4::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
+            BvhLayout::Bvh4 => {
+                let bvh = wide4::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?;
+                if opts.occlusion_copy {
+                    occlusion::add_any_hit_copy(bvh, positions, triangles)
+                } else {
+                    bvh
+                }
+            }
         };
         bvh.build_time = start.elapsed();
         Ok(bvh)
@@ -253,6 +279,7 @@ impl Bvh {
             + std::mem::size_of_val(self.wide_nodes.as_slice())
             + std::mem::size_of_val(self.quant_nodes.as_slice())
             + std::mem::size_of_val(self.bvh4_nodes.as_slice())
+            + std::mem::size_of_val(self.bvh4_any_nodes.as_slice())
     }
 
     /// The triangles as the GPU stores them, each watertight one whose original triangle
@@ -270,7 +297,7 @@ impl Bvh {
         tris
     }
 
-    /// Nodes of the layout built.
+    /// Nodes of the layout built (the closest-hit tree's; `bvh4_any_nodes` not counted).
     pub fn node_count(&self) -> usize {
         self.nodes.len() + self.wide_nodes.len() + self.quant_nodes.len() + self.bvh4_nodes.len()
     }
@@ -312,6 +339,7 @@ mod tests {
                 let mut v: Vec<u8> = bytemuck::cast_slice(&b.nodes).to_vec();
                 v.extend_from_slice(bytemuck::cast_slice(&b.wide_nodes));
                 v.extend_from_slice(bytemuck::cast_slice(&b.bvh4_nodes));
+                v.extend_from_slice(bytemuck::cast_slice(&b.bvh4_any_nodes));
                 v.extend_from_slice(bytemuck::cast_slice(&b.tri_ids));
                 v
             };

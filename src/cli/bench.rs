@@ -78,6 +78,10 @@ pub struct TraversalArgs {
     /// Disable spatial pre-splits.
     #[arg(long)]
     pub no_pre_split: bool,
+    /// bvh4: shadow rays traverse the closest-hit nodes instead of their own copy with each
+    /// node's children in occlusion order (half the node memory).
+    #[arg(long)]
+    pub no_occlusion_copy: bool,
     /// PLOC's search distance (1, 2, 6, 14, 24 or 32) and the depth below which it searches one
     /// neighbour, in place of the quality preset's (below quality 5): another of the trees of
     /// nearly equal SAH that trace differently (docs/traversal.md, "The tree lottery").
@@ -230,6 +234,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.quality = a.quality;
     o.build.max_leaf_tris = leaf_size;
     o.build.pre_split = !a.no_pre_split;
+    o.build.occlusion_copy = !a.no_occlusion_copy;
     o.build.layout = a.bvh;
     o.build.ploc = ploc;
     o.alpha = a.alpha;

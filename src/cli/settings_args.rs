@@ -92,6 +92,10 @@ pub struct SettingsArgs {
     /// bvh4, 4 otherwise]; the image is the same.
     #[arg(long, value_name = "1..16", value_parser = clap::value_parser!(u32).range(1..=16))]
     pub bvh_leaf_size: Option<u32>,
+    /// bvh4: shadow rays traverse the closest-hit nodes instead of their own copy with each
+    /// node's children in occlusion order (half the node memory); the image is the same.
+    #[arg(long)]
+    pub bvh_no_occlusion_copy: bool,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
     /// what kernel specialisation buys).
     #[arg(long)]
@@ -162,6 +166,7 @@ impl SettingsArgs {
         s.bvh.tri_test = self.tri_test;
         s.bvh_quality = self.bvh_quality;
         s.bvh_leaf_size = self.bvh_leaf_size;
+        s.bvh.occlusion_copy = !self.bvh_no_occlusion_copy;
         s.bvh_layout = match self.bvh.as_str() {
             "auto" => None,
             "bvh2" => Some(bidir::bvh::BvhLayout::Bvh2),

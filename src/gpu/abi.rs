@@ -495,6 +495,8 @@ gpu_structs! {
         /// Child pointers like `BvhNode::children` (>= 0 inner node, < 0 leaf); 0 in empty
         /// slots (never followed).
         pub children: IVec4,
+        /// Node 0's `x`: the root of any-hit rays' copy of the nodes
+        /// (`Bvh::bvh4_any_nodes`), 0 without one; otherwise unused.
         pub reserved: UVec4,
     }
 

@@ -28,7 +28,8 @@ impl GpuBvh {
             BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
             BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
             BvhLayout::Bvh2q => ctx.upload_buffer("bvh.quant_nodes", &bvh.quant_nodes)?,
-            BvhLayout::Bvh4 => ctx.upload_buffer("bvh.bvh4_nodes", &bvh.bvh4_nodes)?,
+            // Any-hit rays' copy after the closest-hit nodes (its pointers count from there).
+            BvhLayout::Bvh4 => ctx.upload_buffer("bvh.bvh4_nodes", &[bvh.bvh4_nodes.as_slice(), &bvh.bvh4_any_nodes].concat())?,
         };
         Ok(GpuBvh {
             nodes,
