@@ -1,7 +1,7 @@
 //! The BVH in GPU memory, bound the same way by the integrators and the trace kernels.
 
 use crate::bvh::{Bvh, BvhLayout, TriTest};
-use crate::gpu::abi::{self, GpuTri};
+use crate::gpu::abi::{self, Bvh4Node, GpuTri};
 use crate::gpu::kernels::LayoutForms;
 use crate::vk::{Bind, Buffer, Context, KernelSource, Result};
 
@@ -28,16 +28,10 @@ impl GpuBvh {
             BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
             BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
             BvhLayout::Bvh2q => ctx.upload_buffer("bvh.quant_nodes", &bvh.quant_nodes)?,
-            // Any-hit rays' copy after the closest-hit nodes (its pointers count from there).
-            BvhLayout::Bvh4 => ctx.upload_buffer("bvh.bvh4_nodes", &[bvh.bvh4_nodes.as_slice(), &bvh.bvh4_any_nodes].concat())?,
+            BvhLayout::Bvh4 => ctx.upload_buffer("bvh.bvh4_nodes", &bvh4_node_data(bvh, ctx.info().max_storage_buffer_range as usize))?,
         };
-        Ok(GpuBvh {
-            nodes,
-            tris: ctx.upload_buffer("bvh.tris", tris)?,
-            tri_test: bvh.tri_test,
-            layout: bvh.layout,
-            bytes: (bvh.node_bytes() + std::mem::size_of_val(bvh.tris.as_slice())) as u64,
-        })
+        let bytes = nodes.size() + std::mem::size_of_val(bvh.tris.as_slice()) as u64;
+        Ok(GpuBvh { nodes, tris: ctx.upload_buffer("bvh.tris", tris)?, tri_test: bvh.tri_test, layout: bvh.layout, bytes })
     }
 
     /// The form of an integrator kernel that traverses this BVH's layout: `bvh2` is built
@@ -55,5 +49,47 @@ impl GpuBvh {
     /// Bindings of the BVH buffers (glsl/common/traverse.glsl).
     pub fn binds(&self) -> Vec<Bind<'_>> {
         vec![Bind::buffer(abi::BIND_NODES, &self.nodes), Bind::buffer(abi::BIND_TRIS, &self.tris)]
+    }
+}
+
+/// The 4-wide node buffer's contents: the closest-hit nodes, then any-hit rays' copy
+/// (`Bvh::bvh4_any_nodes`, its pointers counting from there), unless the two exceed `limit`
+/// bytes (the device's largest storage buffer) where the nodes alone do not: then the nodes
+/// alone, node 0 naming no copy, and any-hit rays traverse the closest-hit tree.
+fn bvh4_node_data(bvh: &Bvh, limit: usize) -> Vec<Bvh4Node> {
+    let both = std::mem::size_of_val(bvh.bvh4_nodes.as_slice()) + std::mem::size_of_val(bvh.bvh4_any_nodes.as_slice());
+    if both <= limit || bvh.bvh4_any_nodes.is_empty() {
+        return [bvh.bvh4_nodes.as_slice(), &bvh.bvh4_any_nodes].concat();
+    }
+    let mut nodes = bvh.bvh4_nodes.clone();
+    nodes[0].reserved.x = 0;
+    nodes
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bvh::BuildOptions;
+    use glam::Vec3;
+
+    /// The copy follows the nodes where both fit one storage buffer; where they do not, the
+    /// nodes go alone and node 0 sends any-hit rays to their own root.
+    #[test]
+    fn the_any_hit_copy_is_left_out_where_it_does_not_fit() {
+        let mut positions = Vec::new();
+        let mut triangles = Vec::new();
+        for i in 0..500u32 {
+            let o = Vec3::new((i % 10) as f32, (i / 10 % 10) as f32, (i / 100) as f32);
+            positions.extend([o, o + Vec3::X * 0.5, o + Vec3::Y * 0.5]);
+            triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
+        }
+        let bvh = Bvh::build(&positions, &triangles, &BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() }).unwrap();
+        let n = bvh.bvh4_nodes.len();
+        let one = n * std::mem::size_of::<Bvh4Node>();
+        let both = bvh4_node_data(&bvh, 2 * one);
+        assert_eq!((both.len(), both[0].reserved.x), (2 * n, n as u32));
+        let alone = bvh4_node_data(&bvh, 2 * one - 1);
+        assert_eq!((alone.len(), alone[0].reserved.x), (n, 0));
+        assert!(bytemuck::cast_slice::<_, u8>(&alone[1..]) == bytemuck::cast_slice::<_, u8>(&bvh.bvh4_nodes[1..]));
     }
 }
