@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7).
+# Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy).
 # Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery"); s26g (a measurement build: the 4-wide slots in occlusion order for any-hit rays); s26h (every ray kind: the occlusion order as slot order slowed closest-hit rays); s26i (the same with the order beside the slots); s26j (the order as slot order again, closest-hit ties in reverse slot order).
 # Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot); s24f (issue #16's table).
 # Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
@@ -27,6 +27,21 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s27d)
+  # Session 27: this commit, Sponza CameraMain at quality 5: every ray kind lockstep and with
+  # --refill 28, two runs; shadow rays with the any-hit copy at other refill counts.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "" "--refill 28"; do
+      echo "== CameraMain quality 5 $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |^device"
+    done
+  done
+  for n in 8 16 20 24 31; do
+    echo "== CameraMain quality 5 --refill $n"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 --rays shadow --refill $n 2>&1 | grep -E "^shadow "
+  done
+  ;;
 s27c)
   # Session 27: a measurement build (.device/bidir-exp.gz, not committed): the any-hit copy's
   # order by p / C with C the expected work of an occlusion ray crossing the child, children

@@ -304,6 +304,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         bvh_sah: bvh.sah_cost(),
         quality: opts.build.quality,
         ploc: opts.build.ploc,
+        any_hit_copy: gbvh.any_hit_copy,
         width: camera.size.x,
         height: camera.size.y,
         light,

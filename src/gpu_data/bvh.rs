@@ -13,6 +13,9 @@ pub struct GpuBvh {
     pub tri_test: TriTest,
     pub layout: BvhLayout,
     pub bytes: u64,
+    /// Whether any-hit rays traverse their own copy of the nodes (4-wide layout;
+    /// `Bvh::bvh4_any_nodes`, uploaded where it fits).
+    pub any_hit_copy: bool,
 }
 
 impl GpuBvh {
@@ -24,14 +27,20 @@ impl GpuBvh {
     /// place of `bvh.tris`.
     pub fn upload_with_tris(ctx: &Context, bvh: &Bvh, tris: &[GpuTri]) -> Result<GpuBvh> {
         assert_eq!(tris.len(), bvh.tris.len(), "one GPU triangle per leaf triangle");
+        let mut any_hit_copy = false;
         let nodes = match bvh.layout {
             BvhLayout::Bvh2 => ctx.upload_buffer("bvh.nodes", &bvh.nodes)?,
             BvhLayout::Cwbvh => ctx.upload_buffer("bvh.wide_nodes", &bvh.wide_nodes)?,
             BvhLayout::Bvh2q => ctx.upload_buffer("bvh.quant_nodes", &bvh.quant_nodes)?,
-            BvhLayout::Bvh4 => ctx.upload_buffer("bvh.bvh4_nodes", &bvh4_node_data(bvh, ctx.info().max_storage_buffer_range as usize))?,
+            BvhLayout::Bvh4 => {
+                let data = bvh4_node_data(bvh, ctx.info().max_storage_buffer_range as usize);
+                any_hit_copy = data.len() > bvh.bvh4_nodes.len();
+                ctx.upload_buffer("bvh.bvh4_nodes", &data)?
+            }
         };
         let bytes = nodes.size() + std::mem::size_of_val(bvh.tris.as_slice()) as u64;
-        Ok(GpuBvh { nodes, tris: ctx.upload_buffer("bvh.tris", tris)?, tri_test: bvh.tri_test, layout: bvh.layout, bytes })
+        let tris = ctx.upload_buffer("bvh.tris", tris)?;
+        Ok(GpuBvh { nodes, tris, tri_test: bvh.tri_test, layout: bvh.layout, bytes, any_hit_copy })
     }
 
     /// The form of an integrator kernel that traverses this BVH's layout: `bvh2` is built

@@ -62,6 +62,8 @@ pub struct Report {
     /// single-neighbour depth where set (`BuildOptions::ploc`).
     pub quality: u32,
     pub ploc: Option<(u32, usize)>,
+    /// Whether any-hit rays traversed their own copy of the 4-wide nodes (`GpuBvh::any_hit_copy`).
+    pub any_hit_copy: bool,
     pub width: u32,
     pub height: u32,
     pub light: Vec3,
@@ -111,6 +113,7 @@ impl Report {
                     ("bytes", Json::Int(self.bvh_bytes as i64)),
                     ("sah", self.bvh_sah.map_or(Json::Null, Json::Num)),
                     ("quality", Json::Int(self.quality as i64)),
+                    ("any_hit_copy", Json::Bool(self.any_hit_copy)),
                     (
                         "ploc",
                         self.ploc.map_or(Json::Null, |(d, k)| {
@@ -166,7 +169,10 @@ impl Report {
             self.height,
             self.layout.name(),
             self.bvh_build_ms,
-            format!(" (quality {}", self.quality) + &self.ploc.map_or(String::new(), |(d, k)| format!(", PLOC {d},{k}")) + ")",
+            format!(" (quality {}", self.quality)
+                + &self.ploc.map_or(String::new(), |(d, k)| format!(", PLOC {d},{k}"))
+                + if self.any_hit_copy { ", any-hit copy" } else { "" }
+                + ")",
             self.bvh_nodes,
             self.layout.node_size(),
             self.bvh_leaves,
