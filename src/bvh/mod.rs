@@ -184,7 +184,8 @@ impl Bvh {
             BvhLayout::Bvh2q => BuildOptions { layout: BvhLayout::Bvh2, ..*opts },
             BvhLayout::Cwbvh => BuildOptions { layout: BvhLayout::Bvh2, max_leaf_tris: 1, ..*opts },
         };
-        let quality4 = BuildOptions { quality: 4, ..scored };
+        // The any-hit copy (4-wide) is added to the chosen tree alone.
+        let quality4 = BuildOptions { quality: 4, occlusion_copy: false, ..scored };
         let mut best: Option<(f64, (u32, usize), Bvh)> = None;
         for c in select::CANDIDATES {
             let bvh = Self::build_one(positions, triangles, &BuildOptions { ploc: Some(c), ..quality4 })?;
@@ -196,6 +197,8 @@ impl Bvh {
         let (_, chosen, mut bvh) = best.expect("candidates");
         if scored.layout != opts.layout {
             bvh = Self::build_one(positions, triangles, &BuildOptions { quality: 4, ploc: Some(chosen), ..*opts })?;
+        } else if opts.layout == BvhLayout::Bvh4 && opts.occlusion_copy {
+            bvh = occlusion::add_any_hit_copy(bvh, positions, triangles);
         }
         bvh.build_time = start.elapsed();
         Ok(bvh)
@@ -303,6 +306,29 @@ impl Bvh {
     }
 }
 
+/// A soup of `n` random triangles for the module's tests: corners within `size.0 + size.1 x
+/// u` (u uniform in [0, 1), drawn per corner) of a random point in a cube of side `spread`, from
+/// an xorshift generator seeded with `seed` (not 0): the same soup on every machine.
+#[cfg(test)]
+pub(crate) fn test_soup(seed: u32, n: u32, spread: f32, size: (f32, f32)) -> (Vec<Vec3>, Vec<[u32; 3]>) {
+    let mut state = seed;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        state as f32 / u32::MAX as f32
+    };
+    let (mut positions, mut triangles) = (Vec::new(), Vec::new());
+    for i in 0..n {
+        let o = Vec3::new(next(), next(), next()) * spread;
+        for _ in 0..3 {
+            positions.push(o + Vec3::new(next(), next(), next()) * (size.0 + size.1 * next()));
+        }
+        triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
+    }
+    (positions, triangles)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -312,22 +338,7 @@ mod tests {
     #[test]
     fn the_tree_does_not_depend_on_the_thread_count() {
         // A soup large enough for obvhs's parallel paths (reinsertion batches, radix sorts).
-        let mut state = 7u32;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 17;
-            state ^= state << 5;
-            state as f32 / u32::MAX as f32
-        };
-        let mut positions = Vec::new();
-        let mut triangles = Vec::new();
-        for i in 0..60_000u32 {
-            let o = Vec3::new(next(), next(), next()) * 100.0;
-            for _ in 0..3 {
-                positions.push(o + Vec3::new(next(), next(), next()));
-            }
-            triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
-        }
+        let (positions, triangles) = test_soup(7, 60_000, 100.0, (1.0, 0.0));
         for (quality, layout) in [(2, BvhLayout::Bvh2), (4, BvhLayout::Bvh4), (3, BvhLayout::Cwbvh)] {
             let opts = BuildOptions { quality, layout, max_leaf_tris: 3, ..Default::default() };
             let build = |threads: usize| {

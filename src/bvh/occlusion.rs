@@ -179,21 +179,7 @@ mod tests {
     /// closest-hit nodes, empty slots last, and node 0 says where it starts: the same tree.
     #[test]
     fn the_copy_permutes_slots_and_moves_pointers() {
-        let mut state = 3u32;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 17;
-            state ^= state << 5;
-            state as f32 / u32::MAX as f32
-        };
-        let (mut positions, mut triangles) = (Vec::new(), Vec::new());
-        for i in 0..2000u32 {
-            let o = Vec3::new(next(), next(), next()) * 30.0;
-            for _ in 0..3 {
-                positions.push(o + Vec3::new(next(), next(), next()) * (0.2 + 3.0 * next()));
-            }
-            triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
-        }
+        let (positions, triangles) = crate::bvh::test_soup(3, 2000, 30.0, (0.2, 3.0));
         let opts = BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() };
         let bvh = Bvh::build(&positions, &triangles, &opts).unwrap();
         let plain = Bvh::build(&positions, &triangles, &BuildOptions { occlusion_copy: false, ..opts }).unwrap();

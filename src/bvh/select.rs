@@ -113,21 +113,7 @@ mod tests {
     /// SAH as one candidate built alone, no more than any.
     #[test]
     fn quality_5_keeps_the_cheapest_candidate() {
-        let mut state = 11u32;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 17;
-            state ^= state << 5;
-            state as f32 / u32::MAX as f32
-        };
-        let (mut positions, mut triangles) = (Vec::new(), Vec::new());
-        for i in 0..3000u32 {
-            let o = Vec3::new(next(), next(), next()) * 40.0;
-            for _ in 0..3 {
-                positions.push(o + Vec3::new(next(), next(), next()) * (1.0 + 4.0 * next()));
-            }
-            triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
-        }
+        let (positions, triangles) = crate::bvh::test_soup(11, 3000, 40.0, (1.0, 4.0));
         for layout in [BvhLayout::Bvh2, BvhLayout::Bvh4] {
             let best =
                 Bvh::build(&positions, &triangles, &BuildOptions { quality: 5, layout, max_leaf_tris: 3, ..Default::default() }).unwrap();
@@ -143,6 +129,11 @@ mod tests {
             assert!(costs.contains(&kept), "{layout:?}: kept {kept} is no candidate's ({costs:?})");
             let spread = costs.iter().cloned().fold(0.0, f64::max) / kept;
             assert!(spread > 1.0, "{layout:?}: the candidates are different trees");
+            if layout == BvhLayout::Bvh4 {
+                // The kept tree gets any-hit rays' copy (built for it alone).
+                assert_eq!(best.bvh4_any_nodes.len(), best.bvh4_nodes.len());
+                assert_eq!(best.bvh4_nodes[0].reserved.x as usize, best.bvh4_nodes.len());
+            }
         }
     }
 }

@@ -79,19 +79,12 @@ fn bvh4_node_data(bvh: &Bvh, limit: usize) -> Vec<Bvh4Node> {
 mod tests {
     use super::*;
     use crate::bvh::BuildOptions;
-    use glam::Vec3;
 
     /// The copy follows the nodes where both fit one storage buffer; where they do not, the
     /// nodes go alone and node 0 sends any-hit rays to their own root.
     #[test]
     fn the_any_hit_copy_is_left_out_where_it_does_not_fit() {
-        let mut positions = Vec::new();
-        let mut triangles = Vec::new();
-        for i in 0..500u32 {
-            let o = Vec3::new((i % 10) as f32, (i / 10 % 10) as f32, (i / 100) as f32);
-            positions.extend([o, o + Vec3::X * 0.5, o + Vec3::Y * 0.5]);
-            triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
-        }
+        let (positions, triangles) = crate::bvh::test_soup(5, 500, 10.0, (0.2, 0.5));
         let bvh = Bvh::build(&positions, &triangles, &BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() }).unwrap();
         let n = bvh.bvh4_nodes.len();
         let one = n * std::mem::size_of::<Bvh4Node>();
