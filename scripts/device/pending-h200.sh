@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy).
+# Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy); s27e (the integrators' wavefront forms over bvh4 with and without the copy, Cornell box and the box whose light hides above a panel); s27f (BDPT's wavefront form on the plain Cornell box at equal time, against .device/ref.exr).
 # Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery"); s26g (a measurement build: the 4-wide slots in occlusion order for any-hit rays); s26h (every ray kind: the occlusion order as slot order slowed closest-hit rays); s26i (the same with the order beside the slots); s26j (the order as slot order again, closest-hit ties in reverse slot order).
 # Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot); s24f (issue #16's table).
 # Parts run in session 23: s23a (the 4-wide BVH's boxes in half precision, bvh4h) and s22k; s23b; s23c (alpha-marked triangles); s23d; s23e (obvhs's parallel build); s23f (marks that carry the material, a build not kept); s23g.
@@ -27,6 +27,53 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s27f)
+  # Session 27: BDPT on the plain Cornell box by default (megakernels) and in its wavefront
+  # form, equal time against the sharper reference, two runs each; pt-nee beside them; the
+  # other joins the wavefront form has (lvc=2, 3) timed both ways.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for t in 0.1 1; do
+      for f in "--wavefront off" "--wavefront on"; do
+        echo "== cornell bdpt --time $t $f"; $T "$B" render $CB --integrator bdpt $f --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+      done
+      echo "== cornell pt-nee --time $t"; $T "$B" render $CB --integrator pt-nee --time $t --reference "$REF" -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse"
+    done
+  done
+  for j in bdpt:lvc=2 bdpt:lvc=3; do
+    for f in "--wavefront off" "--wavefront on"; do
+      echo "== cornell $j $f"; $T "$B" bench render $CB --integrator $j --spp 1024 $f 2>&1 | grep -E "Msamples"
+      echo "== hidden $j $f"; $T "$B" bench render $HID --integrator $j --spp 1024 $f 2>&1 | grep -E "Msamples"
+    done
+  done
+  for s in 1 2; do
+    for f in "--wavefront off" "--wavefront on"; do
+      $T "$B" render $HID --integrator bdpt $f --time 1 --seed $s -o /tmp/h$s${f##* }.exr 2>&1 | grep -iE "spp in"
+    done
+  done
+  for f in off on; do
+    echo "== hidden bdpt --time 1 --wavefront $f, seed 1 against seed 2: $("$B" diff /tmp/h1$f.exr /tmp/h2$f.exr 2>&1 | grep -i rmse)"
+  done
+  ;;
+s27e)
+  # Session 27: the integrators where shadow rays are often occluded: pt-nee and bdpt on the
+  # Cornell box and on the box whose light hides above a panel (.device/scenes/hidden, as
+  # tests/render_caustic.rs builds it), 256², by default (megakernels over cwbvh) and in their
+  # wavefront forms over bvh4 with the any-hit copy and without, interleaved, two runs.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for i in pt-nee bdpt; do
+      for f in "" "--wavefront on" "--wavefront on --bvh-no-occlusion-copy"; do
+        echo "== cornell $i $f"; $T "$B" bench render $CB --integrator $i --spp 1024 $f 2>&1 | grep -E "Msamples"
+        echo "== hidden $i $f"; $T "$B" bench render $HID --integrator $i --spp 1024 $f 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  ;;
 s27d)
   # Session 27: this commit, Sponza CameraMain at quality 5: every ray kind lockstep and with
   # --refill 28, two runs; shadow rays with the any-hit copy at other refill counts.

@@ -2,7 +2,7 @@
 //! trace call, the shadow-ray queue, each measured (docs/results.md) and picked per device
 //! (GPU or CPU), integrator and scene features, with what `--bvh` / `--shadow-queue` ask.
 
-use super::{pt, shadow_queue, Integrator, RenderSettings, ShadowQueue};
+use super::{pt, shadow_queue, Integrator, Join, RenderSettings, ShadowQueue};
 use crate::bvh::BvhLayout;
 use crate::gpu_data::SceneFeatures;
 use crate::vk::Context;
@@ -133,12 +133,17 @@ pub(super) fn resolve_shadow_queue(
 ///
 /// BDPT's passes (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3) take their wavefront form
 /// on GPUs in every scene but a plain one (untextured diffuse surfaces without mirrors or
-/// glass). NVIDIA H200, session 21, ms per run, GPU time (wall time): textured Sponza 72.4
+/// glass), and there too with one connection per camera vertex (`bdpt`, the default join).
+/// NVIDIA H200, session 21, ms per run, GPU time (wall time): textured Sponza 72.4
 /// against 123.2 (640 x 360, 64 spp), DamagedHelmet 171 against 401.5 (384², 256 spp), the
 /// rough Cornell box 77.6 against 153.1 (256², 256 spp), the caustic scene's smooth glass 53.8
-/// against 66.0 (wall 58.4-59.8 against 67.9-68.3, with submissions that reuse their fences);
-/// the diffuse Cornell box keeps the megakernels (185.4 against 174.9, wall 191-193 against
-/// 179-184 ms per 1024 spp) (docs/results.md, "Launches of three dispatches"). Small images
+/// against 66.0 (wall 58.4-59.8 against 67.9-68.3, with submissions that reuse their fences)
+/// (docs/results.md, "Launches of three dispatches"). Plain scenes, session 27 (256², 1024 spp,
+/// two runs; docs/results.md, "BDPT's wavefront form on the plain Cornell box"): the Cornell
+/// box's bdpt 164.0-164.1 against 175.1 ms (wall 169-174 against 181-184; in session 21 the
+/// megakernels led, 174.9 against 185.4), the box whose light hides above a panel 182.0-182.5
+/// against 187.7; with more connections the megakernels stay (lvc=3: 230.3 against 224.2 and
+/// 243.0 against 227.0; lvc=2 on the hidden light 215.9 against 208.3). Small images
 /// need their slots from more sample slices (`MAX_WAVEFRONT_SLICES`): with them the caustic
 /// scene at 64² takes 12.7 against 16.5 ms per 1024 spp, DamagedHelmet 19.2 against 47.5
 /// (session 22, "Slots for small images").
@@ -146,7 +151,7 @@ pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneF
     let smooth_specular = features.mirror || (features.glass && !features.rough_glass);
     let rich = features.glossy || features.textures;
     let wins = match integrator {
-        Integrator::Bdpt(_) => rich || smooth_specular,
+        Integrator::Bdpt(join) => rich || smooth_specular || join == Join::Lvc(1),
         _ => rich && !smooth_specular,
     };
     wavefront_supported(integrator) && !on_cpu && wins
@@ -218,7 +223,7 @@ pub(super) fn on_cpu(ctx: &Context) -> bool {
 #[cfg(test)]
 mod default_tests {
     use super::*;
-    use crate::render::{vcm, Join};
+    use crate::render::vcm;
 
     /// The scenes of the measured table (docs/results.md, "Cornell box, session 6") by what
     /// they have, and what `auto` picked there for pt-nee on the H200.
@@ -266,13 +271,15 @@ mod default_tests {
             assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
             // The wavefront forms: on GPUs, the path tracers' for glossy or textured scenes
             // without smooth mirrors or glass, BDPT's (fixed cache joins only) for every scene
-            // but the diffuse one; never on CPU devices.
+            // but the diffuse one, and there too with one connection; never on CPU devices.
             let wave = f == rough || f == textured_ggx;
             for i in [Integrator::Pt, Integrator::PtNee] {
                 assert_eq!(default_wavefront(false, i, &f), wave, "{f:?}");
                 assert!(!default_wavefront(true, i, &f));
             }
-            for i in [Integrator::Bdpt(Join::Lvc(1)), Integrator::Bdpt(Join::Lvc(3))] {
+            assert!(default_wavefront(false, Integrator::Bdpt(Join::Lvc(1)), &f), "{f:?}");
+            assert!(!default_wavefront(true, Integrator::Bdpt(Join::Lvc(1)), &f));
+            for i in [Integrator::Bdpt(Join::Lvc(2)), Integrator::Bdpt(Join::Lvc(3))] {
                 assert_eq!(default_wavefront(false, i, &f), f != diffuse, "{f:?}");
                 assert!(!default_wavefront(true, i, &f));
             }
