@@ -3,7 +3,7 @@
 
 mod common;
 
-use bidir::bvh::{intersect::TriHit, BuildOptions, Bvh, BvhLayout, CpuTracer, TriTest};
+use bidir::bvh::{intersect::TriHit, BuildOptions, Bvh, BvhLayout, Collapse, CpuTracer, TriTest};
 use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
 use bidir::gpu_data::GpuBvh;
 use bidir::trace::sort::{direction_cell, sort_key, sort_push};
@@ -49,6 +49,9 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
         }
         // The binary loop on decoded nodes: its variants are the exact layout's.
         BvhLayout::Bvh2q => v.truncate(1),
+        // The greedy collapse: another tree for the same loop; its variants are the default
+        // collapse's.
+        BvhLayout::Bvh4 if opts.collapse == Collapse::Greedy => v.truncate(1),
         BvhLayout::Bvh4 => {
             v.truncate(2);
             v.push(("not speculative", TraceOptions { speculative: false, ..base }));
@@ -85,8 +88,12 @@ fn check_scene(ctx: &Context, name: &str, positions: &[Vec3], tris: &[[u32; 3]],
     if opts.tri_test == TriTest::Watertight && opts.pre_split {
         check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh2q, ..opts }, Some(reference.clone()));
         // The 4-wide layout: the binary tree's leaves under other inner nodes, its own loop.
-        let (c, _) = check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh4, ..opts }, Some(reference));
+        let (c, _) =
+            check_layout(ctx, name, positions, tris, rays, BuildOptions { layout: BvhLayout::Bvh4, ..opts }, Some(reference.clone()));
         assert_eq!(a, c, "{name}: the binary and 4-wide layouts disagree on hits");
+        let greedy = BuildOptions { layout: BvhLayout::Bvh4, collapse: Collapse::Greedy, ..opts };
+        let (d, _) = check_layout(ctx, name, positions, tris, rays, greedy, Some(reference));
+        assert_eq!(a, d, "{name}: the binary and greedily collapsed 4-wide layouts disagree on hits");
     }
     a
 }

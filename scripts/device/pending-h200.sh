@@ -27,6 +27,50 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s28b)
+  # Session 28: the surface area collapse again: CameraMain, quality 5, greedy / sah:0.5 /
+  # sah:0.3, lockstep and --refill 28, two runs interleaved; the other cameras; the integrators
+  # over bvh4 on Sponza under the sun and sky (their default quality 4, and 5).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "" "--refill 28"; do
+      for v in greedy sah:0.5 sah:0.3; do
+        echo "== CameraMain quality 5 $c $v"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c --collapse $v 2>&1 | grep -E "^(primary|shadow|diffuse) |SAH"
+      done
+    done
+  done
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for v in greedy sah:0.5; do
+      echo "== $cam quality 5 $v"; $T "$B" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 5 --collapse $v 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for i in pt-nee bdpt; do
+    for v in "greedy" "sah:0.5" "sah:0.5 --bvh-quality 5" "greedy --bvh-quality 5"; do
+      echo "== sponza $i $v"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i --bvh bvh4 --bvh-collapse $v 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+s28a)
+  # Session 28: the 4-wide collapse of least surface area cost (--collapse sah:TRI) against
+  # the greedy one, every ray kind from CameraMain at quality 5 (lockstep and --refill 28) and
+  # 4; a measurement build's variants: obvhs' leaves kept (BIDIR_EXP_KEEP_LEAVES), slots by
+  # decreasing area (BIDIR_EXP_ORDER).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for q in 5 4; do
+    for c in "" "--refill 28"; do
+      [ $q = 4 ] && [ -n "$c" ] && continue
+      for v in greedy sah:0.3 sah:0.5 sah:1 keep order; do
+        case $v in keep) e="env BIDIR_EXP_KEEP_LEAVES=1"; col=sah:1;; order) e="env BIDIR_EXP_ORDER=1"; col=sah:1;; *) e=""; col=$v;; esac
+        echo "== CameraMain quality $q $c $v"; $T $e "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q $c --collapse $col 2>&1 | grep -E "^(primary|shadow|diffuse) |SAH"
+      done
+    done
+  done
+  ;;
 s27g)
   # Session 27: BDPT's wavefront form on the Cornell box and the hidden-light box at other
   # sample-slice counts than the default's (which its slot budget caps), two runs.

@@ -305,6 +305,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         quality: opts.build.quality,
         ploc: opts.build.ploc,
         any_hit_copy: gbvh.any_hit_copy,
+        collapse: (opts.build.layout == BvhLayout::Bvh4).then_some(opts.build.collapse),
         width: camera.size.x,
         height: camera.size.y,
         light,

@@ -11,6 +11,7 @@
 //! assert_eq!(bvh.tri_ids, vec![0]);
 //! ```
 
+mod collapse;
 mod cpu;
 pub mod intersect;
 mod layout;
@@ -19,6 +20,7 @@ mod quant;
 mod select;
 mod wide4;
 
+pub use collapse::{Collapse, SahCosts};
 pub use cpu::CpuTracer;
 pub use intersect::TriTest;
 
@@ -37,7 +39,9 @@ pub enum BvhLayout {
     /// bits per plane relative to the node's box), same tree and leaves as `Bvh2`.
     Bvh2q,
     /// The binary tree collapsed to 4 children per node (`Bvh4Node`: full-precision boxes,
-    /// 128 bytes), same leaves and triangles as `Bvh2`.
+    /// 128 bytes): by default at the least surface area cost, leaves formed from a binary
+    /// tree of single triangles (`Collapse::Sah`); with `Collapse::Greedy`, the same leaves and
+    /// triangles as `Bvh2`.
     Bvh4,
 }
 
@@ -105,6 +109,9 @@ pub struct BuildOptions {
     /// slots in occlusion order (`occlusion`), stored after the closest-hit nodes on the GPU.
     /// Twice the node memory; the hits are the same either way.
     pub occlusion_copy: bool,
+    /// 4-wide layout only: how the binary tree's nodes are grouped into 4-wide ones and its
+    /// leaves formed (`Collapse::Sah` builds the binary tree with one triangle per leaf).
+    pub collapse: Collapse,
 }
 
 impl Default for BuildOptions {
@@ -117,6 +124,7 @@ impl Default for BuildOptions {
             layout: BvhLayout::Bvh2,
             ploc: None,
             occlusion_copy: true,
+            collapse: Collapse::SAH,
         }
     }
 }
@@ -242,6 +250,8 @@ impl Bvh {
             params.search_depth_threshold = depth;
         }
         params.max_prims_per_leaf = match opts.layout {
+            // The surface area collapse forms its own leaves from single-triangle ones.
+            BvhLayout::Bvh4 if matches!(opts.collapse, Collapse::Sah(_)) => 1,
             BvhLayout::Bvh2 | BvhLayout::Bvh2q | BvhLayout::Bvh4 => opts.max_leaf_tris.clamp(1, abi::LEAF_MAX_TRIS),
             // The wide conversion chooses its own leaves (SAH) from single-triangle ones.
             BvhLayout::Cwbvh => 1,
@@ -253,7 +263,11 @@ impl Bvh {
             BvhLayout::Cwbvh => layout::convert_wide(bvh2, positions, triangles, opts.tri_test, opts.max_leaf_tris.clamp(1, 3))?,
             BvhLayout::Bvh2q => quant::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?,
             BvhLayout::Bvh4 => {
-                let bvh = wide4::convert(layout::convert(bvh2, positions, triangles, opts.tri_test)?)?;
+                let binary = layout::convert(bvh2, positions, triangles, opts.tri_test)?;
+                let bvh = match opts.collapse {
+                    Collapse::Greedy => wide4::convert(binary)?,
+                    Collapse::Sah(costs) => collapse::convert(binary, costs, opts.max_leaf_tris)?,
+                };
                 if opts.occlusion_copy {
                     occlusion::add_any_hit_copy(bvh, positions, triangles)
                 } else {

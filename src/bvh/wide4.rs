@@ -18,7 +18,7 @@ pub(super) struct Child {
 }
 
 impl Child {
-    fn half_area(&self) -> f32 {
+    pub(super) fn half_area(&self) -> f32 {
         let e = (self.hi - self.lo).max(Vec3::ZERO);
         e.x * e.y + e.y * e.z + e.z * e.x
     }
@@ -31,6 +31,19 @@ pub(super) fn children(nodes: &[BvhNode], i: usize) -> [Child; 2] {
         Child { lo: Vec3::new(n.c0_xy.x, n.c0_xy.z, n.c01_z.x), hi: Vec3::new(n.c0_xy.y, n.c0_xy.w, n.c01_z.y), ptr: n.children.x },
         Child { lo: Vec3::new(n.c1_xy.x, n.c1_xy.z, n.c01_z.z), hi: Vec3::new(n.c1_xy.y, n.c1_xy.w, n.c01_z.w), ptr: n.children.y },
     ]
+}
+
+/// The 4-wide node of up to four children (boxes from `kids`, pointers `ptrs`); unused slots
+/// hold an inverted box (+inf lower, -inf upper bounds) that no ray enters.
+pub(super) fn wide_node(kids: &[Child], ptrs: [i32; 4]) -> Bvh4Node {
+    let mut planes = [Vec4::splat(f32::INFINITY), Vec4::splat(f32::NEG_INFINITY)].repeat(3);
+    for (slot, c) in kids.iter().enumerate() {
+        for axis in 0..3 {
+            planes[2 * axis][slot] = c.lo[axis];
+            planes[2 * axis + 1][slot] = c.hi[axis];
+        }
+    }
+    Bvh4Node { planes: planes.try_into().expect("six planes"), children: IVec4::from_array(ptrs), reserved: UVec4::ZERO }
 }
 
 struct Collapse<'a> {
@@ -70,15 +83,7 @@ impl Collapse<'_> {
                 c.ptr
             };
         }
-        let mut planes = [Vec4::splat(f32::INFINITY), Vec4::splat(f32::NEG_INFINITY)].repeat(3);
-        for (slot, c) in kids.iter().enumerate() {
-            for axis in 0..3 {
-                planes[2 * axis][slot] = c.lo[axis];
-                planes[2 * axis + 1][slot] = c.hi[axis];
-            }
-        }
-        self.out[index] =
-            Bvh4Node { planes: planes.try_into().expect("six planes"), children: IVec4::from_array(ptrs), reserved: UVec4::ZERO };
+        self.out[index] = wide_node(&kids, ptrs);
         // Visiting this node pushes all hit children but the nearest.
         (index as i32, depth, below + kids.len() - 1)
     }
@@ -125,7 +130,8 @@ mod tests {
     fn collapse_keeps_every_leaf_and_box() {
         let (positions, tris) = soup(2000);
         let binary = Bvh::build(&positions, &tris, &BuildOptions::default()).unwrap();
-        let wide = Bvh::build(&positions, &tris, &BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() }).unwrap();
+        let greedy = BuildOptions { layout: BvhLayout::Bvh4, collapse: crate::bvh::Collapse::Greedy, ..Default::default() };
+        let wide = Bvh::build(&positions, &tris, &greedy).unwrap();
         assert_eq!(wide.tris, binary.tris);
         let mut binary_leaves: Vec<(i32, [f32; 6])> = Vec::new();
         for i in 0..binary.nodes.len() {

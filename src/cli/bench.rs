@@ -82,6 +82,11 @@ pub struct TraversalArgs {
     /// node's children in occlusion order (half the node memory).
     #[arg(long)]
     pub no_occlusion_copy: bool,
+    /// bvh4: how the binary tree's nodes are grouped into 4-wide ones: greedy (open the largest
+    /// child; obvhs' leaves) | sah (least surface area cost, leaves formed from single
+    /// triangles; a triangle test costing 0.5 node visits) | sah:TRI_COST.
+    #[arg(long, default_value = "sah")]
+    pub collapse: bidir::bvh::Collapse,
     /// PLOC's search distance (1, 2, 6, 14, 24 or 32) and the depth below which it searches one
     /// neighbour, in place of the quality preset's (below quality 5): another of the trees of
     /// nearly equal SAH that trace differently (docs/traversal.md, "The tree lottery").
@@ -235,6 +240,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.max_leaf_tris = leaf_size;
     o.build.pre_split = !a.no_pre_split;
     o.build.occlusion_copy = !a.no_occlusion_copy;
+    o.build.collapse = a.collapse;
     o.build.layout = a.bvh;
     o.build.ploc = ploc;
     o.alpha = a.alpha;

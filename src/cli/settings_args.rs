@@ -96,6 +96,10 @@ pub struct SettingsArgs {
     /// node's children in occlusion order (half the node memory); the image is the same.
     #[arg(long)]
     pub bvh_no_occlusion_copy: bool,
+    /// bvh4: how the binary tree's nodes are grouped into 4-wide ones: greedy | sah | sah:TRI_COST
+    /// (`bench traversal --collapse`); the image is the same.
+    #[arg(long, value_name = "greedy|sah[:TRI_COST]", default_value = "sah")]
+    pub bvh_collapse: bidir::bvh::Collapse,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
     /// what kernel specialisation buys).
     #[arg(long)]
@@ -167,6 +171,7 @@ impl SettingsArgs {
         s.bvh_quality = self.bvh_quality;
         s.bvh_leaf_size = self.bvh_leaf_size;
         s.bvh.occlusion_copy = !self.bvh_no_occlusion_copy;
+        s.bvh.collapse = self.bvh_collapse;
         s.bvh_layout = match self.bvh.as_str() {
             "auto" => None,
             "bvh2" => Some(bidir::bvh::BvhLayout::Bvh2),

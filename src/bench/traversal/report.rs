@@ -4,7 +4,7 @@
 use super::RayKind;
 use crate::bench::driver_rt::DriverKindResult;
 use crate::bench::json::Json;
-use crate::bvh::{BvhLayout, TriTest};
+use crate::bvh::{BvhLayout, Collapse, TriTest};
 use crate::trace::sort::SortKind;
 use glam::Vec3;
 
@@ -64,6 +64,8 @@ pub struct Report {
     pub ploc: Option<(u32, usize)>,
     /// Whether any-hit rays traversed their own copy of the 4-wide nodes (`GpuBvh::any_hit_copy`).
     pub any_hit_copy: bool,
+    /// How the 4-wide nodes were grouped (`BuildOptions::collapse`; `None` for other layouts).
+    pub collapse: Option<Collapse>,
     pub width: u32,
     pub height: u32,
     pub light: Vec3,
@@ -114,6 +116,7 @@ impl Report {
                     ("sah", self.bvh_sah.map_or(Json::Null, Json::Num)),
                     ("quality", Json::Int(self.quality as i64)),
                     ("any_hit_copy", Json::Bool(self.any_hit_copy)),
+                    ("collapse", self.collapse.map_or(Json::Null, |c| Json::Str(c.to_string()))),
                     (
                         "ploc",
                         self.ploc.map_or(Json::Null, |(d, k)| {
@@ -172,6 +175,7 @@ impl Report {
             format!(" (quality {}", self.quality)
                 + &self.ploc.map_or(String::new(), |(d, k)| format!(", PLOC {d},{k}"))
                 + if self.any_hit_copy { ", any-hit copy" } else { "" }
+                + &self.collapse.map_or(String::new(), |c| format!(", {c} collapse"))
                 + ")",
             self.bvh_nodes,
             self.layout.node_size(),
