@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
 # Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy); s27e (the integrators' wavefront forms over bvh4 with and without the copy, Cornell box and the box whose light hides above a panel); s27f (BDPT's wavefront form on the plain Cornell box at equal time, against .device/ref.exr); s27g (BDPT's sample slices on the Cornell box; its commands were run directly, as one call).
 # Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery"); s26g (a measurement build: the 4-wide slots in occlusion order for any-hit rays); s26h (every ray kind: the occlusion order as slot order slowed closest-hit rays); s26i (the same with the order beside the slots); s26j (the order as slot order again, closest-hit ties in reverse slot order).
 # Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot); s24f (issue #16's table).
@@ -27,6 +28,63 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s28e)
+  # Session 28: diffuse rays' refill count over the default collapse (two runs), and a leaf's
+  # cost of 0.75 and 1 (every kind, lockstep and --refill 28): CameraMain, quality 5.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for n in 16 20 24 28 31; do
+      echo "== CameraMain quality 5 diffuse --refill $n"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 --rays diffuse --refill $n 2>&1 | grep -E "^diffuse "
+    done
+  done
+  for c in "" "--refill 28"; do
+    for v in sah:0.5,0.75 sah:0.5,1; do
+      echo "== CameraMain quality 5 $c $v"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c --collapse $v 2>&1 | grep -E "^(primary|shadow|diffuse) |SAH" | sed 's/.*build (/(/'
+    done
+  done
+  ;;
+s28d)
+  # Session 28: the surface area collapse with a leaf's own cost (the default sah = sah:0.5,0.5)
+  # against sah:0.5,0 and greedy: CameraMain, quality 5, lockstep and --refill 28, two runs
+  # interleaved; the other cameras; the integrators on Sponza under the sun and sky.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "" "--refill 28"; do
+      for v in sah sah:0.5,0 greedy; do
+        echo "== CameraMain quality 5 $c $v"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c --collapse $v 2>&1 | grep -E "^(primary|shadow|diffuse) |SAH" | sed 's/.*build (/(/'
+      done
+    done
+  done
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for v in sah sah:0.5,0; do
+      echo "== $cam quality 5 $v"; $T "$B" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 5 --collapse $v 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for i in pt-nee bdpt; do
+    for v in "sah" "sah:0.5,0" "greedy" "sah --bvh-quality 5"; do
+      echo "== sponza $i $v"; $T "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i --bvh bvh4 --bvh-collapse $v 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+s28c)
+  # Session 28: the surface area collapse's leaf size and a cost per leaf visited (a
+  # measurement build of 2548db0, BIDIR_EXP_LEAF, not committed): CameraMain, quality 5,
+  # lockstep and --refill 28, one run.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for c in "" "--refill 28"; do
+    for v in "3 0" "2 0" "4 0" "6 0" "3 0.25" "3 0.5" "4 0.5"; do
+      set -- $v
+      echo "== CameraMain quality 5 $c leaf size $1, leaf cost $2"; $T env BIDIR_EXP_LEAF=$2 "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size $1 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |SAH" | sed 's/.*build (/(/'
+    done
+  done
+  ;;
 s28b)
   # Session 28: the surface area collapse again: CameraMain, quality 5, greedy / sah:0.5 /
   # sah:0.3, lockstep and --refill 28, two runs interleaved; the other cameras; the integrators

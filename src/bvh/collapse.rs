@@ -11,13 +11,15 @@
 //!
 //! For a binary node n with box area A(n) (half the surface area) and T(n) triangles, and
 //! F(n, j) the least cost of n's subtree as at most j slots of one 4-wide node:
-//! - as a leaf: A(n) · c_tri · T(n), where T(n) <= the leaf size;
+//! - as a leaf: A(n) · (c_leaf + c_tri · T(n)), where T(n) <= the leaf size;
 //! - as a 4-wide node: A(n) · c_node + D(n, 4);
 //! - F(n, 1) = the cheaper of the two; F(n, j > 1) = min(F(n, 1), D(n, j));
 //! - D(n, j) = min over 0 < k < j of F(left, k) + F(right, j - k): n's two children spread over
 //!   j slots.
 //!
 //! c_node = 1; the root's own visit is left out (every ray pays it), as in `select::sah`.
+//! c_leaf prices what a leaf costs beyond its triangles (the traversal loop's switch to its
+//! leaf phase).
 
 use super::{
     layout::{leaf_pointer, leaf_range},
@@ -32,6 +34,8 @@ use glam::Vec3;
 pub struct SahCosts {
     /// One triangle test.
     pub tri: f32,
+    /// A leaf's visit besides its triangle tests.
+    pub leaf: f32,
 }
 
 /// How the 4-wide layout groups the binary tree's nodes (`BuildOptions::collapse`).
@@ -46,15 +50,16 @@ pub enum Collapse {
 }
 
 impl Collapse {
-    /// The surface area collapse at a triangle test's default cost.
-    pub const SAH: Collapse = Collapse::Sah(SahCosts { tri: 0.5 });
+    /// The surface area collapse at the default costs (measured on the NVIDIA H200 with
+    /// Sponza: docs/traversal.md, "The 4-wide collapse of least surface area cost").
+    pub const SAH: Collapse = Collapse::Sah(SahCosts { tri: 0.5, leaf: 0.5 });
 }
 
 impl std::fmt::Display for Collapse {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Collapse::Greedy => write!(f, "greedy"),
-            Collapse::Sah(c) => write!(f, "sah:{}", c.tri),
+            Collapse::Sah(c) => write!(f, "sah:{},{}", c.tri, c.leaf),
         }
     }
 }
@@ -62,14 +67,24 @@ impl std::fmt::Display for Collapse {
 impl std::str::FromStr for Collapse {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {
+        let Collapse::Sah(default) = Collapse::SAH else { unreachable!("the default collapse is sah") };
+        let cost = |v: &str, what: &str, positive: bool| match v.parse::<f32>() {
+            Ok(c) if c.is_finite() && (c > 0.0 || !positive && c == 0.0) => Ok(c),
+            _ => Err(format!(
+                "{v:?} is not {what}: expected a {} number, as in sah:0.5,0.5",
+                if positive { "positive" } else { "non-negative" }
+            )),
+        };
         match s.split_once(':') {
             None if s == "greedy" => Ok(Collapse::Greedy),
             None if s == "sah" => Ok(Collapse::SAH),
-            Some(("sah", tri)) => match tri.parse::<f32>() {
-                Ok(tri) if tri.is_finite() && tri > 0.0 => Ok(Collapse::Sah(SahCosts { tri })),
-                _ => Err(format!("{tri:?} is not a triangle test's cost: expected a positive number, as in sah:0.5")),
-            },
-            _ => Err(format!("unknown collapse {s:?}: expected greedy | sah | sah:TRI_COST")),
+            Some(("sah", costs)) => {
+                let (tri, leaf) = costs.split_once(',').map_or((costs, None), |(t, l)| (t, Some(l)));
+                let tri = cost(tri, "a triangle test's cost", true)?;
+                let leaf = leaf.map_or(Ok(default.leaf), |l| cost(l, "a leaf's cost", false))?;
+                Ok(Collapse::Sah(SahCosts { tri, leaf }))
+            }
+            _ => Err(format!("unknown collapse {s:?}: expected greedy | sah | sah:TRI_COST[,LEAF_COST]")),
         }
     }
 }
@@ -97,9 +112,9 @@ impl Table {
     }
 
     /// F(c, j) for a child pointer with its box.
-    fn cost(&self, c: &Child, j: usize, tri_cost: f32) -> f32 {
+    fn cost(&self, c: &Child, j: usize, costs: SahCosts) -> f32 {
         if c.ptr < 0 {
-            return half_area(c.lo, c.hi) * tri_cost * leaf_range(c.ptr).1 as f32;
+            return half_area(c.lo, c.hi) * (costs.leaf + costs.tri * leaf_range(c.ptr).1 as f32);
         }
         let i = c.ptr as usize;
         if j >= 2 {
@@ -129,14 +144,14 @@ impl Table {
             let tris = if a.ptr == b.ptr { ta } else { ta + tb };
             for j in 2..=4 {
                 t.spread[i][j] = (1..j)
-                    .map(|k| (t.cost(&a, k, costs.tri) + t.cost(&b, j - k, costs.tri), k as u8))
+                    .map(|k| (t.cost(&a, k, costs) + t.cost(&b, j - k, costs), k as u8))
                     .min_by(|x, y| x.0.total_cmp(&y.0))
                     .expect("a split");
             }
             let area = half_area(a.lo.min(b.lo), a.hi.max(b.hi));
             t.tris[i] = tris;
             t.first[i] = first;
-            t.as_leaf[i] = if tris <= max_leaf { area * costs.tri * tris as f32 } else { f32::INFINITY };
+            t.as_leaf[i] = if tris <= max_leaf { area * (costs.leaf + costs.tri * tris as f32) } else { f32::INFINITY };
             t.as_node[i] = area + t.spread[i][4].0;
         }
         t
@@ -249,7 +264,7 @@ mod tests {
         };
         let area = half_area(c.lo, c.hi);
         if c.ptr < 0 {
-            return area * costs.tri * leaf_range(c.ptr).1 as f32;
+            return area * (costs.leaf + costs.tri * leaf_range(c.ptr).1 as f32);
         }
         let [a, b] = children(nodes, c.ptr as usize);
         if j >= 2 && next(2) == 0 {
@@ -258,7 +273,7 @@ mod tests {
         }
         let tris = count(nodes, c.ptr);
         if tris <= max_leaf && next(2) == 0 {
-            return area * costs.tri * tris as f32;
+            return area * (costs.leaf + costs.tri * tris as f32);
         }
         let k = 1 + next(3) as usize;
         area + random_cost(nodes, a, k, costs, max_leaf, rng) + random_cost(nodes, b, 4 - k, costs, max_leaf, rng)
@@ -268,7 +283,7 @@ mod tests {
     fn all_costs(nodes: &[abi::BvhNode], c: Child, j: usize, costs: SahCosts, max_leaf: usize) -> Vec<f32> {
         let area = half_area(c.lo, c.hi);
         if c.ptr < 0 {
-            return vec![area * costs.tri * leaf_range(c.ptr).1 as f32];
+            return vec![area * (costs.leaf + costs.tri * leaf_range(c.ptr).1 as f32)];
         }
         let [a, b] = children(nodes, c.ptr as usize);
         let spread = |j: usize| -> Vec<f32> {
@@ -282,7 +297,7 @@ mod tests {
         let mut v: Vec<f32> = spread(4).into_iter().map(|x| area + x).collect();
         let tris = count(nodes, c.ptr);
         if tris <= max_leaf {
-            v.push(area * costs.tri * tris as f32);
+            v.push(area * (costs.leaf + costs.tri * tris as f32));
         }
         if j >= 2 {
             v.extend(spread(j));
@@ -305,7 +320,8 @@ mod tests {
     fn the_collapse_is_the_cheapest() {
         for (seed, n) in [(3, 40), (7, 700), (19, 3000)] {
             let bin = binary(seed, n);
-            let unit = SahCosts { tri: 1.0 };
+            // select::sah's costs: a node visit and a triangle test 1, a leaf nothing more.
+            let unit = SahCosts { tri: 1.0, leaf: 0.0 };
             let table = Table::new(&bin.nodes, unit, 3);
             let [a, b] = children(&bin.nodes, 0);
             let root = half_area(a.lo.min(b.lo), a.hi.max(b.hi));
@@ -332,9 +348,9 @@ mod tests {
     #[test]
     fn no_collapse_is_cheaper_than_the_tables() {
         for (seed, n) in [(2, 9), (23, 12), (29, 14)] {
-            for (tri, max_leaf) in [(1.0, 3), (0.5, 3), (0.3, 8)] {
+            for (tri, leaf, max_leaf) in [(1.0, 0.0, 3), (0.5, 0.5, 3), (0.3, 1.0, 8)] {
                 let bin = binary(seed, n);
-                let costs = SahCosts { tri };
+                let costs = SahCosts { tri, leaf };
                 let table = Table::new(&bin.nodes, costs, max_leaf);
                 let [a, b] = children(&bin.nodes, 0);
                 let all: Vec<f32> = (1..4)
@@ -363,7 +379,7 @@ mod tests {
         for max_leaf in [1, 3, 8] {
             let bin = binary(5, 1500);
             let tris = bin.tris.clone();
-            let wide = convert(bin, SahCosts { tri: 0.5 }, max_leaf).unwrap();
+            let wide = convert(bin, SahCosts { tri: 0.5, leaf: 0.5 }, max_leaf).unwrap();
             assert_eq!(wide.tris, tris);
             let mut covered = vec![0u32; tris.len()];
             let mut reached = vec![0u32; wide.bvh4_nodes.len()];
@@ -390,21 +406,38 @@ mod tests {
         }
     }
 
-    /// Cheap triangle tests make large leaves and few nodes; dear ones, more nodes.
+    /// Cheap triangle tests make large leaves and few nodes, dear ones more nodes. A leaf's own
+    /// cost lowers the leaves' summed area (the term it multiplies: of two optimal trees at
+    /// different costs, the one at the higher cost has no more of it), here strictly.
     #[test]
-    fn a_triangle_tests_cost_trades_leaves_for_nodes() {
-        let nodes = |tri| convert(binary(13, 2000), SahCosts { tri }, 8).unwrap().bvh4_nodes.len();
-        let (cheap, dear) = (nodes(0.1), nodes(2.0));
+    fn the_costs_trade_leaves_for_nodes() {
+        let build = |tri, leaf| convert(binary(13, 2000), SahCosts { tri, leaf }, 8).unwrap();
+        let (cheap, dear) = (build(0.1, 0.0).bvh4_nodes.len(), build(2.0, 0.0).bvh4_nodes.len());
         assert!(cheap < dear, "{cheap} nodes with cheap triangle tests, {dear} with dear ones");
+        let leaf_area = |bvh: &Bvh| -> f64 {
+            bvh.bvh4_nodes
+                .iter()
+                .flat_map(|n| (0..4).filter(|&s| n.children[s] < 0 && n.planes[0][s] <= n.planes[1][s]).map(move |s| (n, s)))
+                .map(|(n, s)| {
+                    let lo = Vec3::new(n.planes[0][s], n.planes[2][s], n.planes[4][s]);
+                    let hi = Vec3::new(n.planes[1][s], n.planes[3][s], n.planes[5][s]);
+                    half_area(lo, hi) as f64
+                })
+                .sum()
+        };
+        let (free, priced) = (leaf_area(&build(0.5, 0.0)), leaf_area(&build(0.5, 1.0)));
+        assert!(priced < free, "the leaves' area {priced} with a leaf cost, {free} without");
     }
 
     #[test]
     fn collapses_parse_and_print() {
         assert_eq!("greedy".parse::<Collapse>(), Ok(Collapse::Greedy));
         assert_eq!("sah".parse::<Collapse>(), Ok(Collapse::SAH));
-        assert_eq!("sah:0.25".parse::<Collapse>(), Ok(Collapse::Sah(SahCosts { tri: 0.25 })));
-        assert_eq!(Collapse::Sah(SahCosts { tri: 0.25 }).to_string(), "sah:0.25");
-        for bad in ["sah:", "sah:-1", "sah:nan", "optimal", "greedy:1"] {
+        assert_eq!("sah:0.25".parse::<Collapse>(), Ok(Collapse::Sah(SahCosts { tri: 0.25, leaf: 0.5 })));
+        assert_eq!("sah:0.25,0".parse::<Collapse>(), Ok(Collapse::Sah(SahCosts { tri: 0.25, leaf: 0.0 })));
+        assert_eq!(Collapse::Sah(SahCosts { tri: 0.25, leaf: 1.0 }).to_string(), "sah:0.25,1");
+        assert_eq!(Collapse::SAH.to_string().parse::<Collapse>(), Ok(Collapse::SAH));
+        for bad in ["sah:", "sah:-1", "sah:nan", "sah:0.5,", "sah:0.5,-1", "sah:0,0.5", "optimal", "greedy:1"] {
             let e = bad.parse::<Collapse>().unwrap_err();
             assert!(e.contains("expected"), "{bad}: {e}");
         }

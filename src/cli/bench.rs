@@ -84,7 +84,8 @@ pub struct TraversalArgs {
     pub no_occlusion_copy: bool,
     /// bvh4: how the binary tree's nodes are grouped into 4-wide ones: greedy (open the largest
     /// child; obvhs' leaves) | sah (least surface area cost, leaves formed from single
-    /// triangles; a triangle test costing 0.5 node visits) | sah:TRI_COST.
+    /// triangles; a triangle test and a leaf's visit costing 0.5 node visits each) |
+    /// sah:TRI_COST[,LEAF_COST].
     #[arg(long, default_value = "sah")]
     pub collapse: bidir::bvh::Collapse,
     /// PLOC's search distance (1, 2, 6, 14, 24 or 32) and the depth below which it searches one

@@ -96,9 +96,9 @@ pub struct SettingsArgs {
     /// node's children in occlusion order (half the node memory); the image is the same.
     #[arg(long)]
     pub bvh_no_occlusion_copy: bool,
-    /// bvh4: how the binary tree's nodes are grouped into 4-wide ones: greedy | sah | sah:TRI_COST
-    /// (`bench traversal --collapse`); the image is the same.
-    #[arg(long, value_name = "greedy|sah[:TRI_COST]", default_value = "sah")]
+    /// bvh4: how the binary tree's nodes are grouped into 4-wide ones: greedy | sah |
+    /// sah:TRI_COST[,LEAF_COST] (`bench traversal --collapse`); the image is the same.
+    #[arg(long, value_name = "greedy|sah[:TRI_COST[,LEAF_COST]]", default_value = "sah")]
     pub bvh_collapse: bidir::bvh::Collapse,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (measures
     /// what kernel specialisation buys).
