@@ -23,10 +23,10 @@
 
 use super::{
     layout::{leaf_pointer, leaf_range},
-    wide4::{children, wide_node, Child},
-    Bvh, BvhError, BvhLayout,
+    wide4::{self, children, Child},
+    Bvh, BvhError,
 };
-use crate::gpu::abi::{self, Bvh4Node};
+use crate::gpu::abi;
 use glam::Vec3;
 
 /// Costs of the collapse's surface area model, relative to a 4-wide node's visit.
@@ -158,93 +158,51 @@ impl Table {
     }
 }
 
-struct Emit<'a> {
-    binary: &'a [abi::BvhNode],
-    table: Table,
-    out: Vec<Bvh4Node>,
-    leaves: usize,
-}
-
-impl Emit<'_> {
-    /// The slots child `c` takes with at most `j` of them, in the binary tree's left-to-right
-    /// order.
-    fn slots(&self, c: Child, j: usize, out: &mut Vec<Child>) {
-        if c.ptr < 0 {
-            out.push(c);
-            return;
-        }
-        let t = &self.table;
-        let i = c.ptr as usize;
-        if j >= 2 && t.spread[i][j].0 < t.one_slot(i) {
-            let k = t.spread[i][j].1 as usize;
-            let [a, b] = children(self.binary, i);
-            self.slots(a, k, out);
-            self.slots(b, j - k, out);
-        } else if t.as_leaf[i] <= t.as_node[i] {
-            out.push(Child { ptr: leaf_pointer(t.first[i], t.tris[i]), ..c });
-        } else {
-            out.push(c);
-        }
+/// The slots child `c` takes in its parent's 4-wide node with at most `j` of them, in the
+/// binary tree's left-to-right order.
+fn slots(binary: &[abi::BvhNode], t: &Table, c: Child, j: usize, out: &mut Vec<Child>) {
+    if c.ptr < 0 {
+        out.push(c);
+        return;
     }
-
-    /// Emits the 4-wide node for binary inner node `i` and its subtree, depth first; returns
-    /// (its index, its depth, the most stack entries a traversal below it pushes).
-    fn node(&mut self, i: usize) -> (i32, usize, usize) {
-        let [a, b] = children(self.binary, i);
-        let mut kids = Vec::with_capacity(4);
-        if a.ptr == b.ptr {
-            kids.push(a);
-        } else {
-            let k = self.table.spread[i][4].1 as usize;
-            self.slots(a, k, &mut kids);
-            self.slots(b, 4 - k, &mut kids);
-        }
-        let index = self.out.len();
-        self.out.push(Bvh4Node::default());
-        let (mut depth, mut below) = (0, 0);
-        let mut ptrs = [0i32; 4];
-        for (slot, c) in kids.iter().enumerate() {
-            ptrs[slot] = if c.ptr >= 0 {
-                let (p, d, s) = self.node(c.ptr as usize);
-                depth = depth.max(d + 1);
-                below = below.max(s);
-                p
-            } else {
-                self.leaves += 1;
-                depth = depth.max(1);
-                c.ptr
-            };
-        }
-        self.out[index] = wide_node(&kids, ptrs);
-        (index as i32, depth, below + kids.len() - 1)
+    let i = c.ptr as usize;
+    if j >= 2 && t.spread[i][j].0 < t.one_slot(i) {
+        let k = t.spread[i][j].1 as usize;
+        let [a, b] = children(binary, i);
+        slots(binary, t, a, k, out);
+        slots(binary, t, b, j - k, out);
+    } else if t.as_leaf[i] <= t.as_node[i] {
+        out.push(Child { ptr: leaf_pointer(t.first[i], t.tris[i]), ..c });
+    } else {
+        out.push(c);
     }
 }
 
 /// Converts a binary-layout BVH (`BvhLayout::Bvh2`, best with one triangle per leaf) to the
 /// 4-wide layout of least surface area cost, with leaves of up to `max_leaf` triangles.
 pub(crate) fn convert(mut bvh: Bvh, costs: SahCosts, max_leaf: u32) -> Result<Bvh, BvhError> {
-    debug_assert_eq!(bvh.layout, BvhLayout::Bvh2);
     let max_leaf = max_leaf.clamp(1, abi::LEAF_MAX_TRIS) as usize;
-    let table = Table::new(&bvh.nodes, costs, max_leaf);
-    let mut e = Emit { binary: &bvh.nodes, table, out: Vec::with_capacity(bvh.nodes.len() / 3 + 1), leaves: 0 };
-    let (_, depth, stack) = e.node(0);
-    let (nodes, leaves) = (e.out, e.leaves);
-    // The stack holds the sentinel below the pushed entries.
-    if stack + 1 > abi::TRAVERSAL_STACK_SIZE as usize {
-        return Err(BvhError::TooDeep { depth, max: abi::TRAVERSAL_STACK_SIZE });
-    }
-    bvh.layout = BvhLayout::Bvh4;
-    bvh.nodes = Vec::new();
-    bvh.bvh4_nodes = nodes;
-    bvh.depth = depth;
-    bvh.leaves = leaves;
-    Ok(bvh)
+    let binary = std::mem::take(&mut bvh.nodes);
+    let table = Table::new(&binary, costs, max_leaf);
+    wide4::emit(bvh, &binary, &mut |i| {
+        let [a, b] = children(&binary, i);
+        let mut kids = Vec::with_capacity(4);
+        if a.ptr == b.ptr {
+            // A lone leaf is both children of its root (bvh::layout).
+            kids.push(a);
+        } else {
+            let k = table.spread[i][4].1 as usize;
+            slots(&binary, &table, a, k, &mut kids);
+            slots(&binary, &table, b, 4 - k, &mut kids);
+        }
+        kids
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bvh::{select, wide4, BuildOptions};
+    use crate::bvh::{select, BuildOptions, BvhLayout};
 
     /// The binary tree with one triangle per leaf that the surface area collapse starts from.
     fn binary(seed: u32, n: u32) -> Bvh {

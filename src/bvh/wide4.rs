@@ -1,9 +1,10 @@
-//! The binary layout collapsed into a 4-wide one with full-precision boxes (`Bvh4Node`): each
-//! 4-wide node takes its binary node's two children and repeatedly opens the inner child of
-//! largest surface area until it holds four (the usual collapse, e.g. Wald et al. 2008,
-//! "Getting Rid of Packets"). Leaves and triangles stay exactly the binary layout's, so the
-//! same rays hit the same triangles; a ray visits about half as many nodes, each one a single
-//! 128-byte line with no decoding.
+//! The binary layout collapsed into a 4-wide one with full-precision boxes (`Bvh4Node`; a ray
+//! visits about half as many nodes, each one a single 128-byte line with no decoding): the
+//! nodes' emission, which `collapse` (the default, least surface area cost) shares, and the
+//! greedy collapse (`Collapse::Greedy`): each 4-wide node takes its binary node's two children
+//! and repeatedly opens the inner child of largest surface area until it holds four (the usual
+//! collapse, e.g. Wald et al. 2008, "Getting Rid of Packets"). Its leaves and triangles stay
+//! exactly the binary layout's, so the same rays hit the same triangles.
 
 use super::{layout::leaf_range, Bvh, BvhError, BvhLayout};
 use crate::gpu::abi::{self, Bvh4Node, BvhNode};
@@ -18,7 +19,7 @@ pub(super) struct Child {
 }
 
 impl Child {
-    pub(super) fn half_area(&self) -> f32 {
+    fn half_area(&self) -> f32 {
         let e = (self.hi - self.lo).max(Vec3::ZERO);
         e.x * e.y + e.y * e.z + e.z * e.x
     }
@@ -35,7 +36,7 @@ pub(super) fn children(nodes: &[BvhNode], i: usize) -> [Child; 2] {
 
 /// The 4-wide node of up to four children (boxes from `kids`, pointers `ptrs`); unused slots
 /// hold an inverted box (+inf lower, -inf upper bounds) that no ray enters.
-pub(super) fn wide_node(kids: &[Child], ptrs: [i32; 4]) -> Bvh4Node {
+fn wide_node(kids: &[Child], ptrs: [i32; 4]) -> Bvh4Node {
     let mut planes = [Vec4::splat(f32::INFINITY), Vec4::splat(f32::NEG_INFINITY)].repeat(3);
     for (slot, c) in kids.iter().enumerate() {
         for axis in 0..3 {
@@ -46,28 +47,20 @@ pub(super) fn wide_node(kids: &[Child], ptrs: [i32; 4]) -> Bvh4Node {
     Bvh4Node { planes: planes.try_into().expect("six planes"), children: IVec4::from_array(ptrs), reserved: UVec4::ZERO }
 }
 
-struct Collapse<'a> {
-    binary: &'a [BvhNode],
+/// Emits a collapse's 4-wide nodes depth first (an inner node's first inner child follows
+/// it), the children of binary inner node i's 4-wide node chosen by `slots(i)`.
+struct Emit<'a> {
+    slots: &'a mut dyn FnMut(usize) -> Vec<Child>,
     out: Vec<Bvh4Node>,
+    leaves: usize,
 }
 
-impl Collapse<'_> {
-    /// Emits the 4-wide node for binary node `i` and its subtree (depth first: an inner
-    /// node's first inner child follows it); returns (its index, its depth, the most stack
-    /// entries a traversal below it pushes).
+impl Emit<'_> {
+    /// Emits the 4-wide node for binary inner node `i` and its subtree; returns (its index,
+    /// its depth, the most stack entries a traversal below it pushes).
     fn node(&mut self, i: usize) -> (i32, usize, usize) {
-        let mut kids: Vec<Child> = children(self.binary, i).to_vec();
-        while kids.len() < 4 {
-            let open = kids
-                .iter()
-                .enumerate()
-                .filter(|(_, c)| c.ptr >= 0)
-                .max_by(|(_, a), (_, b)| a.half_area().total_cmp(&b.half_area()))
-                .map(|(k, _)| k);
-            let Some(k) = open else { break };
-            let c = kids.remove(k);
-            kids.extend(children(self.binary, c.ptr as usize));
-        }
+        let kids = (self.slots)(i);
+        debug_assert!((1..=4).contains(&kids.len()));
         let index = self.out.len();
         self.out.push(Bvh4Node::default());
         let (mut depth, mut below) = (0, 0);
@@ -79,6 +72,7 @@ impl Collapse<'_> {
                 below = below.max(s);
                 p
             } else {
+                self.leaves += 1;
                 depth = depth.max(1);
                 c.ptr
             };
@@ -89,12 +83,14 @@ impl Collapse<'_> {
     }
 }
 
-/// Converts a binary-layout BVH (`BvhLayout::Bvh2`) to the 4-wide one.
-pub(crate) fn convert(mut bvh: Bvh) -> Result<Bvh, BvhError> {
+/// The binary-layout BVH (`BvhLayout::Bvh2`, its `binary` nodes taken out of it) as a 4-wide
+/// one whose node for binary inner node i has the children `slots(i)` (binary inner nodes, each
+/// the root of a 4-wide node of its own, and leaves), from the root, node 0.
+pub(super) fn emit(mut bvh: Bvh, binary: &[BvhNode], slots: &mut dyn FnMut(usize) -> Vec<Child>) -> Result<Bvh, BvhError> {
     debug_assert_eq!(bvh.layout, BvhLayout::Bvh2);
-    let mut c = Collapse { binary: &bvh.nodes, out: Vec::with_capacity(bvh.nodes.len() / 2 + 1) };
-    let (_, depth, stack) = c.node(0);
-    let nodes = c.out;
+    let mut e = Emit { slots, out: Vec::with_capacity(binary.len() / 2 + 1), leaves: 0 };
+    let (_, depth, stack) = e.node(0);
+    let (nodes, leaves) = (e.out, e.leaves);
     // The stack holds the sentinel below the pushed entries.
     if stack + 1 > abi::TRAVERSAL_STACK_SIZE as usize {
         return Err(BvhError::TooDeep { depth, max: abi::TRAVERSAL_STACK_SIZE });
@@ -104,7 +100,30 @@ pub(crate) fn convert(mut bvh: Bvh) -> Result<Bvh, BvhError> {
     bvh.nodes = Vec::new();
     bvh.bvh4_nodes = nodes;
     bvh.depth = depth;
+    bvh.leaves = leaves;
     Ok(bvh)
+}
+
+/// Converts a binary-layout BVH (`BvhLayout::Bvh2`) to the 4-wide one by the greedy collapse.
+pub(crate) fn convert(mut bvh: Bvh) -> Result<Bvh, BvhError> {
+    let binary = std::mem::take(&mut bvh.nodes);
+    emit(bvh, &binary, &mut |i| {
+        let mut kids: Vec<Child> = children(&binary, i).to_vec();
+        // A lone leaf is both children of its root (bvh::layout).
+        kids.dedup_by_key(|c| c.ptr);
+        while kids.len() < 4 {
+            let open = kids
+                .iter()
+                .enumerate()
+                .filter(|(_, c)| c.ptr >= 0)
+                .max_by(|(_, a), (_, b)| a.half_area().total_cmp(&b.half_area()))
+                .map(|(k, _)| k);
+            let Some(k) = open else { break };
+            let c = kids.remove(k);
+            kids.extend(children(&binary, c.ptr as usize));
+        }
+        kids
+    })
 }
 
 #[cfg(test)]
