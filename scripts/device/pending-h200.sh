@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
+# Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures); s28g (a measurement build: BIDIR_EXP_NO_SECOND, obvhs' second reinsertion pass left out for the collapse's binary tree) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
 # Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy); s27e (the integrators' wavefront forms over bvh4 with and without the copy, Cornell box and the box whose light hides above a panel); s27f (BDPT's wavefront form on the plain Cornell box at equal time, against .device/ref.exr); s27g (BDPT's sample slices on the Cornell box; its commands were run directly, as one call).
 # Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery"); s26g (a measurement build: the 4-wide slots in occlusion order for any-hit rays); s26h (every ray kind: the occlusion order as slot order slowed closest-hit rays); s26i (the same with the order beside the slots); s26j (the order as slot order again, closest-hit ties in reverse slot order).
 # Parts run in session 24: s24a (secondary rays sorted within blocks by direction); s24b (the wavefront pass's launches); s24c and s24d (a measurement build: the lockstep loops' SIMD efficiency); s24e (a measurement build: a second postponed-leaf slot); s24f (issue #16's table).
@@ -28,6 +28,29 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s28g)
+  # Session 28: the surface area collapse's binary tree without obvhs' second reinsertion pass
+  # (which at one triangle per leaf runs over the same tree again): a measurement build of
+  # d5ec1a9, BIDIR_EXP_NO_SECOND, not committed; CameraMain quality 4 and 5 and the integrators
+  # on Sponza, two runs interleaved, build times.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for e in "" "BIDIR_EXP_NO_SECOND=1"; do
+      for q in 5 4; do
+        for c in "" "--refill 28"; do
+          [ $q = 4 ] && [ -n "$c" ] && continue
+          echo "== CameraMain quality $q $c $e"; $T env $e "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality $q $c 2>&1 | grep -E "^(primary|shadow|diffuse) |SAH" | sed 's/.*bvh4 //'
+        done
+      done
+      for i in pt-nee bdpt; do
+        echo "== sponza $i $e"; $T env $e "$B" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  ;;
 s28f)
   # Session 28, the final build: Cornell box bdpt and pt-nee by default (bdpt's wavefront form
   # over bvh4 now has the surface area collapse) against --bvh-collapse greedy, ms per 1024 spp
