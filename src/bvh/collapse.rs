@@ -22,12 +22,12 @@
 //! leaf phase).
 
 use super::{
+    half_area,
     layout::{leaf_pointer, leaf_range},
     wide4::{self, children, Child},
     Bvh, BvhError,
 };
 use crate::gpu::abi;
-use glam::Vec3;
 
 /// Costs of the collapse's surface area model, relative to a 4-wide node's visit.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -87,11 +87,6 @@ impl std::str::FromStr for Collapse {
             _ => Err(format!("unknown collapse {s:?}: expected greedy | sah | sah:TRI_COST[,LEAF_COST]")),
         }
     }
-}
-
-fn half_area(lo: Vec3, hi: Vec3) -> f32 {
-    let e = (hi - lo).max(Vec3::ZERO);
-    e.x * e.y + e.y * e.z + e.z * e.x
 }
 
 /// The dynamic programme's table, per binary inner node.
@@ -203,6 +198,7 @@ pub(crate) fn convert(mut bvh: Bvh, costs: SahCosts, max_leaf: u32) -> Result<Bv
 mod tests {
     use super::*;
     use crate::bvh::{select, BuildOptions, BvhLayout};
+    use glam::Vec3;
 
     /// The binary tree with one triangle per leaf that the surface area collapse starts from.
     fn binary(seed: u32, n: u32) -> Bvh {
@@ -399,14 +395,5 @@ mod tests {
             let e = bad.parse::<Collapse>().unwrap_err();
             assert!(e.contains("expected"), "{bad}: {e}");
         }
-    }
-
-    /// A lone triangle: a root of one leaf slot.
-    #[test]
-    fn a_single_triangle_is_one_leaf() {
-        let positions = [Vec3::ZERO, Vec3::X, Vec3::Y];
-        let wide = Bvh::build(&positions, &[[0, 1, 2]], &BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() }).unwrap();
-        assert_eq!(wide.bvh4_nodes.len(), 1);
-        assert_eq!(leaf_range(wide.bvh4_nodes[0].children.x), (0, 1));
     }
 }

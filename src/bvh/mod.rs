@@ -320,6 +320,13 @@ impl Bvh {
     }
 }
 
+/// Half the surface area of the box `lo`..`hi` (0 for an empty or inverted one): what the
+/// surface area heuristic weighs a box by.
+pub(crate) fn half_area(lo: Vec3, hi: Vec3) -> f32 {
+    let e = (hi - lo).max(Vec3::ZERO);
+    e.x * e.y + e.y * e.z + e.z * e.x
+}
+
 /// A soup of `n` random triangles for the module's tests: corners within `size.0 + size.1 x
 /// u` (u uniform in [0, 1), drawn per corner) of a random point in a cube of side `spread`, from
 /// an xorshift generator seeded with `seed` (not 0): the same soup on every machine.

@@ -23,7 +23,7 @@
 //! rays' own copy of the nodes").
 
 use super::layout::leaf_range;
-use super::Bvh;
+use super::{half_area, Bvh};
 use crate::gpu::abi::Bvh4Node;
 use glam::Vec3;
 
@@ -51,11 +51,6 @@ pub(crate) fn add_any_hit_copy(mut bvh: Bvh, positions: &[Vec3], triangles: &[[u
     bvh.bvh4_nodes[0].reserved.x = base as u32;
     bvh.bvh4_any_nodes = copy;
     bvh
-}
-
-fn half_area(lo: Vec3, hi: Vec3) -> f32 {
-    let e = (hi - lo).max(Vec3::ZERO);
-    e.x * e.y + e.y * e.z + e.z * e.x
 }
 
 /// A slot's (lower, upper) bounds; lower.x > upper.x for an empty slot.

@@ -20,8 +20,7 @@ pub(super) struct Child {
 
 impl Child {
     fn half_area(&self) -> f32 {
-        let e = (self.hi - self.lo).max(Vec3::ZERO);
-        e.x * e.y + e.y * e.z + e.z * e.x
+        super::half_area(self.lo, self.hi)
     }
 }
 
@@ -196,11 +195,19 @@ mod tests {
         assert!(wide.depth < binary.depth);
     }
 
+    /// A lone triangle, with either collapse: one node of one leaf slot (the binary layout's
+    /// root holds the leaf twice), the other slots empty.
     #[test]
     fn a_single_leaf_collapses_to_one_node() {
         let positions = [Vec3::ZERO, Vec3::X, Vec3::Y];
-        let wide = Bvh::build(&positions, &[[0, 1, 2]], &BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() }).unwrap();
-        assert_eq!(wide.bvh4_nodes.len(), 1);
-        assert_eq!(leaf_range(wide.bvh4_nodes[0].children.x), (0, 1));
+        for collapse in [crate::bvh::Collapse::Greedy, crate::bvh::Collapse::SAH] {
+            let opts = BuildOptions { layout: BvhLayout::Bvh4, collapse, ..Default::default() };
+            let wide = Bvh::build(&positions, &[[0, 1, 2]], &opts).unwrap();
+            assert_eq!(wide.bvh4_nodes.len(), 1, "{collapse}");
+            let root = &wide.bvh4_nodes[0];
+            assert_eq!(leaf_range(root.children.x), (0, 1), "{collapse}");
+            assert!((1..4).all(|s| root.planes[0][s] == f32::INFINITY), "{collapse}: one slot used");
+            assert_eq!(wide.leaves, 1, "{collapse}");
+        }
     }
 }
