@@ -176,22 +176,38 @@ int stack_cull_bits(float t) {
 // (lanes holding a postponed leaf keep descending speculatively, done lanes idle).
 #define TRAVERSAL_DESCEND_LOCKSTEP() !subgroupAny(uint(node) < TRAVERSAL_SENTINEL && leaf >= 0)
 // Their leaf phase: this lane's postponed leaf, then `node` if it is a leaf too; an any-hit
-// ray that finds a hit ends its traversal (node = the sentinel) and idles.
+// ray that finds a hit ends its traversal (node = the sentinel) and idles. Closest-hit rays
+// loop over the leaves and, inside, over a leaf's triangles. Any-hit rays run one loop over
+// triangles: a lane moves on to its next leaf as soon as it has tested one, instead of
+// waiting at the end of the inner loop for the lane with the most triangles in its leaf
+// (session 29, H200, Sponza CameraMain: shadow rays +1-2 % lockstep, +3 % with dynamic fetch;
+// closest-hit rays lost up to 1.5 % that way with dynamic fetch, so they keep the two loops).
+// A leaf pointer counts its triangles less one in the bits above LEAF_FIRST_BITS, so the next
+// triangle of a leaf is the pointer plus 1 - 2^LEAF_FIRST_BITS.
 #define TRAVERSAL_LEAVES_LOCKSTEP()                                                                \
-    while (leaf < 0) {                                                                             \
-        uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                                 \
-        uint count_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;                                \
-        bool found_ = false;                                                                       \
-        for (uint i_ = first_; i_ < first_ + count_; i_++) {                                       \
-            if (test_leaf_triangle(pr, i_, hit, stats) && any_hit) {                               \
-                found_ = true;                                                                     \
-                break;                                                                             \
+    if (any_hit) {                                                                                 \
+        while (leaf < 0) {                                                                         \
+            uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                             \
+            bool last_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) == 0u;                            \
+            if (test_leaf_triangle(pr, first_, hit, stats)) {                                      \
+                node = int(TRAVERSAL_SENTINEL);                                                    \
+                leaf = 0;                                                                          \
+            } else if (!last_) {                                                                   \
+                leaf += 1 - (1 << LEAF_FIRST_BITS);                                                \
+            } else {                                                                               \
+                leaf = node;                                                                       \
+                if (node < 0) {                                                                    \
+                    TRAVERSAL_STACK_POP(node, 0);                                                  \
+                }                                                                                  \
             }                                                                                      \
         }                                                                                          \
-        if (found_) {                                                                              \
-            node = int(TRAVERSAL_SENTINEL);                                                        \
-            leaf = 0;                                                                              \
-        } else {                                                                                   \
+    } else {                                                                                       \
+        while (leaf < 0) {                                                                         \
+            uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                             \
+            uint count_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;                            \
+            for (uint i_ = first_; i_ < first_ + count_; i_++) {                                   \
+                test_leaf_triangle(pr, i_, hit, stats);                                            \
+            }                                                                                      \
             leaf = node;                                                                           \
             if (node < 0) {                                                                        \
                 TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                                 \

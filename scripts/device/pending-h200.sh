@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a).
 # Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures); s28g (a measurement build: BIDIR_EXP_NO_SECOND, obvhs' second reinsertion pass left out for the collapse's binary tree) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
 # Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy); s27e (the integrators' wavefront forms over bvh4 with and without the copy, Cornell box and the box whose light hides above a panel); s27f (BDPT's wavefront form on the plain Cornell box at equal time, against .device/ref.exr); s27g (BDPT's sample slices on the Cornell box; its commands were run directly, as one call).
 # Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery"); s26g (a measurement build: the 4-wide slots in occlusion order for any-hit rays); s26h (every ray kind: the occlusion order as slot order slowed closest-hit rays); s26i (the same with the order beside the slots); s26j (the order as slot order again, closest-hit ties in reverse slot order).
@@ -28,6 +29,116 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s29e)
+  # Session 29, the final build: any-hit rays' leaf phase as one loop over triangles, against
+  # .device/bidir-prev (901598a, session 28's last commit): CameraMain quality 5, lockstep and
+  # --refill 28 (diffuse also 24), two runs interleaved; the other cameras' shadow rays; the
+  # integrators on Sponza and the Cornell box.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  P=$PWD/.device/bidir-prev
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "" "--refill 28" "--refill 24"; do
+      for b in "$P" "$B"; do
+        echo "== CameraMain quality 5 $c $(basename $b)"; $T "$b" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  echo "== CameraMain quality 5 leaf size 2"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 2 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for b in "$P" "$B"; do
+      echo "== $cam quality 5 $(basename $b)"; $T "$b" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for i in pt-nee bdpt; do
+    for b in "$P" "$B"; do
+      echo "== sponza $i $(basename $b)"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      echo "== cornell $i $(basename $b)"; $T "$b" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+    done
+  done
+  for i in pt-nee bdpt; do
+    echo "== cornell $i --time 1"; $T "$B" render $CB --integrator $i --time 1 -o /tmp/c.exr 2>&1 | grep -E "spp in" ; $T "$B" diff /tmp/c.exr "$REF" 2>&1 | grep -i rmse | head -2
+  done
+  ;;
+s29d)
+  # Session 29: (1) a measurement build, BIDIR_EXP_FLAT=1: the lockstep leaf phase as one loop
+  # over triangles (a lane moves to its next leaf as soon as it is done with one) instead of a
+  # loop over leaves around a loop over their triangles; CameraMain quality 5, two runs
+  # interleaved. (2) Issue #17's last bullet: the integrators on Sponza under its sun and sky
+  # at the commit before the issue's work (.device/bidir-base, 3e429eb) and now, defaults, two
+  # runs interleaved.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "" "--refill 28"; do
+      for e in 0 1; do
+        echo "== CameraMain quality 5 $c BIDIR_EXP_FLAT=$e"; $T env BIDIR_EXP_FLAT=$e "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for i in pt-nee bdpt pt; do
+      for b in "$BASE" "$B"; do
+        echo "== sponza $i $(basename $b)"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      done
+    done
+  done
+  for b in "$BASE" "$B"; do
+    for i in pt-nee bdpt; do
+      echo "== sponza $i $(basename $b) --time 1"; $T "$b" render $SPB --integrator $i --time 1 -o /tmp/s.exr 2>&1 | grep -i -E "spp|samples" | tail -2
+    done
+  done
+  ;;
+s29c)
+  # Session 29: where a BDPT sample's time goes now on the Cornell box (kernels, rays per
+  # sample), beside pt-nee's.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  T="timeout -k 5 120"
+  for i in bdpt pt-nee "bdpt --rr-depth 5" "pt-nee --rr-depth 3"; do
+    echo "== cornell $i"; $T "$B" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator $i 2>&1 | tail -22
+  done
+  for i in bdpt pt-nee; do
+    echo "== cornell $i --count"; $T "$B" bench render $CB --spp 64 --warmup 1 --runs 1 --integrator $i --count 2>&1 | tail -12
+  done
+  ;;
+s29b)
+  # Session 29: regions of rays with a region taken over from the nearest open one (the
+  # subgroup's lanes read the counters together) instead of s29a's one-by-one scan; homed on
+  # the multiprocessor or (BIDIR_EXP_NO_SMID, a measurement switch) on the workgroup.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for c in "" "--refill 28"; do
+      for g in "" "--regions 132" "--regions 132 NO" "--regions 264" "--regions 33"; do
+        [ $r = 2 ] && { [ "$g" = "--regions 264" ] || [ "$g" = "--regions 33" ]; } && continue
+        e=""; case "$g" in *NO) e="BIDIR_EXP_NO_SMID=1"; g=${g% NO};; esac
+        echo "== CameraMain quality 5 $c $g $e"; $T env $e "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c $g 2>&1 | grep -E "^(primary|shadow|diffuse) |regions" | sed 's/.*bvh4 //; s/^device.*workgroups/workgroups/'
+      done
+    done
+  done
+  ;;
+s29a)
+  # Session 29: regions of rays homed on the multiprocessors (--regions N; gl_SMIDNV), Sponza
+  # CameraMain quality 5, lockstep one ray per invocation and --refill 28, against the launch
+  # order, two runs interleaved.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 90"
+  "$B" info 2>&1 | grep -i -E "SM|multiproc" | head -3
+  for r in 1 2; do
+    for c in "" "--refill 28"; do
+      for g in "" "--regions 132" "--regions 264" "--regions 66"; do
+        [ -n "$c" ] && [ "$g" = "--regions 66" ] && continue
+        echo "== CameraMain quality 5 $c $g"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c $g 2>&1 | grep -E "^(primary|shadow|diffuse) |regions" | sed 's/.*bvh4 //; s/^device.*workgroups/workgroups/'
+      done
+    done
+  done
+  ;;
 s28g)
   # Session 28: the surface area collapse's binary tree without obvhs' second reinsertion pass
   # (which at one triangle per leaf runs over the same tree again): a measurement build of
