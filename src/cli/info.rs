@@ -67,6 +67,10 @@ fn devices(opts: &ContextOptions) -> anyhow::Result<()> {
         let heaps: Vec<String> =
             d.memory_heaps.iter().map(|h| format!("{}{}", gib(h.bytes), if h.device_local { " device-local" } else { " host" })).collect();
         println!("  memory heaps:  {}", heaps.join(", "));
+        if d.sm_count > 0 {
+            // The persistent trace kernels' default launch fills these (`trace::default_persistent_groups`).
+            println!("  processors:    {} streaming multiprocessors, up to {} resident warps each", d.sm_count, d.warps_per_sm);
+        }
         println!(
             "  limits:        storage buffer {} MiB, shared memory {} KiB, workgroup {} invocations, timestamps {} bits @ {} ns",
             d.max_storage_buffer_range / (1 << 20),
