@@ -55,7 +55,9 @@ void trace_one(uint i, inout uvec2 stats) {
     hits[i] = GpuHit(h.t, h.prim, h.bary.x, h.bary.y);
 }
 
-#ifdef TRAVERSE_BVH4
+// (Not in the lockstep kernel, trace_bvh4_lockstep.comp: its leaf tests read the origin that
+// trace_ray_lockstep keeps in shared memory.)
+#if defined(TRAVERSE_BVH4) && !defined(TRACE_LOCKSTEP_KERNEL)
 layout(constant_id = SPEC_REFILL_LANES) const uint REFILL_LANES = 0u;
 
 // Persistent threads with dynamic fetch (Aila & Laine 2009, section 3's "dynamic fetch"):
@@ -141,7 +143,7 @@ void trace_dynamic(inout uvec2 stats) {
 void main() {
     ray_total = RAY_COUNT_BUFFER != 0u ? min(ray_counts[pc.count_index], pc.count) : pc.count;
     uvec2 stats = uvec2(0u);
-#ifdef TRAVERSE_BVH4
+#if defined(TRAVERSE_BVH4) && !defined(TRACE_LOCKSTEP_KERNEL)
     if (PERSISTENT != 0u && REFILL_LANES != 0u) {
         trace_dynamic(stats);
     } else

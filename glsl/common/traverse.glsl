@@ -181,15 +181,35 @@ int stack_cull_bits(float t) {
 // triangles: a lane moves on to its next leaf as soon as it has tested one, instead of
 // waiting at the end of the inner loop for the lane with the most triangles in its leaf
 // (session 29, H200, Sponza CameraMain: shadow rays +1-2 % lockstep, +3 % with dynamic fetch;
-// closest-hit rays lost up to 1.5 % that way with dynamic fetch, so they keep the two loops).
-// A leaf pointer counts its triangles less one in the bits above LEAF_FIRST_BITS, so the next
-// triangle of a leaf is the pointer plus 1 - 2^LEAF_FIRST_BITS.
+// closest-hit rays lost up to 1.5 % that way with dynamic fetch, so they keep the two loops,
+// but in the lockstep kernel, below). A leaf pointer counts its triangles less one in the bits
+// above LEAF_FIRST_BITS, so the next triangle of a leaf is the pointer plus
+// 1 - 2^LEAF_FIRST_BITS.
+//
+// The 4-wide lockstep kernel (trace_bvh4_lockstep.comp, TRACE_LOCKSTEP_KERNEL: one ray per
+// invocation, not persistent) keeps each ray's origin in shared memory and reads it back for
+// its leaf tests: no origin stays live through the node loop, so the compiler keeps the slab
+// terms o idir (with their slack) in registers instead of recomputing them from the origin in
+// every node step (56 registers instead of 48, 36 resident warps instead of 42). With it, its
+// closest-hit rays also take the one loop over triangles. H200, Sponza, quality 5, lockstep
+// (session 29): primary rays +3-5 % from every camera (CameraMain 6.00 Grays/s), shadow and
+// diffuse rays level or faster. Dynamic fetch keeps its kernel (trace_bvh4.comp), which
+// declares no shared array (one would take L1 cache from it whether used or not).
+#ifdef TRACE_LOCKSTEP_KERNEL
+shared vec4 lockstep_origin[TRACE_WG_SIZE];
+#define TRAVERSAL_FLAT_LEAVES true
+#define TRAVERSAL_LEAF_ORIGIN() pr.o = lockstep_origin[gl_LocalInvocationIndex].xyz
+#else
+#define TRAVERSAL_FLAT_LEAVES any_hit
+#define TRAVERSAL_LEAF_ORIGIN()
+#endif
 #define TRAVERSAL_LEAVES_LOCKSTEP()                                                                \
-    if (any_hit) {                                                                                 \
+    if (TRAVERSAL_FLAT_LEAVES) {                                                                   \
         while (leaf < 0) {                                                                         \
             uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                             \
             bool last_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) == 0u;                            \
-            if (test_leaf_triangle(pr, first_, hit, stats)) {                                      \
+            TRAVERSAL_LEAF_ORIGIN();                                                               \
+            if (test_leaf_triangle(pr, first_, hit, stats) && any_hit) {                           \
                 node = int(TRAVERSAL_SENTINEL);                                                    \
                 leaf = 0;                                                                          \
             } else if (!last_) {                                                                   \
@@ -197,7 +217,7 @@ int stack_cull_bits(float t) {
             } else {                                                                               \
                 leaf = node;                                                                       \
                 if (node < 0) {                                                                    \
-                    TRAVERSAL_STACK_POP(node, 0);                                                  \
+                    TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                             \
                 }                                                                                  \
             }                                                                                      \
         }                                                                                          \
@@ -205,6 +225,7 @@ int stack_cull_bits(float t) {
         while (leaf < 0) {                                                                         \
             uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                             \
             uint count_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;                            \
+            TRAVERSAL_LEAF_ORIGIN();                                                               \
             for (uint i_ = first_; i_ < first_ + count_; i_++) {                                   \
                 test_leaf_triangle(pr, i_, hit, stats);                                            \
             }                                                                                      \
@@ -275,6 +296,9 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
 // idling until every lane's is.
 TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
     PreparedRay pr = prepare_ray(o, d, tmin);
+#ifdef TRACE_LOCKSTEP_KERNEL
+    lockstep_origin[gl_LocalInvocationIndex] = vec4(o, 0.0);
+#endif
     if (TRAVERSAL_STATS != 0u) {
         traversal_counts.x++;
     }

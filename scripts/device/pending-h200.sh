@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel).
+# Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel); s29i (a measurement build, BIDIR_EXP_BITS: the origin in shared memory, closest-hit rays' one loop); s29j (the lockstep kernel with both, against 3c1fc4e).
 # Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures); s28g (a measurement build: BIDIR_EXP_NO_SECOND, obvhs' second reinsertion pass left out for the collapse's binary tree) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
 # Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy); s27e (the integrators' wavefront forms over bvh4 with and without the copy, Cornell box and the box whose light hides above a panel); s27f (BDPT's wavefront form on the plain Cornell box at equal time, against .device/ref.exr); s27g (BDPT's sample slices on the Cornell box; its commands were run directly, as one call).
 # Parts run in session 26 (session 25's work was lost): s26a and s26b (a measurement build: PLOC's search settings, each tree's SAH and a CPU ray sample's cost); s26c (build quality 5 against 4; its traversal runs timed at the idle clock); s26d and s26e (the same with the warm-up of at least 0.25 s, then 1 s); s26f (the tree lottery with --ploc) (docs/traversal.md, "The tree lottery"); s26g (a measurement build: the 4-wide slots in occlusion order for any-hit rays); s26h (every ray kind: the occlusion order as slot order slowed closest-hit rays); s26i (the same with the order beside the slots); s26j (the order as slot order again, closest-hit ties in reverse slot order).
@@ -29,6 +29,47 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s29j)
+  # Session 29: the 4-wide lockstep kernel with the origin in shared memory and one leaf loop
+  # for every ray (trace_bvh4_lockstep.comp) against .device/bidir-prev (3c1fc4e): CameraMain
+  # quality 5, two runs interleaved, the other cameras once, dynamic fetch once (its kernel
+  # is unchanged).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  P=$PWD/.device/bidir-prev
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for b in "$P" "$B"; do
+      echo "== CameraMain quality 5 $(basename $b)"; $T "$b" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for b in "$P" "$B"; do
+      echo "== $cam quality 5 $(basename $b)"; $T "$b" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  echo "== CameraMain quality 5 --refill 24"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 --refill 24 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  ;;
+s29i)
+  # Session 29: a measurement build (.device/bidir-exp, BIDIR_EXP_BITS) of the lockstep kernel:
+  # bit 1 keeps each ray's origin in shared memory for its leaf tests (session 16's variant,
+  # again over today's tree), bit 2 gives closest-hit rays the one loop over triangles too;
+  # CameraMain quality 5, lockstep only (bit 1 is not wired into dynamic fetch), two runs.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  X=$PWD/.device/bidir-exp
+  T="timeout -k 5 90"
+  for r in 1 2; do
+    for e in 0 1 2 3; do
+      echo "== CameraMain quality 5 BIDIR_EXP_BITS=$e"; $T env BIDIR_EXP_BITS=$e "$X" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  for cam in CameraAlternate CameraBalcony CameraAlcove; do
+    for e in 0 3; do
+      echo "== $cam quality 5 BIDIR_EXP_BITS=$e"; $T env BIDIR_EXP_BITS=$e "$X" bench traversal "$SP" --camera $cam --bvh bvh4 --leaf-size 3 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  ;;
 s29h)
   # Session 29: BDPT's passes, megakernels against wavefronts, kernel by kernel (Cornell box,
   # Sponza under its sun and sky): would a light pass as a megakernel beside the camera pass's

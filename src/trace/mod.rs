@@ -251,6 +251,9 @@ impl Tracer {
             (None, BvhLayout::Bvh2) => &kernels::TRACE,
             (None, BvhLayout::Cwbvh) => &kernels::TRACE_CWBVH,
             (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
+            // One ray per invocation in lockstep loops: the kernel whose leaf tests read the
+            // origin from shared memory (glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL).
+            (None, BvhLayout::Bvh4) if opts.persistent.is_none() && opts.lockstep && opts.speculative => &kernels::TRACE_BVH4_LOCKSTEP,
             (None, BvhLayout::Bvh4) => &kernels::TRACE_BVH4,
         };
         let with = |id, value| {
