@@ -192,9 +192,10 @@ int stack_cull_bits(float t) {
 // terms o idir (with their slack) in registers instead of recomputing them from the origin in
 // every node step (56 registers instead of 48, 36 resident warps instead of 42). With it, its
 // closest-hit rays also take the one loop over triangles. H200, Sponza, quality 5, lockstep
-// (session 29): primary rays +3-5 % from every camera (CameraMain 6.00 Grays/s), shadow and
-// diffuse rays level or faster. Dynamic fetch keeps its kernel (trace_bvh4.comp), which
-// declares no shared array (one would take L1 cache from it whether used or not).
+// (session 29): primary rays +3-4 % from every camera (CameraMain 5.94 against 5.76 Grays/s in
+// the same run), shadow rays up to +2 %, diffuse rays within 1 %. Dynamic fetch keeps its kernel
+// (trace_bvh4.comp), which declares no shared array (an unused one cost primary rays 2 % in a
+// measurement build: the L1 cache gives way to shared memory whether it is used or not).
 #ifdef TRACE_LOCKSTEP_KERNEL
 shared vec4 lockstep_origin[TRACE_WG_SIZE];
 #define TRAVERSAL_FLAT_LEAVES true
