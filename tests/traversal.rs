@@ -57,6 +57,9 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
             v.push(("not speculative", TraceOptions { speculative: false, ..base }));
             v.push(("divergent loops", TraceOptions { lockstep: false, ..base }));
             v.push(("float slab test", TraceOptions { int_slabs: false, ..base }));
+            // The lockstep kernel with the origin in shared memory (GPUs' default; lavapipe's
+            // default is the other).
+            v.push(("origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }));
             // Dynamic fetch: lanes refilled one by one (3 groups: many refills per subgroup),
             // and three at a time with the device's default launch.
             v.push(("dynamic fetch at 1 lane, 3 groups", TraceOptions { persistent: Some(3), refill_lanes: 1, ..base }));
@@ -739,6 +742,7 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
     let plain = Tracer::with_options(&ctx, &base).unwrap();
     let shapes = [
         ("per-ray", base),
+        ("per-ray, origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }),
         ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
         ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
     ];
@@ -810,6 +814,7 @@ fn any_hit_rays_traverse_their_own_copy_of_the_4_wide_nodes() {
     let base = TraceOptions { layout: BvhLayout::Bvh4, ..TraceOptions::new(opts.tri_test) };
     for (loop_kind, o) in [
         ("lockstep", base),
+        ("lockstep, origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }),
         ("divergent loops", TraceOptions { lockstep: false, ..base }),
         ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
     ] {

@@ -51,6 +51,12 @@ pub struct TraceOptions {
     /// soon as this many are done (SPEC_REFILL_LANES, dynamic fetch); 0 (default): a batch
     /// when all are.
     pub refill_lanes: u32,
+    /// 4-wide layout, one ray per invocation in lockstep loops (not persistent, no alpha masks):
+    /// the kernel that keeps each ray's origin in shared memory for its leaf tests
+    /// (trace_bvh4_lockstep.comp; glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL). None (the
+    /// default): on GPUs, where it is faster (H200: primary rays +3-4 %, session 29), not on CPU
+    /// devices (llvmpipe: 10-20 % slower).
+    pub shared_origin: Option<bool>,
     /// Compressed wide layout: triangle postponing (see SPEC_CWBVH_POSTPONE).
     pub postpone: bool,
     /// Binary layouts, geometry only: the stack's top four entries in registers, the rest in
@@ -83,6 +89,7 @@ impl TraceOptions {
             speculative: true,
             lockstep: true,
             refill_lanes: 0,
+            shared_origin: None,
             postpone: false,
             short_stack: false,
             int_slabs: true,
@@ -216,6 +223,7 @@ impl Tracer {
             trace_specs.push(Spec { id: abi::SPEC_RAYS_PER_INVOCATION, value: opts.rays_per_invocation });
         }
         let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
+        let shared_origin = opts.shared_origin.unwrap_or(ctx.info().device_type != crate::vk::PhysicalDeviceType::CPU);
         let plain = opts.alpha.is_none() && opts.layout == BvhLayout::Bvh2 && !opts.short_stack && opts.persistent.is_none();
         let source = match (&opts.alpha, opts.layout) {
             _ if opts.workgroup_size != abi::TRACE_WG_SIZE => match opts.workgroup_size {
@@ -253,7 +261,9 @@ impl Tracer {
             (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
             // One ray per invocation in lockstep loops: the kernel whose leaf tests read the
             // origin from shared memory (glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL).
-            (None, BvhLayout::Bvh4) if opts.persistent.is_none() && opts.lockstep && opts.speculative => &kernels::TRACE_BVH4_LOCKSTEP,
+            (None, BvhLayout::Bvh4) if opts.persistent.is_none() && opts.lockstep && opts.speculative && shared_origin => {
+                &kernels::TRACE_BVH4_LOCKSTEP
+            }
             (None, BvhLayout::Bvh4) => &kernels::TRACE_BVH4,
         };
         let with = |id, value| {
