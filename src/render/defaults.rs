@@ -217,7 +217,7 @@ pub(super) fn auto_bvh_layout(ctx: &Context, settings: &RenderSettings, integrat
 
 /// Whether `ctx` runs on the CPU (llvmpipe and the like), for the defaults above.
 pub(super) fn on_cpu(ctx: &Context) -> bool {
-    ctx.info().device_type == crate::vk::PhysicalDeviceType::CPU
+    ctx.info().is_cpu()
 }
 
 #[cfg(test)]

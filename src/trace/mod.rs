@@ -123,7 +123,7 @@ pub fn default_persistent_groups(info: &crate::vk::DeviceInfo) -> u32 {
 /// subgroup would fetch hundreds of batches (measured: rays lost after ~1,200 batches of the
 /// Cornell box, wrong hits before that). 32 batches of ≤ 8 rays stay far below the budget.
 pub fn persistent_batch_cap(info: &crate::vk::DeviceInfo) -> u32 {
-    if info.device_type == crate::vk::PhysicalDeviceType::CPU {
+    if info.is_cpu() {
         32
     } else {
         u32::MAX
@@ -223,7 +223,7 @@ impl Tracer {
             trace_specs.push(Spec { id: abi::SPEC_RAYS_PER_INVOCATION, value: opts.rays_per_invocation });
         }
         let persistent = opts.persistent.map(|g| if g == 0 { default_persistent_groups(ctx.info()) } else { g });
-        let shared_origin = opts.shared_origin.unwrap_or(ctx.info().device_type != crate::vk::PhysicalDeviceType::CPU);
+        let shared_origin = opts.shared_origin.unwrap_or(!ctx.info().is_cpu());
         let plain = opts.alpha.is_none() && opts.layout == BvhLayout::Bvh2 && !opts.short_stack && opts.persistent.is_none();
         let source = match (&opts.alpha, opts.layout) {
             _ if opts.workgroup_size != abi::TRACE_WG_SIZE => match opts.workgroup_size {

@@ -259,6 +259,11 @@ impl DeviceInfo {
             _ => "other",
         }
     }
+    /// A CPU device (llvmpipe and the like), where several defaults differ from a GPU's.
+    pub fn is_cpu(&self) -> bool {
+        self.device_type == vk::PhysicalDeviceType::CPU
+    }
+
     /// Preference order for automatic choice: discrete > integrated > virtual > CPU.
     pub fn rank(&self) -> u32 {
         match self.device_type {
