@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off).
 # Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel); s29i (a measurement build, BIDIR_EXP_BITS: the origin in shared memory, closest-hit rays' one loop); s29j (the lockstep kernel with both, against 3c1fc4e).
 # Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures); s28g (a measurement build: BIDIR_EXP_NO_SECOND, obvhs' second reinsertion pass left out for the collapse's binary tree) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
 # Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy); s27e (the integrators' wavefront forms over bvh4 with and without the copy, Cornell box and the box whose light hides above a panel); s27f (BDPT's wavefront form on the plain Cornell box at equal time, against .device/ref.exr); s27g (BDPT's sample slices on the Cornell box; its commands were run directly, as one call).
@@ -29,6 +30,82 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s30d)
+  # Session 30: the committed build (.device/bidir, 86b2dfe) against s30a's measurement build
+  # with its bits off (.device/bidir-exp, BIDIR_EXP_BITS=0), which gave primary rays 6.01-6.03
+  # in two other starts: CameraMain quality 5, lockstep, three runs interleaved; each build's
+  # shader cache comes back (nvcache-B.tgz, nvcache-exp.tgz) for scripts/device/sass.py.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  for r in 1 2 3; do
+    for b in "$B" .device/bidir-exp; do
+      echo "== CameraMain quality 5 $(basename $b)"; $T "$b" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  for b in "$B" .device/bidir-exp; do
+    D=/tmp/nvcache-$(basename $b); rm -rf $D; mkdir -p $D
+    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$b" bench traversal --bvh bvh4 --leaf-size 3 2>&1 | grep -E "Register"
+    tar czf "$OUT/nvcache-$(basename $b).tgz" -C $D .
+  done
+  ;;
+s30c)
+  # Session 30: the committed build (86b2dfe) for issue #17's figures in this session's machine
+  # start: CameraMain quality 5, lockstep and `--refill 24`, three runs interleaved, diffuse
+  # rays at `--refill 28` once.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  for r in 1 2 3; do
+    for c in "" "--refill 24"; do
+      echo "== CameraMain quality 5 $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  echo "== CameraMain quality 5 --refill 28"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 --refill 28 --rays diffuse 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  ;;
+s30b)
+  # Session 30: measurement builds, not committed: .device/bidir-exp logs each buffer's
+  # alignment and offset (BIDIR_EXP_ALIGN_LOG) and aligns every buffer to 256 bytes
+  # (BIDIR_EXP_ALIGN); .device/bidir-expr the same with the node and triangle buffers
+  # declared `restrict readonly`. CameraMain quality 5, two runs interleaved; the shader cache
+  # of bidir-expr comes back as $OUT/nvcache.tgz (scripts/device/sass.py).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  BIDIR_EXP_ALIGN_LOG=1 $T .device/bidir-exp bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 3 --rays primary --reps 5 --warmup 0 2>&1 | grep -E "EXP buffer '(bvh|bench)"
+  for r in 1 2; do
+    for c in "" "--refill 24"; do
+      for x in exp expr; do
+        for a in "" BIDIR_EXP_ALIGN=1; do
+          echo "== CameraMain $c $x $a"; $T env $a .device/bidir-$x bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+        done
+      done
+    done
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  for c in "" "--refill 24"; do
+    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T .device/bidir-expr bench traversal --bvh bvh4 --leaf-size 3 $c 2>&1 | grep -E "Register"
+  done
+  tar czf "$OUT/nvcache.tgz" -C $D .
+  ;;
+s30a)
+  # Session 30: a measurement build (.device/bidir-exp, BIDIR_EXP_BITS, not committed) of the
+  # lockstep kernel: bit 1 keeps the rest of the prepared ray (tmin, shear, axes) in shared
+  # memory beside the origin, bit 2 the hit's triangle and barycentrics; bit 8 runs dynamic
+  # fetch in that kernel (the origin in shared memory there too). CameraMain quality 5.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  X=$PWD/.device/bidir-exp
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for e in 0 1 2 3; do
+      echo "== CameraMain lockstep BIDIR_EXP_BITS=$e"; $T env BIDIR_EXP_BITS=$e "$X" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+    done
+  done
+  for e in 0 8 9 11; do
+    echo "== CameraMain --refill 24 BIDIR_EXP_BITS=$e"; $T env BIDIR_EXP_BITS=$e "$X" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 --refill 24 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+  done
+  ;;
 s29j)
   # Session 29: the 4-wide lockstep kernel with the origin in shared memory and one leaf loop
   # for every ray (trace_bvh4_lockstep.comp) against .device/bidir-prev (3c1fc4e): CameraMain
