@@ -172,6 +172,24 @@ int stack_cull_bits(float t) {
     return floatBitsToInt(t * BOX_EXIT_SCALE);
 }
 
+// The leaf phase of trace_ray (the binary and 4-wide layouts' divergent loops): this lane's
+// postponed leaf, then `node` if it is a leaf too, each leaf's triangles in turn; an any-hit
+// ray returns at its first hit.
+#define TRAVERSAL_LEAVES()                                                                         \
+    while (leaf < 0) {                                                                             \
+        uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                                 \
+        uint count_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;                                \
+        for (uint i_ = first_; i_ < first_ + count_; i_++) {                                       \
+            if (test_leaf_triangle(pr, i_, hit, stats) && any_hit) {                               \
+                return hit;                                                                        \
+            }                                                                                      \
+        }                                                                                          \
+        leaf = node;                                                                               \
+        if (node < 0) {                                                                            \
+            TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                                     \
+        }                                                                                          \
+    }
+
 // Lockstep loops (LOCKSTEP): the descent ends when no lane has an inner node and no leaf yet
 // (lanes holding a postponed leaf keep descending speculatively, done lanes idle).
 #define TRAVERSAL_DESCEND_LOCKSTEP() !subgroupAny(uint(node) < TRAVERSAL_SENTINEL && leaf >= 0)
@@ -273,20 +291,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                 break;
             }
         }
-        // Leaves: this lane's postponed leaf, then `node` if it is a leaf too.
-        while (leaf < 0) {
-            uint first = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);
-            uint count = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;
-            for (uint i = first; i < first + count; i++) {
-                if (test_leaf_triangle(pr, i, hit, stats) && any_hit) {
-                    return hit;
-                }
-            }
-            leaf = node;
-            if (node < 0) {
-                TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));
-            }
-        }
+        TRAVERSAL_LEAVES();
     }
     return hit;
 }

@@ -84,20 +84,7 @@ TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout u
                 break;
             }
         }
-        // Leaves: this lane's postponed leaf, then `node` if it is a leaf too.
-        while (leaf < 0) {
-            uint first = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);
-            uint count = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) + 1u;
-            for (uint i = first; i < first + count; i++) {
-                if (test_leaf_triangle(pr, i, hit, stats) && any_hit) {
-                    return hit;
-                }
-            }
-            leaf = node;
-            if (node < 0) {
-                TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));
-            }
-        }
+        TRAVERSAL_LEAVES();
     }
     return hit;
 }
