@@ -64,6 +64,15 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
             // and three at a time with the device's default launch.
             v.push(("dynamic fetch at 1 lane, 3 groups", TraceOptions { persistent: Some(3), refill_lanes: 1, ..base }));
             v.push(("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }));
+            // The same with the leaf tests shared among the lanes (trace_bvh4_share.comp).
+            v.push((
+                "dynamic fetch at 1 lane, 3 groups, shared leaf tests",
+                TraceOptions { persistent: Some(3), refill_lanes: 1, share_leaves: true, ..base },
+            ));
+            v.push((
+                "dynamic fetch at 3 lanes, shared leaf tests",
+                TraceOptions { persistent: Some(0), refill_lanes: 3, share_leaves: true, ..base },
+            ));
         }
         BvhLayout::Cwbvh => {
             v.push(("postponing", TraceOptions { postpone: true, ..base }));
@@ -545,7 +554,9 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
         let build = BuildOptions { tri_test, layout, ..Default::default() };
-        let alpha_ok = |o: &TraceOptions| !o.short_stack && o.workgroup_size == bidir::gpu::abi::TRACE_WG_SIZE;
+        // The variants with an alpha-tested kernel (no short stack, other workgroup sizes or shared
+        // leaf tests).
+        let alpha_ok = |o: &TraceOptions| !o.short_stack && !o.share_leaves && o.workgroup_size == bidir::gpu::abi::TRACE_WG_SIZE;
         for (variant, mut opts) in variants(&build).into_iter().filter(|(_, o)| alpha_ok(o)) {
             opts.alpha = Some(gscene.features);
             let tracer = Tracer::with_options(&ctx, &opts).unwrap();
@@ -745,7 +756,10 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
         ("per-ray, origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }),
         ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
         ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
+        ("dynamic fetch at 3 lanes, shared leaf tests", TraceOptions { persistent: Some(0), refill_lanes: 3, share_leaves: true, ..base }),
     ];
+    // Shared leaf tests belong to dynamic fetch: refused without it.
+    assert!(Tracer::with_options(&ctx, &TraceOptions { share_leaves: true, ..base }).is_err());
     // Queued: 1,234 rays (the count at index 1; index 0 holds a decoy).
     let queued = 1_234usize;
     let counts = ctx.upload_buffer("test.counts", &[4_321u32, queued as u32]).unwrap();
@@ -817,6 +831,7 @@ fn any_hit_rays_traverse_their_own_copy_of_the_4_wide_nodes() {
         ("lockstep, origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }),
         ("divergent loops", TraceOptions { lockstep: false, ..base }),
         ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
+        ("dynamic fetch at 3 lanes, shared leaf tests", TraceOptions { persistent: Some(0), refill_lanes: 3, share_leaves: true, ..base }),
     ] {
         let tracer = Tracer::with_options(&ctx, &o).unwrap();
         let closest = tracer.trace(&ctx, &gbvh, &rays, false).unwrap();

@@ -109,6 +109,9 @@ void trace_dynamic(inout uvec2 stats) {
                     ray = i;
                     tmin = ray_tmin(r);
                     pr = prepare_ray(r.origin.xyz, r.dir.xyz, tmin);
+#ifdef TRACE_SHARE_LEAVES
+                    share_store_ray(pr);
+#endif
                     br = bvh4_ray(r.origin.xyz, r.dir.xyz);
                     idir = br.idir;
                     ood_near = br.ood_near;
@@ -135,7 +138,11 @@ void trace_dynamic(inout uvec2 stats) {
                 break;
             }
         }
+#ifdef TRACE_SHARE_LEAVES
+        TRAVERSAL_LEAVES_SHARED();
+#else
         TRAVERSAL_LEAVES_LOCKSTEP();
+#endif
     }
 }
 #endif

@@ -255,6 +255,104 @@ shared vec4 lockstep_origin[TRACE_WG_SIZE];
         }                                                                                          \
     }
 
+#ifdef TRACE_SHARE_LEAVES
+// Dynamic fetch's leaf phase with its triangle tests shared among the subgroup's lanes
+// (trace_bvh4_share.comp, session 30). In the lockstep leaf phase a subgroup runs as many
+// rounds as its busiest lane has triangles, the others idle (Sponza's diffuse rays: 19-21
+// rounds for 6.7 tests a ray, session 24). Here each round the B lanes that hold a leaf (busy)
+// test their leaf's next triangle and the others help: the idle lane of rank s tests triangle
+// 1 + s / B of the busy lane of rank s % B, so a busy lane moves on by 1 + its helpers. A
+// helper reads the busy lane's ray from shared memory (written at the refill: origin, tmin,
+// the watertight test's shear and axes; Woop's test adds the direction), tests against the
+// busy lane's nearest hit so far, and the busy lane gathers its helpers' hits by shuffles,
+// keeping the nearest, on a tie its own and then the lower helper's, that is the earlier
+// triangle: the hits of a lane testing its triangles in order. Any-hit rays end at any hit.
+// Needs every lane of the subgroup in the loop (dynamic fetch runs them all) and whole
+// subgroups in the workgroup (shared slots by gl_SubgroupID and lane).
+const uint SHARE_DIR_N = TRI_TEST == TRI_TEST_WOOP ? TRACE_WG_SIZE : 1u;
+shared vec4 share_ray[2u * TRACE_WG_SIZE];
+shared vec4 share_dir[SHARE_DIR_N];
+shared uint share_lane[TRACE_WG_SIZE];
+uint share_slot(uint lane) {
+    return gl_SubgroupID * gl_SubgroupSize + lane;
+}
+void share_store_ray(PreparedRay pr) {
+    uint i = share_slot(gl_SubgroupInvocationID);
+    share_ray[2u * i] = vec4(pr.o, pr.tmin);
+    share_ray[2u * i + 1u] = vec4(pr.sx, pr.sy, pr.sz, uintBitsToFloat(pr.kx | (pr.ky << 2u) | (pr.kz << 4u)));
+    if (TRI_TEST == TRI_TEST_WOOP) {
+        share_dir[i] = vec4(pr.d, 0.0);
+    }
+}
+PreparedRay share_load_ray(uint lane) {
+    uint i = share_slot(lane);
+    vec4 a = share_ray[2u * i];
+    vec4 b = share_ray[2u * i + 1u];
+    uint k = floatBitsToUint(b.w);
+    vec3 d = TRI_TEST == TRI_TEST_WOOP ? share_dir[i].xyz : vec3(0.0);
+    return PreparedRay(a.xyz, d, a.w, k & 3u, (k >> 2u) & 3u, k >> 4u, b.x, b.y, b.z);
+}
+#define TRAVERSAL_LEAVES_SHARED()                                                                  \
+    while (true) {                                                                                 \
+        bool busy_ = leaf < 0;                                                                     \
+        uvec4 bm_ = subgroupBallot(busy_);                                                         \
+        uint nb_ = subgroupBallotBitCount(bm_);                                                    \
+        if (nb_ == 0u) {                                                                           \
+            break;                                                                                 \
+        }                                                                                          \
+        uvec4 im_ = subgroupBallot(!busy_);                                                        \
+        uint ni_ = subgroupBallotBitCount(im_);                                                    \
+        uint lane_ = gl_SubgroupInvocationID;                                                      \
+        uint rank_ = busy_ ? subgroupBallotExclusiveBitCount(bm_) : nb_ + subgroupBallotExclusiveBitCount(im_); \
+        share_lane[share_slot(rank_)] = lane_;                                                     \
+        subgroupMemoryBarrierShared();                                                             \
+        subgroupBarrier();                                                                         \
+        uint owner_ = busy_ ? lane_ : share_lane[share_slot((rank_ - nb_) % nb_)];                 \
+        uint off_ = busy_ ? 0u : 1u + (rank_ - nb_) / nb_;                                         \
+        int oleaf_ = subgroupShuffle(leaf, owner_);                                                \
+        float obound_ = subgroupShuffle(hit.t, owner_);                                            \
+        uint orem_ = ((uint(oleaf_) >> LEAF_FIRST_BITS) & 15u) + 1u;                               \
+        TraceHit h_ = TraceHit(obound_, NO_HIT, vec2(0.0));                                        \
+        if (off_ < orem_) {                                                                        \
+            test_leaf_triangle(share_load_ray(owner_), (uint(oleaf_) & ((1u << LEAF_FIRST_BITS) - 1u)) + off_, h_, stats); \
+        }                                                                                          \
+        uint rem_ = busy_ ? orem_ : 0u;                                                            \
+        uint jmax_ = min((ni_ + nb_ - 1u) / nb_, subgroupMax(rem_) - 1u);                          \
+        uint q_ = busy_ ? rank_ : 0u;                                                              \
+        TraceHit best_ = h_;                                                                       \
+        for (uint j_ = 0u; j_ < jmax_; j_++) {                                                     \
+            uint s_ = q_ + j_ * nb_;                                                               \
+            bool valid_ = busy_ && s_ < ni_ && 1u + j_ < rem_;                                     \
+            uint hl_ = valid_ ? share_lane[share_slot(nb_ + s_)] : lane_;                          \
+            float ht_ = subgroupShuffle(h_.t, hl_);                                                \
+            uint hp_ = subgroupShuffle(h_.prim, hl_);                                              \
+            vec2 hb_ = subgroupShuffle(h_.bary, hl_);                                              \
+            if (valid_ && hp_ != NO_HIT && (best_.prim == NO_HIT || ht_ < best_.t)) {              \
+                best_ = TraceHit(ht_, hp_, hb_);                                                   \
+            }                                                                                      \
+        }                                                                                          \
+        subgroupBarrier();                                                                         \
+        if (busy_) {                                                                               \
+            if (best_.prim != NO_HIT) {                                                            \
+                hit = best_;                                                                       \
+            }                                                                                      \
+            uint helpers_ = ni_ > q_ ? (ni_ - 1u - q_) / nb_ + 1u : 0u;                            \
+            uint used_ = min(rem_, 1u + helpers_);                                                 \
+            if (best_.prim != NO_HIT && any_hit) {                                                 \
+                node = int(TRAVERSAL_SENTINEL);                                                    \
+                leaf = 0;                                                                          \
+            } else if (used_ < rem_) {                                                             \
+                leaf += int(used_) * (1 - (1 << LEAF_FIRST_BITS));                                 \
+            } else {                                                                               \
+                leaf = node;                                                                       \
+                if (node < 0) {                                                                    \
+                    TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                             \
+                }                                                                                  \
+            }                                                                                      \
+        }                                                                                          \
+    }
+#endif
+
 // The lockstep traversal of the binary and 4-wide layouts (below), which their trace_ray calls.
 TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats);
 

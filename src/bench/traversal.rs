@@ -65,6 +65,9 @@ pub struct Options {
     /// 4-wide layout, persistent: dynamic fetch as soon as this many lanes are done (0:
     /// batches; `TraceOptions::refill_lanes`).
     pub refill_lanes: u32,
+    /// With dynamic fetch: the leaf tests shared among the subgroup's lanes
+    /// (`TraceOptions::share_leaves`).
+    pub share_leaves: bool,
     /// Compressed wide layout: triangle postponing.
     pub postpone: bool,
     /// Binary layouts: the stack's top in registers, the rest in shared memory.
@@ -96,6 +99,7 @@ impl Default for Options {
             speculative: true,
             lockstep: true,
             refill_lanes: 0,
+            share_leaves: false,
             postpone: false,
             short_stack: false,
             int_slabs: true,
@@ -151,6 +155,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     trace_opts.speculative = opts.speculative;
     trace_opts.lockstep = opts.lockstep;
     trace_opts.refill_lanes = opts.refill_lanes;
+    trace_opts.share_leaves = opts.share_leaves;
     trace_opts.postpone = opts.postpone;
     trace_opts.short_stack = opts.short_stack;
     trace_opts.int_slabs = opts.int_slabs;
@@ -289,6 +294,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         lockstep: opts.lockstep && opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         refill_lanes: if opts.persistent.is_some() { opts.refill_lanes } else { 0 },
+        share_leaves: opts.share_leaves,
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         short_stack: opts.short_stack,
         int_slabs: opts.int_slabs,

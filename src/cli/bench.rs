@@ -119,6 +119,10 @@ pub struct TraversalArgs {
     /// when all are.
     #[arg(long, value_name = "N")]
     pub refill: Option<u32>,
+    /// With --refill: share the leaf phase's triangle tests among the subgroup's lanes (the
+    /// lanes without a leaf test the next triangles of those with one)
+    #[arg(long)]
+    pub share_leaves: bool,
     /// Compressed wide BVH: postpone triangle tests while few lanes have any (Ylitie et al.
     /// 2017, section 4).
     #[arg(long)]
@@ -266,6 +270,10 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         }
         o.refill_lanes = n;
     }
+    if a.share_leaves && a.refill.is_none() {
+        anyhow::bail!("--share-leaves shares the leaf tests of dynamic fetch: give --refill N too");
+    }
+    o.share_leaves = a.share_leaves;
     let cam = bidir::gpu_data::gpu_camera(&loaded.camera);
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();

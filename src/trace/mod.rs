@@ -51,6 +51,10 @@ pub struct TraceOptions {
     /// soon as this many are done (SPEC_REFILL_LANES, dynamic fetch); 0 (default): a batch
     /// when all are.
     pub refill_lanes: u32,
+    /// With dynamic fetch (`refill_lanes`): the leaf phase's triangle tests shared among the
+    /// subgroup's lanes, the lanes without a leaf testing the next triangles of those with one
+    /// (trace_bvh4_share.comp; glsl/common/traverse.glsl, TRACE_SHARE_LEAVES). Off by default.
+    pub share_leaves: bool,
     /// 4-wide layout, one ray per invocation in lockstep loops (not persistent, no alpha masks):
     /// the kernel that keeps each ray's origin in shared memory for its leaf tests
     /// (trace_bvh4_lockstep.comp; glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL). None (the
@@ -89,6 +93,7 @@ impl TraceOptions {
             speculative: true,
             lockstep: true,
             refill_lanes: 0,
+            share_leaves: false,
             shared_origin: None,
             postpone: false,
             short_stack: false,
@@ -213,6 +218,12 @@ impl Tracer {
             }
             trace_specs.push(Spec { id: abi::SPEC_REFILL_LANES, value: opts.refill_lanes });
         }
+        if opts.share_leaves
+            && (opts.refill_lanes == 0 || opts.alpha.is_some() || opts.short_stack || opts.workgroup_size != abi::TRACE_WG_SIZE)
+        {
+            let msg = "shared leaf tests need dynamic fetch (refill lanes) over the 4-wide layout, without alpha masks".to_string();
+            return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
+        }
         trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
         trace_specs.push(Spec { id: abi::SPEC_RAY_COUNT_BUFFER, value: opts.count_buffer as u32 });
         if opts.rays_per_invocation != 1 {
@@ -261,6 +272,7 @@ impl Tracer {
             (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
             // One ray per invocation in lockstep loops: the kernel whose leaf tests read the
             // origin from shared memory (glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL).
+            (None, BvhLayout::Bvh4) if opts.share_leaves => &kernels::TRACE_BVH4_SHARE,
             (None, BvhLayout::Bvh4) if opts.persistent.is_none() && opts.lockstep && opts.speculative && shared_origin => {
                 &kernels::TRACE_BVH4_LOCKSTEP
             }

@@ -42,6 +42,7 @@ pub struct Report {
     pub speculative: bool,
     pub lockstep: bool,
     pub refill_lanes: u32,
+    pub share_leaves: bool,
     pub postpone: bool,
     pub short_stack: bool,
     pub int_slabs: bool,
@@ -88,6 +89,7 @@ impl Report {
             ("speculative", Json::Bool(self.speculative)),
             ("lockstep", Json::Bool(self.lockstep)),
             ("refill_lanes", Json::Int(self.refill_lanes as i64)),
+            ("share_leaves", Json::Bool(self.share_leaves)),
             ("postpone", Json::Bool(self.postpone)),
             ("short_stack", Json::Bool(self.short_stack)),
             ("int_slabs", Json::Bool(self.int_slabs)),
@@ -162,6 +164,7 @@ impl Report {
                 + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
                 + if self.layout != BvhLayout::Cwbvh && self.speculative && !self.lockstep { ", divergent loops" } else { "" }
                 + &if self.refill_lanes > 0 { format!(", dynamic fetch at {} done lanes", self.refill_lanes) } else { String::new() }
+                + if self.share_leaves { ", leaf tests shared among lanes" } else { "" }
                 + if self.postpone { ", triangle postponing" } else { "" }
                 + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
                 + if !self.int_slabs { ", float slab test" } else { "" }
