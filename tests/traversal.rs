@@ -60,6 +60,8 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
             // The lockstep kernel with the origin in shared memory (GPUs' default; lavapipe's
             // default is the other).
             v.push(("origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }));
+            // Leaf tests shared among the lanes (trace_bvh4_share.comp), one ray per invocation.
+            v.push(("shared leaf tests", TraceOptions { share_leaves: true, ..base }));
             // Dynamic fetch: lanes refilled one by one (3 groups: many refills per subgroup),
             // and three at a time with the device's default launch.
             v.push(("dynamic fetch at 1 lane, 3 groups", TraceOptions { persistent: Some(3), refill_lanes: 1, ..base }));
@@ -754,12 +756,13 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
     let shapes = [
         ("per-ray", base),
         ("per-ray, origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }),
+        ("per-ray, shared leaf tests", TraceOptions { share_leaves: true, ..base }),
         ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
         ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
         ("dynamic fetch at 3 lanes, shared leaf tests", TraceOptions { persistent: Some(0), refill_lanes: 3, share_leaves: true, ..base }),
     ];
-    // Shared leaf tests belong to dynamic fetch: refused without it.
-    assert!(Tracer::with_options(&ctx, &TraceOptions { share_leaves: true, ..base }).is_err());
+    // Shared leaf tests belong to lockstep loops: refused for plain persistent threads' batches.
+    assert!(Tracer::with_options(&ctx, &TraceOptions { share_leaves: true, persistent: Some(3), ..base }).is_err());
     // Queued: 1,234 rays (the count at index 1; index 0 holds a decoy).
     let queued = 1_234usize;
     let counts = ctx.upload_buffer("test.counts", &[4_321u32, queued as u32]).unwrap();
@@ -829,6 +832,7 @@ fn any_hit_rays_traverse_their_own_copy_of_the_4_wide_nodes() {
     for (loop_kind, o) in [
         ("lockstep", base),
         ("lockstep, origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }),
+        ("lockstep, shared leaf tests", TraceOptions { share_leaves: true, ..base }),
         ("divergent loops", TraceOptions { lockstep: false, ..base }),
         ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
         ("dynamic fetch at 3 lanes, shared leaf tests", TraceOptions { persistent: Some(0), refill_lanes: 3, share_leaves: true, ..base }),

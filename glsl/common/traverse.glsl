@@ -267,8 +267,9 @@ shared vec4 lockstep_origin[TRACE_WG_SIZE];
 // busy lane's nearest hit so far, and the busy lane gathers its helpers' hits by shuffles,
 // keeping the nearest, on a tie its own and then the lower helper's, that is the earlier
 // triangle: the hits of a lane testing its triangles in order. Any-hit rays end at any hit.
-// Needs every lane of the subgroup in the loop (dynamic fetch runs them all) and whole
-// subgroups in the workgroup (shared slots by gl_SubgroupID and lane).
+// Used by dynamic fetch and by the lockstep loops of one ray per invocation, where the lanes
+// past the launch's last ray sit out (only active lanes are ranked, owners and helpers alike).
+// Shared slots go by gl_SubgroupID and lane: the workgroup must hold whole subgroups.
 const uint SHARE_DIR_N = TRI_TEST == TRI_TEST_WOOP ? TRACE_WG_SIZE : 1u;
 shared vec4 share_ray[2u * TRACE_WG_SIZE];
 shared vec4 share_dir[SHARE_DIR_N];
@@ -403,6 +404,9 @@ TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit
 #ifdef TRACE_LOCKSTEP_KERNEL
     lockstep_origin[gl_LocalInvocationIndex] = vec4(o, 0.0);
 #endif
+#ifdef TRACE_SHARE_LEAVES
+    share_store_ray(pr);
+#endif
     if (TRAVERSAL_STATS != 0u) {
         traversal_counts.x++;
     }
@@ -437,7 +441,11 @@ TraceHit trace_ray_lockstep(vec3 o, vec3 d, float tmin, float tmax, bool any_hit
                 break;
             }
         }
+#ifdef TRACE_SHARE_LEAVES
+        TRAVERSAL_LEAVES_SHARED();
+#else
         TRAVERSAL_LEAVES_LOCKSTEP();
+#endif
         if (!subgroupAny(node != int(TRAVERSAL_SENTINEL))) {
             break;
         }

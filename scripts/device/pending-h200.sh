@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off); s30e (not yet run: `--share-leaves`, the leaf phase's triangle tests shared among the lanes, against dynamic fetch without it).
+# Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off); s30e (not yet run: `--share-leaves`, the leaf phase's triangle tests shared among the lanes, against the lockstep kernel and dynamic fetch without it).
 # Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel); s29i (a measurement build, BIDIR_EXP_BITS: the origin in shared memory, closest-hit rays' one loop); s29j (the lockstep kernel with both, against 3c1fc4e).
 # Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures); s28g (a measurement build: BIDIR_EXP_NO_SECOND, obvhs' second reinsertion pass left out for the collapse's binary tree) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
 # Parts run in session 27: s27a (the 4-wide nodes' any-hit copy in occlusion order, on and off, every ray kind and the integrators over bvh4); s27b (a measurement build, .device/bidir-exp.gz, not committed: the copy's order key and pop order, BIDIR_EXP_OCC_KEY and BIDIR_EXP_POP; closest-hit rays' order of boxes entered at tmin, BIDIR_EXP_TIE); s27c (a measurement build: the copy's order from the expected work of an occlusion ray, BIDIR_EXP_OCC_KEY 6 and 7); s27d (this commit: every ray kind at quality 5, and shadow rays' refill lanes with the copy); s27e (the integrators' wavefront forms over bvh4 with and without the copy, Cornell box and the box whose light hides above a panel); s27f (BDPT's wavefront form on the plain Cornell box at equal time, against .device/ref.exr); s27g (BDPT's sample slices on the Cornell box; its commands were run directly, as one call).
@@ -31,23 +31,25 @@ mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
 s30e)
-  # Session 30 (not run: no machine was lent after s30d): dynamic fetch whose leaf phase shares
-  # the triangle tests among the subgroup's lanes (`--share-leaves`, trace_bvh4_share.comp)
-  # against dynamic fetch without it, CameraMain quality 5, --refill 24 and 28, two runs
-  # interleaved; the shader cache comes back (scripts/device/sass.py: registers, the round's
-  # instructions).
+  # Session 30 (not run: no machine was lent after s30d): the leaf phase's triangle tests
+  # shared among the subgroup's lanes (`--share-leaves`, trace_bvh4_share.comp) against the
+  # lockstep kernel and dynamic fetch without it, CameraMain quality 5, one ray per invocation,
+  # --refill 24 and 28, two runs interleaved; the shader cache comes back
+  # (scripts/device/sass.py: registers, the instructions of a round).
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
   SP=$PWD/.device/scenes/sponza/Sponza.gltf
   T="timeout -k 5 60"
   for r in 1 2; do
-    for c in "--refill 24" "--refill 28"; do
+    for c in "" "--refill 24" "--refill 28"; do
       for e in "" --share-leaves; do
         echo "== CameraMain quality 5 $c $e"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c $e 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
       done
     done
   done
   D=/tmp/nvcache; rm -rf $D; mkdir -p $D
-  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal --bvh bvh4 --leaf-size 3 --refill 24 --share-leaves 2>&1 | grep -E "Register"
+  for c in "" "--refill 24"; do
+    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$B" bench traversal --bvh bvh4 --leaf-size 3 $c --share-leaves 2>&1 | grep -E "Register"
+  done
   tar czf "$OUT/nvcache.tgz" -C $D .
   ;;
 s30d)

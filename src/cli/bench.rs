@@ -119,8 +119,9 @@ pub struct TraversalArgs {
     /// when all are.
     #[arg(long, value_name = "N")]
     pub refill: Option<u32>,
-    /// With --refill: share the leaf phase's triangle tests among the subgroup's lanes (the
-    /// lanes without a leaf test the next triangles of those with one)
+    /// 4-wide BVH, lockstep loops (one ray per invocation, or --refill): share the leaf phase's
+    /// triangle tests among the subgroup's lanes (the lanes without a leaf test the next
+    /// triangles of those with one)
     #[arg(long)]
     pub share_leaves: bool,
     /// Compressed wide BVH: postpone triangle tests while few lanes have any (Ylitie et al.
@@ -270,8 +271,14 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         }
         o.refill_lanes = n;
     }
-    if a.share_leaves && a.refill.is_none() {
-        anyhow::bail!("--share-leaves shares the leaf tests of dynamic fetch: give --refill N too");
+    if a.share_leaves
+        && (a.bvh != bidir::bvh::BvhLayout::Bvh4
+            || a.no_speculative
+            || a.divergent_loops
+            || a.alpha
+            || ((a.persistent || a.persistent_groups.is_some()) && a.refill.is_none()))
+    {
+        anyhow::bail!("--share-leaves: with --bvh bvh4 and its speculative lockstep loops, one ray per invocation or --refill N (not --persistent alone, --alpha, --no-speculative or --divergent-loops)");
     }
     o.share_leaves = a.share_leaves;
     let cam = bidir::gpu_data::gpu_camera(&loaded.camera);

@@ -51,9 +51,10 @@ pub struct TraceOptions {
     /// soon as this many are done (SPEC_REFILL_LANES, dynamic fetch); 0 (default): a batch
     /// when all are.
     pub refill_lanes: u32,
-    /// With dynamic fetch (`refill_lanes`): the leaf phase's triangle tests shared among the
-    /// subgroup's lanes, the lanes without a leaf testing the next triangles of those with one
-    /// (trace_bvh4_share.comp; glsl/common/traverse.glsl, TRACE_SHARE_LEAVES). Off by default.
+    /// 4-wide layout, speculative lockstep loops (one ray per invocation, or dynamic fetch), no
+    /// alpha masks: the leaf phase's triangle tests shared among the subgroup's lanes, the lanes
+    /// without a leaf testing the next triangles of those with one (trace_bvh4_share.comp;
+    /// glsl/common/traverse.glsl, TRACE_SHARE_LEAVES). Off by default.
     pub share_leaves: bool,
     /// 4-wide layout, one ray per invocation in lockstep loops (not persistent, no alpha masks):
     /// the kernel that keeps each ray's origin in shared memory for its leaf tests
@@ -218,10 +219,17 @@ impl Tracer {
             }
             trace_specs.push(Spec { id: abi::SPEC_REFILL_LANES, value: opts.refill_lanes });
         }
+        // Shared leaf tests: the lockstep loops of one ray per invocation or of dynamic fetch
+        // (the batches of plain persistent threads run divergent per-ray calls).
+        let lockstep_loops = opts.lockstep && opts.speculative && (opts.persistent.is_none() || opts.refill_lanes > 0);
         if opts.share_leaves
-            && (opts.refill_lanes == 0 || opts.alpha.is_some() || opts.short_stack || opts.workgroup_size != abi::TRACE_WG_SIZE)
+            && (opts.layout != BvhLayout::Bvh4
+                || !lockstep_loops
+                || opts.alpha.is_some()
+                || opts.short_stack
+                || opts.workgroup_size != abi::TRACE_WG_SIZE)
         {
-            let msg = "shared leaf tests need dynamic fetch (refill lanes) over the 4-wide layout, without alpha masks".to_string();
+            let msg = "shared leaf tests need the 4-wide layout's speculative lockstep loops (one ray per invocation or dynamic fetch), without alpha masks".to_string();
             return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
         }
         trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
