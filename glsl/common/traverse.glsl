@@ -222,23 +222,29 @@ shared vec4 lockstep_origin[TRACE_WG_SIZE];
 #define TRAVERSAL_FLAT_LEAVES any_hit
 #define TRAVERSAL_LEAF_ORIGIN()
 #endif
+// After a lane has tested `n` triangles of its leaf, `found` whether one was hit: an any-hit
+// ray that found one ends its traversal (node = the sentinel) and idles; otherwise the lane
+// moves on by n triangles, or, its leaf done (`done`), to `node` if that is a leaf too (then
+// popping the stack for the next node) or back to the descent.
+#define TRAVERSAL_LEAF_NEXT(found, n, done)                                                        \
+    if ((found) && any_hit) {                                                                      \
+        node = int(TRAVERSAL_SENTINEL);                                                            \
+        leaf = 0;                                                                                  \
+    } else if (!(done)) {                                                                          \
+        leaf += (n) * (1 - (1 << LEAF_FIRST_BITS));                                                \
+    } else {                                                                                       \
+        leaf = node;                                                                               \
+        if (node < 0) {                                                                            \
+            TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                                     \
+        }                                                                                          \
+    }
 #define TRAVERSAL_LEAVES_LOCKSTEP()                                                                \
     if (TRAVERSAL_FLAT_LEAVES) {                                                                   \
         while (leaf < 0) {                                                                         \
             uint first_ = uint(leaf) & ((1u << LEAF_FIRST_BITS) - 1u);                             \
             bool last_ = ((uint(leaf) >> LEAF_FIRST_BITS) & 15u) == 0u;                            \
             TRAVERSAL_LEAF_ORIGIN();                                                               \
-            if (test_leaf_triangle(pr, first_, hit, stats) && any_hit) {                           \
-                node = int(TRAVERSAL_SENTINEL);                                                    \
-                leaf = 0;                                                                          \
-            } else if (!last_) {                                                                   \
-                leaf += 1 - (1 << LEAF_FIRST_BITS);                                                \
-            } else {                                                                               \
-                leaf = node;                                                                       \
-                if (node < 0) {                                                                    \
-                    TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                             \
-                }                                                                                  \
-            }                                                                                      \
+            TRAVERSAL_LEAF_NEXT(test_leaf_triangle(pr, first_, hit, stats), 1, last_);             \
         }                                                                                          \
     } else {                                                                                       \
         while (leaf < 0) {                                                                         \
@@ -339,17 +345,7 @@ PreparedRay share_load_ray(uint lane) {
             }                                                                                      \
             uint helpers_ = ni_ > q_ ? (ni_ - 1u - q_) / nb_ + 1u : 0u;                            \
             uint used_ = min(rem_, 1u + helpers_);                                                 \
-            if (best_.prim != NO_HIT && any_hit) {                                                 \
-                node = int(TRAVERSAL_SENTINEL);                                                    \
-                leaf = 0;                                                                          \
-            } else if (used_ < rem_) {                                                             \
-                leaf += int(used_) * (1 - (1 << LEAF_FIRST_BITS));                                 \
-            } else {                                                                               \
-                leaf = node;                                                                       \
-                if (node < 0) {                                                                    \
-                    TRAVERSAL_STACK_POP(node, stack_cull_bits(hit.t));                             \
-                }                                                                                  \
-            }                                                                                      \
+            TRAVERSAL_LEAF_NEXT(best_.prim != NO_HIT, int(used_), used_ == rem_);                   \
         }                                                                                          \
     }
 #endif
