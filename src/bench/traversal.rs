@@ -65,8 +65,8 @@ pub struct Options {
     /// 4-wide layout, persistent: dynamic fetch as soon as this many lanes are done (0:
     /// batches; `TraceOptions::refill_lanes`).
     pub refill_lanes: u32,
-    /// With dynamic fetch: the leaf tests shared among the subgroup's lanes
-    /// (`TraceOptions::share_leaves`).
+    /// 4-wide layout, lockstep loops (one ray per invocation or dynamic fetch): the leaf tests
+    /// shared among the subgroup's lanes (`TraceOptions::share_leaves`).
     pub share_leaves: bool,
     /// Compressed wide layout: triangle postponing.
     pub postpone: bool,
