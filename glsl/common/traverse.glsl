@@ -262,13 +262,13 @@ shared vec4 lockstep_origin[TRACE_WG_SIZE];
     }
 
 #ifdef TRACE_SHARE_LEAVES
-// Dynamic fetch's leaf phase with its triangle tests shared among the subgroup's lanes
+// The lockstep leaf phase with its triangle tests shared among the subgroup's lanes
 // (trace_bvh4_share.comp, session 30). In the lockstep leaf phase a subgroup runs as many
 // rounds as its busiest lane has triangles, the others idle (Sponza's diffuse rays: 19-21
 // rounds for 6.7 tests a ray, session 24). Here each round the B lanes that hold a leaf (busy)
 // test their leaf's next triangle and the others help: the idle lane of rank s tests triangle
 // 1 + s / B of the busy lane of rank s % B, so a busy lane moves on by 1 + its helpers. A
-// helper reads the busy lane's ray from shared memory (written at the refill: origin, tmin,
+// helper reads the busy lane's ray from shared memory (written when the ray starts: origin, tmin,
 // the watertight test's shear and axes; Woop's test adds the direction), tests against the
 // busy lane's nearest hit so far, and the busy lane gathers its helpers' hits by shuffles,
 // keeping the nearest, on a tie its own and then the lower helper's, that is the earlier

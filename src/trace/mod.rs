@@ -278,9 +278,10 @@ impl Tracer {
             (None, BvhLayout::Bvh2) => &kernels::TRACE,
             (None, BvhLayout::Cwbvh) => &kernels::TRACE_CWBVH,
             (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
+            // Leaf tests shared among the lanes, per ray or with dynamic fetch (validated above).
+            (None, BvhLayout::Bvh4) if opts.share_leaves => &kernels::TRACE_BVH4_SHARE,
             // One ray per invocation in lockstep loops: the kernel whose leaf tests read the
             // origin from shared memory (glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL).
-            (None, BvhLayout::Bvh4) if opts.share_leaves => &kernels::TRACE_BVH4_SHARE,
             (None, BvhLayout::Bvh4) if opts.persistent.is_none() && opts.lockstep && opts.speculative && shared_origin => {
                 &kernels::TRACE_BVH4_LOCKSTEP
             }
