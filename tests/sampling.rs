@@ -602,20 +602,40 @@ mod rng_twin {
         laine_karras(x.reverse_bits(), seed).reverse_bits()
     }
 
-    /// The first `n` numbers of (pixel, sample) under `sobol_dims` Sobol' dimensions.
-    pub fn numbers(pixel: u32, sample: u32, seed: u32, sobol_dims: u32, n: usize) -> Vec<u32> {
+    /// The first `n` numbers of (pixel, sample) under `sobol_dims` (SPEC_SAMPLER's value):
+    /// the path reaches its next vertex before number i where bit i of `vertex_starts` is set
+    /// (from its second, SOBOL_FIRST_VERTEX's Sobol' dimensions end), then a group of four
+    /// dimensions starts where that of `group_starts` is (the next dimension rounded up to a
+    /// multiple of four, but not past the Sobol' dimensions).
+    pub fn numbers(pixel: u32, sample: u32, seed: u32, sobol_dims: u32, vertex_starts: u32, group_starts: u32, n: usize) -> Vec<u32> {
         let s = pcg_hash(pixel ^ pcg_hash(seed));
         let mut state = if sobol_dims > 0 { s } else { pcg_hash(s ^ pcg_hash(sample)) };
         let mut out = Vec::with_capacity(n);
-        for dim in 0..n as u32 {
-            if sobol_dims > 0 && dim < sobol_dims {
-                let group_seed = pcg_hash(state ^ pcg_hash(dim / 4));
+        let mut dim = 0u32;
+        let mut vertex = 0;
+        for i in 0..n as u32 {
+            if vertex_starts & (1 << i) != 0 {
+                vertex += 1;
+                if sobol_dims == bidir::gpu::abi::SOBOL_FIRST_VERTEX && vertex >= 2 && dim < sobol_dims {
+                    dim = sobol_dims;
+                }
+            }
+            if group_starts & (1 << i) != 0 && sobol_dims > 0 && dim < sobol_dims {
+                dim = dim.next_multiple_of(4).min(sobol_dims);
+            }
+            // As rng.glsl, the dimension stops counting one past the Sobol' dimensions.
+            let d = dim;
+            if sobol_dims > 0 && d <= sobol_dims {
+                dim += 1;
+            }
+            if sobol_dims > 0 && d < sobol_dims {
+                let group_seed = pcg_hash(state ^ pcg_hash(d / 4));
                 let shuffled = scramble(sample, group_seed);
-                let k = dim % 4;
+                let k = d % 4;
                 out.push(scramble(sobol(shuffled, k as usize), pcg_hash(group_seed ^ (k + 1))));
                 continue;
             }
-            if sobol_dims > 0 && dim == sobol_dims {
+            if sobol_dims > 0 && d == sobol_dims {
                 state = pcg_hash(state ^ pcg_hash(sample ^ 0x5bd1_e995));
             }
             state = pcg_hash(state);
@@ -625,9 +645,42 @@ mod rng_twin {
     }
 }
 
+/// Why each sampling decision starts a group (rng_start_group) and draws its 2D numbers
+/// first or after one other: over a pixel's first 4^m samples (m = 2 to 5), a group's
+/// dimensions 0 and 1, and 1 and 2, put one point in each of the 2^m x 2^m cells of the unit
+/// square for every pixel (each pair a (0, 2)-sequence, as Owen scrambling keeps it), while
+/// dimensions 2 and 3 of a group, or two dimensions in different groups, leave cells empty at
+/// some m. Computed by rng.glsl's CPU twin, which the test below holds to the kernels bit for
+/// bit.
+#[test]
+fn a_group_s_leading_pairs_are_stratified_in_2d() {
+    // With a group started before number 2, numbers 2 to 5 are dimensions 4 to 7 (a group)
+    // and number 6 is dimension 8 (the next).
+    let stratified = |pixel: u32, pair: (usize, usize)| {
+        (2..=5u32).all(|m| {
+            let mut hit = vec![0u32; 1 << (2 * m)];
+            for sample in 0..1u32 << (2 * m) {
+                let n = rng_twin::numbers(pixel, sample, 3, 12, 0, 1 << 2, 8);
+                hit[((n[pair.0] >> (32 - m)) << m | n[pair.1] >> (32 - m)) as usize] += 1;
+            }
+            hit.iter().all(|&h| h == 1)
+        })
+    };
+    for pixel in 0..16 {
+        for (pair, dims) in [((2, 3), "0 and 1"), ((3, 4), "1 and 2")] {
+            assert!(stratified(pixel, pair), "pixel {pixel}: a group's dimensions {dims} leave a cell empty");
+        }
+        for (pair, dims) in [((4, 5), "2 and 3 of a group"), ((5, 6), "7 and 8 (two groups)")] {
+            assert!(!stratified(pixel, pair), "pixel {pixel}: dimensions {dims} are stratified in 2D at every m tried");
+        }
+    }
+}
+
 /// The kernels' random numbers are rng.glsl's definition bit for bit (its Sobol' points
-/// computed by shortcuts, each against the matrix product): independent, the default
-/// Sobol' dimensions, two and Sobol' everywhere, over sample indices with every bit in use.
+/// computed by shortcuts, each against the matrix product), path vertices and groups of
+/// dimensions started among them: independent, two and ten Sobol' dimensions (a group start
+/// cut short where the hash chain begins), the default (Sobol' for the first vertex) and
+/// Sobol' everywhere, over sample indices with every bit in use.
 #[test]
 fn kernel_random_numbers_equal_their_cpu_twin_bit_for_bit() {
     let ctx = gpu();
@@ -637,14 +690,22 @@ fn kernel_random_numbers_equal_their_cpu_twin_bit_for_bit() {
         let samples: Vec<u32> = (0..count).map(|i| if i < 64 { i } else { pcg.next_u32() }).collect();
         let input: Vec<Vec4> = samples.iter().map(|&s| Vec4::new(f32::from_bits(s), 0.0, 0.0, 0.0)).collect();
         let input = ctx.upload_buffer("sampling.rng_samples", &input).unwrap();
-        for sobol_dims in [abi::SAMPLER_INDEPENDENT, 2, bidir::render::Sampler::DEFAULT_SOBOL_DIMS, u32::MAX] {
+        for sobol_dims in [abi::SAMPLER_INDEPENDENT, 2, 10, abi::SOBOL_FIRST_VERTEX, abi::SOBOL_ALL_DIMS] {
             let spec = bidir::vk::Spec { id: abi::SPEC_SAMPLER, value: sobol_dims };
             let k = SamplingKernel::with_specs(&ctx, &[spec]);
             let push = abi::SamplingTestPush { mode: abi::SAMPLING_RNG, count, seed: 7, ..Default::default() };
             let out = k.run(push, 4, Some(&input));
             let mut wrong = 0;
             for i in 0..count {
-                let want = rng_twin::numbers(i / 8, samples[i as usize], 7, sobol_dims, 16);
+                let want = rng_twin::numbers(
+                    i / 8,
+                    samples[i as usize],
+                    7,
+                    sobol_dims,
+                    abi::SAMPLING_RNG_VERTEX_STARTS,
+                    abi::SAMPLING_RNG_GROUP_STARTS,
+                    16,
+                );
                 let got: Vec<u32> = out[4 * i as usize..4 * i as usize + 4].iter().flat_map(|v| v.to_array().map(f32::to_bits)).collect();
                 if got != want {
                     if wrong < 3 {

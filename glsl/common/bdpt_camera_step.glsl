@@ -73,6 +73,7 @@
     if (pc.max_depth != 0u && depth >= pc.max_depth) {
         break;
     }
+    rng_start_vertex(rng, depth);
 
     // The continuous part (diffuse, GGX) is zero unless both directions lie above the
     // shading normal too (reciprocal, as the light paths need); cos_back is 0 exactly then.
@@ -102,7 +103,10 @@
         // (vcm.glsl, direct_light_tracing).
         float d_vcm_s1 = depth == 1u ? direct_light_tracing() * d_vcm : d_vcm;
         // s = 1: the environment (probability env.pick; its "point" is a direction, the
-        // cosine there is 1), a punctual light, or a fresh point on an emitter.
+        // cosine there is 1), a punctual light, or a fresh point on an emitter; in a group of
+        // Sobol' dimensions, the light's kind first and the point's (or direction's) two
+        // numbers after it.
+        rng_start_group(rng);
         float u_kind = HAS_ENV != 0u || HAS_PUNCTUAL != 0u ? rng_next(rng) : 1.0;
         bool env_light = HAS_ENV != 0u && u_kind < env.pick;
         bool punctual_light = HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
@@ -121,7 +125,10 @@
                 }
             }
         } else if (env_light) {
-            EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            float u_cell = rng_next(rng);
+            EnvSample es = env_sample(u_cell, rng_next(rng), u1, u2);
             float cos_s = dot(ns_f, es.w);
             if (cos_s > 0.0 && dot(ng_f, es.w) > 0.0 && es.pdf_w > 0.0) {
                 float direct_pdf_w = env.pick * es.pdf_w;
@@ -136,7 +143,9 @@
                 }
             }
         } else if (pc.emitter_count > 0u) {
-            LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), u1, u2);
             ls.pick *= triangle_light_pick(HAS_PUNCTUAL != 0u);
             vec3 to_l = ls.p - s.p;
             float dist2 = dot(to_l, to_l);
@@ -200,7 +209,8 @@
         }
     }
 
-    // Continue by sampling the BSDF (radiance transport).
+    // Continue by sampling the BSDF (radiance transport), in a group of Sobol' dimensions.
+    rng_start_group(rng);
     uint lobe = choose_lobe_drawn(m, s.uv, rng);
     if (lobe == LOBE_DIFFUSE && VCM_PHOTON_MAPPING) {
         break; // progressive photon mapping: the merge above estimated the rest
@@ -209,9 +219,9 @@
         if (!continuous_ok) {
             break;
         }
-        float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
         float u1 = rng_next(rng);
         float u2 = rng_next(rng);
+        float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
         vec3 dn;
         if (!continuous_sample(bsdf, ns_f, wo, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
             break;

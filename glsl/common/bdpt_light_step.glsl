@@ -35,6 +35,8 @@
         d_vm /= mis(cos_in);
     }
 
+    rng_start_vertex(rng, depth);
+
     // The continuous part (diffuse, GGX) is zero unless light arrives from above the
     // shading normal too (the camera paths' BSDF, made reciprocal).
     Continuous c = continuous_at(m, s.uv);

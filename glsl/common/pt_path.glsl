@@ -155,6 +155,7 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
     // Normals facing the side the ray came from.
     vec3 ng_f = s.front ? s.ng : -s.ng;
     vec3 ns_f = s.front ? s.ns : -s.ns;
+    rng_start_vertex(rng, depth);
     uint lobe = choose_lobe_drawn(m, s.uv, rng);
     if (lobe == LOBE_MIRROR) {
         d = reflect(d, ns_f);
@@ -198,8 +199,10 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
         Continuous c = continuous_at(m, s.uv);
         vec3 p_off = offset_ray_origin(s.p, ng_f);
         // Next-event estimation: the environment (probability env.pick) or an emitter
-        // point by power, one shadow ray.
+        // point by power, one shadow ray; in a group of Sobol' dimensions, the light's kind
+        // first and the point's (or direction's) two numbers after it.
         bool nee = NEE != 0u && (pc.emitter_count > 0u || HAS_ENV != 0u || HAS_PUNCTUAL != 0u) && (pc.max_depth == 0u || depth + 1u <= pc.max_depth);
+        rng_start_group(rng);
         float u_kind = nee && (HAS_ENV != 0u || HAS_PUNCTUAL != 0u) ? rng_next(rng) : 1.0;
         bool env_light = nee && HAS_ENV != 0u && u_kind < env.pick;
         bool punctual_light = nee && HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
@@ -217,7 +220,10 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
                 }
             }
         } else if (env_light) {
-            EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            float u_cell = rng_next(rng);
+            EnvSample es = env_sample(u_cell, rng_next(rng), u1, u2);
             float cos_s = dot(es.w, ns_f);
             if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0) {
                 float pdf_light_w = env.pick * es.pdf_w;
@@ -230,7 +236,9 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
                 }
             }
         } else if (nee) {
-            LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+            float u1 = rng_next(rng);
+            float u2 = rng_next(rng);
+            LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), u1, u2);
             vec3 to_l = ls.p - s.p;
             float dist2 = dot(to_l, to_l);
             float dist = sqrt(dist2);
@@ -250,10 +258,12 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
                 }
             }
         }
-        // Continuation by the continuous part's sampling: f cos / pdf_fwd_w.
-        float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
+        // Continuation by the continuous part's sampling: f cos / pdf_fwd_w; the direction's
+        // two numbers first in their group, the lobe's after.
+        rng_start_group(rng);
         float u1 = rng_next(rng);
         float u2 = rng_next(rng);
+        float u_lobe = HAS_GLOSSY != 0u ? rng_next(rng) : 0.0;
         vec3 dn;
         if (!continuous_sample(c, ns_f, -d, u_lobe, u1, u2, dn) || dot(dn, ng_f) <= 0.0) {
             PATH_END; // below the surface (shading-normal artefact) or a masked reflection

@@ -3,10 +3,14 @@
 // - Owen-scrambled Sobol' (SOBOL_DIMS > 0): Burley 2020, "Practical Hash-based Owen
 //   Scrambling" — dimensions in groups of four, each group with its own per-pixel index
 //   shuffle and value scramble, so every dimension stays uniform (unbiased) and each group
-//   keeps Sobol's stratification across a pixel's samples. Only the first SOBOL_DIMS
-//   dimensions (the pixel jitter and the first bounces, where stratification lowers the
-//   error most); later ones continue as a hash chain seeded by (pixel, sample index), which
-//   costs a fraction of a scrambled Sobol' number (docs/results.md: Sobol' dimensions).
+//   keeps Sobol's stratification across a pixel's samples. Each sampling decision (the pixel,
+//   a vertex's light sample, its BSDF sample) starts a group of its own (rng_start_group).
+//   Sobol' numbers only for the first SOBOL_DIMS dimensions, or with SOBOL_FIRST_VERTEX (the
+//   default) for the pixel and the path's first vertex (rng_start_vertex), where
+//   stratification lowers the error most; later numbers continue as a hash chain seeded by
+//   (pixel, sample index), which costs a fraction of a scrambled Sobol' number
+//   (docs/results.md: "Sobol' dimensions", "A group of Sobol' dimensions per sampling
+//   decision").
 #ifndef BIDIR_RNG_GLSL
 #define BIDIR_RNG_GLSL
 
@@ -69,6 +73,29 @@ uint rng_next_uint(inout Rng r) {
     }
     r.state = pcg_hash(r.state);
     return r.state;
+}
+
+// The next number starts a group of four Sobol' dimensions. Over a pixel's samples a group's
+// dimensions 0 and 1, and 1 and 2, are each a (0, 2)-sequence, stratified in 2D at every power
+// of two (tests/sampling.rs); dimensions 0 and 2, any pair with 3, and two dimensions of
+// different groups are not. So each decision starts a group and draws its 2D numbers first or
+// after one other (the padding of pbrt-v4's PaddedSobolSampler, in groups of four). Past the
+// Sobol' dimensions nothing changes: the skip stops at SOBOL_DIMS, where rng_next_uint starts
+// the sample's hash chain.
+void rng_start_group(inout Rng r) {
+    if (SOBOL_DIMS > 0u && r.dim < SOBOL_DIMS) {
+        r.dim = min((r.dim + 3u) & ~3u, SOBOL_DIMS);
+    }
+}
+
+// The path reaches its vertex `depth` (1: the first surface it meets). Under
+// SOBOL_FIRST_VERTEX the numbers of its second vertex and later come from the hash chain, so a
+// sample computes Sobol' numbers for the pixel and its first vertex only, however many
+// dimensions that vertex's decisions take (an environment's light sample takes five).
+void rng_start_vertex(inout Rng r, uint depth) {
+    if (SOBOL_DIMS == SOBOL_FIRST_VERTEX && depth >= 2u && r.dim < SOBOL_DIMS) {
+        r.dim = SOBOL_DIMS;
+    }
 }
 
 // Uniform in [0, 1): the top 24 bits of the next value.

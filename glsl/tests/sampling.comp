@@ -14,8 +14,9 @@
 // - SAMPLING_ROUGH_GLASS / SAMPLING_ROUGH_GLASS_EVAL: the rough dielectric (rough_dielectric.glsl).
 // - SAMPLING_ENV: env_sample over the bound environment, out[2i] = (direction, its pdf_w),
 //   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
-// - SAMPLING_RNG: rng.glsl's numbers themselves, for tests/sampling.rs's bit-for-bit
-//   comparison with its CPU twin (the kernel created with the sampler to test).
+// - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
+//   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
+//   created with the sampler to test).
 // Uniform numbers come from rng.glsl (the independent sampler unless the kernel is created
 // with another), as in the integrators.
 #include "bidir_abi.glsl"
@@ -55,13 +56,22 @@ void main() {
     }
     Rng rng = rng_init(i, 0u, pc.seed);
     if (pc.mode == SAMPLING_RNG) {
+        // Sixteen numbers, path vertices and new groups of Sobol' dimensions started among
+        // them (SAMPLING_RNG_VERTEX_STARTS, SAMPLING_RNG_GROUP_STARTS: a bit per number).
         rng = rng_init(i / 8u, floatBitsToUint(input_dirs[i].x), pc.seed);
+        uint vertex = 0u;
         for (uint k = 0u; k < 4u; k++) {
             uvec4 v;
-            v.x = rng_next_uint(rng);
-            v.y = rng_next_uint(rng);
-            v.z = rng_next_uint(rng);
-            v.w = rng_next_uint(rng);
+            for (uint c = 0u; c < 4u; c++) {
+                if ((SAMPLING_RNG_VERTEX_STARTS & (1u << (4u * k + c))) != 0u) {
+                    vertex++;
+                    rng_start_vertex(rng, vertex);
+                }
+                if ((SAMPLING_RNG_GROUP_STARTS & (1u << (4u * k + c))) != 0u) {
+                    rng_start_group(rng);
+                }
+                v[c] = rng_next_uint(rng);
+            }
             result[4u * i + k] = uintBitsToFloat(v);
         }
     } else if (pc.mode == SAMPLING_COSINE) {

@@ -49,9 +49,9 @@ impl IntegratorArgs {
 pub struct SettingsArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u32,
-    /// Random numbers: sobol (Owen-scrambled Sobol' for the first 8 dimensions of a sample,
-    /// the pixel and the first bounce; hashed after) | sobol:N (the first N) | sobol:all |
-    /// independent.
+    /// Random numbers: sobol (Owen-scrambled Sobol' for the pixel and the path's first vertex,
+    /// a group of four dimensions for each sampling decision; hashed after) | sobol:N (the
+    /// first N dimensions) | sobol:all | independent.
     #[arg(long, default_value = "sobol")]
     pub sampler: Sampler,
     /// Most path segments (0: unbounded; Russian roulette ends paths).

@@ -202,10 +202,12 @@ gpu_consts! {
     pub const SPEC_HAS_ALPHA: u32 = 10;
     /// Random numbers: how many leading dimensions of each sample come from Owen-scrambled
     /// Sobol' (glsl/common/rng.glsl); the rest come from a hash chain. SAMPLER_INDEPENDENT
-    /// (0): all from the hash; SOBOL_ALL_DIMS: all from Sobol'.
+    /// (0): all from the hash; SOBOL_ALL_DIMS: all from Sobol'; SOBOL_FIRST_VERTEX: those of
+    /// the pixel and of the path's first vertex, however many its decisions take.
     pub const SPEC_SAMPLER: u32 = 11;
     pub const SAMPLER_INDEPENDENT: u32 = 0;
     pub const SOBOL_ALL_DIMS: u32 = 0xffff_ffff;
+    pub const SOBOL_FIRST_VERTEX: u32 = 0xffff_fffe;
 
     // ---- Bindings and modes: glsl/tests/sampling.comp (tests/sampling.rs) -----------------
     /// Results, vec4 per sample (two per sample for SAMPLING_EMITTER).
@@ -235,8 +237,18 @@ gpu_consts! {
     pub const SAMPLING_ROUGH_GLASS_EVAL: u32 = 8;
     /// rng.glsl itself, under the kernel's SPEC_SAMPLER: invocation i draws the first 16
     /// numbers (rng_next_uint) of pixel i / 8 and sample index `in[i].x` (as bits),
-    /// `out[4i .. 4i + 3]` holding them as bits.
+    /// starting a group of Sobol' dimensions (rng_start_group) before number n where bit n
+    /// of `SAMPLING_RNG_GROUP_STARTS` is set and a path vertex where that of
+    /// `SAMPLING_RNG_VERTEX_STARTS` is; `out[4i .. 4i + 3]` holds them as bits.
     pub const SAMPLING_RNG: u32 = 9;
+    /// The numbers of SAMPLING_RNG before which a group starts: the 3rd, 6th, 7th and 12th
+    /// (under Sobol' everywhere dimension 2 to 4, 7 to 8, 9 to 12 and 17 to 20; with ten
+    /// Sobol' dimensions 9 to 10, where the hash chain starts).
+    pub const SAMPLING_RNG_GROUP_STARTS: u32 = (1 << 2) | (1 << 5) | (1 << 6) | (1 << 11);
+    /// The numbers of SAMPLING_RNG before which the path reaches its next vertex
+    /// (rng_start_vertex; before a group starts there): vertex 1 before the 1st number, vertex
+    /// 2 before the 10th.
+    pub const SAMPLING_RNG_VERTEX_STARTS: u32 = 1 | (1 << 9);
 
     /// 1: persistent trace kernel (Aila & Laine 2009, section 3): a fixed number of workgroups
     /// whose subgroups fetch batches of rays from BIND_RAY_COUNTER until none are left.

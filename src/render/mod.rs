@@ -117,31 +117,28 @@ impl std::str::FromStr for Integrator {
 pub enum Sampler {
     /// Independent uniform numbers from a counter-based hash.
     Independent,
-    /// Owen-scrambled Sobol' points (Burley 2020), four dimensions per stratified group, for
-    /// the first [`Sampler::DEFAULT_SOBOL_DIMS`] dimensions of a sample; the rest hashed.
+    /// Owen-scrambled Sobol' points (Burley 2020), four dimensions per stratified group, each
+    /// sampling decision starting a group, for the pixel and the path's first vertex (its
+    /// light sample and BSDF sample, however many dimensions they take); the rest hashed.
+    /// Measured best at equal time for pt-nee and bdpt (docs/results.md, "Sobol' dimensions"
+    /// and "A group of Sobol' dimensions per sampling decision").
     Sobol,
-    /// Sobol' for the first `n` dimensions (`u32::MAX`: all), the rest hashed.
+    /// Sobol' for the first `n` dimensions (`u32::MAX`: all; at most
+    /// [`Sampler::MAX_SOBOL_DIMS`] otherwise), the rest hashed.
     SobolDims(u32),
 }
 
 impl Sampler {
-    /// Leading Sobol' dimensions of `Sampler::Sobol`: the pixel jitter and the first bounce
-    /// (measured best at equal time for pt-nee and bdpt: docs/results.md, "Sobol' dimensions").
-    pub const DEFAULT_SOBOL_DIMS: u32 = 8;
+    /// The most leading Sobol' dimensions `sobol:N` takes (a sample draws far fewer).
+    pub const MAX_SOBOL_DIMS: u32 = 1 << 16;
 
-    /// Leading dimensions of each sample drawn from Sobol' (0: none).
-    pub fn sobol_dims(self) -> u32 {
-        match self {
-            Sampler::Independent => 0,
-            Sampler::Sobol => Self::DEFAULT_SOBOL_DIMS,
-            Sampler::SobolDims(n) => n,
-        }
-    }
-
+    /// The kernels' SPEC_SAMPLER (glsl/common/rng.glsl).
     pub fn spec(self) -> crate::vk::Spec {
-        let value = match self.sobol_dims() {
-            u32::MAX => crate::gpu::abi::SOBOL_ALL_DIMS,
-            n => n,
+        let value = match self {
+            Sampler::Independent => crate::gpu::abi::SAMPLER_INDEPENDENT,
+            Sampler::Sobol => crate::gpu::abi::SOBOL_FIRST_VERTEX,
+            Sampler::SobolDims(u32::MAX) => crate::gpu::abi::SOBOL_ALL_DIMS,
+            Sampler::SobolDims(n) => n,
         };
         crate::vk::Spec { id: crate::gpu::abi::SPEC_SAMPLER, value }
     }
@@ -165,8 +162,11 @@ impl std::str::FromStr for Sampler {
             "sobol" => Ok(Sampler::Sobol),
             "sobol:all" => Ok(Sampler::SobolDims(u32::MAX)),
             _ => match s.strip_prefix("sobol:").map(str::parse::<u32>) {
-                Some(Ok(n)) if n >= 1 => Ok(Sampler::SobolDims(n)),
-                _ => Err(format!("unknown sampler '{s}' (independent | sobol | sobol:N with N >= 1 | sobol:all)")),
+                Some(Ok(n)) if (1..=Sampler::MAX_SOBOL_DIMS).contains(&n) => Ok(Sampler::SobolDims(n)),
+                _ => Err(format!(
+                    "unknown sampler '{s}' (independent | sobol | sobol:N with 1 <= N <= {} | sobol:all)",
+                    Sampler::MAX_SOBOL_DIMS
+                )),
             },
         }
     }
