@@ -645,6 +645,56 @@ mod rng_twin {
     }
 }
 
+/// index_below (rng.glsl), which picks an emitter, an environment cell, a punctual light and a
+/// light vertex: the index is the high word of u n for every u and n (so each index below n
+/// takes floor or ceil of 2^32 / n of the u's, every one reachable however large n), and what
+/// is left of u within the index is the low word over 2^32 to 24 bits. The inputs: the first
+/// and last u of indices spread over [0, n) for n past 2^24 (an 8192 x 4096 map with its sun,
+/// a 4000 x 1999 one, half of 2^32) and small n, where an index from a float in [0, 1), with
+/// its 24 bits, misses half the cells of the first map and gives the second's cells one to
+/// three values each; and random pairs.
+#[test]
+fn every_index_below_n_is_drawn_in_proportion() {
+    let ctx = gpu();
+    {
+        let s = SamplingKernel::new(&ctx);
+        let mut pcg = common::Pcg::new(29);
+        let mut pairs: Vec<(u32, u32)> = Vec::new();
+        for n in [8192 * 4096 + 1, 4000 * 1999, 1 << 31, (1 << 24) + 3, 1000, 3, 1] {
+            for j in 0..64u64 {
+                let spread = (j * (n as u64 - 1) / 63) as u32;
+                let k = if j % 2 == 1 { (spread | 1).min(n - 1) } else { spread };
+                // The first u of index k, ceil(k 2^32 / n), and the last, one before k + 1's.
+                let first = ((k as u64) << 32).div_ceil(n as u64);
+                let last = (((k as u64 + 1) << 32).div_ceil(n as u64) - 1).min(u32::MAX as u64);
+                pairs.push((first as u32, n));
+                pairs.push((last as u32, n));
+            }
+            pairs.push((u32::MAX, n));
+            pairs.push((0, n));
+        }
+        for _ in 0..2048 {
+            pairs.push((pcg.next_u32(), pcg.next_u32().max(1)));
+        }
+        let input: Vec<Vec4> = pairs.iter().map(|&(u, n)| Vec4::new(f32::from_bits(u), f32::from_bits(n), 0.0, 0.0)).collect();
+        let input = ctx.upload_buffer("sampling.index_pairs", &input).unwrap();
+        let push = abi::SamplingTestPush { mode: abi::SAMPLING_INDEX, count: pairs.len() as u32, seed: 1, ..Default::default() };
+        let out = s.run(push, 1, Some(&input));
+        let mut odd_cells = 0;
+        for (&(u, n), v) in pairs.iter().zip(&out) {
+            let product = u as u64 * n as u64;
+            let (index, rest) = ((product >> 32) as u32, ((product as u32) >> 8) as f32 / 16_777_216.0);
+            assert!(index < n, "u {u:#x}, n {n}: index {index} past n");
+            assert_eq!(v.x.to_bits(), index, "u {u:#x}, n {n}: index_below gives {}, the high word of u n is {index}", v.x.to_bits());
+            assert_eq!(v.y, rest, "u {u:#x}, n {n}: what is left of u is {}, not {rest}", v.y);
+            odd_cells += (n == 8192 * 4096 + 1 && index % 2 == 1) as u32;
+        }
+        // The inputs reach odd cells of the largest map, which a 24-bit float never does.
+        assert!(odd_cells >= 32, "only {odd_cells} odd cells of the 8192 x 4096 map among the inputs");
+    }
+    finish(ctx);
+}
+
 /// Why each sampling decision starts a group (rng_start_group) and draws its 2D numbers
 /// first or after one other: over a pixel's first 4^m samples (m = 2 to 5), a group's
 /// dimensions 0 and 1, and 1 and 2, put one point in each of the 2^m x 2^m cells of the unit

@@ -113,7 +113,7 @@
         if (punctual_light) {
             // A delta light: BSDF sampling cannot find it (w_light = 0); the camera side
             // weighs emission against direct sampling at cosine 1 (eqs. 45, 49).
-            PunctualSample ps = punctual_sample(rng_next(rng), s.p);
+            PunctualSample ps = punctual_sample(rng_next_uint(rng), s.p);
             float cos_s = dot(ns_f, ps.w);
             if (cos_s > 0.0 && dot(ng_f, ps.w) > 0.0 && max3(ps.li) > 0.0) {
                 float bsdf_dir_pdf_w, bsdf_rev_pdf_w;
@@ -127,7 +127,7 @@
         } else if (env_light) {
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);
-            float u_cell = rng_next(rng);
+            uint u_cell = rng_next_uint(rng);
             EnvSample es = env_sample(u_cell, rng_next(rng), u1, u2);
             float cos_s = dot(ns_f, es.w);
             if (cos_s > 0.0 && dot(ng_f, es.w) > 0.0 && es.pdf_w > 0.0) {
@@ -145,7 +145,7 @@
         } else if (pc.emitter_count > 0u) {
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);
-            LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), u1, u2);
+            LightSample ls = sample_emitter(pc.emitter_count, rng_next_uint(rng), u1, u2);
             ls.pick *= triangle_light_pick(HAS_PUNCTUAL != 0u);
             vec3 to_l = ls.p - s.p;
             float dist2 = dot(to_l, to_l);

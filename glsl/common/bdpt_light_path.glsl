@@ -28,7 +28,8 @@ bool light_path_start(inout Rng rng, out vec3 o, out vec3 d, out vec3 beta, out 
     if (from_punctual) {
         // A delta light (eqs. 48-50): dVCM = mis(direct pdf / emission pdf), dVC = 0.
         uint count = env.punctual_count;
-        GpuPunctual l = punctual[min(uint(rng_next(rng) * float(count)), count - 1u)];
+        float rest;
+        GpuPunctual l = punctual[index_below(rng_next_uint(rng), count, rest)];
         float pick = env.punctual_pick / float(count);
         float u1 = rng_next(rng), u2 = rng_next(rng);
         float emission_pdf_w;
@@ -52,7 +53,10 @@ bool light_path_start(inout Rng rng, out vec3 o, out vec3 d, out vec3 beta, out 
     } else if (from_env) {
         // From the environment: a direction from the map, an origin on the disk facing it
         // (emission pdf = pick * pdf_w / disk area, cosine 1; Georgiev 2012, section 5.1).
-        EnvSample es = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+        uint u_cell = rng_next_uint(rng);
+        float u_coin = rng_next(rng);
+        float u1 = rng_next(rng);
+        EnvSample es = env_sample(u_cell, u_coin, u1, rng_next(rng));
         float direct_pdf_w = env.pick * es.pdf_w;
         float emission_pdf_w = direct_pdf_w / env.disk_area;
         if (!(emission_pdf_w > 0.0)) {
@@ -65,7 +69,9 @@ bool light_path_start(inout Rng rng, out vec3 o, out vec3 d, out vec3 beta, out 
         d_vc = mis(1.0 / emission_pdf_w);
     } else {
         // The emitted ray: point by power (pdf_a = lum / total), direction cosine about the front.
-        LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), rng_next(rng), rng_next(rng));
+        uint u_pick = rng_next_uint(rng);
+        float u1 = rng_next(rng);
+        LightSample ls = sample_emitter(pc.emitter_count, u_pick, u1, rng_next(rng));
         d = sample_cosine_hemisphere(ls.n, rng_next(rng), rng_next(rng));
         float cos0 = dot(d, ls.n);
         float direct_pdf_a = triangle_light_pick(HAS_PUNCTUAL != 0u) * luminance(ls.le) / pc.emitter_weight;

@@ -66,9 +66,10 @@ EnvSample env_lookup(vec3 w) {
 
 // A direction from the map: a cell by the alias table (u_cell chooses the cell, u_coin its
 // alias), then (u1, u2) uniform in solid angle inside the texel, or inside the sun's disk.
-EnvSample env_sample(float u_cell, float u_coin, float u1, float u2) {
+EnvSample env_sample(uint u_cell, float u_coin, float u1, float u2) {
     uint cells = env.cells;
-    uint i = min(uint(u_cell * float(cells)), cells - 1u);
+    float rest;
+    uint i = index_below(u_cell, cells, rest); // every cell of a map past 2^24 texels too
     GpuAlias a = env_alias[i];
     uint c = u_coin < a.prob ? i : a.alias;
     if (c >= env.width * env.height) {

@@ -16,18 +16,20 @@ struct LightSample {
     vec2 bary;      // barycentric weights of its vertices 1 and 2 at p
 };
 
-// O(1) alias-table choice from one uniform number (its fraction picks within the cell).
-uint choose_emitter(float u, uint count) {
-    float x = u * float(count);
-    uint i = min(uint(x), count - 1u);
+// O(1) alias-table choice from 32 uniform bits: the cell from the high word of u count, the
+// choice within it from the low word (index_below; a float's 24 bits would give the cells
+// unequal shares, and the choice within a cell few steps, once there are many emitters).
+uint choose_emitter(uint u, uint count) {
+    float rest;
+    uint i = index_below(u, count, rest);
     GpuAlias a = alias_table[i];
-    return (x - float(i)) < a.prob ? i : a.alias;
+    return rest < a.prob ? i : a.alias;
 }
 
 // Uniform point on the chosen triangle by the square-root warp (Turk, "Generating Random
 // Points in Triangles", Graphics Gems, 1990): (1 - su, u2 su, su (1 - u2)) is uniform over
 // the barycentric simplex for su = sqrt(u1); any permutation of it is too.
-LightSample sample_emitter(uint count, float u0, float u1, float u2) {
+LightSample sample_emitter(uint count, uint u0, float u1, float u2) {
     uint index = choose_emitter(u0, count);
     GpuEmitter e = emitters[index];
     float su = sqrt(u1);

@@ -208,7 +208,7 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
         bool punctual_light = nee && HAS_PUNCTUAL != 0u && !env_light && u_kind < (HAS_ENV != 0u ? env.pick : 0.0) + env.punctual_pick;
         if (punctual_light) {
             // A delta light: BSDF sampling never finds it, so no MIS.
-            PunctualSample ps = punctual_sample(rng_next(rng), s.p);
+            PunctualSample ps = punctual_sample(rng_next_uint(rng), s.p);
             float cos_s = dot(ps.w, ns_f);
             if (cos_s > 0.0 && dot(ps.w, ng_f) > 0.0 && max3(ps.li) > 0.0) {
                 // The contribution first, so only it stays live across the shadow ray.
@@ -222,7 +222,7 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
         } else if (env_light) {
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);
-            float u_cell = rng_next(rng);
+            uint u_cell = rng_next_uint(rng);
             EnvSample es = env_sample(u_cell, rng_next(rng), u1, u2);
             float cos_s = dot(es.w, ns_f);
             if (cos_s > 0.0 && dot(es.w, ng_f) > 0.0 && es.pdf_w > 0.0) {
@@ -238,7 +238,7 @@ bool path_scatter(inout PathState path, TraceHit h, inout Rng rng, inout uvec2 s
         } else if (nee) {
             float u1 = rng_next(rng);
             float u2 = rng_next(rng);
-            LightSample ls = sample_emitter(pc.emitter_count, rng_next(rng), u1, u2);
+            LightSample ls = sample_emitter(pc.emitter_count, rng_next_uint(rng), u1, u2);
             vec3 to_l = ls.p - s.p;
             float dist2 = dot(to_l, to_l);
             float dist = sqrt(dist2);

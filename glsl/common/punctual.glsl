@@ -40,9 +40,10 @@ struct PunctualSample {
 };
 
 // Light sampling: a punctual light uniformly (u), seen from point p.
-PunctualSample punctual_sample(float u, vec3 p) {
+PunctualSample punctual_sample(uint u, vec3 p) {
     uint count = env.punctual_count;
-    GpuPunctual l = punctual[min(uint(u * float(count)), count - 1u)];
+    float rest;
+    GpuPunctual l = punctual[index_below(u, count, rest)];
     PunctualSample s;
     s.pick = 1.0 / float(count);
     if (l.kind == PUNCTUAL_DIRECTIONAL) {

@@ -103,12 +103,23 @@ float rng_next(inout Rng r) {
     return float(rng_next_uint(r) >> 8u) * (1.0 / 16777216.0);
 }
 
-// Uniform integer in [0, n): the high word of a 32 x 32-bit product (Lemire 2019 without the
-// rejection step; the bias is below n / 2^32, where a float's 24 bits would give n / 2^24).
-uint rng_below(inout Rng r, uint n) {
+// An index in [0, n) from 32 uniform bits u, and what is left of u within the index (uniform
+// in [0, 1) given the index, in steps of n / 2^32): the high and low words of the 32 x 32-bit
+// product u n (Lemire 2019 without the rejection step). Each index takes floor or ceil of
+// 2^32 / n of u's values, a relative error below n / 2^32; an index computed from a float in
+// [0, 1), whose 24 bits give 2^24 values, misses indices past 2^24 and is off by up to
+// n / 2^24 below (tests/sampling.rs, `every_index_below_n_is_drawn_in_proportion`).
+uint index_below(uint u, uint n, out float rest) {
     uint hi, lo;
-    umulExtended(rng_next_uint(r), n, hi, lo);
+    umulExtended(u, n, hi, lo);
+    rest = float(lo >> 8u) * (1.0 / 16777216.0);
     return hi;
+}
+
+// Uniform integer in [0, n) (index_below).
+uint rng_below(inout Rng r, uint n) {
+    float rest;
+    return index_below(rng_next_uint(r), n, rest);
 }
 
 #endif

@@ -14,6 +14,8 @@
 // - SAMPLING_ROUGH_GLASS / SAMPLING_ROUGH_GLASS_EVAL: the rough dielectric (rough_dielectric.glsl).
 // - SAMPLING_ENV: env_sample over the bound environment, out[2i] = (direction, its pdf_w),
 //   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
+// - SAMPLING_INDEX: index_below(u, n) for u, n = the bits of in[i].x, in[i].y:
+//   out[i] = (the index as bits, what is left of u within it).
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
@@ -81,7 +83,7 @@ void main() {
     } else if (pc.mode == SAMPLING_COSINE_PDF) {
         result[i] = vec4(cosine_hemisphere_pdf(dot(pc.a.xyz, input_dirs[i].xyz)), 0.0, 0.0, 0.0);
     } else if (pc.mode == SAMPLING_EMITTER) {
-        float u0 = rng_next(rng);
+        uint u0 = rng_next_uint(rng);
         float u1 = rng_next(rng);
         float u2 = rng_next(rng);
         LightSample s = sample_emitter(pc.emitter_count, u0, u1, u2);
@@ -137,9 +139,16 @@ void main() {
         result[2u * i + 1u] = vec4(rough_dielectric_f(a, b, eta_s, alpha, true), rough_dielectric_f(a, b, eta_s, alpha, false),
                                    rough_dielectric_pdf_w(a, b, eta_s, alpha), rough_dielectric_rev_pdf_w(a, b, eta_s, alpha));
     } else if (pc.mode == SAMPLING_ENV) {
-        EnvSample e = env_sample(rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng));
+        uint u_cell = rng_next_uint(rng);
+        float u_coin = rng_next(rng);
+        float u1 = rng_next(rng);
+        EnvSample e = env_sample(u_cell, u_coin, u1, rng_next(rng));
         EnvSample l = env_lookup(e.w);
         result[2u * i] = vec4(e.w, e.pdf_w);
         result[2u * i + 1u] = vec4(l.le, l.pdf_w);
+    } else if (pc.mode == SAMPLING_INDEX) {
+        float rest;
+        uint index = index_below(floatBitsToUint(input_dirs[i].x), floatBitsToUint(input_dirs[i].y), rest);
+        result[i] = vec4(uintBitsToFloat(index), rest, 0.0, 0.0);
     }
 }

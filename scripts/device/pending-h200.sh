@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 31 (not yet run: no machine was lent): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table).
+# Parts of session 31 (not yet run: no machine was lent): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
 # Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off); s30e (not yet run: `--share-leaves`, the leaf phase's triangle tests shared among the lanes, against the lockstep kernel and dynamic fetch without it).
 # Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel); s29i (a measurement build, BIDIR_EXP_BITS: the origin in shared memory, closest-hit rays' one loop); s29j (the lockstep kernel with both, against 3c1fc4e).
 # Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures); s28g (a measurement build: BIDIR_EXP_NO_SECOND, obvhs' second reinsertion pass left out for the collapse's binary tree) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
@@ -31,6 +31,22 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s31b)
+  # Session 31 (not yet run): alias-table cells from the high word of a 32-bit product
+  # (index_below) against the 24-bit float before (.device/bidir-base, b7eee84), which never
+  # draws half the cells of an 8192 x 4096 map: a white plane (albedo 0.8) under a smooth sky
+  # of that size (radiance 0.05 + 0.05 cos theta, .device/scenes/env8k, made by
+  # scripts/device/make_env8k.py), seen from above; its radiance is 0.8 / pi x 0.2618 = 0.066667
+  # (const.exr), so `mean ratio` is the bias. pt (BSDF sampling only) as the control.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  E=.device/scenes/env8k
+  T="timeout -k 5 120"
+  for b in "$B" "$BASE"; do
+    for i in pt-nee pt bdpt; do
+      echo "== env8k $i $(basename $b)"; $T "$b" render $E/plane.obj --env $E/sky8k-smooth.exr --eye 0,2,0.01 --target 0,0,0 --fov 30 --width 128 --height 128 --integrator $i --spp 256 --reference $E/const.exr -o /tmp/t.exr 2>&1 | grep -iE "spp in|rmse|error"
+    done
+  done
+  ;;
 s31a)
   # Session 31 (not yet run: no machine was lent): each sampling decision in a group of Sobol'
   # dimensions of its own, Sobol' for the pixel and the first vertex (rng_start_group,

@@ -241,6 +241,9 @@ gpu_consts! {
     /// of `SAMPLING_RNG_GROUP_STARTS` is set and a path vertex where that of
     /// `SAMPLING_RNG_VERTEX_STARTS` is; `out[4i .. 4i + 3]` holds them as bits.
     pub const SAMPLING_RNG: u32 = 9;
+    /// index_below(u, n) (rng.glsl) for `in[i].x`, `in[i].y` as bits: `out[i]` = (the index
+    /// as bits, what is left of u within it).
+    pub const SAMPLING_INDEX: u32 = 10;
     /// The numbers of SAMPLING_RNG before which a group starts: the 3rd, 6th, 7th and 12th
     /// (under Sobol' everywhere dimension 2 to 4, 7 to 8, 9 to 12 and 17 to 20; with ten
     /// Sobol' dimensions 9 to 10, where the hash chain starts).
