@@ -172,6 +172,34 @@ impl std::str::FromStr for Sampler {
     }
 }
 
+#[cfg(test)]
+mod sampler_tests {
+    use super::Sampler;
+    use crate::gpu::abi;
+
+    /// Each sampler's name reads back as itself, and its specialisation constant is the one
+    /// rng.glsl reads: the default Sobol' for the pixel and the first vertex, `sobol:all`
+    /// everywhere, `sobol:N` the first N dimensions; `sobol:N` past the cap (where it could
+    /// meet the other two's values) or 0 is refused.
+    #[test]
+    fn samplers_read_back_and_give_their_specialisation() {
+        for (sampler, spec) in [
+            (Sampler::Independent, abi::SAMPLER_INDEPENDENT),
+            (Sampler::Sobol, abi::SOBOL_FIRST_VERTEX),
+            (Sampler::SobolDims(u32::MAX), abi::SOBOL_ALL_DIMS),
+            (Sampler::SobolDims(12), 12),
+            (Sampler::SobolDims(Sampler::MAX_SOBOL_DIMS), Sampler::MAX_SOBOL_DIMS),
+        ] {
+            assert_eq!(sampler.name().parse::<Sampler>(), Ok(sampler), "{}", sampler.name());
+            assert_eq!(sampler.spec().value, spec, "{}", sampler.name());
+            assert_eq!(sampler.spec().id, abi::SPEC_SAMPLER);
+        }
+        for bad in ["sobol:0", "sobol:65537", "sobol:4294967294", "sobol:", "halton"] {
+            assert!(bad.parse::<Sampler>().is_err(), "{bad} was accepted");
+        }
+    }
+}
+
 /// How to render.
 #[derive(Clone, Debug)]
 pub struct RenderSettings {
