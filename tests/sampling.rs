@@ -698,7 +698,7 @@ fn every_index_below_n_is_drawn_in_proportion() {
 /// Why each sampling decision starts a group (rng_start_group) and draws its 2D numbers
 /// first or after one other: over a pixel's first 4^m samples (m = 2 to 5), a group's
 /// dimensions 0 and 1, and 1 and 2, put one point in each of the 2^m x 2^m cells of the unit
-/// square for every pixel (each pair a (0, 2)-sequence, as Owen scrambling keeps it), while
+/// square for each of 16 pixels (each pair a (0, 2)-sequence, as Owen scrambling keeps it), while
 /// dimensions 2 and 3 of a group, or two dimensions in different groups, leave cells empty at
 /// some m. Computed by rng.glsl's CPU twin, which the test below holds to the kernels bit for
 /// bit.
