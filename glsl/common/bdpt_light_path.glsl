@@ -28,8 +28,7 @@ bool light_path_start(inout Rng rng, out vec3 o, out vec3 d, out vec3 beta, out 
     if (from_punctual) {
         // A delta light (eqs. 48-50): dVCM = mis(direct pdf / emission pdf), dVC = 0.
         uint count = env.punctual_count;
-        float rest;
-        GpuPunctual l = punctual[index_below(rng_next_uint(rng), count, rest)];
+        GpuPunctual l = punctual[index_below(rng_next_uint(rng), count)];
         float pick = env.punctual_pick / float(count);
         float u1 = rng_next(rng), u2 = rng_next(rng);
         float emission_pdf_w;

@@ -68,8 +68,7 @@ EnvSample env_lookup(vec3 w) {
 // alias), then (u1, u2) uniform in solid angle inside the texel, or inside the sun's disk.
 EnvSample env_sample(uint u_cell, float u_coin, float u1, float u2) {
     uint cells = env.cells;
-    float rest;
-    uint i = index_below(u_cell, cells, rest); // every cell of a map past 2^24 texels too
+    uint i = index_below(u_cell, cells); // every cell of a map past 2^24 texels too
     GpuAlias a = env_alias[i];
     uint c = u_coin < a.prob ? i : a.alias;
     if (c >= env.width * env.height) {

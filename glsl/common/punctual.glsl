@@ -42,8 +42,7 @@ struct PunctualSample {
 // Light sampling: a punctual light uniformly (u), seen from point p.
 PunctualSample punctual_sample(uint u, vec3 p) {
     uint count = env.punctual_count;
-    float rest;
-    GpuPunctual l = punctual[index_below(u, count, rest)];
+    GpuPunctual l = punctual[index_below(u, count)];
     PunctualSample s;
     s.pick = 1.0 / float(count);
     if (l.kind == PUNCTUAL_DIRECTIONAL) {

@@ -116,10 +116,15 @@ uint index_below(uint u, uint n, out float rest) {
     return hi;
 }
 
+// The index alone.
+uint index_below(uint u, uint n) {
+    float rest;
+    return index_below(u, n, rest);
+}
+
 // Uniform integer in [0, n) (index_below).
 uint rng_below(inout Rng r, uint n) {
-    float rest;
-    return index_below(rng_next_uint(r), n, rest);
+    return index_below(rng_next_uint(r), n);
 }
 
 #endif

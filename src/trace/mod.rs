@@ -54,7 +54,7 @@ pub struct TraceOptions {
     /// 4-wide layout, speculative lockstep loops (one ray per invocation, or dynamic fetch), no
     /// alpha masks: the leaf phase's triangle tests shared among the subgroup's lanes, the lanes
     /// without a leaf testing the next triangles of those with one (trace_bvh4_share.comp;
-    /// glsl/common/traverse.glsl, TRACE_SHARE_LEAVES). Off by default.
+    /// glsl/common/traverse.glsl, TRAVERSAL_LEAVES_SHARED). Off by default.
     pub share_leaves: bool,
     /// 4-wide layout, one ray per invocation in lockstep loops (not persistent, no alpha masks):
     /// the kernel that keeps each ray's origin in shared memory for its leaf tests
