@@ -7,7 +7,8 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 31 (not yet run: no machine was lent): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
+# Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (a measurement build: a launch warm, and two launches with and without a barrier).
+# Parts of session 31 (run in session 32): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
 # Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off); s30e (not yet run: `--share-leaves`, the leaf phase's triangle tests shared among the lanes, against the lockstep kernel and dynamic fetch without it).
 # Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel); s29i (a measurement build, BIDIR_EXP_BITS: the origin in shared memory, closest-hit rays' one loop); s29j (the lockstep kernel with both, against 3c1fc4e).
 # Parts run in session 28: s28a (the 4-wide collapse of least surface area cost against the greedy one, with a measurement build's variants BIDIR_EXP_KEEP_LEAVES and BIDIR_EXP_ORDER, not committed); s28b (again, other cameras, the integrators); s28c (a measurement build of 2548db0 with a leaf's cost, BIDIR_EXP_LEAF, and leaf sizes); s28d (the default with a leaf's cost, sah:0.5,0.5); s28e (diffuse rays' refill count, leaf costs 0.75 and 1); s28f (7567206: the Cornell box's bdpt and pt-nee with either collapse, issue #17's figures); s28g (a measurement build: BIDIR_EXP_NO_SECOND, obvhs' second reinsertion pass left out for the collapse's binary tree) (docs/traversal.md, "The 4-wide collapse of least surface area cost").
@@ -31,6 +32,99 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s32d)
+  # Session 32 (a measurement build, .device/bidir-exp.gz, not committed): what the ~66 us a
+  # 1920 x 1080 launch costs beyond its rays is (s32c: 960 x 540 0.137 ms, 1080p 0.348, 4K
+  # 1.195). BIDIR_EXP_TWICE: w = an untimed launch of the same rays just before the timed one
+  # (the tree warm in L2), c = two launches timed without a barrier between them (the second's
+  # start fills the first's end), s = two launches with the barrier. CameraMain quality 5,
+  # lockstep (two runs) and --refill 24 (one). Then BIDIR_EXP_NT=1: the trace kernels' ray loads
+  # and hit stores marked Nontemporal in their SPIR-V (streamed past L2, if the driver
+  # honours it), two runs, and their machine code (nvcache-nt.tgz).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  X=$PWD/.device/bidir-exp
+  T="timeout -k 5 60"
+  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
+  for r in 1 2; do
+    for e in "" w c s; do
+      echo "== lockstep twice=$e"; BIDIR_EXP_TWICE=$e $T "$X" bench traversal "$SP" $Q 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  for e in "" w c s; do
+    echo "== refill 24 twice=$e"; BIDIR_EXP_TWICE=$e $T "$X" bench traversal "$SP" $Q --refill 24 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  for r in 1 2; do
+    for c in "" "--refill 24"; do
+      echo "== nontemporal rays and hits $c"; BIDIR_EXP_NT=1 $T "$X" bench traversal "$SP" $Q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    done
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  BIDIR_EXP_NT=1 __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$X" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
+  tar czf "$OUT/nvcache-nt.tgz" -C $D .
+  ;;
+s32c)
+  # Session 32: launch settings around issue #17's figures, CameraMain quality 5, two runs
+  # interleaved: diffuse rays with dynamic fetch at refill counts 16-30 and with as many
+  # persistent workgroups as can be resident (132 x 36 warps / 2 = 2,376) or twice that,
+  # against the default 4,224; primary rays with two rays per invocation in the lockstep kernel, and at 4 and 1/4 the
+  # pixels (what a launch's start and end cost).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
+  for r in 1 2; do
+    for c in "--refill 24" "--refill 16" "--refill 20" "--refill 26" "--refill 30" "--refill 24 --persistent-groups 2376" "--refill 24 --persistent-groups 4752"; do
+      echo "== diffuse $c"; $T "$B" bench traversal "$SP" $Q --rays diffuse $c 2>&1 | grep -E "^diffuse "
+    done
+    for c in "" "--rays-per-invocation 2" "--width 3840 --height 2160" "--width 960 --height 540"; do
+      echo "== primary lockstep $c"; $T "$B" bench traversal "$SP" $Q --rays primary $c 2>&1 | grep -E "^primary "
+    done
+  done
+  ;;
+s32b)
+  # Session 32 (a measurement build, .device/bidir-exp.gz, not committed: BIDIR_EXP_LAYOUT
+  # permutes the 4-wide node's 16-byte slots at upload and the kernels read them through a
+  # flat vec4 view: 0 as now [xlo xhi ylo yhi zlo zhi C R], 1 [xlo xhi ylo yhi zlo C zhi R],
+  # 2 [xlo C xhi ylo yhi zlo zhi R]): the compiler issues the children's load after the planes
+  # have come back, and in the committed layout they sit in a 32-byte sector of their own, a
+  # second trip to L2 in each node step; with 1 or 2 a plane load fetches their sector too.
+  # CameraMain quality 5, lockstep and --refill 24, the committed build as control, two runs
+  # interleaved; then the machine code of layouts 1 and 2 (nvcache-1.tgz, nvcache-2.tgz).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  X=$PWD/.device/bidir-exp
+  T="timeout -k 5 60"
+  for r in 1 2; do
+    for c in "" "--refill 24"; do
+      echo "== committed $c"; $T "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      for l in 0 1 2; do
+        echo "== layout $l $c"; BIDIR_EXP_LAYOUT=$l $T "$X" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+      done
+    done
+  done
+  for l in 1 2; do
+    D=/tmp/nvcache-$l; rm -rf $D; mkdir -p $D
+    for c in "" "--refill 24"; do
+      BIDIR_EXP_LAYOUT=$l __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$X" bench traversal --bvh bvh4 --leaf-size 3 $c --reps 5 --warmup 0 > /dev/null 2>&1
+    done
+    tar czf "$OUT/nvcache-$l.tgz" -C $D .
+  done
+  ;;
+s32a)
+  # Session 32: the machine code of the 4-wide trace kernels as the driver compiles them now
+  # (one ray per invocation in lockstep, trace_bvh4_lockstep.comp; dynamic fetch at --refill
+  # 24, trace_bvh4.comp): the shader disk cache comes back as $OUT/nvcache.tgz for
+  # scripts/device/sass.py; then part s31a.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  for c in "" "--refill 24"; do
+    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 120 "$B" bench traversal "$SP" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 4 $c 2>&1 | grep -E "^(primary|shadow|diffuse) |Register"
+  done
+  tar czf "$OUT/nvcache.tgz" -C $D .
+  bash "$0" s31a
+  ;;
 s31b)
   # Session 31 (not yet run): alias-table cells from the high word of a 32-bit product
   # (index_below) against the 24-bit float before (.device/bidir-base, b7eee84), which never
