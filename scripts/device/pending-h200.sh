@@ -38,7 +38,7 @@ s32d)
   # 1.195). BIDIR_EXP_TWICE: w = an untimed launch of the same rays just before the timed one
   # (the tree warm in L2), c = two launches timed without a barrier between them (the second's
   # start fills the first's end), s = two launches with the barrier. CameraMain quality 5,
-  # lockstep (two runs) and --refill 24 (one). Then BIDIR_EXP_NT=1: the trace kernels' ray loads
+  # lockstep, two runs. Then BIDIR_EXP_NT=1: the trace kernels' ray loads
   # and hit stores marked Nontemporal in their SPIR-V (streamed past L2, if the driver
   # honours it), two runs, and their machine code (nvcache-nt.tgz).
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
@@ -50,9 +50,6 @@ s32d)
     for e in "" w c s; do
       echo "== lockstep twice=$e"; BIDIR_EXP_TWICE=$e $T "$X" bench traversal "$SP" $Q 2>&1 | grep -E "^(primary|shadow|diffuse) "
     done
-  done
-  for e in "" w c s; do
-    echo "== refill 24 twice=$e"; BIDIR_EXP_TWICE=$e $T "$X" bench traversal "$SP" $Q --refill 24 2>&1 | grep -E "^(primary|shadow|diffuse) "
   done
   for r in 1 2; do
     for c in "" "--refill 24"; do
