@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (a measurement build: a launch warm, and two launches with and without a barrier).
+# Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (not run: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
 # Parts of session 31 (run in session 32): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
 # Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off); s30e (not yet run: `--share-leaves`, the leaf phase's triangle tests shared among the lanes, against the lockstep kernel and dynamic fetch without it).
 # Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel); s29i (a measurement build, BIDIR_EXP_BITS: the origin in shared memory, closest-hit rays' one loop); s29j (the lockstep kernel with both, against 3c1fc4e).
@@ -33,7 +33,8 @@ mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
 s32d)
-  # Session 32 (a measurement build, .device/bidir-exp.gz, not committed): what the ~66 us a
+  # Session 32 (not run: no machine could be started before the device budget ran out; a
+  # measurement build, .device/bidir-exp.gz, from scripts/device/s32d.patch): what the ~66 us a
   # 1920 x 1080 launch costs beyond its rays is (s32c: 960 x 540 0.137 ms, 1080p 0.348, 4K
   # 1.195). BIDIR_EXP_TWICE: w = an untimed launch of the same rays just before the timed one
   # (the tree warm in L2), c = two launches timed without a barrier between them (the second's
