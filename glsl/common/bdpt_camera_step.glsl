@@ -199,7 +199,7 @@
             // join's choice (joins / stored).
             float inv_q = float(lc.y) / float(joins);
             for (uint j = 0u; j < joins; j++) {
-                uint slot = full ? j : min(uint(rng_next(rng) * float(lc.x)), lc.x - 1u);
+                uint slot = full ? j : rng_below(rng, lc.x);
                 LightVertex y = load_light_vertex(base + slot);
                 if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                     continue;

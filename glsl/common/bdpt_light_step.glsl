@@ -49,7 +49,7 @@
         vec3 beta_f = HAS_GLOSSY != 0u || VCM_MERGES ? beta : beta * c.diffuse / PI;
         // Reservoir: keep the seen-th vertex with probability L / seen.
         seen++;
-        uint slot = seen <= pc.light_path_len ? seen - 1u : uint(rng_next(rng) * float(seen));
+        uint slot = seen <= pc.light_path_len ? seen - 1u : rng_below(rng, seen);
         if (slot < pc.light_path_len) {
             store_light_vertex(base + slot, LightVertex(s.p, d_vcm, ns_f, d_vc, ng_f, c.pick, wi, float(depth), beta_f, s.front ? 0u : 1u, s.uv, s.material, d_vm));
             stored = min(seen, pc.light_path_len);
