@@ -695,6 +695,17 @@ fn every_index_below_n_is_drawn_in_proportion() {
     finish(ctx);
 }
 
+/// The arithmetic the watertight triangle test's CPU twin (src/bvh/intersect.rs) assumes of the
+/// device: under `precise`, every fma() rounds one way, once or twice (`device_fma`, which the
+/// hit-for-hit tests in tests/traversal.rs ask), and a b + c is never contracted into one.
+#[test]
+fn precise_fma_rounds_one_way_and_a_product_plus_a_sum_twice() {
+    let ctx = gpu();
+    let fma = common::sampling_kernel::device_fma(&ctx);
+    eprintln!("the device's precise fma(): {fma:?}");
+    finish(ctx);
+}
+
 /// Why each sampling decision starts a group (rng_start_group) and draws its 2D numbers
 /// first or after one other: over a pixel's first 4^m samples (m = 2 to 5), a group's
 /// dimensions 0 and 1, and 1 and 2, put one point in each of the 2^m x 2^m cells of the unit

@@ -11,6 +11,14 @@ use bidir::trace::{RaySorter, TraceOptions, Tracer};
 use bidir::vk::Context;
 use common::{finish, geometry, gpu, Pcg};
 use glam::Vec3;
+use std::sync::OnceLock;
+
+/// How the device rounds the watertight test's fma() (asked once; see `bidir::bvh::intersect::Fma`),
+/// for the CPU reference.
+fn device_fma(ctx: &Context) -> bidir::bvh::intersect::Fma {
+    static FMA: OnceLock<bidir::bvh::intersect::Fma> = OnceLock::new();
+    *FMA.get_or_init(|| common::sampling_kernel::device_fma(ctx))
+}
 
 fn ray(o: Vec3, d: Vec3, tmax: f32) -> GpuRay {
     GpuRay { origin: o.extend(0.0), dir: d.extend(tmax) }
@@ -126,7 +134,7 @@ fn check_layout(
     let bvh = Bvh::build(positions, tris, &opts).unwrap();
     let scale = positions.iter().fold(0f32, |m, p| m.max(p.abs().max_element()));
     let (want, want_any) = reference.unwrap_or_else(|| {
-        let cpu = CpuTracer::new(&bvh, positions, tris);
+        let cpu = CpuTracer::new(&bvh, positions, tris).with_fma(device_fma(ctx));
         (
             rays.iter().map(|r| cpu.closest(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect(),
             rays.iter().map(|r| cpu.any(r.origin.truncate(), r.dir.truncate(), r.origin.w, r.dir.w)).collect(),
@@ -422,7 +430,8 @@ fn sponza_matches_cpu_hit_for_hit() {
     let cam = scene.cameras.iter().find(|c| c.name == "CameraMain").expect("CameraMain");
     let g = bidir::gpu_data::gpu_camera(cam);
     let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions::default()).unwrap();
-    let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
+    let ctx = gpu();
+    let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles).with_fma(device_fma(&ctx));
     let mut rng = Pcg::new(14);
     // 100k camera rays through random image points, then from their hits: 50k segments to a
     // point light above the atrium and 50k random directions.
@@ -456,7 +465,6 @@ fn sponza_matches_cpu_hit_for_hit() {
         }
     }
     drop(cpu);
-    let ctx = gpu();
     let (hit, miss) = check_scene(&ctx, "sponza", &scene.positions, &scene.triangles, &rays, BuildOptions::default());
     assert!(hit > 50_000 && miss > 1_000);
     finish(ctx);
@@ -553,7 +561,7 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         (TriTest::Watertight, BvhLayout::Bvh4),
     ] {
         let bvh = Bvh::build(&scene.positions, &scene.triangles, &BuildOptions { tri_test, layout, ..Default::default() }).unwrap();
-        let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles);
+        let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles).with_fma(device_fma(&ctx));
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
         let build = BuildOptions { tri_test, layout, ..Default::default() };
         // The variants with an alpha-tested kernel (no short stack, other workgroup sizes or shared

@@ -16,6 +16,7 @@
 //   out[2i + 1] = (radiance, pdf_w) that env_lookup reports for that direction.
 // - SAMPLING_INDEX: index_below(u, n) for u, n = the bits of in[i].x, in[i].y:
 //   out[i] = (the index as bits, what is left of u within it).
+// - SAMPLING_FMA: precise fma(a, b, c) and a * b + c for in[i].xyz = (a, b, c), out[i].xy.
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
@@ -150,5 +151,10 @@ void main() {
         float rest;
         uint index = index_below(floatBitsToUint(input_dirs[i].x), floatBitsToUint(input_dirs[i].y), rest);
         result[i] = vec4(uintBitsToFloat(index), rest, 0.0, 0.0);
+    } else if (pc.mode == SAMPLING_FMA) {
+        vec3 v = input_dirs[i].xyz;
+        precise float fused = fma(v.x, v.y, v.z);
+        precise float separate = v.x * v.y + v.z;
+        result[i] = vec4(fused, separate, 0.0, 0.0);
     }
 }

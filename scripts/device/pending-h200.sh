@@ -7,7 +7,8 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (not run: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
+# Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators).
+# Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (run in session 33: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
 # Parts of session 31 (run in session 32): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
 # Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off); s30e (not yet run: `--share-leaves`, the leaf phase's triangle tests shared among the lanes, against the lockstep kernel and dynamic fetch without it).
 # Parts run in session 29: s29a (regions of rays homed on the multiprocessors, --regions, taken over one by one); s29b (taken over from the nearest open region; a measurement switch BIDIR_EXP_NO_SMID homes them on workgroups); s29c (where a BDPT sample's time goes on the Cornell box); s29d (a measurement build, BIDIR_EXP_FLAT: the leaf phase as one loop over triangles; the integrators on Sponza at 3e429eb, before issue #17's work, and now); s29e (the final build against 901598a); s29f (the trace kernels' machine code, for scripts/device/sass.py); s29g (a measurement build, BIDIR_EXP_BITS: dynamic fetch without the refill cap's count); s29h (BDPT's passes, megakernels against wavefronts, kernel by kernel); s29i (a measurement build, BIDIR_EXP_BITS: the origin in shared memory, closest-hit rays' one loop); s29j (the lockstep kernel with both, against 3c1fc4e).
@@ -32,6 +33,56 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s33b)
+  # Session 33, the committed build (.device/bidir; .device/bidir-base = 3a677c3's code): the
+  # hit-for-hit tests and the fma probe on the H200 (.device/test-*.gz, this commit's test
+  # binaries, under the validation layers; Sponza's from .device/scenes/sponza); CameraMain
+  # quality 5, lockstep and --refill 24, three runs interleaved; the integrators on Sponza and
+  # the Cornell box.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
+  echo "== tests"; BIDIR_VALIDATION=1 timeout -k 5 60 .device/test-sampling precise 2>&1 | grep -E "^test |result|device's|VUID" 
+  BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  T="timeout -k 5 60"
+  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
+  for r in 1 2 3; do
+    for c in "" "--refill 24"; do
+      for b in "$BASE" "$B"; do
+        echo "== $(basename $b) $c"; $T "$b" bench traversal "$SP" $Q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for i in pt-nee bdpt; do
+    for b in "$BASE" "$B"; do
+      echo "== sponza $i $(basename $b)"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+      echo "== cornell $i $(basename $b)"; $T "$b" bench render $CB --spp 1024 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
+    done
+  done
+  ;;
+s33a)
+  # Session 33: the watertight triangle test with its shear and its distance as fused
+  # multiply-adds (a measurement build, .device/bidir-exp.gz: glsl/common/intersect.glsl's
+  # ax..cy as fma(-s, a_kz, a_kx), t as fma(u, a_kz, fma(v, b_kz, w c_kz)) s_z / det), against
+  # the committed build, CameraMain quality 5, lockstep and --refill 24, three runs interleaved;
+  # then the measurement build's machine code (nvcache-fma.tgz).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  X=$PWD/.device/bidir-exp
+  T="timeout -k 5 60"
+  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
+  for r in 1 2 3; do
+    for c in "" "--refill 24"; do
+      for b in "$B" "$X"; do
+        echo "== $(basename $b) $c"; $T "$b" bench traversal "$SP" $Q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
+  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$X" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
+  tar czf "$OUT/nvcache-fma.tgz" -C $D .
+  ;;
 s32d)
   # Session 32 (not run: no machine could be started before the device budget ran out; a
   # measurement build, .device/bidir-exp.gz, from scripts/device/s32d.patch): what the ~66 us a

@@ -2,7 +2,7 @@
 //! kernels) with the same triangle tests as the GPU. Tests compare the GPU against it.
 
 use super::{
-    intersect::{self, PreparedRay, TriHit, TriTest},
+    intersect::{self, Fma, PreparedRay, TriHit, TriTest},
     Bvh,
 };
 use crate::gpu::abi::GpuTri;
@@ -15,6 +15,7 @@ pub struct CpuTracer<'a> {
     /// Encoded triangles by original index.
     tris: Vec<GpuTri>,
     test: TriTest,
+    fma: Fma,
 }
 
 impl<'a> CpuTracer<'a> {
@@ -26,7 +27,12 @@ impl<'a> CpuTracer<'a> {
                 intersect::encode(bvh.tri_test, a, b, c)
             })
             .collect();
-        CpuTracer { bvh, tris, test: bvh.tri_test }
+        CpuTracer { bvh, tris, test: bvh.tri_test, fma: Fma::Fused }
+    }
+
+    /// The same tracer rounding the watertight test's fma() as a device does (see `Fma`).
+    pub fn with_fma(self, fma: Fma) -> Self {
+        CpuTracer { fma, ..self }
     }
 
     /// Closest hit in (tmin, tmax): original triangle index and hit.
@@ -50,7 +56,7 @@ impl<'a> CpuTracer<'a> {
         tmax: f32,
         accept: impl Fn(u32, &TriHit) -> bool,
     ) -> Option<(u32, TriHit)> {
-        let pr = PreparedRay::new(origin, dir, tmin);
+        let pr = PreparedRay::new(origin, dir, tmin).with_fma(self.fma);
         let ray = Ray::new(origin.into(), dir.into(), tmin, tmax);
         let mut best: Option<(u32, TriHit)> = None;
         let mut hit = RayHit::none();
@@ -72,7 +78,7 @@ impl<'a> CpuTracer<'a> {
 
     /// As `any`, counting only hits `accept` keeps (see `closest_where`).
     pub fn any_where(&self, origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, accept: impl Fn(u32, &TriHit) -> bool) -> bool {
-        let pr = PreparedRay::new(origin, dir, tmin);
+        let pr = PreparedRay::new(origin, dir, tmin).with_fma(self.fma);
         let ray = Ray::new(origin.into(), dir.into(), tmin, tmax);
         let src = &self.bvh.source;
         !src.ray_traverse_miss(ray, |r, id| {

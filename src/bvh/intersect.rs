@@ -1,5 +1,6 @@
 //! Ray–triangle tests, CPU twins of `glsl/common/intersect.glsl` (same operations in the same
-//! order, no fused multiply-adds, so both sides agree to the bit where the GPU rounds IEEE).
+//! order, and `fma()` rounded as the device rounds it, `Fma`, so both sides agree to the bit
+//! where the GPU rounds IEEE).
 
 use crate::gpu::abi::{self, GpuTri};
 use glam::{Vec3, Vec4};
@@ -67,19 +68,48 @@ fn woop_transform(v0: Vec3, v1: Vec3, v2: Vec3) -> GpuTri {
     GpuTri { a: row(0), b: row(1), c: row(2) }
 }
 
+/// How a device evaluates GLSL's `precise fma(a, b, c)`, which the watertight test's shear and
+/// distance use. GLSL lets fma() round once or twice, the same way wherever a `precise` value
+/// consumes it on one device (GLSL 4.60, section 8.3), so each device's test is watertight either
+/// way, but the CPU twin must round as the device does to agree with it bit for bit. NVIDIA's
+/// driver fuses (FFMA); lavapipe (Mesa 22.3) splits fma() into a product and a sum.
+/// `tests/common/sampling_kernel.rs` asks the device.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Fma {
+    /// Rounded once, as `f32::mul_add`.
+    #[default]
+    Fused,
+    /// Rounded twice, as `a * b + c`.
+    Separate,
+}
+
+impl Fma {
+    /// `a b + c` as the device's fma() rounds it.
+    pub fn apply(self, a: f32, b: f32, c: f32) -> f32 {
+        match self {
+            Fma::Fused => a.mul_add(b, c),
+            Fma::Separate => a * b + c,
+        }
+    }
+}
+
 /// A ray prepared for intersection (per-ray constants of both tests).
 #[derive(Clone, Copy, Debug)]
 pub struct PreparedRay {
     pub origin: Vec3,
     pub dir: Vec3,
     pub tmin: f32,
-    // Watertight: permutation and shear (Woop, Benthin, Wald 2013, section 3).
+    // Watertight: permutation and shear (Woop, Benthin, Wald 2013, section 3), the slopes
+    // negated (sx = -d_kx / d_kz, sy = -d_ky / d_kz; sz = 1 / d_kz): each sheared coordinate is
+    // one fused multiply-add.
     kx: usize,
     ky: usize,
     kz: usize,
     sx: f32,
     sy: f32,
     sz: f32,
+    /// The device's fma() that the watertight test follows.
+    fma: Fma,
 }
 
 impl PreparedRay {
@@ -102,7 +132,12 @@ impl PreparedRay {
             std::mem::swap(&mut kx, &mut ky); // keep the winding
         }
         let sz = 1.0 / dir[kz];
-        PreparedRay { origin, dir, tmin, kx, ky, kz, sx: dir[kx] * sz, sy: dir[ky] * sz, sz }
+        PreparedRay { origin, dir, tmin, kx, ky, kz, sx: -(dir[kx] * sz), sy: -(dir[ky] * sz), sz, fma: Fma::Fused }
+    }
+
+    /// The same ray for a device whose fma() rounds as `fma` says.
+    pub fn with_fma(self, fma: Fma) -> Self {
+        PreparedRay { fma, ..self }
     }
 }
 
@@ -152,13 +187,15 @@ fn watertight(ray: &PreparedRay, v0: Vec3, v1: Vec3, v2: Vec3, tmax: f32) -> Opt
     let a = v0 - ray.origin;
     let b = v1 - ray.origin;
     let c = v2 - ray.origin;
-    // Shear and scale into ray space (eq. 4 of the paper).
-    let ax = a[kx] - ray.sx * a[kz];
-    let ay = a[ky] - ray.sy * a[kz];
-    let bx = b[kx] - ray.sx * b[kz];
-    let by = b[ky] - ray.sy * b[kz];
-    let cx = c[kx] - ray.sx * c[kz];
-    let cy = c[ky] - ray.sy * c[kz];
+    // Shear into ray space (eq. 4 of the paper), each coordinate rounded once: a vertex shears
+    // to the same point in every triangle that shares it.
+    let fma = |a: f32, b: f32, c: f32| ray.fma.apply(a, b, c);
+    let ax = fma(ray.sx, a[kz], a[kx]);
+    let ay = fma(ray.sy, a[kz], a[ky]);
+    let bx = fma(ray.sx, b[kz], b[kx]);
+    let by = fma(ray.sy, b[kz], b[ky]);
+    let cx = fma(ray.sx, c[kz], c[kx]);
+    let cy = fma(ray.sy, c[kz], c[ky]);
     // Scaled barycentrics: 2D edge functions (eq. 5). Each is an exact negation of the same
     // edge's function in the neighbouring triangle, hence watertight.
     let u = cx * by - cy * bx;
@@ -171,12 +208,10 @@ fn watertight(ray: &PreparedRay, v0: Vec3, v1: Vec3, v2: Vec3, tmax: f32) -> Opt
     if det == 0.0 {
         return None;
     }
-    let az = ray.sz * a[kz];
-    let bz = ray.sz * b[kz];
-    let cz = ray.sz * c[kz];
-    let t_scaled = u * az + v * bz + w * cz;
+    // The unsheared z coordinates interpolated, then scaled once by 1 / d_kz and 1 / det.
+    let t_scaled = fma(u, a[kz], fma(v, b[kz], w * c[kz]));
     let inv_det = 1.0 / det;
-    let t = t_scaled * inv_det;
+    let t = t_scaled * (ray.sz * inv_det);
     if !(t > ray.tmin && t < tmax) {
         return None;
     }

@@ -244,6 +244,10 @@ gpu_consts! {
     /// index_below(u, n) (rng.glsl) for `in[i].x`, `in[i].y` as bits: `out[i]` = (the index
     /// as bits, what is left of u within it).
     pub const SAMPLING_INDEX: u32 = 10;
+    /// The device's arithmetic under `precise` for `in[i].xyz` = (a, b, c): `out[i]` =
+    /// (fma(a, b, c), a b + c), the first one rounding, the second two, as the CPU twins of
+    /// intersect.glsl assume.
+    pub const SAMPLING_FMA: u32 = 11;
     /// The numbers of SAMPLING_RNG before which a group starts: the 3rd, 6th, 7th and 12th
     /// (under Sobol' everywhere dimension 2 to 4, 7 to 8, 9 to 12 and 17 to 20; with ten
     /// Sobol' dimensions 9 to 10, where the hash chain starts).
