@@ -42,7 +42,7 @@ struct PathState {
 // A new path through image position `pixel` (pixels, row 0 on top); `rng` has drawn its jitter.
 PathState path_start(vec2 pixel, inout Rng rng) {
     if (HAS_ALPHA != 0u) {
-        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
     }
     PathState path;
     path.o = pc.camera.eye.xyz;

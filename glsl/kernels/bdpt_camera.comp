@@ -55,7 +55,7 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 // `path`: the light path of this camera sample (megakernel joins).
 vec3 camera_path(uint path, vec2 xy, inout Rng rng) {
     if (HAS_ALPHA != 0u) {
-        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
     }
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;

@@ -170,7 +170,7 @@ void run_slot() {
         rng = rng_init(image_pixel, pc.sample_base + slice, pc.seed);
         vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
         if (HAS_ALPHA != 0u) {
-            blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+            blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
         }
         o = pc.camera.eye.xyz;
         d = camera_direction(pc.camera, xy);

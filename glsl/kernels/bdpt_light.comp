@@ -68,7 +68,7 @@ void light_path(uint path) {
     uint base = path * pc.light_path_len;
     Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
     if (HAS_ALPHA != 0u) {
-        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
     }
     vec3 beta, o, d;
     float d_vcm, d_vc;

@@ -157,7 +157,7 @@ void run_slot() {
         // The megakernel's start (bdpt_light.comp: light_path).
         rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
         if (HAS_ALPHA != 0u) {
-            blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity
+            blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
         }
         alive = light_path_start(rng, o, d, beta, d_vcm, d_vc, at_infinity);
         beta0 = max3(beta);

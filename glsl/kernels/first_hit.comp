@@ -33,7 +33,7 @@ vec3 continuous_albedo(Continuous c) {
 // Adds one camera sample through image position `pixel` to `sum`.
 void first_hit_sample(vec2 pixel, inout Rng rng, inout FirstHitSums sum) {
     if (HAS_ALPHA != 0u) {
-        blend_seed = uint(rng_next(rng) * 4294967296.0); // BLEND's stochastic opacity, as pt
+        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity, as pt
     }
     uvec2 stats = uvec2(0u);
     vec3 o = pc.camera.eye.xyz;
