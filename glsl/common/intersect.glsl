@@ -22,9 +22,8 @@ struct PreparedRay {
     vec3 o;
     vec3 d;
     float tmin;
-    // Watertight (Woop, Benthin, Wald 2013, section 3): axis permutation and shear, the
-    // slopes negated (sx = -d_kx / d_kz, sy = -d_ky / d_kz; sz = 1 / d_kz) so that each sheared
-    // coordinate is one fused multiply-add.
+    // Watertight (Woop, Benthin, Wald 2013, section 3): axis permutation and shear (sx = d_kx /
+    // d_kz, sy = d_ky / d_kz, sz = 1 / d_kz).
     uint kx, ky, kz;
     float sx, sy, sz;
 };
@@ -46,8 +45,8 @@ PreparedRay prepare_ray(vec3 o, vec3 d, float tmin) {
     precise float sz = 1.0 / d[r.kz];
     precise float sx = d[r.kx] * sz;
     precise float sy = d[r.ky] * sz;
-    r.sx = -sx;
-    r.sy = -sy;
+    r.sx = sx;
+    r.sy = sy;
     r.sz = sz;
     return r;
 }
@@ -93,14 +92,16 @@ bool intersect_watertight(PreparedRay r, vec3 v0, vec3 v1, vec3 v2, float tmax, 
     float ckz = pick3(c, r.kz);
     // Sheared vertices (eq. 4 of the paper), each coordinate a_kx - (d_kx / d_kz) a_kz as one
     // fma(). A vertex shears to the same point in every triangle that shares it, however the
-    // device rounds fma(), which is all that watertightness asks of this step (H200, Sponza:
-    // primary rays 1 % faster than as a product and a difference, session 33).
-    precise float ax = fma(r.sx, akz, pick3(a, r.kx));
-    precise float ay = fma(r.sy, akz, pick3(a, r.ky));
-    precise float bx = fma(r.sx, bkz, pick3(b, r.kx));
-    precise float by = fma(r.sy, bkz, pick3(b, r.ky));
-    precise float cx = fma(r.sx, ckz, pick3(c, r.kx));
-    precise float cy = fma(r.sy, ckz, pick3(c, r.ky));
+    // device rounds fma(), which is all that watertightness asks of this step (H200, Sponza
+    // CameraMain: primary rays 0.8-1.1 % faster than as a product and a difference, session 33;
+    // with the slopes stored negated, two instructions fewer, they were not: the compiler's
+    // schedule, docs/traversal.md).
+    precise float ax = fma(-r.sx, akz, pick3(a, r.kx));
+    precise float ay = fma(-r.sy, akz, pick3(a, r.ky));
+    precise float bx = fma(-r.sx, bkz, pick3(b, r.kx));
+    precise float by = fma(-r.sy, bkz, pick3(b, r.ky));
+    precise float cx = fma(-r.sx, ckz, pick3(c, r.kx));
+    precise float cy = fma(-r.sy, ckz, pick3(c, r.ky));
     precise float u = cx * by - cy * bx;
     precise float v = ax * cy - ay * cx;
     precise float w = bx * ay - by * ax;

@@ -99,9 +99,8 @@ pub struct PreparedRay {
     pub origin: Vec3,
     pub dir: Vec3,
     pub tmin: f32,
-    // Watertight: permutation and shear (Woop, Benthin, Wald 2013, section 3), the slopes
-    // negated (sx = -d_kx / d_kz, sy = -d_ky / d_kz; sz = 1 / d_kz): each sheared coordinate is
-    // one fused multiply-add.
+    // Watertight: permutation and shear (Woop, Benthin, Wald 2013, section 3): sx = d_kx / d_kz,
+    // sy = d_ky / d_kz, sz = 1 / d_kz.
     kx: usize,
     ky: usize,
     kz: usize,
@@ -132,7 +131,7 @@ impl PreparedRay {
             std::mem::swap(&mut kx, &mut ky); // keep the winding
         }
         let sz = 1.0 / dir[kz];
-        PreparedRay { origin, dir, tmin, kx, ky, kz, sx: -(dir[kx] * sz), sy: -(dir[ky] * sz), sz, fma: Fma::Fused }
+        PreparedRay { origin, dir, tmin, kx, ky, kz, sx: dir[kx] * sz, sy: dir[ky] * sz, sz, fma: Fma::Fused }
     }
 
     /// The same ray for a device whose fma() rounds as `fma` says.
@@ -190,12 +189,12 @@ fn watertight(ray: &PreparedRay, v0: Vec3, v1: Vec3, v2: Vec3, tmax: f32) -> Opt
     // Shear into ray space (eq. 4 of the paper), each coordinate rounded once: a vertex shears
     // to the same point in every triangle that shares it.
     let fma = |a: f32, b: f32, c: f32| ray.fma.apply(a, b, c);
-    let ax = fma(ray.sx, a[kz], a[kx]);
-    let ay = fma(ray.sy, a[kz], a[ky]);
-    let bx = fma(ray.sx, b[kz], b[kx]);
-    let by = fma(ray.sy, b[kz], b[ky]);
-    let cx = fma(ray.sx, c[kz], c[kx]);
-    let cy = fma(ray.sy, c[kz], c[ky]);
+    let ax = fma(-ray.sx, a[kz], a[kx]);
+    let ay = fma(-ray.sy, a[kz], a[ky]);
+    let bx = fma(-ray.sx, b[kz], b[kx]);
+    let by = fma(-ray.sy, b[kz], b[ky]);
+    let cx = fma(-ray.sx, c[kz], c[kx]);
+    let cy = fma(-ray.sy, c[kz], c[ky]);
     // Scaled barycentrics: 2D edge functions (eq. 5). Each is an exact negation of the same
     // edge's function in the neighbouring triangle, hence watertight.
     let u = cx * by - cy * bx;
