@@ -112,8 +112,9 @@ bool intersect_watertight(PreparedRay r, vec3 v0, vec3 v1, vec3 v2, float tmax, 
     if (det == 0.0) {
         return false;
     }
-    // The hit's distance: the sheared z coordinates interpolated, u a_kz + v b_kz + w c_kz, then
-    // scaled once by 1 / d_kz and 1 / det (the paper scales each vertex's z by 1 / d_kz first).
+    // The hit's distance: the vertices' kz coordinates (relative to the origin) interpolated,
+    // u a_kz + v b_kz + w c_kz, then scaled once by 1 / d_kz and 1 / det (the paper scales each
+    // vertex's by 1 / d_kz first).
     precise float ts = fma(u, akz, fma(v, bkz, w * ckz));
     precise float inv_det = 1.0 / det;
     precise float tt = ts * (r.sz * inv_det);

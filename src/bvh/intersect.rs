@@ -207,7 +207,7 @@ fn watertight(ray: &PreparedRay, v0: Vec3, v1: Vec3, v2: Vec3, tmax: f32) -> Opt
     if det == 0.0 {
         return None;
     }
-    // The unsheared z coordinates interpolated, then scaled once by 1 / d_kz and 1 / det.
+    // The vertices' kz coordinates interpolated, then scaled once by 1 / d_kz and 1 / det.
     let t_scaled = fma(u, a[kz], fma(v, b[kz], w * c[kz]));
     let inv_det = 1.0 / det;
     let t = t_scaled * (ray.sz * inv_det);
