@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code).
+# Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code); s33d (not run: a measurement build, scripts/device/s33d.patch, the fma() shear with the distance as before).
 # Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (run in session 33: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
 # Parts of session 31 (run in session 32): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
 # Parts run in session 30: s30a (a measurement build, BIDIR_EXP_BITS: more of the prepared ray and the hit in shared memory; dynamic fetch with the origin in shared memory); s30b (measurement builds: buffers aligned to 256 bytes, the node and triangle buffers `restrict`); s30c (the committed build, issue #17's figures); s30d (the committed build against s30a's with its bits off); s30e (not yet run: `--share-leaves`, the leaf phase's triangle tests shared among the lanes, against the lockstep kernel and dynamic fetch without it).
@@ -33,6 +33,26 @@ OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
 case "${1:-speed}" in
+s33d)
+  # Session 33 (not run: no device time left): the fma() shear with the distance as before
+  # (scripts/device/s33d.patch, a measurement build, .device/bidir-exp.gz: git apply, build,
+  # strip, gzip, revert; level with d0dafcc on lavapipe, where the committed distance costs bvh4
+  # primary rays 8-10 %) against the committed build and .device/bidir-base (3a677c3's code),
+  # CameraMain quality 5, lockstep and --refill 24, three runs interleaved. If it keeps the
+  # committed form's lockstep primary figure (6.01-6.03 in s33c), take it.
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  SP=$PWD/.device/scenes/sponza/Sponza.gltf
+  X=$PWD/.device/bidir-exp
+  T="timeout -k 5 60"
+  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
+  for r in 1 2 3; do
+    for c in "" "--refill 24"; do
+      for b in "$BASE" "$B" "$X"; do
+        echo "== $(basename $b) $c"; $T "$b" bench traversal "$SP" $Q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      done
+    done
+  done
+  ;;
 s33c)
   # Session 33: s33b's committed build (the shear's slopes stored negated) was level with
   # the base on primary rays where s33a's measurement build (negated in the loop) had been 1 %
