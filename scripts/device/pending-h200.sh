@@ -32,6 +32,19 @@ PRE=${PRE:-$PWD/.device/bidir-pre}
 OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
+# Sponza's CameraMain at build quality 5 through the 4-wide BVH (issue #17's setting) with the
+# binary $1 and any further options: the primary, shadow and diffuse lines of its report.
+sponza_q5() {
+  local b=$1; shift
+  timeout -k 5 60 "$b" bench traversal "$PWD/.device/scenes/sponza/Sponza.gltf" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 "$@" 2>&1 | grep -E "^(primary|shadow|diffuse) "
+}
+# The trace kernels of the binary $1 as the driver compiled them, archived as $OUT/$2 (read
+# with scripts/device/sass.py).
+shader_cache() {
+  local d=/tmp/nvcache-$2; rm -rf "$d"; mkdir -p "$d"
+  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$1" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
+  tar czf "$OUT/$2" -C "$d" .
+}
 case "${1:-speed}" in
 s33d)
   # Session 33 (not run: no device time left): the fma() shear with the distance as before
@@ -41,14 +54,10 @@ s33d)
   # CameraMain quality 5, lockstep and --refill 24, three runs interleaved. If it keeps the
   # committed form's lockstep primary figure (6.01-6.03 in s33c), take it.
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
-  SP=$PWD/.device/scenes/sponza/Sponza.gltf
-  X=$PWD/.device/bidir-exp
-  T="timeout -k 5 60"
-  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
   for r in 1 2 3; do
     for c in "" "--refill 24"; do
-      for b in "$BASE" "$B" "$X"; do
-        echo "== $(basename $b) $c"; $T "$b" bench traversal "$SP" $Q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      for b in "$BASE" "$B" "$PWD/.device/bidir-exp"; do
+        echo "== $(basename $b) $c"; sponza_q5 "$b" $c
       done
     done
   done
@@ -57,23 +66,15 @@ s33c)
   # Session 33: s33b's committed build (the shear's slopes stored negated) was level with
   # the base on primary rays where s33a's measurement build (negated in the loop) had been 1 %
   # ahead: the three builds interleaved, lockstep, three runs, and the machine code of the two
-  # new ones (nvcache-final.tgz, nvcache-exp.tgz). .device/bidir-exp = this commit with the
+  # new ones (nvcache-bidir.tgz, nvcache-bidir-exp.tgz). .device/bidir-exp = this commit with the
   # negations in the loop.
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
-  SP=$PWD/.device/scenes/sponza/Sponza.gltf
-  X=$PWD/.device/bidir-exp
-  T="timeout -k 5 60"
-  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
   for r in 1 2 3; do
-    for b in "$BASE" "$B" "$X"; do
-      echo "== $(basename $b)"; $T "$b" bench traversal "$SP" $Q 2>&1 | grep -E "^(primary|shadow|diffuse) "
+    for b in "$BASE" "$B" "$PWD/.device/bidir-exp"; do
+      echo "== $(basename $b)"; sponza_q5 "$b"
     done
   done
-  for b in "$B" "$X"; do
-    D=/tmp/nvcache-$(basename $b); rm -rf $D; mkdir -p $D
-    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$b" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
-    tar czf "$OUT/nvcache-$(basename $b).tgz" -C $D .
-  done
+  for b in "$B" "$PWD/.device/bidir-exp"; do shader_cache "$b" "nvcache-$(basename $b).tgz"; done
   ;;
 s33b)
   # Session 33, the committed build (.device/bidir; .device/bidir-base = 3a677c3's code): the
@@ -85,17 +86,15 @@ s33b)
   mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
   echo "== tests"; BIDIR_VALIDATION=1 timeout -k 5 60 .device/test-sampling precise 2>&1 | grep -E "^test |result|device's|VUID" 
   BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
-  SP=$PWD/.device/scenes/sponza/Sponza.gltf
   T="timeout -k 5 60"
-  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
   for r in 1 2 3; do
     for c in "" "--refill 24"; do
       for b in "$BASE" "$B"; do
-        echo "== $(basename $b) $c"; $T "$b" bench traversal "$SP" $Q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+        echo "== $(basename $b) $c"; sponza_q5 "$b" $c
       done
     done
   done
-  SPB="$SP --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  SPB="$PWD/.device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   for i in pt-nee bdpt; do
     for b in "$BASE" "$B"; do
       echo "== sponza $i $(basename $b)"; $T "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
@@ -110,24 +109,18 @@ s33a)
   # the committed build, CameraMain quality 5, lockstep and --refill 24, three runs interleaved;
   # then the measurement build's machine code (nvcache-fma.tgz).
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
-  SP=$PWD/.device/scenes/sponza/Sponza.gltf
-  X=$PWD/.device/bidir-exp
-  T="timeout -k 5 60"
-  Q="--camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5"
   for r in 1 2 3; do
     for c in "" "--refill 24"; do
-      for b in "$B" "$X"; do
-        echo "== $(basename $b) $c"; $T "$b" bench traversal "$SP" $Q $c 2>&1 | grep -E "^(primary|shadow|diffuse) "
+      for b in "$B" "$PWD/.device/bidir-exp"; do
+        echo "== $(basename $b) $c"; sponza_q5 "$b" $c
       done
     done
   done
-  D=/tmp/nvcache; rm -rf $D; mkdir -p $D
-  __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$D __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 $T "$X" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
-  tar czf "$OUT/nvcache-fma.tgz" -C $D .
+  shader_cache "$PWD/.device/bidir-exp" nvcache-fma.tgz
   ;;
 s32d)
-  # Session 32 (not run: no machine could be started before the device budget ran out; a
-  # measurement build, .device/bidir-exp.gz, from scripts/device/s32d.patch): what the ~66 us a
+  # Session 32 (run in session 33: no machine could be started in session 32; a measurement
+  # build, .device/bidir-exp.gz, from scripts/device/s32d.patch): what the ~66 us a
   # 1920 x 1080 launch costs beyond its rays is (s32c: 960 x 540 0.137 ms, 1080p 0.348, 4K
   # 1.195). BIDIR_EXP_TWICE: w = an untimed launch of the same rays just before the timed one
   # (the tree warm in L2), c = two launches timed without a barrier between them (the second's
