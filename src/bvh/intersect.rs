@@ -186,8 +186,8 @@ fn watertight(ray: &PreparedRay, v0: Vec3, v1: Vec3, v2: Vec3, tmax: f32) -> Opt
     let a = v0 - ray.origin;
     let b = v1 - ray.origin;
     let c = v2 - ray.origin;
-    // Shear into ray space (eq. 4 of the paper), each coordinate rounded once: a vertex shears
-    // to the same point in every triangle that shares it.
+    // Shear into ray space (eq. 4 of the paper), each coordinate one fma() rounded as the
+    // device rounds it: a vertex shears to the same point in every triangle that shares it.
     let fma = |a: f32, b: f32, c: f32| ray.fma.apply(a, b, c);
     let ax = fma(-ray.sx, a[kz], a[kx]);
     let ay = fma(-ray.sy, a[kz], a[ky]);
