@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 34 (not run: no device was lent that session): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
+# Parts of session 34 (not run: no device was lent that session): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
 # Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code); s33d (not run: a measurement build, scripts/device/s33d.patch, the fma() shear with the distance as before).
 # Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (run in session 33: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
 # Parts of session 31 (run in session 32): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
@@ -74,12 +74,13 @@ s34a)
   ;;
 s34b)
   # Session 34: s34a's three builds again in another start of the machine (code layout moves
-  # primary rays ~1 % between starts), two runs interleaved, and the fold's machine code
-  # (nvcache-bidir-fold.tgz).
+  # primary rays ~1 % between starts) and a fourth with both patches (.device/bidir-both.gz:
+  # s33d.patch and s34a.patch applied together; its hit-for-hit tests pass on lavapipe), two
+  # runs interleaved, and the fold's machine code (nvcache-bidir-fold.tgz).
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
   for r in 1 2; do
     for c in "" "--refill 24"; do
-      for b in "$PWD/.device/bidir-fold" "$PWD/.device/bidir-exp" "$B"; do
+      for b in "$PWD/.device/bidir-fold" "$PWD/.device/bidir-both" "$PWD/.device/bidir-exp" "$B"; do
         echo "== $(basename $b) $c $(date +%T)"; sponza_q5 "$b" $c
       done
     done
