@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 34 (not run: no device was lent that session): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code); s34c (pt-nee's and BDPT's variance per sample at 1,024 to 16,384 spp on the Cornell box). Run them with s33d's question answered by s34a's columns.
+# Parts of session 34 (not run: no device was lent that session): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
 # Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code); s33d (not run: a measurement build, scripts/device/s33d.patch, the fma() shear with the distance as before).
 # Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (run in session 33: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
 # Parts of session 31 (run in session 32): s31a (a group of Sobol' dimensions per sampling decision, against .device/bidir-base.gz, a build of b7eee84; issue #16's Cornell table); s31b (alias-table cells from 32 bits: an 8192 x 4096 environment map, .device/scenes/env8k).
@@ -69,19 +69,6 @@ s34a)
   for i in pt-nee bdpt; do
     for b in "$B" "$PWD/.device/bidir-fold"; do
       echo "== sponza $i $(basename $b)"; timeout -k 5 60 "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator $i 2>&1 | grep -E "Msamples"
-    done
-  done
-  ;;
-s34c)
-  # Session 34: does pt-nee's variance per sample fall faster than 1/N at the H200's sample
-  # counts while BDPT's does not (issue #16: 1.49x at 1 s against 1.07-1.2x expected from
-  # lavapipe's 1,024-spp variances)? Cornell 256², seeds 1 and 2 at each count, the variance per
-  # pixel and channel from their difference (RMSE^2 / 2, printed by `bidir diff`), times N.
-  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
-  for i in pt-nee bdpt; do
-    for n in 1024 4096 16384; do
-      for s in 1 2; do timeout -k 5 60 "$B" render $CB --integrator $i --spp $n --seed $s -o /tmp/v$s.exr > /dev/null 2>&1; done
-      echo "== $i $n spp: $("$B" diff /tmp/v1.exr /tmp/v2.exr 2>&1 | grep RMSE)"
     done
   done
   ;;
