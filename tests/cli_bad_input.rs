@@ -99,6 +99,7 @@ fn diff_blocks_zero() {
     write_image(&a, &RgbImage::new(4, 4), 0.0).unwrap();
     let a = a.to_str().unwrap();
     fails(&["diff", a, a, "--blocks", "0"], &["--blocks must be at least 1"]);
+    fails(&["diff", a, a, "--below", "nan"], &["--below must be a finite number"]);
     std::fs::remove_dir_all(&dir).ok();
 }
 

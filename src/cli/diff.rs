@@ -16,11 +16,20 @@ pub struct DiffArgs {
     /// Also print the mean ratio a/b of every BLOCKxBLOCK tile.
     #[arg(long)]
     pub blocks: Option<u32>,
+    /// Also print the RMSE away from bright pixels: over the pixels more than 2 pixels from any
+    /// whose mean over its channels exceeds LEVEL in either image (a light seen directly, whose
+    /// edge converges at its own rate). Between two renders that differ only in their seed,
+    /// RMSE^2 / 2 is the variance per pixel and channel of either.
+    #[arg(long, value_name = "LEVEL")]
+    pub below: Option<f32>,
 }
 
 pub fn run(args: &DiffArgs) -> anyhow::Result<()> {
     if args.blocks == Some(0) {
         bail!("--blocks must be at least 1");
+    }
+    if args.below.is_some_and(|l| !l.is_finite()) {
+        bail!("--below must be a finite number");
     }
     if let Some(path) = &args.heatmap {
         super::render::check_output(path)?;
@@ -39,6 +48,10 @@ pub fn run(args: &DiffArgs) -> anyhow::Result<()> {
     println!("mean a    {:.5} {:.5} {:.5}", a.mean()[0], a.mean()[1], a.mean()[2]);
     println!("mean b    {:.5} {:.5} {:.5}", b.mean()[0], b.mean()[1], b.mean()[2]);
     println!("ratio a/b {:.4} {:.4} {:.4}", ratio[0], ratio[1], ratio[2]);
+    if let Some(level) = args.below {
+        let (r, n) = metrics::rmse_where(&a, &b, &metrics::away_from_bright(&a, &b, level, 2));
+        println!("RMSE away from pixels above {level}: {r:.6} ({n} of {} pixels)", a.width as u64 * a.height as u64);
+    }
     if let Some(block) = args.blocks {
         let (ba, bb) = (metrics::block_means(&a, block), metrics::block_means(&b, block));
         let cols = a.width.div_ceil(block);
