@@ -51,7 +51,7 @@ pub fn away_from_bright(a: &RgbImage, b: &RgbImage, level: f32, margin: u32) -> 
 
 /// [`rmse`] over the pixels `keep` marks (one flag a pixel), and how many pixels that is.
 pub fn rmse_where(a: &RgbImage, b: &RgbImage, keep: &[bool]) -> (f64, usize) {
-    assert_eq!(keep.len(), (a.width * a.height) as usize, "one flag a pixel");
+    assert_eq!(keep.len(), a.width as usize * a.height as usize, "one flag a pixel");
     let (mse, n) = mean_over_finite_where(a, b, Some(keep), |x, y| (x - y).powi(2));
     (mse.sqrt(), n)
 }
@@ -116,12 +116,11 @@ mod tests {
 
     #[test]
     fn pixels_near_bright_ones_are_left_out_of_rmse_where() {
-        // 5 x 5, one bright pixel at (1, 1) in b only; a differs from b by 1 at (4, 4) and
-        // (0, 0), which is within the margin of the bright pixel.
+        // 5 x 5, one bright pixel at (1, 1) in b only (a is 0 there); a differs from b by 1 at
+        // (4, 4) and at (0, 0), which is within the margin of the bright pixel.
         let mut a = RgbImage::new(5, 5);
         let mut b = RgbImage::new(5, 5);
         b.data[3 * 6..3 * 6 + 3].fill(10.0);
-        a.data[3 * 6..3 * 6 + 3].fill(10.0);
         a.data[3 * 24..3 * 24 + 3].fill(1.0);
         a.data[0..3].fill(1.0);
         let keep = away_from_bright(&a, &b, 5.0, 1);
