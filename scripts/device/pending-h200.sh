@@ -39,6 +39,18 @@ sponza_q5() {
   local b=$1; shift
   timeout -k 5 60 "$b" bench traversal "$PWD/.device/scenes/sponza/Sponza.gltf" --camera CameraMain --bvh bvh4 --leaf-size 3 --quality 5 "$@" 2>&1 | grep -E "^(primary|shadow|diffuse) "
 }
+# $1 rounds of sponza_q5 over the binaries $2..., lockstep and with --refill 24, the binaries
+# interleaved within each round (code layout moves the figures ~1 % between builds and starts).
+sponza_rounds() {
+  local n=$1; shift
+  for r in $(seq "$n"); do
+    for c in "" "--refill 24"; do
+      for b in "$@"; do
+        echo "== $(basename "$b") $c $(date +%T)"; sponza_q5 "$b" $c
+      done
+    done
+  done
+}
 # The trace kernels of the binary $1 as the driver compiled them, archived as $OUT/$2 (read
 # with scripts/device/sass.py).
 shader_cache() {
@@ -58,13 +70,7 @@ s34a)
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
   mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
   echo "== tests (fold)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
-  for r in 1 2; do
-    for c in "" "--refill 24"; do
-      for b in "$B" "$PWD/.device/bidir-exp" "$PWD/.device/bidir-fold"; do
-        echo "== $(basename $b) $c $(date +%T)"; sponza_q5 "$b" $c
-      done
-    done
-  done
+  sponza_rounds 2 "$B" "$PWD/.device/bidir-exp" "$PWD/.device/bidir-fold"
   SPB="$PWD/.device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   for i in pt-nee bdpt; do
     for b in "$B" "$PWD/.device/bidir-fold"; do
@@ -78,13 +84,7 @@ s34b)
   # s33d.patch and s34a.patch applied together; its hit-for-hit tests pass on lavapipe), two
   # runs interleaved, and the fold's machine code (nvcache-bidir-fold.tgz).
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
-  for r in 1 2; do
-    for c in "" "--refill 24"; do
-      for b in "$PWD/.device/bidir-fold" "$PWD/.device/bidir-both" "$PWD/.device/bidir-exp" "$B"; do
-        echo "== $(basename $b) $c $(date +%T)"; sponza_q5 "$b" $c
-      done
-    done
-  done
+  sponza_rounds 2 "$PWD/.device/bidir-fold" "$PWD/.device/bidir-both" "$PWD/.device/bidir-exp" "$B"
   shader_cache "$PWD/.device/bidir-fold" nvcache-bidir-fold.tgz
   ;;
 s33d)
