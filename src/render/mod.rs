@@ -562,7 +562,7 @@ impl Renderer {
         }
         let features = SceneFeatures::of(scene);
         settings.bvh.layout = auto_bvh_layout(ctx, &settings, settings.integrator, &features);
-        let (leaf_size, quality) = default_bvh_build(settings.bvh.layout);
+        let (leaf_size, quality) = default_bvh_build(settings.bvh.layout, on_cpu(ctx));
         settings.bvh.max_leaf_tris = settings.bvh_leaf_size.unwrap_or(leaf_size);
         settings.bvh.quality = settings.bvh_quality.unwrap_or(quality);
         // Resolved once from what the scene has, so `settings()` says what runs.
