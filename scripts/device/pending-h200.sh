@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts of session 35: s35a (the compressed wide BVH at build quality 2 and 4 on the H200, pt-nee and pt on the Cornell box; CPU devices take 4 since 2b2e99d).
 # Parts of session 34 (not run: no device was lent that session): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
 # Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code); s33d (not run: a measurement build, scripts/device/s33d.patch, the fma() shear with the distance as before).
 # Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (run in session 33: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
@@ -59,6 +60,27 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s35a)
+  # Session 35: the compressed wide BVH's build quality on the H200. CPU devices build it at
+  # quality 4 since 2b2e99d (lavapipe: the Cornell box 7-9 % faster, docs/results.md, "lavapipe
+  # against Mitsuba 3"); on GPUs pt-nee and pt take it in diffuse scenes at quality 2. Three
+  # rounds of `bench render` (ms per 1024 spp), then pt-nee at 0.1 s and 1 s against the
+  # sharper reference, each quality in turn. If 4 is ahead in both, make it the GPU default
+  # too (render::default_bvh_build).
+  for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  for r in 1 2 3; do
+    for i in pt-nee pt; do
+      for q in 2 4; do
+        echo "== $i quality $q"; timeout -k 5 60 "$B" bench render $CB --integrator $i --spp 1024 --bvh-quality $q --warmup 1 --runs 3 2>&1 | grep -E "GPU|^pt"
+      done
+    done
+  done
+  for t in 0.1 1; do
+    for q in 2 4 2 4; do
+      echo "== pt-nee $t s quality $q"; timeout -k 5 60 "$B" render $CB --integrator pt-nee --time $t --bvh-quality $q --reference "$REF" -o /tmp/q.exr 2>&1 | grep -E "spp in|RMSE"
+    done
+  done
+  ;;
 s34a)
   # Session 34 (no device that session; prepared for the next): the 4-wide step's far planes
   # with the exit's widening folded into their slab terms (scripts/device/s34a.patch, a
