@@ -242,41 +242,8 @@
         d_vcm = mis(1.0 / pdf_fwd_w);
         merge_pending = false; // the first continuous scattering: no merging after it
         d = dn;
-    } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
-        // Rough glass: never connected, so the strategies whose connecting edge touches
-        // this vertex are impossible: dVCM (the edge to the next vertex) is 0 and dVC
-        // keeps only its own term, with the real pdf ratio (a delta lobe's cancels).
-        float eta = s.front ? 1.0 / m.ior : m.ior;
-        float u_sel = rng_next(rng);
-        float u1 = rng_next(rng);
-        float u2 = rng_next(rng);
-        vec3 dn;
-        float weight, pdf_fwd_w, pdf_rev_w;
-        bool refracted;
-        if (!rough_dielectric_sample_world(ns_f, wo, eta, glass_alpha(m, s.uv), true, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
-            || (dot(dn, ng_f) > 0.0) == refracted) {
-            break;
-        }
-        beta *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
-        d_vcm = 0.0;
-        d_vc *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w);
-        d_vm *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w); // VCM: as dVC (a vertex that is never merged)
-        d = dn;
-    } else {
-        vec3 dn;
-        if (lobe == LOBE_MIRROR) {
-            dn = reflect(d, ns_f);
-        } else {
-            float eta = s.front ? 1.0 / m.ior : m.ior;
-            float scale;
-            bool refracted;
-            dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
-            beta *= refracted ? scale * glass_tint(m, s.uv) : vec3(scale);
-        }
-        d_vcm = 0.0;
-        d_vc *= mis(abs(dot(dn, ns_f)));
-        d_vm *= mis(abs(dot(dn, ns_f)));
-        d = dn;
+    } else if (!scatter_unconnected_lobe(lobe, m, s, ns_f, ng_f, true, rng, d, beta, d_vcm, d_vc, d_vm)) {
+        break; // mirror, glass or rough glass (vcm.glsl)
     }
     sigma_near = volume_sigma(m, dot(d, s.ng) < 0.0);
     o = offset_ray_origin(s.p, dot(d, s.ng) > 0.0 ? s.ng : -s.ng);

@@ -97,42 +97,8 @@
         d_vc = mis(cos_out / pdf_fwd_w) * (d_vc * mis(pdf_rev_w) + d_vcm + k.vm * merge_here);
         d_vcm = mis(1.0 / pdf_fwd_w);
         d = dn;
-    } else if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
-        // Rough glass (importance: no eta^2), never connected: as bdpt_camera.comp.
-        float eta = s.front ? 1.0 / m.ior : m.ior;
-        float u_sel = rng_next(rng);
-        float u1 = rng_next(rng);
-        float u2 = rng_next(rng);
-        vec3 dn;
-        float weight, pdf_fwd_w, pdf_rev_w;
-        bool refracted;
-        if (!rough_dielectric_sample_world(ns_f, wi, eta, glass_alpha(m, s.uv), false, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
-            || (dot(dn, ng_f) > 0.0) == refracted) {
-            break;
-        }
-        beta *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
-        d_vcm = 0.0;
-        d_vc *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w);
-        d_vm *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w); // VCM: as dVC (a vertex that is never merged)
-        d = dn;
-    } else {
-        vec3 dn;
-        if (lobe == LOBE_MIRROR) {
-            dn = reflect(d, ns_f);
-        } else {
-            float eta = s.front ? 1.0 / m.ior : m.ior;
-            float scale;
-            bool refracted;
-            dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
-            if (refracted) {
-                beta *= glass_tint(m, s.uv);
-            }
-        }
-        // Delta lobe: no connection is possible here; the pdf ratio cancels.
-        d_vcm = 0.0;
-        d_vc *= mis(abs(dot(dn, ns_f)));
-        d_vm *= mis(abs(dot(dn, ns_f)));
-        d = dn;
+    } else if (!scatter_unconnected_lobe(lobe, m, s, ns_f, ng_f, false, rng, d, beta, d_vcm, d_vc, d_vm)) {
+        break; // mirror, glass or rough glass (importance: no eta^2; vcm.glsl)
     }
     if (HAS_NORMALS != 0u) {
         beta *= shading_normal_adjoint(wi, d, ns_f, ng_f);

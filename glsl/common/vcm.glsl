@@ -78,4 +78,45 @@ VcmFactors vcm_factors(uint sample_base, uint light_path_total) {
     return k;
 }
 
+// The scattering at a subpath vertex whose drawn lobe is not the continuous one: a smooth
+// mirror or glass (delta lobes) or rough glass. Such a vertex is never connected or merged
+// at, so dVCM (its edge to the next vertex) becomes 0 and dVC and dVM keep only their own
+// term, the pdf ratio |cos| pdf_rev / pdf_fwd (Georgiev 2012, "Implementing Vertex Connection
+// and Merging", the recursive update with the connection terms dropped).
+// `radiance`: a camera subpath carries radiance (refraction scales it by eta^2, Veach 1997,
+// section 5.2), a light subpath importance (no scaling). Updates d, beta and the three
+// quantities; false where the path ends (rough glass masked, or the geometric normal
+// disagreeing with the shading normal's side).
+bool scatter_unconnected_lobe(uint lobe, GpuMaterial m, Surface s, vec3 ns_f, vec3 ng_f, bool radiance, inout Rng rng,
+                              inout vec3 d, inout vec3 beta, inout float d_vcm, inout float d_vc, inout float d_vm) {
+    float eta = s.front ? 1.0 / m.ior : m.ior;
+    vec3 dn;
+    float pdf_rev_w = 1.0, pdf_fwd_w = 1.0; // a delta lobe's pdfs cancel
+    if (HAS_ROUGH_GLASS != 0u && lobe == LOBE_ROUGH_GLASS) {
+        float u_sel = rng_next(rng);
+        float u1 = rng_next(rng);
+        float u2 = rng_next(rng);
+        float weight;
+        bool refracted;
+        if (!rough_dielectric_sample_world(ns_f, -d, eta, glass_alpha(m, s.uv), radiance, u_sel, u1, u2, dn, weight, pdf_fwd_w, pdf_rev_w, refracted)
+            || (dot(dn, ng_f) > 0.0) == refracted) {
+            return false;
+        }
+        beta *= refracted ? weight * glass_tint(m, s.uv) : vec3(weight);
+    } else if (lobe == LOBE_MIRROR) {
+        dn = reflect(d, ns_f);
+    } else {
+        float scale;
+        bool refracted;
+        dn = sample_dielectric(d, ns_f, eta, rng_next(rng), scale, refracted);
+        float k = radiance ? scale : 1.0;
+        beta *= refracted ? k * glass_tint(m, s.uv) : vec3(k);
+    }
+    d_vcm = 0.0;
+    d_vc *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w);
+    d_vm *= mis(abs(dot(dn, ns_f)) * pdf_rev_w / pdf_fwd_w); // VCM: as dVC (a vertex that is never merged)
+    d = dn;
+    return true;
+}
+
 #endif
