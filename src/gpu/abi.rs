@@ -327,11 +327,8 @@ gpu_consts! {
     /// First-hit pass: 1 when an AOV (albedo, normal, depth) is asked for; 0 when only the
     /// EXR's alpha is, so the pass traces each camera ray as an any-hit ray and stops there.
     pub const SPEC_FIRST_HIT_AOVS: u32 = 50;
-    /// pt and pt-nee: 1 starts an invocation's next sample where its path ends (path
-    /// regeneration, one loop of bounces); 0 runs a loop of samples around a loop of bounces.
-    /// The two give the same image; which is faster depends on device and scene
-    /// (`render::default_path_regeneration`).
-    pub const SPEC_PATH_REGENERATION: u32 = 51;
+    // 51 was SPEC_PATH_REGENERATION: path regeneration or not is now a module each (pt.comp,
+    // pt_loop.comp), so a pipeline compiles only the loop it runs.
     /// pt-nee: 1 traces the light sample's shadow ray in the step after the one that drew it,
     /// through the same trace_ray call as the extension ray; 0 where it is drawn (a second call).
     pub const SPEC_ONE_TRACE: u32 = 52;

@@ -34,7 +34,8 @@ struct Queue {
     paused: Buffer,
 }
 
-/// The megakernel path tracer (`glsl/kernels/pt.comp`), specialised for the scene.
+/// The megakernel path tracer (`glsl/common/pt_kernel.glsl`: `pt.comp`, `pt_loop.comp` or
+/// `pt_queue.comp` by how its samples run), specialised for the scene.
 pub struct PathTracer {
     kernel: Kernel,
     queue: Option<Queue>,
@@ -58,12 +59,14 @@ impl PathTracer {
         specs.push(Spec { id: abi::SPEC_STATS, value: settings.count_traversal as u32 });
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(settings.sampler.spec());
-        specs.push(Spec { id: abi::SPEC_PATH_REGENERATION, value: regenerate as u32 });
         specs.push(Spec { id: abi::SPEC_ONE_TRACE, value: one_trace as u32 });
-        let forms = scene.bvh.kernel(&kernels::PT_FORMS);
         let Some(shape) = queue.filter(|_| nee) else {
+            // One module per loop form (glsl/common/pt_kernel.glsl).
+            let forms = scene.bvh.kernel(if regenerate { &kernels::PT_FORMS } else { &kernels::PT_LOOP_FORMS });
             return Ok(PathTracer { kernel: ctx.create_kernel(forms, &specs)?, queue: None });
         };
+        // The queue's launches regenerate paths whatever `regenerate` says.
+        let forms = scene.bvh.kernel(&kernels::PT_QUEUE_FORMS);
         let tracer = ShadowQueueTracer::new(ctx, scene, settings.count_traversal, shape.slots, invocations, false)?;
         specs.push(tracer.spec());
         let pause = match shape.pause {
