@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 35: s35a (the compressed wide BVH at build quality 2 and 4 on the H200, pt-nee and pt on the Cornell box; CPU devices take 4 since 2b2e99d).
+# Parts of session 35 (not run: no device was lent that session): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (not run: no device was lent that session): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
 # Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code); s33d (not run: a measurement build, scripts/device/s33d.patch, the fma() shear with the distance as before).
 # Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (run in session 33: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
@@ -61,23 +61,32 @@ shader_cache() {
 }
 case "${1:-speed}" in
 s35a)
-  # Session 35: the compressed wide BVH's build quality on the H200. CPU devices build it at
-  # quality 4 since 2b2e99d (lavapipe: the Cornell box 7-9 % faster, docs/results.md, "lavapipe
-  # against Mitsuba 3"); on GPUs pt-nee and pt take it in diffuse scenes at quality 2. Three
-  # rounds of `bench render` (ms per 1024 spp), then pt-nee at 0.1 s and 1 s against the
-  # sharper reference, each quality in turn. If 4 is ahead in both, make it the GPU default
-  # too (render::default_bvh_build).
+  # Session 35, two questions (no device was lent that session). (1) The megakernel path
+  # tracer's three loop forms are a module each since 0d0ba13 (pt.comp, pt_loop.comp,
+  # pt_queue.comp; lavapipe's pipeline for pt-nee 0.44 -> 0.13 s of setup, the same images):
+  # does the H200's code run as before? HEAD (.device/bidir.gz) against .device/bidir-pre35.gz
+  # (a build of 2b2e99d, the GPU kernels of ee766f1), `bench render` ms per 1024 spp, three
+  # rounds interleaved: pt-nee (the queue's module, over cwbvh) and pt (regeneration) on the
+  # Cornell box, pt-nee on the caustic scene (glass: no regeneration, pt_loop); then the setup
+  # and samples of `render --time 0.1`. (2) The compressed wide BVH's build quality, which CPU
+  # devices take at 4 since 2b2e99d (lavapipe: the Cornell box 7-9 % faster): HEAD at quality
+  # 2 (the GPU default) and 4, the same commands. Keep 4 on GPUs too if it is ahead in both.
   for f in .device/*.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  P=${PRE35:-$PWD/.device/bidir-pre35}
+  CA="$PWD/.device/scenes/caustic/caustic.obj"
   for r in 1 2 3; do
-    for i in pt-nee pt; do
-      for q in 2 4; do
-        echo "== $i quality $q"; timeout -k 5 60 "$B" bench render $CB --integrator $i --spp 1024 --bvh-quality $q --warmup 1 --runs 3 2>&1 | grep -E "GPU|^pt"
+    for run in "$P|" "$B|" "$B|--bvh-quality 4"; do
+      b=${run%%|*}; o=${run#*|}
+      for i in pt-nee pt; do
+        echo "== $i: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt"
       done
+      echo "== caustic pt-nee: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render "$CA" --width 128 --height 128 --integrator pt-nee --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt"
     done
   done
   for t in 0.1 1; do
-    for q in 2 4 2 4; do
-      echo "== pt-nee $t s quality $q"; timeout -k 5 60 "$B" render $CB --integrator pt-nee --time $t --bvh-quality $q --reference "$REF" -o /tmp/q.exr 2>&1 | grep -E "spp in|RMSE"
+    for run in "$P|" "$B|" "$B|--bvh-quality 4" "$P|" "$B|" "$B|--bvh-quality 4"; do
+      b=${run%%|*}; o=${run#*|}
+      echo "== pt-nee $t s: $(basename "$b") $o"; timeout -k 5 60 "$b" render $CB --integrator pt-nee --time $t --reference "$REF" -o /tmp/q.exr $o 2>&1 | grep -E "spp in|RMSE"
     done
   done
   ;;
