@@ -150,6 +150,9 @@ fn kernels_are_compiled_once_per_specialisation() {
     assert!(a.same_pipeline(&b), "the same kernel and constants were compiled twice");
     assert!(!a.same_pipeline(&c), "other constants reused a pipeline");
     assert!(!a.same_pipeline(&d) && d.same_pipeline(&ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap()));
+    // The driver's time is measured when the pipeline is built and kept with it.
+    assert!(a.build_time() > std::time::Duration::ZERO && c.build_time() > std::time::Duration::ZERO);
+    assert_eq!(b.build_time(), a.build_time(), "the cached kernel reports the build it came from");
     drop((a, b, c, d));
     finish(ctx);
 }

@@ -63,6 +63,12 @@ pub struct Report {
     /// Dispatches not timed (more than a submission's timestamps).
     pub untimed: u64,
     pub counts: Option<TraversalCounts>,
+    /// Wall-clock milliseconds of the renderer's setup (`Renderer::new`: the BVH, the
+    /// scene's buffers and the kernels' pipelines), before the first sample.
+    pub setup_ms: f64,
+    /// The renderer's kernels and how long the driver took to build each pipeline, in
+    /// milliseconds (`vk::Kernel::build_time`), the slowest first.
+    pub pipelines: Vec<(String, f64)>,
 }
 
 impl Report {
@@ -83,6 +89,8 @@ impl Report {
             self.msamples_per_s(),
             self.wall_ms
         );
+        let builds: Vec<String> = self.pipelines.iter().map(|(name, ms)| format!("{name} {ms:.1}")).collect();
+        println!("setup {:.1} ms; the integrator kernels' pipelines built in, ms: {}", self.setup_ms, builds.join(", "));
         let per_sample_ns = |ms: f64| ms * 1e6 / (self.pixels as f64 * self.spp as f64);
         println!("{:<22} {:>10} {:>7} {:>12} {:>10}", "kernel", "ms/run", "share", "ns/sample", "dispatches");
         for k in &self.kernels {
@@ -123,6 +131,16 @@ impl Report {
             ("gpu_ms", Json::Num(self.gpu_ms)),
             ("wall_ms", Json::Num(self.wall_ms)),
             ("msamples_per_s", Json::Num(self.msamples_per_s())),
+            ("setup_ms", Json::Num(self.setup_ms)),
+            (
+                "pipelines",
+                Json::Arr(
+                    self.pipelines
+                        .iter()
+                        .map(|(name, ms)| Json::obj(vec![("name", Json::Str(name.clone())), ("build_ms", Json::Num(*ms))]))
+                        .collect(),
+                ),
+            ),
             (
                 "traversal_counts",
                 match self.counts {
@@ -159,7 +177,11 @@ impl Report {
 pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings, o: &Options) -> Result<Report, RenderError> {
     let integrator = settings.integrator.name();
     let count_settings = RenderSettings { count_traversal: true, ..settings.clone() };
+    let t_setup = Instant::now();
     let mut r = Renderer::new(ctx, scene, camera, settings)?;
+    let setup_ms = t_setup.elapsed().as_secs_f64() * 1e3;
+    let mut pipelines: Vec<(String, f64)> = r.kernels().iter().map(|k| (k.name().to_owned(), k.build_time().as_secs_f64() * 1e3)).collect();
+    pipelines.sort_by(|a, b| b.1.total_cmp(&a.1));
     let kernel_form = r.kernel_form();
     let spp = o.spp.max(1);
     for _ in 0..o.warmup {
@@ -224,5 +246,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
         kernels,
         untimed,
         counts,
+        setup_ms,
+        pipelines,
     })
 }

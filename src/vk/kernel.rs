@@ -46,6 +46,8 @@ pub(crate) struct Compiled {
     bindings: Vec<ReflectedBinding>,
     push_size: u32,
     local_size: [u32; 3],
+    /// How long the driver took to make the shader module and the pipeline.
+    build_time: std::time::Duration,
 }
 
 /// One compile statistic of a kernel, as the driver names it (e.g. NVIDIA's "Register
@@ -114,6 +116,13 @@ impl Kernel {
     /// `local_size_{x,y,z}` of the kernel.
     pub fn local_size(&self) -> [u32; 3] {
         self.0.local_size
+    }
+    /// How long the driver took to build the pipeline (its shader module and pipeline
+    /// creation), when this context first asked for this source and these constants: the
+    /// part of a renderer's setup a kernel costs (`bidir bench render` prints it). A driver
+    /// with a cache of its own (NVIDIA's, Mesa's for machine code) is faster the second time.
+    pub fn build_time(&self) -> std::time::Duration {
+        self.0.build_time
     }
     /// Workgroups needed to cover `n` invocations along x.
     pub fn groups_for(&self, n: u32) -> u32 {
@@ -215,6 +224,7 @@ impl Context {
                     return Err(VkError::Vk { what: format!("pipeline layout of {}", source.name), result });
                 }
             };
+            let t_build = std::time::Instant::now();
             let shader = match s.device.create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None) {
                 Ok(m) => m,
                 Err(result) => {
@@ -249,6 +259,7 @@ impl Context {
             }
             let info = [info];
             let result = s.device.create_compute_pipelines(vk::PipelineCache::null(), &info, None);
+            let build_time = t_build.elapsed();
             s.device.destroy_shader_module(shader, None);
             let pipeline = match result {
                 Ok(p) => p[0],
@@ -270,6 +281,7 @@ impl Context {
                 bindings,
                 push_size,
                 local_size,
+                build_time,
             })
         }
     }
