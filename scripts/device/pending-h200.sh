@@ -66,7 +66,8 @@ s35a)
   # pt_queue.comp; lavapipe's pipeline for pt-nee 0.44 -> 0.13 s of setup, the same images):
   # does the H200's code run as before? HEAD (.device/bidir.gz) against .device/bidir-pre35.gz
   # (a build of 2b2e99d, the GPU kernels of ee766f1), `bench render` ms per 1024 spp, three
-  # rounds interleaved: pt-nee (the queue's module, over cwbvh) and pt (regeneration) on the
+  # rounds interleaved (with each kernel's pipeline build time, which `bench render` prints since
+  # 16b50e7; the pre35 build prints none): pt-nee (the queue's module, over cwbvh) and pt (regeneration) on the
   # Cornell box, pt-nee on the caustic scene (glass: no regeneration, pt_loop); then the setup
   # and samples of `render --time 0.1`. (2) The compressed wide BVH's build quality, which CPU
   # devices take at 4 since 2b2e99d (lavapipe: the Cornell box 7-9 % faster): HEAD at quality
@@ -78,9 +79,9 @@ s35a)
     for run in "$P|" "$B|" "$B|--bvh-quality 4"; do
       b=${run%%|*}; o=${run#*|}
       for i in pt-nee pt; do
-        echo "== $i: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt"
+        echo "== $i: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt|^setup"
       done
-      echo "== caustic pt-nee: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render "$CA" --width 128 --height 128 --integrator pt-nee --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt"
+      echo "== caustic pt-nee: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render "$CA" --width 128 --height 128 --integrator pt-nee --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt|^setup"
     done
   done
   for t in 0.1 1; do
