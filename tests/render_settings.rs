@@ -40,6 +40,27 @@ fn values_differing(a: &[f32], b: &[f32], relative: f32) -> usize {
     a.iter().zip(b).filter(|(x, y)| (*x - *y).abs() > relative * x.abs()).count()
 }
 
+/// The BVH's build where `--bvh-quality` does not say (`render::default_bvh_build`): the
+/// compressed wide BVH at quality 4 on CPU devices for scenes up to the bound, at 2 on GPUs;
+/// the renderer's settings say which, and a quality asked for is kept.
+#[test]
+fn compressed_wide_bvh_quality_follows_the_device() {
+    let ctx = gpu();
+    let scene = Scene::builtin_cornell_box();
+    let mut settings = RenderSettings::new(Integrator::PtNee);
+    settings.bvh_layout = Some(BvhLayout::Cwbvh);
+    let r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings.clone()).unwrap();
+    let expect = if ctx.info().is_cpu() { 4 } else { 2 };
+    assert_eq!(r.settings().bvh.quality, expect, "on {}", ctx.info().name);
+    assert!(scene.triangles.len() <= bidir::render::CPU_QUALITY_4_MAX_TRIANGLES);
+    drop(r);
+    settings.bvh_quality = Some(1);
+    let r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
+    assert_eq!(r.settings().bvh.quality, 1, "--bvh-quality was not kept");
+    drop(r);
+    finish(ctx);
+}
+
 /// The integrator kernels are built for the binary, the compressed wide and the 4-wide BVH: a
 /// quantised binary BVH would have its nodes read as one of those, so it is refused with a
 /// message that says what is accepted; the accepted layouts are the ones the renderer then uses.

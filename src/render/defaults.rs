@@ -197,18 +197,24 @@ pub fn wavefront_bvh_layout(on_cpu: bool) -> BvhLayout {
 /// (rayon): Sponza's 4-wide tree at quality 4 in 0.31 s on the H200's 16-core host (0.14 s at
 /// quality 2; 1.5 s at quality 4 on one core), the same tree on any number of threads.
 ///
-/// On CPU devices (`on_cpu`) the compressed wide BVH is built at quality 4: on lavapipe the
-/// built-in Cornell box renders 7-9 % faster with pt-nee, bdpt and pt (fewer nodes per ray:
-/// primary 1.4 -> 1.2, diffuse 1.6 -> 1.4), Sponza's traversal level to a few percent faster,
-/// for a build of 1.0 s instead of 0.23 s on two cores (docs/results.md, "lavapipe against
-/// Mitsuba 3"). The image is the same.
-pub fn default_bvh_build(layout: BvhLayout, on_cpu: bool) -> (u32, u32) {
+/// On CPU devices (`on_cpu`) the compressed wide BVH is built at quality 4 for scenes of up
+/// to [`CPU_QUALITY_4_MAX_TRIANGLES`] triangles: on lavapipe the built-in Cornell box renders
+/// 7-9 % faster with pt-nee, bdpt and pt (fewer nodes per ray: primary 1.4 -> 1.2, diffuse
+/// 1.6 -> 1.4), Sponza (262,087 triangles) 3 % faster, for a build of 0.98 s instead of 0.23 s
+/// on two cores (docs/results.md, "lavapipe against Mitsuba 3"). The build time grows with
+/// the triangles, so larger scenes keep quality 2 and their first pixel comes no later than
+/// it did. The image is the same.
+pub fn default_bvh_build(layout: BvhLayout, on_cpu: bool, triangles: usize) -> (u32, u32) {
     match layout {
         BvhLayout::Bvh4 => (3, 4),
-        BvhLayout::Cwbvh if on_cpu => (4, 4),
+        BvhLayout::Cwbvh if on_cpu && triangles <= CPU_QUALITY_4_MAX_TRIANGLES => (4, 4),
         _ => (4, 2),
     }
 }
+
+/// The most triangles [`default_bvh_build`] builds at quality 4 on CPU devices: about four
+/// times Sponza's, a build of some 4 s on this project's two-core CI machine.
+pub const CPU_QUALITY_4_MAX_TRIANGLES: usize = 1 << 20;
 
 /// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
 /// the default for the device, integrator and scene).
