@@ -68,7 +68,8 @@ s35a)
   # (a build of 2b2e99d, the GPU kernels of ee766f1), `bench render` ms per 1024 spp, three
   # rounds interleaved (with each kernel's pipeline build time, which `bench render` prints since
   # 16b50e7; the pre35 build prints none): pt-nee (the queue's module, over cwbvh) and pt (regeneration) on the
-  # Cornell box, pt-nee on the caustic scene (glass: no regeneration, pt_loop); then the setup
+  # Cornell box, pt-nee on the caustic scene (glass: no regeneration, pt_loop), and bdpt there
+  # (its steps' mirror and glass scattering is one function since 4b55b94); then the setup
   # and samples of `render --time 0.1`. (2) The compressed wide BVH's build quality, which CPU
   # devices take at 4 since 2b2e99d (lavapipe: the Cornell box 7-9 % faster): HEAD at quality
   # 2 (the GPU default) and 4, the same commands. Keep 4 on GPUs too if it is ahead in both.
@@ -81,7 +82,9 @@ s35a)
       for i in pt-nee pt; do
         echo "== $i: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt|^setup"
       done
-      echo "== caustic pt-nee: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render "$CA" --width 128 --height 128 --integrator pt-nee --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt|^setup"
+      for i in pt-nee bdpt; do
+        echo "== caustic $i: $(basename "$b") $o"; timeout -k 5 60 "$b" bench render "$CA" --width 128 --height 128 --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU|^pt|^bdpt|^setup"
+      done
     done
   done
   for t in 0.1 1; do
