@@ -1,6 +1,6 @@
 // One path of the path tracers (pt, pt-nee) between its segments: its state, its start and
-// the scattering at what a segment found (path_scatter), shared by the megakernel (pt.comp,
-// which traces in path_bounce) and the wavefront kernel (pt_wavefront.comp, whose segments
+// the scattering at what a segment found (path_scatter), shared by the megakernels (pt.comp, pt_loop.comp, pt_queue.comp,
+// which trace in path_bounce) and the wavefront kernel (pt_wavefront.comp, whose segments
 // and shadow rays are traced by the trace kernels between its launches; PT_WAVEFRONT).
 // The includer declares `pc` (PtPush), the specialisation constants NEE, ONE_TRACE and
 // SHADOW_SUSPEND, and includes ray, rng, scene, bsdf, lights, emission, env, punctual and

@@ -1,7 +1,7 @@
 // The body of the shadow-ray queue's kernels (docs/integrators.md, "Shadow-ray queue";
 // glsl/common/shadow_queue.glsl fills the queue): traces the shadow rays a megakernel launch
 // queued. Invocation i takes megakernel invocation i's slots in the order they were filled.
-// - shadow_queue.comp (after pt.comp and bdpt_camera.comp): the megakernel's invocation ->
+// - shadow_queue.comp (after pt_queue.comp and bdpt_camera.comp): the megakernel's invocation ->
 //   (slice, pixel) mapping; each invocation adds its clear rays' contributions to its pixel's
 //   sums in slot order, so the sums are reproducible.
 // - shadow_queue_splat.comp (after bdpt_light.comp; defines SHADOW_QUEUE_SPLATS first): one

@@ -64,7 +64,7 @@ GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
 }
 
 void main() {
-    // Slot -> (slice, pixel of the camera's window), as pt.comp maps its invocations.
+    // Slot -> (slice, pixel of the camera's window), as the megakernel maps its invocations (pt_kernel.glsl, pt_invocation).
     uint g = gl_GlobalInvocationID.x;
     uint tiles = tiled_count(pc.camera.window_size);
     uint slices = max(pc.slices, 1u);

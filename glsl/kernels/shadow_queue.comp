@@ -1,5 +1,5 @@
 #version 460
-// The shadow-ray queue after pt.comp and bdpt_camera.comp: traces the shadow rays a launch
+// The shadow-ray queue after pt_queue.comp and bdpt_camera.comp: traces the shadow rays a launch
 // queued and adds the clear ones to the pixel sums it wrote (glsl/common/shadow_queue_kernel.glsl).
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require

@@ -822,7 +822,7 @@ gpu_structs! {
     }
 
     /// pt-nee's path of one invocation between the launches of a pass (the shadow-ray queue):
-    /// pt.comp's `PathState` without a pending shadow ray, the sample it belongs to and the
+    /// pt_path.glsl's `PathState` (pt_queue.comp) without a pending shadow ray, the sample it belongs to and the
     /// random-number state.
     pub struct PtSuspended (96 bytes) {
         /// Origin of the next segment (its floats' bits), then the vertex count.
