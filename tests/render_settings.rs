@@ -41,23 +41,33 @@ fn values_differing(a: &[f32], b: &[f32], relative: f32) -> usize {
 }
 
 /// The BVH's build where `--bvh-quality` does not say (`render::default_bvh_build`): the
-/// compressed wide BVH at quality 4 on CPU devices for scenes up to the bound, at 2 on GPUs;
-/// the renderer's settings say which, and a quality asked for is kept.
+/// binary and compressed wide BVHs at quality 4 for scenes up to the bound on any device; the
+/// renderer's settings say which, and a quality asked for is kept.
 #[test]
-fn compressed_wide_bvh_quality_follows_the_device() {
+fn bvh_build_quality_follows_the_scene_size() {
     let ctx = gpu();
     let scene = Scene::builtin_cornell_box();
-    let mut settings = RenderSettings::new(Integrator::PtNee);
-    settings.bvh_layout = Some(BvhLayout::Cwbvh);
-    let r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings.clone()).unwrap();
-    let expect = if ctx.info().is_cpu() { 4 } else { 2 };
-    assert_eq!(r.settings().bvh.quality, expect, "on {}", ctx.info().name);
-    assert!(scene.triangles.len() <= bidir::render::CPU_QUALITY_4_MAX_TRIANGLES);
-    drop(r);
-    settings.bvh_quality = Some(1);
-    let r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
-    assert_eq!(r.settings().bvh.quality, 1, "--bvh-quality was not kept");
-    drop(r);
+    assert!(scene.triangles.len() <= bidir::render::QUALITY_4_MAX_TRIANGLES);
+    for layout in [BvhLayout::Bvh2, BvhLayout::Cwbvh] {
+        let mut settings = RenderSettings::new(Integrator::PtNee);
+        settings.bvh_layout = Some(layout);
+        let r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings.clone()).unwrap();
+        assert_eq!(r.settings().bvh.quality, 4, "{layout:?} on {}", ctx.info().name);
+        drop(r);
+        settings.bvh_quality = Some(1);
+        let r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings.clone()).unwrap();
+        assert_eq!(r.settings().bvh.quality, 1, "{layout:?}: --bvh-quality was not kept");
+        drop(r);
+        // `bench render` reports the build it timed, in its JSON too.
+        let mut camera = scene.cameras[0].clone();
+        (camera.width, camera.height) = (8, 8);
+        let o = bidir::bench::render::Options { spp: 1, warmup: 0, runs: 1, count: false };
+        let report = bidir::bench::render::run(&ctx, &scene, &camera, settings, &o).unwrap();
+        assert_eq!((report.bvh.layout, report.bvh.quality, report.bvh.max_leaf_tris), (layout, 1, 4));
+        let json = report.to_json().to_pretty();
+        let name = layout.name();
+        assert!(json.contains(&format!("\"layout\": \"{name}\"")) && json.contains("\"quality\": 1"), "{json}");
+    }
     finish(ctx);
 }
 

@@ -7,7 +7,8 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 35 (not run: no device was lent that session): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
+# Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table).
+# Parts of session 35 (run in session 36; s34a too: no device was lent that session): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (not run: no device was lent that session): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
 # Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code); s33d (not run: a measurement build, scripts/device/s33d.patch, the fma() shear with the distance as before).
 # Parts of session 32: s32a (the trace kernels' machine code, then s31a); s32b (a measurement build: the 4-wide node's slots permuted so that a plane load fetches the children's sector); s32c (refill counts, persistent workgroups, two rays per invocation, launch sizes); s32d (run in session 33: a measurement build, scripts/device/s32d.patch: a launch warm, two launches with and without a barrier, ray loads and hit stores marked Nontemporal).
@@ -60,6 +61,56 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s36b)
+  # Session 36, after the binary and compressed wide BVHs went to build quality 4 on GPUs
+  # (.device/bidir.gz; .device/bidir-base.gz is fb05dc5, quality 2): BDPT's two forms on the
+  # plain Cornell box (the H100 put the megakernels 12 % ahead of the wavefront form, the H200
+  # had them 7 % behind in session 27), pt-nee, three rounds of `bench render`; then issue #16's
+  # equal-time table, `render --time 1` and pt-nee's 0.1 s, RMSE against .device/ref.exr.
+  for f in .device/bidir.gz .device/bidir-base.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  for r in 1 2 3; do
+    for run in "$B|pt-nee|" "$B|bdpt|" "$B|bdpt|--wavefront off" "$BASE|bdpt|--wavefront off"; do
+      b=${run%%|*}; rest=${run#*|}; i=${rest%%|*}; o=${rest#*|}
+      echo "== $i $(basename $b) $o"; timeout -k 5 60 "$b" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU"
+    done
+  done
+  for r in 1 2; do
+    for run in "pt-nee|--time 0.1" "pt-nee|--time 1" "bdpt|--time 1" "bdpt|--time 1 --wavefront off"; do
+      i=${run%%|*}; o=${run#*|}
+      echo "== $i $o"; timeout -k 5 60 "$B" render $CB --integrator $i -o /tmp/q.exr $o 2>&1 | grep -E "spp in"
+      "$B" diff /tmp/q.exr "$REF" 2>&1 | head -1
+    done
+  done
+  ;;
+s36a)
+  # Session 36. (1) s35a found the compressed wide BVH at build quality 4 7 % faster for pt-nee
+  # and pt on the Cornell box, and the binary BVH at 4 15 % faster for pt-nee on the caustic
+  # scene: which quality and leaf size to make the GPUs' default (HEAD, `bench render` ms per
+  # 1024 spp, two rounds interleaved). (2) BDPT's 4-wide BVH on the Cornell box at quality 5
+  # and other leaf sizes, and its megakernels over the compressed wide BVH at quality 4.
+  # (3) Issue #16's equal-time table at quality 4: `render --time 1`, RMSE against .device/ref.exr
+  # to three digits (`bidir diff`).
+  for f in .device/bidir.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CA="$PWD/.device/scenes/caustic/caustic.obj"
+  for r in 1 2; do
+    for o in "" "--bvh-quality 3" "--bvh-quality 4" "--bvh-quality 4 --bvh-leaf-size 2"; do
+      for i in pt-nee pt; do
+        echo "== $i: $o"; timeout -k 5 60 "$B" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU"
+      done
+    done
+    for o in "" "--bvh-quality 3" "--bvh-quality 4" "--bvh-quality 4 --bvh-leaf-size 2" "--bvh-quality 4 --bvh-leaf-size 8"; do
+      echo "== caustic pt-nee: $o"; timeout -k 5 60 "$B" bench render "$CA" --width 128 --height 128 --integrator pt-nee --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU"
+    done
+    for o in "" "--bvh-quality 5" "--bvh-leaf-size 2" "--bvh-leaf-size 4" "--wavefront off" "--wavefront off --bvh cwbvh --bvh-quality 4"; do
+      echo "== bdpt: $o"; timeout -k 5 60 "$B" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -vE "^setup|^kernel "
+    done
+  done
+  for run in "pt-nee|" "pt-nee|--bvh-quality 4" "bdpt|" "bdpt|--bvh-quality 5" "pt-nee|--bvh-quality 4" "bdpt|"; do
+    i=${run%%|*}; o=${run#*|}
+    echo "== $i 1 s: $o"; timeout -k 5 60 "$B" render $CB --integrator $i --time 1 -o /tmp/q.exr $o 2>&1 | grep -E "spp in"
+    "$B" diff /tmp/q.exr "$REF" 2>&1 | head -1
+  done
+  ;;
 s35a)
   # Session 35, two questions (no device was lent that session). (1) The megakernel path
   # tracer's three loop forms are a module each since 0d0ba13 (pt.comp, pt_loop.comp,

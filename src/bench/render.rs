@@ -4,6 +4,7 @@
 //! time.
 
 use super::json::Json;
+use crate::bvh::BuildOptions;
 use crate::render::{RenderError, RenderSettings, Renderer};
 use crate::scene::{Camera, Scene};
 use crate::vk::Context;
@@ -69,6 +70,9 @@ pub struct Report {
     /// The renderer's kernels and how long the driver took to build each pipeline, in
     /// milliseconds (`vk::Kernel::build_time`), the slowest first.
     pub pipelines: Vec<(String, f64)>,
+    /// The BVH the integrator traverses: its build options as resolved (the layout, obvhs'
+    /// quality preset, the most triangles a leaf).
+    pub bvh: BuildOptions,
 }
 
 impl Report {
@@ -90,7 +94,14 @@ impl Report {
             self.wall_ms
         );
         let builds: Vec<String> = self.pipelines.iter().map(|(name, ms)| format!("{name} {ms:.1}")).collect();
-        println!("setup {:.1} ms; the integrator kernels' pipelines built in, ms: {}", self.setup_ms, builds.join(", "));
+        println!(
+            "setup {:.1} ms ({} at build quality {}, leaf size {}); the integrator kernels' pipelines built in, ms: {}",
+            self.setup_ms,
+            self.bvh.layout.name(),
+            self.bvh.quality,
+            self.bvh.max_leaf_tris,
+            builds.join(", ")
+        );
         let per_sample_ns = |ms: f64| ms * 1e6 / (self.pixels as f64 * self.spp as f64);
         println!("{:<22} {:>10} {:>7} {:>12} {:>10}", "kernel", "ms/run", "share", "ns/sample", "dispatches");
         for k in &self.kernels {
@@ -132,6 +143,14 @@ impl Report {
             ("wall_ms", Json::Num(self.wall_ms)),
             ("msamples_per_s", Json::Num(self.msamples_per_s())),
             ("setup_ms", Json::Num(self.setup_ms)),
+            (
+                "bvh",
+                Json::obj(vec![
+                    ("layout", Json::Str(self.bvh.layout.name().to_owned())),
+                    ("quality", Json::Int(self.bvh.quality as i64)),
+                    ("max_leaf_tris", Json::Int(self.bvh.max_leaf_tris as i64)),
+                ]),
+            ),
             (
                 "pipelines",
                 Json::Arr(
@@ -183,6 +202,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
     let mut pipelines: Vec<(String, f64)> = r.kernels().iter().map(|k| (k.name().to_owned(), k.build_time().as_secs_f64() * 1e3)).collect();
     pipelines.sort_by(|a, b| b.1.total_cmp(&a.1));
     let kernel_form = r.kernel_form();
+    let bvh = r.settings().bvh;
     let spp = o.spp.max(1);
     for _ in 0..o.warmup {
         r.reset(None)?;
@@ -248,5 +268,6 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
         counts,
         setup_ms,
         pipelines,
+        bvh,
     })
 }

@@ -84,8 +84,8 @@ pub struct SettingsArgs {
     #[arg(long, default_value = "auto", value_name = "auto|bvh2|cwbvh|bvh4")]
     pub bvh: String,
     /// BVH build quality, obvhs's preset 0 (fastest build) .. 4 (slowest build, fewest nodes
-    /// visited per ray) [default: 4 for bvh4 and, up to 2^20 triangles, for cwbvh on CPU
-    /// devices; 2 otherwise]; 5 builds sixteen quality-4 trees and keeps the one of least SAH
+    /// visited per ray) [default: 4 for bvh4 and, up to 2^20 triangles, for bvh2 and cwbvh; 2
+    /// otherwise]; 5 builds sixteen quality-4 trees and keeps the one of least SAH
     /// (sixteen times the build time); the image is the same.
     #[arg(long, value_name = "0..5", value_parser = clap::value_parser!(u32).range(0..=5))]
     pub bvh_quality: Option<u32>,

@@ -189,32 +189,37 @@ pub fn wavefront_bvh_layout(on_cpu: bool) -> BvhLayout {
 /// The most triangles per leaf and the obvhs quality preset a BVH of `layout` is built with
 /// for the integrators where `--bvh-leaf-size` / `--bvh-quality` do not say: the 4-wide BVH
 /// of the wavefront forms' trace kernels at 3 and 4, as `bench traversal` measured best for
-/// it (docs/traversal.md, session 17); the others at 4 and 2 (quality 3 gained the megakernels
-/// nothing on Sponza, session 7). NVIDIA H200, `bench render`, two runs (docs/traversal.md,
-/// "Half-precision boxes, alpha masks, the integrators' build"): textured Sponza 640x360 under
-/// sun and sky, 64 spp, pt-nee 53.6 -> 49.8 ms, pt 41.9 -> 39.4, bdpt 69.4 -> 66.4 against leaf
-/// size 4, quality 2 (with the alpha marks of the same session). obvhs builds in parallel
-/// (rayon): Sponza's 4-wide tree at quality 4 in 0.31 s on the H200's 16-core host (0.14 s at
-/// quality 2; 1.5 s at quality 4 on one core), the same tree on any number of threads.
+/// it (docs/traversal.md, session 17); the binary and compressed wide BVHs at 4 and 4 for
+/// scenes of up to [`QUALITY_4_MAX_TRIANGLES`] triangles, at 4 and 2 beyond. NVIDIA H200,
+/// `bench render`, two runs (docs/traversal.md, "Half-precision boxes, alpha masks, the
+/// integrators' build"): textured Sponza 640x360 under sun and sky, 64 spp, pt-nee 53.6 ->
+/// 49.8 ms, pt 41.9 -> 39.4, bdpt 69.4 -> 66.4 against leaf size 4, quality 2 (with the alpha
+/// marks of the same session). obvhs builds in parallel (rayon): Sponza's 4-wide tree at
+/// quality 4 in 0.31 s on the H200's 16-core host (0.14 s at quality 2; 1.5 s at quality 4 on
+/// one core), the same tree on any number of threads.
 ///
-/// On CPU devices (`on_cpu`) the compressed wide BVH is built at quality 4 for scenes of up
-/// to [`CPU_QUALITY_4_MAX_TRIANGLES`] triangles: on lavapipe the built-in Cornell box renders
-/// 7-9 % faster with pt-nee, bdpt and pt (fewer nodes per ray: primary 1.4 -> 1.2, diffuse
-/// 1.6 -> 1.4), Sponza (262,087 triangles) 3 % faster, for a build of 0.98 s instead of 0.23 s
-/// on two cores (docs/results.md, "lavapipe against Mitsuba 3"). The build time grows with
+/// Quality 4 for the binary and compressed wide BVHs (docs/results.md, "Build quality 4 for
+/// every BVH"): the built-in Cornell box 256², ms per 1024 spp, NVIDIA H200, three rounds:
+/// pt-nee 52.95-53.36 against 57.17-57.35, pt 30.14-30.54 against 32.64-32.79, and pt-nee on
+/// the caustic scene's binary BVH 10.21-10.61 against 10.81-11.77 (H100: quality 3 level with
+/// 4 over the wide BVH, behind on the binary one; leaf size 2 no better); BDPT's megakernels
+/// over the wide BVH 168.3 against 176.6 (H100); on lavapipe 7-9 % for pt-nee, bdpt and pt
+/// (fewer nodes per ray: primary 1.4 -> 1.2, diffuse 1.6 -> 1.4), Sponza (262,087 triangles)
+/// 3 % faster, for a build of 0.98 s instead of 0.23 s on two cores. The build time grows with
 /// the triangles, so larger scenes keep quality 2 and their first pixel comes no later than
 /// it did. The image is the same.
-pub fn default_bvh_build(layout: BvhLayout, on_cpu: bool, triangles: usize) -> (u32, u32) {
+pub fn default_bvh_build(layout: BvhLayout, triangles: usize) -> (u32, u32) {
     match layout {
         BvhLayout::Bvh4 => (3, 4),
-        BvhLayout::Cwbvh if on_cpu && triangles <= CPU_QUALITY_4_MAX_TRIANGLES => (4, 4),
+        BvhLayout::Cwbvh | BvhLayout::Bvh2 if triangles <= QUALITY_4_MAX_TRIANGLES => (4, 4),
         _ => (4, 2),
     }
 }
 
-/// The most triangles [`default_bvh_build`] builds at quality 4 on CPU devices: about four
-/// times Sponza's, a build of some 4 s on this project's two-core CI machine.
-pub const CPU_QUALITY_4_MAX_TRIANGLES: usize = 1 << 20;
+/// The most triangles [`default_bvh_build`] builds the binary and compressed wide BVHs for at
+/// quality 4: about four times Sponza's, a build of some 4 s on this project's two-core CI
+/// machine (about 1 s on the H200's 16-core host).
+pub const QUALITY_4_MAX_TRIANGLES: usize = 1 << 20;
 
 /// The layout `Renderer::new` builds for `integrator` on `ctx` with `settings` (`--bvh`, or
 /// the default for the device, integrator and scene).
@@ -307,6 +312,20 @@ mod default_tests {
 
     /// The queue takes the slots asked for where they fit the budget, fewer where not, none
     /// where fewer than a handful would; the budget covers the queue, counts and paused paths.
+    /// Quality 4 up to the bound for the binary and compressed wide BVHs, 2 past it; the 4-wide
+    /// one at 4 whatever the size; leaf sizes 4, 4 and 3.
+    #[test]
+    fn bvh_build_quality_follows_the_scene_size() {
+        let n = QUALITY_4_MAX_TRIANGLES;
+        for layout in [BvhLayout::Bvh2, BvhLayout::Cwbvh] {
+            assert_eq!(default_bvh_build(layout, 12), (4, 4), "{layout:?}");
+            assert_eq!(default_bvh_build(layout, n), (4, 4), "{layout:?}");
+            assert_eq!(default_bvh_build(layout, n + 1), (4, 2), "{layout:?}");
+        }
+        assert_eq!(default_bvh_build(BvhLayout::Bvh4, n + 1), (3, 4));
+        assert_eq!(default_bvh_build(BvhLayout::Bvh2q, 12), (4, 2));
+    }
+
     #[test]
     fn shadow_queue_fits_its_budget() {
         let q = ShadowQueue { slots: 192, chunk_samples: 24, pause: true };

@@ -35,7 +35,7 @@ pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
 pub use defaults::{
     default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_one_trace, default_path_regeneration, default_shadow_queue,
-    default_wavefront, wavefront_bvh_layout, CPU_QUALITY_4_MAX_TRIANGLES,
+    default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
 };
 pub use film::Film;
 pub use gpu_scene::GpuScene;
@@ -562,7 +562,7 @@ impl Renderer {
         }
         let features = SceneFeatures::of(scene);
         settings.bvh.layout = auto_bvh_layout(ctx, &settings, settings.integrator, &features);
-        let (leaf_size, quality) = default_bvh_build(settings.bvh.layout, on_cpu(ctx), scene.triangles.len());
+        let (leaf_size, quality) = default_bvh_build(settings.bvh.layout, scene.triangles.len());
         settings.bvh.max_leaf_tris = settings.bvh_leaf_size.unwrap_or(leaf_size);
         settings.bvh.quality = settings.bvh_quality.unwrap_or(quality);
         // Resolved once from what the scene has, so `settings()` says what runs.
