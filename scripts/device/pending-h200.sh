@@ -67,9 +67,13 @@ s36b)
   # plain Cornell box (the H100 put the megakernels 12 % ahead of the wavefront form, the H200
   # had them 7 % behind in session 27), pt-nee, three rounds of `bench render`; then issue #16's
   # equal-time table, `render --time 1` and pt-nee's 0.1 s, RMSE against .device/ref.exr.
-  for f in .device/bidir.gz .device/bidir-base.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  # .device/bidir-exp.gz: a measurement build whose wavefront BDPT kernels neither load nor
+  # store the path state's sigma/seed word where the scene has no volume or alpha (16 of 80 and
+  # of 96 bytes a launch).
+  for f in .device/bidir.gz .device/bidir-base.gz .device/bidir-exp.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  X=$PWD/.device/bidir-exp
   for r in 1 2 3; do
-    for run in "$B|pt-nee|" "$B|bdpt|" "$B|bdpt|--wavefront off" "$BASE|bdpt|--wavefront off"; do
+    for run in "$B|pt-nee|" "$B|bdpt|" "$X|bdpt|" "$B|bdpt|--wavefront off" "$BASE|bdpt|--wavefront off"; do
       b=${run%%|*}; rest=${run#*|}; i=${rest%%|*}; o=${rest#*|}
       echo "== $i $(basename $b) $o"; timeout -k 5 60 "$b" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU"
     done
@@ -79,6 +83,20 @@ s36b)
       i=${run%%|*}; o=${run#*|}
       echo "== $i $o"; timeout -k 5 60 "$B" render $CB --integrator $i -o /tmp/q.exr $o 2>&1 | grep -E "spp in"
       "$B" diff /tmp/q.exr "$REF" 2>&1 | head -1
+    done
+  done
+  SPB="$PWD/.device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for b in "$B" "$X"; do
+      echo "== sponza bdpt $(basename $b)"; timeout -k 5 60 "$b" bench render $SPB --spp 64 --warmup 1 --runs 3 --integrator bdpt 2>&1 | grep -E "GPU"
+    done
+  done
+  # Issue #17's diffuse rays (2.482-2.494 Grays/s with --refill 24 in s34a): the quality-5
+  # tree's leaf size, 3 (the default) against 2 and 4, two rounds interleaved.
+  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
+  for r in 1 2; do
+    for l in 3 2 4; do
+      echo "== sponza leaf $l --refill 24"; timeout -k 5 60 "$B" bench traversal "$PWD/.device/scenes/sponza/Sponza.gltf" --camera CameraMain --bvh bvh4 --leaf-size $l --quality 5 --refill 24 2>&1 | grep -E "^(primary|shadow|diffuse) "
     done
   done
   ;;
