@@ -194,6 +194,16 @@ fn bdpt_with_direct_light_tracing_matches_references() {
     check_settings("bdpt --direct-light-tracing", settings, 1);
 }
 
+#[test]
+fn bdpt_with_the_power_heuristic_matches_references() {
+    // The Cornell box's BDPT weighs its strategies by the balance heuristic by default
+    // (`render::default_mis`); the power heuristic, the default of glossy and specular scenes,
+    // must converge to the same image here too.
+    let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
+    settings.mis = Some(bidir::render::Mis::Power);
+    check_settings("bdpt --mis power", settings, 1);
+}
+
 /// Without light tracing for direct lighting (the default) BDPT's samples are less noisy on
 /// the Cornell box: the same seed and samples, per-sample MSE against the sharp reference.
 /// lavapipe, 16 spp, seeds 0-2: 0.876-0.887 of it with light tracing (0.77-0.81 at 64 spp,

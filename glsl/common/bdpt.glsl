@@ -92,9 +92,15 @@ LightVertex load_light_vertex(uint slot) {
     return v;
 }
 
-// Power heuristic, beta = 2.
+// The MIS heuristic in the recursive form of Georgiev 2012 ("Implementing Vertex Connection
+// and Merging", eqs. 38-47): every weight is a sum of mis(pdf ratio) terms, so any power of
+// the ratio gives weights that sum to one. Veach 1997, section 9.2.4: the balance heuristic
+// (beta = 1, MIS_BALANCE) or the power heuristic with beta = 2 (RenderSettings::mis,
+// render::default_mis).
+layout(constant_id = SPEC_MIS_BALANCE) const uint MIS_BALANCE = 0u;
+
 float mis(float x) {
-    return x * x;
+    return MIS_BALANCE != 0u ? x : x * x;
 }
 
 // Light tracing for direct lighting (`--direct-light-tracing`, RenderSettings::

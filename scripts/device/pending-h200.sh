@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table).
+# Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (s34a run in session 36, the fold not kept, so s34b was not needed): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
 # Parts of session 33: s33a (a measurement build: the watertight test's shear and distance as fused multiply-adds); s33b (the committed build: hit-for-hit tests on the H200, issue #17's figures, the integrators); s33c (the committed build against one with the shear's negations in the loop, and their machine code); s33d (not run: a measurement build, scripts/device/s33d.patch, the fma() shear with the distance as before).
@@ -61,6 +61,21 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s36c)
+  # Session 36, BDPT's MIS heuristic (the balance heuristic by default in scenes with only
+  # diffuse surfaces since this commit; lavapipe: 6-8 % less variance off the Cornell box's
+  # light edge at equal cost): `bench render` ms per 1024 spp and `render --time 1` against
+  # .device/ref.exr, the default against `--mis power`, and pt-nee, two rounds interleaved.
+  for f in .device/bidir.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  for r in 1 2; do
+    for run in "bdpt|" "bdpt|--mis power" "pt-nee|"; do
+      i=${run%%|*}; o=${run#*|}
+      echo "== $i $o"; timeout -k 5 60 "$B" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU"
+      timeout -k 5 60 "$B" render $CB --integrator $i --time 1 -o /tmp/q.exr $o 2>&1 | grep -E "spp in"
+      "$B" diff /tmp/q.exr "$REF" 2>&1 | head -1
+    done
+  done
+  ;;
 s36b)
   # Session 36, after the binary and compressed wide BVHs went to build quality 4 on GPUs
   # (.device/bidir.gz; .device/bidir-base.gz is fb05dc5, quality 2): BDPT's two forms on the

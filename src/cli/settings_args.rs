@@ -140,6 +140,12 @@ pub struct SettingsArgs {
     /// unbiased.
     #[arg(long)]
     pub direct_light_tracing: bool,
+    /// BDPT and VCM: how their strategies are weighed (multiple importance sampling): auto |
+    /// balance | power (the power heuristic, exponent 2). auto: balance for bdpt in scenes with
+    /// only diffuse surfaces, power otherwise (measured: docs/results.md, "BDPT's MIS
+    /// heuristic"). Either is unbiased [default: auto]
+    #[arg(long, default_value = "auto", value_name = "auto|balance|power")]
+    pub mis: String,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
     /// diagonal (0.001), or a length in scene units with the suffix u (0.02u).
     #[arg(long, default_value = "0.001", value_name = "R")]
@@ -201,6 +207,10 @@ impl SettingsArgs {
             other => bail!("--wavefront {other}: auto | on | off"),
         };
         s.direct_light_tracing = self.direct_light_tracing;
+        s.mis = match self.mis.as_str() {
+            "auto" => None,
+            other => Some(other.parse().map_err(|e| anyhow::anyhow!("--mis {e}"))?),
+        };
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;
         Ok(s)

@@ -372,6 +372,9 @@ gpu_consts! {
     /// trace kernels starts, `Tracer::queued_groups` of the pass's slots (a persistent kernel's
     /// resident workgroups); the default, u32::MAX, bounds nothing.
     pub const SPEC_WF_TRACE_GROUPS: u32 = 61;
+    /// BDPT and VCM: 1 weighs their strategies by the balance heuristic (`mis(x) = x`), 0 by
+    /// the power heuristic with exponent 2 (`RenderSettings::mis`; glsl/common/bdpt.glsl).
+    pub const SPEC_MIS_BALANCE: u32 = 62;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
     /// per slot of a wavefront form, its path between launches (`PtSuspended`, or BDPT's camera
     /// and light passes: `BdptCameraState`, `BdptLightState`).

@@ -34,8 +34,8 @@ mod wavefront_queues;
 pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
 pub use defaults::{
-    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_one_trace, default_path_regeneration, default_shadow_queue,
-    default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
+    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_mis, default_one_trace, default_path_regeneration,
+    default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
 };
 pub use film::Film;
 pub use gpu_scene::GpuScene;
@@ -108,6 +108,27 @@ impl std::str::FromStr for Integrator {
                     "unknown integrator '{s}' (pt | pt-nee | bdpt | bdpt:full | bdpt:single | bdpt:k=N | bdpt:lvc | bdpt:lvc=N | vcm | vcm:merge-all | vcm:no-merge | vcm:no-connect)"
                 )),
             },
+        }
+    }
+}
+
+/// How BDPT and VCM weigh their strategies (multiple importance sampling; Veach 1997, section
+/// 9.2.4). Either is unbiased; they differ in noise.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mis {
+    /// The balance heuristic: each strategy's weight in proportion to its pdf.
+    Balance,
+    /// The power heuristic with exponent 2: in proportion to the pdf's square.
+    Power,
+}
+
+impl std::str::FromStr for Mis {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Mis, String> {
+        match s {
+            "balance" => Ok(Mis::Balance),
+            "power" => Ok(Mis::Power),
+            other => Err(format!("{other}: balance | power")),
         }
     }
 }
@@ -271,6 +292,9 @@ pub struct RenderSettings {
     /// draw: less noise and fewer shadow rays (glsl/common/bdpt.glsl; docs/integrators.md).
     /// Either is unbiased.
     pub direct_light_tracing: bool,
+    /// BDPT and VCM: the MIS heuristic (`--mis`); `None` takes [`default_mis`] for the
+    /// integrator and scene.
+    pub mis: Option<Mis>,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
     /// of the megakernel; bdpt with the light vertex cache's fixed joins: its light and camera
@@ -320,6 +344,7 @@ impl RenderSettings {
             one_trace: None,
             shadow_queue: None,
             direct_light_tracing: false,
+            mis: None,
             wavefront: None,
             count_traversal: false,
         }
