@@ -10,7 +10,7 @@ mod common;
 
 use bidir::imaging::{metrics::block_means, read_exr, RgbImage};
 use bidir::render::vcm::{VcmMode, VcmRadius};
-use bidir::render::{Integrator, Join, RenderSettings, Renderer};
+use bidir::render::{Integrator, Join, Mis, RenderSettings, Renderer};
 use bidir::scene::Scene;
 use common::{finish, gpu, scenes::furnace_scene};
 use std::path::Path;
@@ -58,8 +58,10 @@ fn small_cornell(size: u32) -> Scene {
 
 /// With merging off VCM's weights are BDPT's (eta_VCM = 0 removes every merging term), so
 /// `vcm:no-merge` and `bdpt` (the same join, `Join::DEFAULT`) give the same image for the
-/// same seed, with light tracing a strategy of direct lighting (`--direct-light-tracing`) or
-/// not (the default): the same kernels with dVM carried but unused, the same random numbers.
+/// same seed and MIS heuristic (`--mis`: BDPT takes the balance heuristic on this diffuse box
+/// by default, VCM the power heuristic; both are run under each), with light tracing a
+/// strategy of direct lighting (`--direct-light-tracing`) or not (the default): the same
+/// kernels with dVM carried but unused, the same random numbers.
 /// Not always to the last bit: light tracing
 /// splats with float atomics whose order varies from run to run (as BDPT against itself), so
 /// values may differ by a few ulps (measured: at most 2e-7 relative; a weight error would show
@@ -67,10 +69,11 @@ fn small_cornell(size: u32) -> Scene {
 #[test]
 fn no_merge_equals_bdpt() {
     let scene = small_cornell(32);
-    for direct_light_tracing in [false, true] {
+    for (direct_light_tracing, mis) in [(false, Mis::Power), (true, Mis::Power), (false, Mis::Balance)] {
         let settings = |integrator| {
             let mut s = RenderSettings::new(integrator);
             s.direct_light_tracing = direct_light_tracing;
+            s.mis = Some(mis);
             s
         };
         let a = render(&scene, settings(Integrator::Bdpt(Join::DEFAULT)), 2, 3..=3).remove(0);
@@ -79,7 +82,7 @@ fn no_merge_equals_bdpt() {
         let rel = a.data.iter().zip(&b.data).map(|(x, y)| ((x - y).abs() / x.abs().max(1e-6)) as f64).fold(0.0, f64::max);
         let mean = image_mean(&a);
         eprintln!(
-            "vcm:no-merge vs bdpt (direct light tracing {direct_light_tracing}): {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})",
+            "vcm:no-merge vs bdpt (direct light tracing {direct_light_tracing}, {mis:?} heuristic): {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})",
             a.data.len()
         );
         assert!(mean > 0.01, "the image is lit");
