@@ -88,3 +88,30 @@ fn render_ranges_merge_info_and_refusal() {
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("plain.exr"));
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// BDPT's parts record the MIS heuristic that ran (`--mis`, resolved for the scene): on the
+/// diffuse Cornell box the default is the balance heuristic, so a part rendered with `--mis
+/// balance` merges with a default one, and one with `--mis power` (another estimator of the
+/// same image, with other noise) is refused by its settings.
+#[test]
+fn bdpt_parts_merge_only_under_one_mis_heuristic() {
+    // A folder of its own: the other test removes `dir()` when it ends.
+    let d = std::env::temp_dir().join(format!("bidir-cli-parts-mis-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    let (a, b, c, out) = (d.join("a.exr"), d.join("b.exr"), d.join("c.exr"), d.join("out.exr"));
+    let common = ["render", "--width", "16", "--height", "12", "--seed", "3", "--integrator", "bdpt"];
+    let with = |extra: &[&str]| -> Vec<String> { common.iter().chain(extra).map(|x| x.to_string()).collect() };
+    let run = |args: Vec<String>| ok(&args.iter().map(String::as_str).collect::<Vec<_>>());
+    run(with(&["--sample-range", "0..2", "-o", s(&a)]));
+    run(with(&["--sample-range", "2..4", "--mis", "balance", "-o", s(&b)]));
+    run(with(&["--sample-range", "4..6", "--mis", "power", "-o", s(&c)]));
+    let merged = ok(&["merge", s(&a), s(&b), "-o", s(&out)]);
+    assert!(merged.contains("samples 0..4 (4 spp)"), "{merged}");
+    assert!(ok(&["info", s(&out)]).contains("mis Balance"), "the heuristic is not recorded");
+    let refused = bidir(&["merge", s(&a), s(&c), "-o", s(&d.join("refused.exr"))]);
+    assert!(!refused.status.success());
+    let err = String::from_utf8_lossy(&refused.stderr);
+    assert!(err.contains("settings differs"), "{err}");
+    assert!(!d.join("refused.exr").exists(), "a refused merge wrote output");
+    std::fs::remove_dir_all(&d).ok();
+}
