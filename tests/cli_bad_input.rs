@@ -176,6 +176,7 @@ fn numbers_out_of_range_are_rejected_with_the_flag() {
     fails(&["info", "--builtin", "--fov", "-10"], &["--fov -10: must be in (0, 180)"]);
     fails(&["info", "--builtin", "--fov", "180"], &["--fov 180: must be in (0, 180)"]);
     fails(&["render", "--time", "-1"], &["--time -1: must be a positive number of seconds"]);
+    fails(&["render", "--integrator", "bdpt", "--mis", "veach", "--spp", "1"], &["--mis veach: auto | balance | power"]);
     fails(&["bench", "traversal", "--leaf-size", "99"], &["--leaf-size 99: must be in 1..=16"]);
     fails(&["bench", "traversal", "--bvh", "cwbvh", "--leaf-size", "4"], &["--leaf-size 4: must be in 1..=3"]);
     fails(&["bench", "traversal", "--bvh", "cwbvh", "--short-stack"], &["--short-stack: only with the binary layouts"]);

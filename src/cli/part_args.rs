@@ -82,8 +82,7 @@ pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: Sam
         if s.direct_light_tracing {
             set += " direct_light_tracing";
         }
-        let features = bidir::gpu_data::SceneFeatures::of(&loaded.scene);
-        set += &format!(" mis {:?}", s.mis.unwrap_or_else(|| bidir::render::default_mis(s.integrator, &features)));
+        set += &format!(" mis {:?}", s.mis_for(&bidir::gpu_data::SceneFeatures::of(&loaded.scene)));
     }
     if let bidir::render::Integrator::Vcm(_) = s.integrator {
         set += &format!(" vcm_radius {:?} vcm_alpha {}", s.vcm_radius, s.vcm_alpha);

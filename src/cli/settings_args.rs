@@ -209,7 +209,7 @@ impl SettingsArgs {
         s.direct_light_tracing = self.direct_light_tracing;
         s.mis = match self.mis.as_str() {
             "auto" => None,
-            other => Some(other.parse().map_err(|e| anyhow::anyhow!("--mis {e}"))?),
+            other => Some(other.parse().map_err(|_| anyhow::anyhow!("--mis {other}: auto | balance | power"))?),
         };
         s.vcm_radius = self.vcm_radius;
         s.vcm_alpha = bidir::render::vcm::check_alpha(self.vcm_alpha).map_err(anyhow::Error::msg)?;

@@ -197,8 +197,7 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_STATS, value: settings.count_traversal as u32 });
         specs.push(sampler.spec());
         specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
-        let mis = settings.mis.unwrap_or_else(|| super::default_mis(settings.integrator, &scene.features));
-        specs.push(Spec { id: abi::SPEC_MIS_BALANCE, value: (mis == super::Mis::Balance) as u32 });
+        specs.push(Spec { id: abi::SPEC_MIS_BALANCE, value: (settings.mis_for(&scene.features) == super::Mis::Balance) as u32 });
         specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
         let capacity = paths.saturating_mul(light_path_len);
         let wavefront = match wavefront {

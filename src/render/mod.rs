@@ -308,6 +308,13 @@ pub struct RenderSettings {
 }
 
 impl RenderSettings {
+    /// The MIS heuristic BDPT and VCM run with in a scene of `features`: `--mis`, or
+    /// [`default_mis`] for the integrator and scene. Resolved where the kernels are built (so
+    /// an integrator switch takes the new integrator's default) and where a part records it.
+    pub fn mis_for(&self, features: &SceneFeatures) -> Mis {
+        self.mis.unwrap_or_else(|| default_mis(self.integrator, features))
+    }
+
     /// These settings for another integrator: Russian roulette follows the new integrator's
     /// default unless it was set by hand.
     pub fn with_integrator(&self, integrator: Integrator) -> RenderSettings {
