@@ -177,6 +177,19 @@ fn numbers_out_of_range_are_rejected_with_the_flag() {
     fails(&["info", "--builtin", "--fov", "180"], &["--fov 180: must be in (0, 180)"]);
     fails(&["render", "--time", "-1"], &["--time -1: must be a positive number of seconds"]);
     fails(&["render", "--integrator", "bdpt", "--mis", "veach", "--spp", "1"], &["--mis veach: auto | balance | power"]);
+    fails(
+        &["render", "--integrator", "bdpt", "--connection-candidates", "0", "--spp", "1"],
+        &["--connection-candidates 0: auto or a whole number from 1 to 64"],
+    );
+    fails(&["render", "--integrator", "bdpt", "--connection-candidates", "many", "--spp", "1"], &["--connection-candidates many"]);
+    fails(
+        &["render", "--integrator", "bdpt:full", "--connection-candidates", "4", "--spp", "1"],
+        &["--connection-candidates", "not bdpt:full's"],
+    );
+    fails(
+        &["render", "--integrator", "pt-nee", "--connection-candidates", "2", "--spp", "1"],
+        &["--connection-candidates", "not pt-nee's"],
+    );
     fails(&["bench", "traversal", "--leaf-size", "99"], &["--leaf-size 99: must be in 1..=16"]);
     fails(&["bench", "traversal", "--bvh", "cwbvh", "--leaf-size", "4"], &["--leaf-size 4: must be in 1..=3"]);
     fails(&["bench", "traversal", "--bvh", "cwbvh", "--short-stack"], &["--short-stack: only with the binary layouts"]);

@@ -21,12 +21,12 @@ vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_re
 }
 
 // Connection of camera vertex (p, ns_f, ng_f, continuous BSDF c, wo toward the previous
-// camera vertex, sigma_a on the side it was reached from, d_vcm, d_vc) to light vertex y.
-// Both ends connect on the side their paths arrived on; either may lie inside a volume.
-// vm_camera / vm_light: the merging factor where merging at the camera / light vertex is a
-// strategy of this path, else 0 (vcm.glsl). Returns `scale` times the contribution where it
-// is added now; 0 where the shadow ray is blocked or queued (shadow_queue.glsl).
-vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, LightVertex y, vec3 scale, inout uvec2 stats) {
+// camera vertex, sigma_a on the side it was reached from, d_vcm, d_vc) to light vertex y,
+// before its shadow ray: the MIS-weighted contribution if y were visible (0 where it carries
+// nothing). Both ends connect on the side their paths arrived on; either may lie inside a
+// volume. vm_camera / vm_light: the merging factor where merging at the camera / light vertex
+// is a strategy of this path, else 0 (vcm.glsl).
+vec3 connection_unshadowed(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, LightVertex y) {
     vec3 v = y.pos - p;
     float dist2 = dot(v, v);
     vec3 dir = v * inversesqrt(dist2);
@@ -51,10 +51,64 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
         vec3 sigma_y = volume_sigma(materials[y.material], y.back_face != 0u);
         contrib *= volume_transmittance(segment_sigma(sigma, sigma_y), sqrt(dist2));
     }
+    return max3(contrib) > 0.0 ? contrib : vec3(0.0);
+}
+
+// The connection above with its shadow ray: `scale` times the contribution where it is added
+// now; 0 where the shadow ray is blocked or queued (shadow_queue.glsl).
+vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, LightVertex y, vec3 scale, inout uvec2 stats) {
+    vec3 contrib = connection_unshadowed(p, ns_f, ng_f, wo, c, sigma, d_vcm, d_vc, vm_camera, vm_light, y);
     if (max3(contrib) <= 0.0 || !camera_shadow_clear(shadow_ray_between(p, ng_f, y.pos, y.ng), scale * contrib, stats)) {
         return vec3(0.0);
     }
     return scale * contrib;
+}
+
+// One connection of the light vertex cache, its vertex resampled (Talbot et al. 2005,
+// "Importance Resampling for Global Illumination") from LVC_CANDIDATES vertices drawn
+// uniformly from the `total` cached: candidate i's one-draw estimate x_i (its unshadowed
+// connection over its probability of being drawn and stored, `beta` and `scale` included) has
+// the target p_hat_i = luminance(x_i); one candidate s is kept with probability p_hat_s /
+// sum(p_hat) and its shadow ray traced. x_s * mean(p_hat) / p_hat_s has the expectation of
+// one uniform draw wherever p_hat > 0 covers x > 0 (it does: p_hat is x's luminance), so the
+// connection strategies' MIS weights are unchanged and still sum to one with the others; what
+// changes is variance: a shadow ray goes where the unshadowed contributions are large.
+// Returns the contribution where it is added now (as connect()).
+vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, uint depth, uint total, vec3 scale, inout Rng rng, inout uvec2 stats) {
+    float p_hat_sum = 0.0;
+    float p_hat_s = 0.0;
+    vec3 x_s = vec3(0.0);
+    vec3 pos_s = vec3(0.0);
+    vec3 ng_s = vec3(0.0);
+    for (uint i = 0u; i < LVC_CANDIDATES; i++) {
+        uint slot = lvc_index[rng_below(rng, total)];
+        float u_keep = rng_next(rng);
+        uvec2 counts = light_counts[slot / pc.light_path_len]; // (stored, seen)
+        LightVertex y = load_light_vertex(slot);
+        if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
+            continue;
+        }
+        vec3 x = scale * (float(counts.y) / float(counts.x)) * connection_unshadowed(p, ns_f, ng_f, wo, c, sigma, d_vcm, d_vc, vm_camera, vm_light, y);
+        float p_hat = luminance(x);
+        if (!(p_hat > 0.0)) {
+            continue; // nothing to carry, or NaN (left to the sample's own check)
+        }
+        p_hat_sum += p_hat;
+        if (u_keep * p_hat_sum < p_hat) {
+            x_s = x;
+            p_hat_s = p_hat;
+            pos_s = y.pos;
+            ng_s = y.ng;
+        }
+    }
+    if (p_hat_s <= 0.0) {
+        return vec3(0.0);
+    }
+    vec3 contrib = x_s * (p_hat_sum / (float(LVC_CANDIDATES) * p_hat_s));
+    if (!camera_shadow_clear(shadow_ray_between(p, ng_f, pos_s, ng_s), contrib, stats)) {
+        return vec3(0.0);
+    }
+    return contrib;
 }
 
 #endif

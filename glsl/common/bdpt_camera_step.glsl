@@ -176,12 +176,18 @@
             // by all light paths. A drawn vertex y of path p was evaluated with
             // probability joins / total given the cache, and stored with p's reservoir
             // probability stored / seen; dividing by both and by the number of light
-            // paths makes the expectation the full join's (docs/integrators.md).
+            // paths makes the expectation the full join's (docs/integrators.md). With
+            // LVC_CANDIDATES > 1 each drawn vertex is resampled from that many.
             uint total = lvc_total;
             if (total > 0u) {
                 uint joins = pc.join_k > 0u ? pc.join_k : max(1u, uint(float(total) / float(pc.light_path_total) + 0.5));
                 float scale = float(total) / (float(joins) * float(pc.light_path_total));
                 for (uint j = 0u; j < joins; j++) {
+                    if (LVC_CANDIDATES > 1u) {
+                        // Each connection's vertex resampled from several (bdpt_camera_path.glsl).
+                        radiance += connect_resampled(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, depth, total, beta * scale, rng, stats);
+                        continue;
+                    }
                     uint slot = lvc_index[rng_below(rng, total)];
                     uvec2 c = light_counts[slot / pc.light_path_len];
                     LightVertex y = load_light_vertex(slot);

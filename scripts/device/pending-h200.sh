@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (s34a run in session 36, the fold not kept, so s34b was not needed): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
@@ -61,6 +62,75 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s37b)
+  # Session 37, a measurement build (.device/bidir-exp.gz, not committed): the light vertex
+  # cache's connection resampled (RIS) from BIDIR_EXP_RIS uniform candidates by their
+  # unshadowed contribution (1: the committed uniform draw). Cornell box: `bench render` ms per
+  # 1024 spp, `render --time 1` against .device/ref.exr (whole, off the light's ring); the box
+  # whose light hides above a panel: 1 s, seeds 1 and 2; the caustic scene 128² 1 s against its
+  # reference; Sponza's geometry under sun and sky (glossy: 96-byte vertices), ms per 64 spp.
+  E=$PWD/.device/bidir-exp
+  gunzip -kf .device/bidir-exp.gz; chmod +x "$E"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for m in 1 2 4 8; do
+      export BIDIR_EXP_RIS=$m
+      echo "== RIS $m cornell: $(timeout -k 5 60 "$E" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+      timeout -k 5 60 "$E" render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | grep -E "spp in"
+      "$E" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+    done
+  done
+  for m in 1 4; do
+    export BIDIR_EXP_RIS=$m
+    echo "== RIS $m hidden: $(timeout -k 5 60 "$E" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    for s in 1 2; do timeout -k 5 60 "$E" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr 2>&1 | grep -E "spp in"; done
+    "$E" diff /tmp/h1.exr /tmp/h2.exr --below 1 2>&1 | grep -E "^RMSE"
+    echo "== RIS $m caustic"
+    timeout -k 5 60 "$E" render $CAU --integrator bdpt --time 1 -o /tmp/c.exr 2>&1 | grep -E "spp in"
+    "$E" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E "^RMSE"
+    echo "== RIS $m sponza: $(timeout -k 5 90 "$E" bench render $SP --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    echo "== RIS $m cornell vcm: $(timeout -k 5 60 "$E" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    timeout -k 5 60 "$E" render $CB --integrator vcm --time 1 -o /tmp/q.exr 2>&1 | grep -E "spp in"
+    "$E" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+  done
+  unset BIDIR_EXP_RIS
+  ;;
+s37a)
+  # Session 37, issue #16's equal-time error split at the light's edge: bdpt (the balance
+  # heuristic on the diffuse box, session 36) against `--mis power` and pt-nee, `bench render`
+  # ms per 1024 spp, `render --time 0.1` and `--time 1` against .device/ref.exr, over the whole
+  # image and off the light's ring (`diff --below 1`: pixels over 1.0 and two around them
+  # masked), two rounds interleaved; then bdpt's light paths per pixel under the balance heuristic.
+  for f in .device/bidir.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  for r in 1 2; do
+    for run in "bdpt|" "bdpt|--mis power" "pt-nee|"; do
+      i=${run%%|*}; o=${run#*|}
+      echo "== $i $o"; timeout -k 5 60 "$B" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E "GPU"
+      for t in 0.1 1; do
+        timeout -k 5 60 "$B" render $CB --integrator $i --time $t -o /tmp/q.exr $o 2>&1 | grep -E "spp in"
+        "$B" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+      done
+    done
+  done
+  # Bias beside noise: a second seed's 1 s render (the seed-to-seed RMSE^2 / 2 is the
+  # variance), and 10 s renders against the reference (noise alone would fall ~10x in MSE).
+  for i in bdpt pt-nee; do
+    echo "== $i seeds 1 and 2, 1 s; then 10 s"
+    timeout -k 5 60 "$B" render $CB --integrator $i --time 1 --seed 1 -o /tmp/s1.exr 2>&1 | grep -E "spp in"
+    timeout -k 5 60 "$B" render $CB --integrator $i --time 1 --seed 2 -o /tmp/s2.exr 2>&1 | grep -E "spp in"
+    "$B" diff /tmp/s1.exr /tmp/s2.exr --below 1 2>&1 | grep -E "^RMSE"
+    "$B" diff /tmp/s1.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+    timeout -k 5 60 "$B" render $CB --integrator $i --time 10 --seed 3 -o /tmp/s10.exr 2>&1 | grep -E "spp in"
+    "$B" diff /tmp/s10.exr "$REF" --below 1 --blocks 32 2>&1 | grep -vE "^(relMSE|mean)"
+  done
+  for l in 0.5 2; do
+    echo "== bdpt --light-paths $l"
+    timeout -k 5 60 "$B" render $CB --integrator bdpt --time 1 --light-paths $l -o /tmp/q.exr 2>&1 | grep -E "spp in"
+    "$B" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+  done
+  ;;
 s36c)
   # Session 36, BDPT's MIS heuristic (the balance heuristic by default in scenes with only
   # diffuse surfaces since this commit; lavapipe: 6-8 % less variance off the Cornell box's

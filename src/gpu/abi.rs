@@ -375,6 +375,10 @@ gpu_consts! {
     /// BDPT and VCM: 1 weighs their strategies by the balance heuristic (`mis(x) = x`), 0 by
     /// the power heuristic with exponent 2 (`RenderSettings::mis`; glsl/common/bdpt.glsl).
     pub const SPEC_MIS_BALANCE: u32 = 62;
+    /// BDPT and VCM with the light vertex cache: N > 1 resamples each connection's light vertex
+    /// from N uniform draws by its unshadowed contribution (`RenderSettings::
+    /// connection_candidates`; glsl/common/bdpt_camera_path.glsl); 1 draws it uniformly.
+    pub const SPEC_LVC_CANDIDATES: u32 = 63;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
     /// per slot of a wavefront form, its path between launches (`PtSuspended`, or BDPT's camera
     /// and light passes: `BdptCameraState`, `BdptLightState`).

@@ -34,8 +34,8 @@ mod wavefront_queues;
 pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
 pub use defaults::{
-    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_mis, default_one_trace, default_path_regeneration,
-    default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
+    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_connection_candidates, default_mis, default_one_trace,
+    default_path_regeneration, default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
 };
 pub use film::Film;
 pub use gpu_scene::GpuScene;
@@ -295,6 +295,11 @@ pub struct RenderSettings {
     /// BDPT and VCM: the MIS heuristic (`--mis`); `None` takes [`default_mis`] for the
     /// integrator and scene.
     pub mis: Option<Mis>,
+    /// BDPT and VCM with the light vertex cache (`bdpt`, `bdpt:lvc=N`, `vcm`): each
+    /// connection's light vertex is resampled from this many uniform draws by its unshadowed
+    /// contribution (`--connection-candidates`; 1: drawn uniformly); `None` takes
+    /// [`default_connection_candidates`]. Every count is unbiased.
+    pub connection_candidates: Option<u32>,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
     /// of the megakernel; bdpt with the light vertex cache's fixed joins: its light and camera
@@ -313,6 +318,17 @@ impl RenderSettings {
     /// an integrator switch takes the new integrator's default) and where a part records it.
     pub fn mis_for(&self, features: &SceneFeatures) -> Mis {
         self.mis.unwrap_or_else(|| default_mis(self.integrator, features))
+    }
+
+    /// The candidates each connection of the light vertex cache is resampled from:
+    /// `--connection-candidates`, or [`default_connection_candidates`]; 1 for the other joins.
+    pub fn connection_candidates_for(&self) -> u32 {
+        match self.integrator {
+            Integrator::Bdpt(bdpt::Join::Lvc(_)) | Integrator::Vcm(_) => {
+                self.connection_candidates.unwrap_or_else(|| default_connection_candidates(self.integrator))
+            }
+            _ => 1,
+        }
     }
 
     /// These settings for another integrator: Russian roulette follows the new integrator's
@@ -352,6 +368,7 @@ impl RenderSettings {
             shadow_queue: None,
             direct_light_tracing: false,
             mis: None,
+            connection_candidates: None,
             wavefront: None,
             count_traversal: false,
         }
