@@ -94,7 +94,7 @@ fn render_ranges_merge_info_and_refusal() {
 /// balance` merges with a default one, and one with `--mis power` (another estimator of the
 /// same image, with other noise) is refused by its settings.
 #[test]
-fn bdpt_parts_merge_only_under_one_mis_heuristic() {
+fn bdpt_parts_merge_only_under_one_mis_heuristic_and_candidate_count() {
     // A folder of its own: the other test removes `dir()` when it ends.
     let d = std::env::temp_dir().join(format!("bidir-cli-parts-mis-{}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
@@ -105,13 +105,18 @@ fn bdpt_parts_merge_only_under_one_mis_heuristic() {
     run(with(&["--sample-range", "0..2", "-o", s(&a)]));
     run(with(&["--sample-range", "2..4", "--mis", "balance", "-o", s(&b)]));
     run(with(&["--sample-range", "4..6", "--mis", "power", "-o", s(&c)]));
+    let e = d.join("e.exr");
+    run(with(&["--sample-range", "4..6", "--connection-candidates", "4", "-o", s(&e)]));
     let merged = ok(&["merge", s(&a), s(&b), "-o", s(&out)]);
     assert!(merged.contains("samples 0..4 (4 spp)"), "{merged}");
     assert!(ok(&["info", s(&out)]).contains("mis Balance"), "the heuristic is not recorded");
-    let refused = bidir(&["merge", s(&a), s(&c), "-o", s(&d.join("refused.exr"))]);
-    assert!(!refused.status.success());
-    let err = String::from_utf8_lossy(&refused.stderr);
-    assert!(err.contains("settings differs"), "{err}");
-    assert!(!d.join("refused.exr").exists(), "a refused merge wrote output");
+    assert!(ok(&["info", s(&e)]).contains("connection_candidates 4"), "the connections' candidates are not recorded");
+    for other in [&c, &e] {
+        let refused = bidir(&["merge", s(&a), s(other), "-o", s(&d.join("refused.exr"))]);
+        assert!(!refused.status.success());
+        let err = String::from_utf8_lossy(&refused.stderr);
+        assert!(err.contains("settings differs"), "{err}");
+        assert!(!d.join("refused.exr").exists(), "a refused merge wrote output");
+    }
     std::fs::remove_dir_all(&d).ok();
 }

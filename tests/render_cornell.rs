@@ -205,16 +205,16 @@ fn bdpt_with_the_power_heuristic_matches_references() {
 }
 
 #[test]
-fn bdpt_with_uniform_connections_matches_references() {
-    // BDPT resamples each connection's light vertex from several candidates by default
-    // (`render::default_connection_candidates`); one candidate, the uniform draw, must
-    // converge to the same image.
+fn bdpt_with_resampled_connections_matches_references() {
+    // Each connection's light vertex resampled from 4 uniform draws (`--connection-candidates
+    // 4`; the default draws one) must converge to the same image: a build that kept the
+    // chosen candidate's estimate without the resampling weight fails here.
     let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
-    settings.connection_candidates = Some(1);
-    check_settings("bdpt --connection-candidates 1", settings, 1);
+    settings.connection_candidates = 4;
+    check_settings("bdpt --connection-candidates 4", settings, 1);
 }
 
-/// Resampling each connection's light vertex from several candidates (the default) makes
+/// Resampling each connection's light vertex from several candidates makes
 /// BDPT's samples less noisy on the Cornell box: the same seed and samples, per-sample MSE
 /// against the sharp reference away from the light's edge (which only the pixel's own samples
 /// resolve). lavapipe, 256², 16 spp: RATIO with 4 candidates against 1. A target that did not
@@ -233,7 +233,7 @@ fn bdpt_resampled_connections_are_less_noisy() {
     let scene = Scene::builtin_cornell_box();
     let mse = |candidates: u32| {
         let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
-        settings.connection_candidates = Some(candidates);
+        settings.connection_candidates = candidates;
         let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
         r.render_spp(SPP, |_| {}).unwrap();
         let img = r.image().unwrap();

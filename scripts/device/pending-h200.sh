@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates).
+# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (s34a run in session 36, the fold not kept, so s34b was not needed): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
@@ -62,6 +62,29 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s37c)
+  # Session 37, the same measurement build (.device/bidir-exp.gz): the resampled connection's
+  # loads reordered, BIDIR_EXP_PREFETCH 1 (every candidate's index read first), 2 (and each
+  # next vertex loaded before the current one is evaluated); the same images as 0. ms per
+  # 1024 spp (Cornell box) and per 64 spp (Sponza's geometry under sun and sky).
+  E=$PWD/.device/bidir-exp
+  gunzip -kf .device/bidir-exp.gz; chmod +x "$E"
+  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for m in 1 2 4; do
+      for p in 0 1 2; do
+        [ "$m" = 1 ] && [ "$p" != 0 ] && continue
+        echo "== RIS $m prefetch $p: cornell $(BIDIR_EXP_RIS=$m BIDIR_EXP_PREFETCH=$p timeout -k 5 60 "$E" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+      done
+    done
+  done
+  for m in 1 4; do
+    for p in 0 2; do
+      [ "$m" = 1 ] && [ "$p" != 0 ] && continue
+      echo "== RIS $m prefetch $p: sponza $(BIDIR_EXP_RIS=$m BIDIR_EXP_PREFETCH=$p timeout -k 5 90 "$E" bench render $SP --integrator bdpt --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  ;;
 s37b)
   # Session 37, a measurement build (.device/bidir-exp.gz, not committed): the light vertex
   # cache's connection resampled (RIS) from BIDIR_EXP_RIS uniform candidates by their

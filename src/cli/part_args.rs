@@ -83,9 +83,8 @@ pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: Sam
             set += " direct_light_tracing";
         }
         set += &format!(" mis {:?}", s.mis_for(&bidir::gpu_data::SceneFeatures::of(&loaded.scene)));
-        let candidates = s.connection_candidates_for();
-        if candidates > 1 {
-            set += &format!(" connection_candidates {candidates}");
+        if s.connection_candidates > 1 {
+            set += &format!(" connection_candidates {}", s.connection_candidates);
         }
     }
     if let bidir::render::Integrator::Vcm(_) = s.integrator {

@@ -199,7 +199,7 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
         specs.push(Spec { id: abi::SPEC_MIS_BALANCE, value: (settings.mis_for(&scene.features) == super::Mis::Balance) as u32 });
         specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
-        specs.push(Spec { id: abi::SPEC_LVC_CANDIDATES, value: settings.connection_candidates_for() });
+        specs.push(Spec { id: abi::SPEC_LVC_CANDIDATES, value: settings.connection_candidates });
         let capacity = paths.saturating_mul(light_path_len);
         let wavefront = match wavefront {
             Some(_) if vcm.is_some() => return Err(RenderError::Unsupported("VCM has no wavefront form: add --wavefront off".into())),

@@ -203,17 +203,6 @@ pub fn default_mis(integrator: Integrator, features: &SceneFeatures) -> Mis {
     }
 }
 
-/// How many uniform draws from the light vertex cache each of BDPT's and VCM's connections is
-/// resampled from where `--connection-candidates` does not say (Talbot et al. 2005's resampled
-/// importance sampling by the connection's unshadowed contribution; glsl/common/
-/// bdpt_camera_path.glsl). Variance per sample, lavapipe, 64², 1,024 spp, from the difference
-/// of two seeds' renders off the light's edge (seed pairs 1-2 and 3-4; docs/results.md,
-/// "Connections resampled from several candidates"): 4 candidates against 1, Cornell box -22 %,
-/// the box whose light hides above a panel -28 to -30 %.
-pub fn default_connection_candidates(_integrator: Integrator) -> u32 {
-    4
-}
-
 /// The most triangles per leaf and the obvhs quality preset a BVH of `layout` is built with
 /// for the integrators where `--bvh-leaf-size` / `--bvh-quality` do not say: the 4-wide BVH
 /// of the wavefront forms' trace kernels at 3 and 4, as `bench traversal` measured best for

@@ -34,8 +34,8 @@ mod wavefront_queues;
 pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
 pub use defaults::{
-    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_connection_candidates, default_mis, default_one_trace,
-    default_path_regeneration, default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
+    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_mis, default_one_trace, default_path_regeneration,
+    default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
 };
 pub use film::Film;
 pub use gpu_scene::GpuScene;
@@ -297,9 +297,11 @@ pub struct RenderSettings {
     pub mis: Option<Mis>,
     /// BDPT and VCM with the light vertex cache (`bdpt`, `bdpt:lvc=N`, `vcm`): each
     /// connection's light vertex is resampled from this many uniform draws by its unshadowed
-    /// contribution (`--connection-candidates`; 1: drawn uniformly); `None` takes
-    /// [`default_connection_candidates`]. Every count is unbiased.
-    pub connection_candidates: Option<u32>,
+    /// contribution (`--connection-candidates`); 1, the default, draws it uniformly. Every count
+    /// is unbiased: more candidates lower the variance per sample and cost time
+    /// ([`MAX_CONNECTION_CANDIDATES`] at most; docs/results.md, "Connections resampled from
+    /// several candidates"). The other joins ignore it.
+    pub connection_candidates: u32,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
     /// of the megakernel; bdpt with the light vertex cache's fixed joins: its light and camera
@@ -318,17 +320,6 @@ impl RenderSettings {
     /// an integrator switch takes the new integrator's default) and where a part records it.
     pub fn mis_for(&self, features: &SceneFeatures) -> Mis {
         self.mis.unwrap_or_else(|| default_mis(self.integrator, features))
-    }
-
-    /// The candidates each connection of the light vertex cache is resampled from:
-    /// `--connection-candidates`, or [`default_connection_candidates`]; 1 for the other joins.
-    pub fn connection_candidates_for(&self) -> u32 {
-        match self.integrator {
-            Integrator::Bdpt(bdpt::Join::Lvc(_)) | Integrator::Vcm(_) => {
-                self.connection_candidates.unwrap_or_else(|| default_connection_candidates(self.integrator))
-            }
-            _ => 1,
-        }
     }
 
     /// These settings for another integrator: Russian roulette follows the new integrator's
@@ -368,7 +359,7 @@ impl RenderSettings {
             shadow_queue: None,
             direct_light_tracing: false,
             mis: None,
-            connection_candidates: None,
+            connection_candidates: 1,
             wavefront: None,
             count_traversal: false,
         }
@@ -424,6 +415,9 @@ pub struct Renderer {
     first_hit: Option<first_hit::FirstHitPass>,
 }
 
+/// Most candidates [`RenderSettings::connection_candidates`] takes: each is a random read and
+/// an evaluation of the connection.
+pub const MAX_CONNECTION_CANDIDATES: u32 = 64;
 /// Invocations that keep a large GPU busy (132 SMs x 2,048 resident threads on an H100).
 const TARGET_INVOCATIONS: u64 = 1 << 18;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
