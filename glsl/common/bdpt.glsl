@@ -92,9 +92,7 @@ LightVertex load_light_vertex(uint slot) {
     return v;
 }
 
-// The light vertex cache's connections: each one's vertex resampled from this many uniform
-// draws (RenderSettings::connection_candidates; connect_resampled in bdpt_camera_path.glsl).
-layout(constant_id = SPEC_LVC_CANDIDATES) const uint LVC_CANDIDATES = 1u;
+#include "lvc_entry.glsl"
 
 // The MIS heuristic in the recursive form of Georgiev 2012 ("Implementing Vertex Connection
 // and Merging", eqs. 38-47): every weight is a sum of mis(pdf ratio) terms, so any power of

@@ -65,47 +65,70 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 }
 
 // One connection of the light vertex cache, its vertex resampled (Talbot et al. 2005,
-// "Importance Resampling for Global Illumination") from LVC_CANDIDATES vertices drawn
-// uniformly from the `total` cached: candidate i's one-draw estimate x_i (its unshadowed
-// connection over its probability of being drawn and stored, `beta` and `scale` included) has
-// the target p_hat_i = luminance(x_i); one candidate s is kept with probability p_hat_s /
-// sum(p_hat) and its shadow ray traced. x_s * mean(p_hat) / p_hat_s has the expectation of
-// one uniform draw wherever p_hat > 0 covers x > 0 (it does: p_hat is x's luminance), so the
-// connection strategies' MIS weights are unchanged and still sum to one with the others; what
-// changes is variance: a shadow ray goes where the unshadowed contributions are large.
-// Returns the contribution where it is added now (as connect()).
+// "Importance Resampling for Global Illumination") from LVC_CANDIDATES entries drawn uniformly
+// from the `total` cached. Each candidate i is weighed by p_hat_i, its unshadowed, MIS-weighted
+// connection over its probability of being drawn and stored, computed from the entry's preview
+// of the vertex (lvc_compact.comp: position, shading normal, lobe pick, luminance of beta f and
+// the light side's MIS sum, taken as diffuse); one candidate s is kept with probability p_hat_s
+// / sum(p_hat), its vertex loaded, its exact one-draw estimate x_s evaluated and its shadow ray
+// traced: x_s * mean(p_hat) / p_hat_s has the expectation of one uniform draw wherever p_hat > 0
+// covers x_s > 0. It does: p_hat is 0 only where the camera side's cosines are not positive,
+// where x is 0 too (the light side's cosine enters as at least PREVIEW_COS_MIN, the normal being
+// quantised). So the connection strategies' MIS weights are unchanged and still sum to one
+// with the others; what changes is variance: the shadow ray goes where the unshadowed
+// contributions are large. Returns the contribution where it is added now (as connect()).
+const float PREVIEW_COS_MIN = 1.0e-3;
+
 vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, uint depth, uint total, vec3 scale, inout Rng rng, inout uvec2 stats) {
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
-    vec3 x_s = vec3(0.0);
-    vec3 pos_s = vec3(0.0);
-    vec3 ng_s = vec3(0.0);
+    uvec2 chosen = uvec2(0u);
     for (uint i = 0u; i < LVC_CANDIDATES; i++) {
-        uint slot = lvc_index[rng_below(rng, total)];
+        uint e = rng_below(rng, total) * LVC_ENTRY_WORDS;
         float u_keep = rng_next(rng);
-        uvec2 counts = light_counts[slot / pc.light_path_len]; // (stored, seen)
-        LightVertex y = load_light_vertex(slot);
-        if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
-            continue;
+        uvec4 w0 = lvc_index[e];
+        uvec4 w1 = lvc_index[e + 1u];
+        vec3 v = uintBitsToFloat(w1.xyz) - p;
+        float dist2 = dot(v, v);
+        vec3 dir = v * inversesqrt(dist2);
+        float cos_c = dot(ns_f, dir);
+        if (cos_c <= 0.0 || dot(ng_f, dir) <= 0.0) {
+            continue; // x is 0 here: so is p_hat
         }
-        vec3 x = scale * (float(counts.y) / float(counts.x)) * connection_unshadowed(p, ns_f, ng_f, wo, c, sigma, d_vcm, d_vc, vm_camera, vm_light, y);
-        float p_hat = luminance(x);
+        vec2 oct = vec2(float(w0.z & 0xfffu), float((w0.z >> 12u) & 0xfffu)) * (2.0 / 4095.0) - 1.0;
+        vec3 ns_y = vec3(oct, 1.0 - abs(oct.x) - abs(oct.y));
+        if (ns_y.z < 0.0) {
+            ns_y.xy = (1.0 - abs(ns_y.yx)) * vec2(ns_y.x >= 0.0 ? 1.0 : -1.0, ns_y.y >= 0.0 ? 1.0 : -1.0);
+        }
+        float cos_y = max(-dot(normalize(ns_y), dir), PREVIEW_COS_MIN);
+        float pick = float(w0.z >> 24u) * (1.0 / 255.0);
+        float cam_dir_pdf_w, cam_rev_pdf_w;
+        vec3 f = continuous_eval(c, ns_f, wo, dir, cam_dir_pdf_w, cam_rev_pdf_w);
+        float w_light = mis(cam_dir_pdf_w * cos_y / dist2) * (vm_light + uintBitsToFloat(w0.w));
+        float w_camera = mis(pick * cos_y / PI * cos_c / dist2) * (vm_camera + d_vcm + d_vc * mis(cam_rev_pdf_w));
+        float p_hat = luminance(f) * uintBitsToFloat(w1.w) * uintBitsToFloat(w0.y) * (cos_c * cos_y / dist2) / (w_light + 1.0 + w_camera);
         if (!(p_hat > 0.0)) {
-            continue; // nothing to carry, or NaN (left to the sample's own check)
+            continue;
         }
         p_hat_sum += p_hat;
         if (u_keep * p_hat_sum < p_hat) {
-            x_s = x;
             p_hat_s = p_hat;
-            pos_s = y.pos;
-            ng_s = y.ng;
+            chosen = w0.xy;
         }
     }
     if (p_hat_s <= 0.0) {
         return vec3(0.0);
     }
-    vec3 contrib = x_s * (p_hat_sum / (float(LVC_CANDIDATES) * p_hat_s));
-    if (!camera_shadow_clear(shadow_ray_between(p, ng_f, pos_s, ng_s), contrib, stats)) {
+    LightVertex y = load_light_vertex(chosen.x);
+    if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
+        return vec3(0.0);
+    }
+    vec3 x = connection_unshadowed(p, ns_f, ng_f, wo, c, sigma, d_vcm, d_vc, vm_camera, vm_light, y);
+    if (max3(x) <= 0.0) {
+        return vec3(0.0);
+    }
+    vec3 contrib = scale * uintBitsToFloat(chosen.y) * x * (p_hat_sum / (float(LVC_CANDIDATES) * p_hat_s));
+    if (!camera_shadow_clear(shadow_ray_between(p, ng_f, y.pos, y.ng), contrib, stats)) {
         return vec3(0.0);
     }
     return contrib;

@@ -188,13 +188,12 @@
                         radiance += connect_resampled(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, depth, total, beta * scale, rng, stats);
                         continue;
                     }
-                    uint slot = lvc_index[rng_below(rng, total)];
-                    uvec2 c = light_counts[slot / pc.light_path_len];
-                    LightVertex y = load_light_vertex(slot);
+                    uvec2 entry = lvc_index[rng_below(rng, total) * LVC_ENTRY_WORDS].xy; // (slot, seen / stored)
+                    LightVertex y = load_light_vertex(entry.x);
                     if (pc.max_depth != 0u && uint(y.segments) + 1u + depth > pc.max_depth) {
                         continue;
                     }
-                    float inv_q = scale * float(c.y) / float(c.x);
+                    float inv_q = scale * uintBitsToFloat(entry.y);
                     radiance += connect(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, y, beta * inv_q, stats);
                 }
             }

@@ -5,10 +5,11 @@
 // atomics' order, so merged sums may differ in their last bits between runs.
 #include "bidir_abi.glsl"
 #include "merge_grid.glsl"
+#include "lvc_entry.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_LIGHT_VERTICES) readonly buffer LightVertices { LightVertex light_vertices[]; };
-layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uint lvc_index[]; };
+layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (bdpt.glsl)
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 layout(std430, binding = BIND_MERGE_CELLS) buffer MergeCells { uint merge_cells[]; };
 layout(std430, binding = BIND_MERGE_ITEMS) writeonly buffer MergeItems { MergeItem merge_items[]; };
@@ -19,7 +20,7 @@ void main() {
     if (i >= lvc_total) {
         return;
     }
-    uint slot = lvc_index[i];
+    uint slot = lvc_index[i * LVC_ENTRY_WORDS].x;
     vec3 p = light_vertices[slot].pos;
     uint at = atomicAdd(merge_cells[merge_cell_hash(merge_cell(p, 2.0 * vcm_radius(pc.sample_base)))], 1u);
     merge_items[at] = MergeItem(p, slot);

@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered).
+# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (s34a run in session 36, the fold not kept, so s34b was not needed): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
@@ -62,6 +62,31 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s37d)
+  # Session 37: a light vertex cache entry carrying its path's seen / stored beside the slot
+  # (.device/bidir-new.gz, this commit), so a connection reads the entry and the vertex and not
+  # the path's counts; against .device/bidir.gz (ff286b1) and, with 4 candidates, the
+  # measurement build (.device/bidir-exp.gz, BIDIR_EXP_RIS=4). ms per 1024 spp (Cornell box,
+  # the hidden light's box, vcm) and per 64 spp (Sponza's geometry, sun and sky), two rounds
+  # interleaved; then `render --time 1` against .device/ref.exr.
+  N=$PWD/.device/bidir-new; E=$PWD/.device/bidir-exp
+  for f in .device/bidir.gz .device/bidir-new.gz .device/bidir-exp.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  g() { grep -oE 'GPU [0-9.]+ ms'; }
+  for r in 1 2; do
+    for run in "$B|" "$N|" "$N|--connection-candidates 2" "$N|--connection-candidates 4" "$E|RIS4"; do
+      b=${run%%|*}; o=${run#*|}; e=""
+      [ "$o" = RIS4 ] && { o=""; e="BIDIR_EXP_RIS=4"; }
+      echo "== $(basename "$b") $o $e: cornell $(env $e timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 $o 2>&1 | g) hidden $(env $e timeout -k 5 60 "$b" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 $o 2>&1 | g) vcm $(env $e timeout -k 5 60 "$b" bench render $CB --integrator vcm --spp 1024 --warmup 1 --runs 3 $o 2>&1 | g) sponza $(env $e timeout -k 5 90 "$b" bench render $SP --integrator bdpt --spp 64 --warmup 1 --runs 3 $o 2>&1 | g)"
+    done
+  done
+  for run in "$B|" "$N|" "$N|--connection-candidates 2" "$B|" "$N|" "$N|--connection-candidates 2"; do
+    b=${run%%|*}; o=${run#*|}
+    echo "== $(basename "$b") $o: $(timeout -k 5 60 "$b" render $CB --integrator bdpt --time 1 -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+    "$b" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+  done
+  ;;
 s37c)
   # Session 37, the same measurement build (.device/bidir-exp.gz): the resampled connection's
   # loads reordered, BIDIR_EXP_PREFETCH 1 (every candidate's index read first), 2 (and each

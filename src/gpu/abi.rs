@@ -168,6 +168,11 @@ gpu_consts! {
     /// Light vertex cache (Davidovic et al. 2014): `join_k` vertices (0: the mean stored per
     /// light path) drawn uniformly from every light path's stored vertices.
     pub const JOIN_LVC: u32 = 2;
+    /// 16-byte words of a light vertex cache entry (BIND_LVC_INDEX, glsl/common/lvc_entry.glsl):
+    /// the slot and its path's seen / stored; with a preview of the vertex where connections
+    /// are resampled from several candidates (SPEC_LVC_CANDIDATES > 1).
+    pub const LVC_ENTRY_WORDS_UNIFORM: u32 = 1;
+    pub const LVC_ENTRY_WORDS_RESAMPLED: u32 = 2;
     /// Invocations per workgroup of the integrator kernels (PT_WG_SIZE x 1).
     pub const PT_WG_SIZE: u32 = 64;
     /// `GpuTexture::flags` bit: texels are sRGB-encoded.

@@ -71,6 +71,14 @@ pub fn queue_invocations(camera_invocations: u64, pixels: u32, ratio: f32, slice
     camera_invocations.max(light_invocations(light_paths_per_sample(pixels, ratio).saturating_mul(slices.max(1))))
 }
 
+/// Bytes of a light vertex cache entry (`BIND_LVC_INDEX`, glsl/common/lvc_entry.glsl): the slot
+/// and the inverse of its path's reservoir probability, so a connection reads the entry and the
+/// vertex and not the path's counts too; where connections are resampled from several
+/// candidates, a 16-byte preview of the vertex beside it, so a candidate is one 32-byte read.
+fn lvc_entry_bytes(connection_candidates: u32) -> u64 {
+    16 * if connection_candidates > 1 { abi::LVC_ENTRY_WORDS_RESAMPLED } else { abi::LVC_ENTRY_WORDS_UNIFORM } as u64
+}
+
 /// What the light vertex cache adds to the megakernel: a scan of the stored counts and a
 /// pass that lists every stored slot densely.
 struct Lvc {
@@ -199,6 +207,13 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
         specs.push(Spec { id: abi::SPEC_MIS_BALANCE, value: (settings.mis_for(&scene.features) == super::Mis::Balance) as u32 });
         specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
+        if !(1..=super::MAX_CONNECTION_CANDIDATES).contains(&settings.connection_candidates) {
+            return Err(RenderError::Unsupported(format!(
+                "connection candidates: {} (1 to {})",
+                settings.connection_candidates,
+                super::MAX_CONNECTION_CANDIDATES
+            )));
+        }
         specs.push(Spec { id: abi::SPEC_LVC_CANDIDATES, value: settings.connection_candidates });
         let capacity = paths.saturating_mul(light_path_len);
         let wavefront = match wavefront {
@@ -228,8 +243,12 @@ impl Bdpt {
             Join::Lvc(_) => Some(Lvc {
                 scan: crate::compute::Scan::new(ctx)?,
                 plan: crate::compute::ScanPlan::new(ctx, paths)?,
-                compact: ctx.create_kernel(&kernels::LVC_COMPACT, &[])?,
-                index: ctx.create_buffer("bdpt.lvc_index", paths as u64 * light_path_len as u64 * 4, Memory::Device)?,
+                compact: ctx.create_kernel(&kernels::LVC_COMPACT, &specs)?,
+                index: ctx.create_buffer(
+                    "bdpt.lvc_index",
+                    paths as u64 * light_path_len as u64 * lvc_entry_bytes(settings.connection_candidates),
+                    Memory::Device,
+                )?,
                 total: ctx.create_buffer("bdpt.lvc_total", 16, Memory::Device)?,
             }),
             _ => None,
