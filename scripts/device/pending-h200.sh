@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build).
+# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (s34a run in session 36, the fold not kept, so s34b was not needed): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
@@ -62,6 +62,32 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s37e)
+  # Session 37, the committed build (.device/bidir-new.gz): equal time with 4 resampled
+  # candidates against the uniform draw (the default) and pt-nee: the Cornell box 1 s against
+  # .device/ref.exr, two rounds; the hidden light's box and the caustic scene, seeds 1 and 2
+  # (RMSE between them; the caustic scene also against its reference).
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for r in 1 2; do
+    for run in "bdpt|" "bdpt|--connection-candidates 4" "pt-nee|"; do
+      i=${run%%|*}; o=${run#*|}
+      echo "== cornell $i $o: $(timeout -k 5 60 "$N" render $CB --integrator $i --time 1 -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      "$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+    done
+  done
+  for o in "" "--connection-candidates 4"; do
+    for s in 1 2; do
+      echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      echo "== caustic $o seed $s: $(timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 1 --seed $s -o /tmp/c$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      "$N" diff /tmp/c$s.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E "^RMSE "
+    done
+    "$N" diff /tmp/h1.exr /tmp/h2.exr --below 1 2>&1 | grep -E "^RMSE"
+    "$N" diff /tmp/c1.exr /tmp/c2.exr 2>&1 | grep -E "^RMSE "
+  done
+  ;;
 s37d)
   # Session 37: a light vertex cache entry carrying its path's seen / stored beside the slot
   # (.device/bidir-new.gz, this commit), so a connection reads the entry and the vertex and not
