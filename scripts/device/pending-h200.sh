@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes).
+# Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
 # Parts of session 34 (s34a run in session 36, the fold not kept, so s34b was not needed): s34a (a measurement build, scripts/device/s34a.patch: the 4-wide step's far planes with the exit's widening folded into their slab terms; its hit-for-hit tests; against HEAD and s33d's build; the integrators on Sponza); s34b (the same builds and one with both patches, .device/bidir-both.gz, in another start, and the fold's machine code). Run them with s33d's question answered by s34a's columns.
@@ -62,6 +62,39 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s37g)
+  # Session 37 (run as one call beside s37f): Sponza's geometry under sun and sky, 640 x 360,
+  # `render --time 2`, and the hidden light's box at seeds 3 and 4, the uniform draw against 4
+  # candidates; RMSE between the seeds. In the H100's run the Sponza render with 4 candidates at
+  # seed 2 printed no result: this part keeps every message of that render.
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  for o in "" "--connection-candidates 4"; do
+    for s in 1 2; do
+      echo "== sponza $o seed $s"; rm -f /tmp/s$s.exr
+      timeout -k 5 90 "$N" render $SP --integrator bdpt --time 2 --seed $s -o /tmp/s$s.exr $o 2>&1 | grep -v "not found"; echo "rc=${PIPESTATUS[0]}"
+    done
+    "$N" diff /tmp/s1.exr /tmp/s2.exr 2>&1 | grep -E "^RMSE"
+    for s in 3 4; do
+      echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+    done
+    "$N" diff /tmp/h3.exr /tmp/h4.exr --below 1 2>&1 | grep -E "^RMSE"
+  done
+  ;;
+s37f)
+  # Session 37: the caustic scene at equal time, 4 resampled candidates against the uniform
+  # draw, seeds 3 to 6 (1 s, 128², RMSE against its reference), with the committed build.
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for s in 3 4 5 6; do
+    for o in "" "--connection-candidates 4"; do
+      echo "== caustic seed $s $o: $(timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 1 --seed $s -o /tmp/c.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
+    done
+  done
+  ;;
 s37e)
   # Session 37, the committed build (.device/bidir-new.gz): equal time with 4 resampled
   # candidates against the uniform draw (the default) and pt-nee: the Cornell box 1 s against

@@ -151,9 +151,9 @@ pub struct SettingsArgs {
     /// carry if nothing blocked it; one shadow ray per connection either way. 1 draws it
     /// uniformly. More candidates lower the variance per sample (4: 17-30 % in the scenes
     /// measured, free on CPU devices) but cost GPUs time (NVIDIA H100: 4 took 18 % more per
-    /// sample: 6 % less error at equal time on the Cornell box, 19-25 % more on a caustic seen
-    /// through glass; docs/results.md, "Connections resampled from several candidates"). Any N
-    /// is unbiased
+    /// sample: 6 % less error at equal time on the Cornell box, level on a caustic seen through
+    /// glass; docs/results.md, "Connections resampled from several candidates"). Any N is
+    /// unbiased
     #[arg(long, default_value_t = 1, value_name = "N")]
     pub connection_candidates: u32,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
