@@ -20,23 +20,31 @@ layout(std430, binding = BIND_LIGHT_VERTICES) buffer LightVertices { uvec4 light
 // Per light path: (vertices stored, vertices seen). The store is a reservoir.
 layout(std430, binding = BIND_LIGHT_COUNTS) buffer LightCounts { uvec2 light_counts[]; };
 
-// Unit vector as two 16-bit signed-normalised octahedral coordinates (Cigolle et al. 2014,
-// "A Survey of Efficient Representations for Independent Unit Vectors"); error ~3e-5.
-uint oct_encode(vec3 n) {
+// The octahedral map of unit vectors to [-1, 1]^2 and back (Cigolle et al. 2014, "A Survey of
+// Efficient Representations for Independent Unit Vectors").
+vec2 oct_fold(vec3 n) {
     vec2 p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
     if (n.z < 0.0) {
         p = (1.0 - abs(p.yx)) * vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
     }
-    return packSnorm2x16(p);
+    return p;
 }
 
-vec3 oct_decode(uint e) {
-    vec2 p = unpackSnorm2x16(e);
+vec3 oct_unfold(vec2 p) {
     vec3 n = vec3(p, 1.0 - abs(p.x) - abs(p.y));
     if (n.z < 0.0) {
         n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
     }
     return normalize(n);
+}
+
+// Unit vector as two 16-bit signed-normalised octahedral coordinates; error ~3e-5.
+uint oct_encode(vec3 n) {
+    return packSnorm2x16(oct_fold(n));
+}
+
+vec3 oct_decode(uint e) {
+    return oct_unfold(unpackSnorm2x16(e));
 }
 
 void store_light_vertex(uint slot, LightVertex v) {
@@ -93,6 +101,26 @@ LightVertex load_light_vertex(uint slot) {
 }
 
 #include "lvc_entry.glsl"
+
+// A cache entry's preview (lvc_entry.glsl), its third 32-bit word: the shading normal as two
+// 12-bit octahedral coordinates (about 0.05 degrees, enough for a resampling target) and the
+// lobe pick in the top 8 bits. Written by lvc_compact.comp, read by connect_resampled.
+uint lvc_preview_pack(vec3 ns, float pick) {
+    uvec2 q = uvec2(round(clamp(oct_fold(ns) * 0.5 + 0.5, 0.0, 1.0) * 4095.0));
+    return q.x | (q.y << 12u) | (uint(round(clamp(pick, 0.0, 1.0) * 255.0)) << 24u);
+}
+
+void lvc_preview_unpack(uint bits, out vec3 ns, out float pick) {
+    ns = oct_unfold(vec2(float(bits & 0xfffu), float((bits >> 12u) & 0xfffu)) * (2.0 / 4095.0) - 1.0);
+    pick = float(bits >> 24u) * (1.0 / 255.0);
+}
+
+// The reverse pdf of light vertex y's continuous lobe taken as diffuse: of sampling y.wi, the
+// direction its light path arrived from, given any outgoing direction (light_vertex_f, exact
+// without GGX lobes).
+float diffuse_rev_pdf_w(LightVertex y) {
+    return y.pick * max(0.0, dot(y.ns, y.wi)) / PI;
+}
 
 // The MIS heuristic in the recursive form of Georgiev 2012 ("Implementing Vertex Connection
 // and Merging", eqs. 38-47): every weight is a sum of mis(pdf ratio) terms, so any power of

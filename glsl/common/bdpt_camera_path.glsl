@@ -16,7 +16,7 @@ vec3 light_vertex_f(LightVertex y, vec3 w, out float pdf_fwd_w, out float pdf_re
         return y.beta_f * continuous_eval(c, y.ns, y.wi, w, pdf_fwd_w, pdf_rev_w);
     }
     pdf_fwd_w = y.pick * max(0.0, dot(y.ns, w)) / PI;
-    pdf_rev_w = y.pick * max(0.0, dot(y.ns, y.wi)) / PI;
+    pdf_rev_w = diffuse_rev_pdf_w(y);
     return y.beta_f;
 }
 
@@ -95,13 +95,10 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
         if (cos_c <= 0.0 || dot(ng_f, dir) <= 0.0) {
             continue; // x is 0 here: so is p_hat
         }
-        vec2 oct = vec2(float(w0.z & 0xfffu), float((w0.z >> 12u) & 0xfffu)) * (2.0 / 4095.0) - 1.0;
-        vec3 ns_y = vec3(oct, 1.0 - abs(oct.x) - abs(oct.y));
-        if (ns_y.z < 0.0) {
-            ns_y.xy = (1.0 - abs(ns_y.yx)) * vec2(ns_y.x >= 0.0 ? 1.0 : -1.0, ns_y.y >= 0.0 ? 1.0 : -1.0);
-        }
-        float cos_y = max(-dot(normalize(ns_y), dir), PREVIEW_COS_MIN);
-        float pick = float(w0.z >> 24u) * (1.0 / 255.0);
+        vec3 ns_y;
+        float pick;
+        lvc_preview_unpack(w0.z, ns_y, pick);
+        float cos_y = max(-dot(ns_y, dir), PREVIEW_COS_MIN);
         float cam_dir_pdf_w, cam_rev_pdf_w;
         vec3 f = continuous_eval(c, ns_f, wo, dir, cam_dir_pdf_w, cam_rev_pdf_w);
         float w_light = mis(cam_dir_pdf_w * cos_y / dist2) * (vm_light + uintBitsToFloat(w0.w));

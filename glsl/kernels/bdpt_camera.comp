@@ -34,7 +34,7 @@ layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; 
 layout(push_constant) uniform Push { BdptPush pc; };
 layout(std430, binding = BIND_SLICES) writeonly buffer Slices { vec4 slices_out[]; };
 // The light vertex cache (JOIN_LVC): stored slots of every light path, densely listed.
-layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (bdpt.glsl)
+layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (lvc_entry.glsl)
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 #include "vcm_merge.glsl"
 layout(std430, binding = BIND_MERGE_QUERIES) writeonly buffer MergeQueries { MergeQuery merge_queries[]; };

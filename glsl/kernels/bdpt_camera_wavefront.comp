@@ -41,7 +41,7 @@ layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
 // The light vertex cache: stored slots of every light path, densely listed.
-layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (bdpt.glsl)
+layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (lvc_entry.glsl)
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 layout(std430, binding = BIND_PT_SUSPENDED) buffer State { BdptCameraState state[]; };
 layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };

@@ -19,17 +19,6 @@ layout(std430, binding = BIND_LVC_INDEX) writeonly buffer LvcIndex { uvec4 lvc_i
 layout(std430, binding = BIND_LVC_TOTAL) writeonly buffer LvcTotal { uint lvc_total; };
 layout(push_constant) uniform Push { BdptPush pc; };
 
-// A unit vector as two 12-bit octahedral coordinates (bdpt.glsl's oct_encode at lower
-// precision: about 0.05 degrees, enough for a resampling target).
-uint oct_encode12(vec3 n) {
-    vec2 p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
-    if (n.z < 0.0) {
-        p = (1.0 - abs(p.yx)) * vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
-    }
-    uvec2 q = uvec2(round(clamp(p * 0.5 + 0.5, 0.0, 1.0) * 4095.0));
-    return q.x | (q.y << 12u);
-}
-
 void main() {
     uint path = gl_GlobalInvocationID.x;
     if (path >= pc.light_path_total) {
@@ -45,12 +34,9 @@ void main() {
             lvc_index[e] = uvec4(slot, inv_reservoir, 0u, 0u);
         } else {
             LightVertex y = load_light_vertex(slot);
-            // The light side's MIS sum at a connection, dVCM + dVC mis(reverse pdf), with the
-            // reverse pdf of a diffuse lobe (light_vertex_f); exact without GGX lobes.
-            float rev_pdf_w = y.pick * max(0.0, dot(y.ns, y.wi)) / PI;
-            float light_sum = y.d_vcm + y.d_vc * mis(rev_pdf_w);
-            uint pick8 = uint(round(clamp(y.pick, 0.0, 1.0) * 255.0));
-            lvc_index[e] = uvec4(slot, inv_reservoir, oct_encode12(y.ns) | (pick8 << 24u), floatBitsToUint(light_sum));
+            // The light side's MIS sum at a connection, dVCM + dVC mis(reverse pdf).
+            float light_sum = y.d_vcm + y.d_vc * mis(diffuse_rev_pdf_w(y));
+            lvc_index[e] = uvec4(slot, inv_reservoir, lvc_preview_pack(y.ns, y.pick), floatBitsToUint(light_sum));
             lvc_index[e + 1u] = uvec4(floatBitsToUint(y.pos), floatBitsToUint(luminance(y.beta_f)));
         }
     }

@@ -9,7 +9,7 @@
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(std430, binding = BIND_LIGHT_VERTICES) readonly buffer LightVertices { LightVertex light_vertices[]; };
-layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (bdpt.glsl)
+layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (lvc_entry.glsl)
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 layout(std430, binding = BIND_MERGE_CELLS) buffer MergeCells { uint merge_cells[]; };
 layout(std430, binding = BIND_MERGE_ITEMS) writeonly buffer MergeItems { MergeItem merge_items[]; };

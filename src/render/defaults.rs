@@ -327,8 +327,6 @@ mod default_tests {
         }
     }
 
-    /// The queue takes the slots asked for where they fit the budget, fewer where not, none
-    /// where fewer than a handful would; the budget covers the queue, counts and paused paths.
     /// The balance heuristic for BDPT where every surface is diffuse; the power heuristic for
     /// BDPT in glossy or specular scenes and for VCM.
     #[test]
@@ -357,6 +355,8 @@ mod default_tests {
         assert_eq!(default_bvh_build(BvhLayout::Bvh2q, 12), (4, 2));
     }
 
+    /// The queue takes the slots asked for where they fit the budget, fewer where not, none
+    /// where fewer than a handful would; the budget covers the queue, counts and paused paths.
     #[test]
     fn shadow_queue_fits_its_budget() {
         let q = ShadowQueue { slots: 192, chunk_samples: 24, pause: true };
