@@ -179,7 +179,7 @@ fn numbers_out_of_range_are_rejected_with_the_flag() {
     fails(&["render", "--integrator", "bdpt", "--mis", "veach", "--spp", "1"], &["--mis veach: auto | balance | power"]);
     fails(
         &["render", "--integrator", "bdpt", "--connection-candidates", "0", "--spp", "1"],
-        &["--connection-candidates 0: a whole number from 1 to 64"],
+        &["--connection-candidates 0: a whole number from 1 to 32"],
     );
     fails(
         &["render", "--integrator", "bdpt:full", "--connection-candidates", "4", "--spp", "1"],

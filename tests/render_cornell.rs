@@ -210,8 +210,20 @@ fn bdpt_with_resampled_connections_matches_references() {
     // 4`; the default draws one) must converge to the same image: a build that kept the
     // chosen candidate's estimate without the resampling weight fails here.
     let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
-    settings.connection_candidates = 4;
+    settings.connection_candidates = Some(4);
     check_settings("bdpt --connection-candidates 4", settings, 1);
+}
+
+#[test]
+fn bdpt_wavefront_with_shared_candidates_matches_references() {
+    // The wavefront camera pass (the GPUs' form; lavapipe runs the megakernels by default)
+    // with the default 8 candidates, shared among the lanes of a subgroup that connect at once
+    // by shuffles: a lane that read another's entry wrongly, or a pool that counted a lane
+    // not connecting, fails here.
+    let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
+    settings.wavefront = Some(true);
+    settings.connection_candidates = Some(8);
+    check_settings("bdpt --wavefront on --connection-candidates 8", settings, 1);
 }
 
 /// BDPT's per-sample MSE against the sharp reference after `SPP` samples of the Cornell box with
@@ -257,7 +269,7 @@ fn bdpt_mse(adjust: &[&dyn Fn(&mut RenderSettings)], away_from_edge: bool) -> Op
 #[test]
 fn bdpt_resampled_connections_are_less_noisy() {
     const RATIO_MAX: f64 = 0.9;
-    let Some(mse) = bdpt_mse(&[&|s| s.connection_candidates = 1, &|s| s.connection_candidates = 4], true) else { return };
+    let Some(mse) = bdpt_mse(&[&|s| s.connection_candidates = Some(1), &|s| s.connection_candidates = Some(4)], true) else { return };
     let ratio = mse[1] / mse[0];
     eprintln!(
         "bdpt, off the light's edge: MSE {:.3e} with uniform connections, {:.3e} resampled from 4 (ratio {ratio:.3})",

@@ -86,7 +86,7 @@ fn furnace_bdpt_light_vertex_cache_other_light_path_counts() {
         let ctx = gpu();
         let scene = furnace_scene(0.5, 1.0);
         let mut settings = RenderSettings::new(Integrator::Bdpt(bidir::render::Join::Lvc(0)));
-        settings.light_path_ratio = ratio;
+        settings.light_path_ratio = Some(ratio);
         let mut r = Renderer::new(&ctx, &scene, &scene.cameras[0], settings).unwrap();
         r.render_spp(24, |_| {}).unwrap();
         let img = r.image().unwrap();

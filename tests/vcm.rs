@@ -61,7 +61,9 @@ fn small_cornell(size: u32) -> Scene {
 /// same seed and MIS heuristic (`--mis`: BDPT takes the balance heuristic on this diffuse box
 /// by default, VCM the power heuristic; both are run under each), with light tracing a
 /// strategy of direct lighting (`--direct-light-tracing`) or not (the default): the same
-/// kernels with dVM carried but unused, the same random numbers.
+/// kernels with dVM carried but unused, the same random numbers (so both take VCM's light
+/// paths per pixel and connection candidates, BDPT's defaults in diffuse scenes being others;
+/// and 4 shared candidates once).
 /// Not always to the last bit: light tracing
 /// splats with float atomics whose order varies from run to run (as BDPT against itself), so
 /// values may differ by a few ulps (measured: at most 2e-7 relative; a weight error would show
@@ -69,11 +71,15 @@ fn small_cornell(size: u32) -> Scene {
 #[test]
 fn no_merge_equals_bdpt() {
     let scene = small_cornell(32);
-    for (direct_light_tracing, mis) in [(false, Mis::Power), (true, Mis::Power), (false, Mis::Balance)] {
+    for (direct_light_tracing, mis, candidates) in
+        [(false, Mis::Power, 1), (true, Mis::Power, 1), (false, Mis::Balance, 1), (false, Mis::Balance, 4)]
+    {
         let settings = |integrator| {
             let mut s = RenderSettings::new(integrator);
             s.direct_light_tracing = direct_light_tracing;
             s.mis = Some(mis);
+            s.light_path_ratio = Some(1.0);
+            s.connection_candidates = Some(candidates);
             s
         };
         let a = render(&scene, settings(Integrator::Bdpt(Join::DEFAULT)), 2, 3..=3).remove(0);
@@ -82,7 +88,7 @@ fn no_merge_equals_bdpt() {
         let rel = a.data.iter().zip(&b.data).map(|(x, y)| ((x - y).abs() / x.abs().max(1e-6)) as f64).fold(0.0, f64::max);
         let mean = image_mean(&a);
         eprintln!(
-            "vcm:no-merge vs bdpt (direct light tracing {direct_light_tracing}, {mis:?} heuristic): {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})",
+            "vcm:no-merge vs bdpt (direct light tracing {direct_light_tracing}, {mis:?} heuristic, {candidates} candidates): {differ} of {} values differ, by at most {rel:.1e} relative (image mean {mean:.5})",
             a.data.len()
         );
         assert!(mean > 0.01, "the image is lit");
@@ -169,6 +175,11 @@ fn paired(
     }
     let mut s = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
     settings(&mut s);
+    // VCM's light paths per pixel and connection candidates where `settings` does not say (BDPT
+    // takes half a light path and 8 candidates by default in diffuse scenes): the pairing
+    // needs both integrators to draw the same paths.
+    s.light_path_ratio.get_or_insert(1.0);
+    s.connection_candidates.get_or_insert(1);
     let base = render(&scene, s.clone(), spp, 1..=replicates);
     s.integrator = integrator;
     let est = render(&scene, s, spp, 1..=replicates);
@@ -275,7 +286,7 @@ fn cornell_photon_mapping_matches_reference() {
     cornell(
         NO_CONNECT,
         |s| {
-            s.light_path_ratio = 8.0;
+            s.light_path_ratio = Some(8.0);
             s.vcm_radius = VcmRadius::Relative(0.0075);
         },
         1,

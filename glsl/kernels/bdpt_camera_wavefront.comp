@@ -21,6 +21,7 @@
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_shuffle : require
 #define BDPT_WAVEFRONT
 #include "bidir_abi.glsl"
 #include "ray.glsl"

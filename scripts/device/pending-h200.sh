@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check).
 # Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
@@ -62,6 +63,120 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s38c)
+  # Session 38, shared candidates (.device/bidir-new.gz: bdpt's default in diffuse scenes is 8
+  # candidates and 0.5 light paths per pixel) with fewer light paths per pixel: the
+  # Cornell box at 1 s and 0.1 s against .device/ref.exr, two rounds; the hidden light's box
+  # (seed pairs, 1 s); `bench render` ms per 1024 spp; a 10 s render against the reference in
+  # blocks (bias beside noise).
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  for r in 1 2; do
+    for run in "pt-nee|" "bdpt|--connection-candidates 1 --light-paths 1" "bdpt|" "bdpt|--connection-candidates 16 --light-paths 0.5" "bdpt|--connection-candidates 8 --light-paths 0.33" "bdpt|--connection-candidates 16 --light-paths 0.33" "bdpt|--connection-candidates 16 --light-paths 0.25"; do
+      i=${run%%|*}; o=${run#*|}
+      for t in 1 0.1; do
+        echo "== cornell $t s $i $o: $(timeout -k 5 60 "$N" render $CB --integrator $i --time $t -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+        "$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+      done
+    done
+  done
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  for o in "--connection-candidates 1 --light-paths 1" "" "--connection-candidates 16 --light-paths 0.5" "--connection-candidates 16 --light-paths 0.33"; do
+    for s in 1 2; do
+      echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+    done
+    "$N" diff /tmp/h1.exr /tmp/h2.exr --below 1 2>&1 | grep -E "^RMSE"
+  done
+  echo "== hidden pt-nee: $(timeout -k 5 60 "$N" render $HID --integrator pt-nee --time 1 --seed 1 -o /tmp/h1.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $(timeout -k 5 60 "$N" render $HID --integrator pt-nee --time 1 --seed 2 -o /tmp/h2.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+  "$N" diff /tmp/h1.exr /tmp/h2.exr --below 1 2>&1 | grep -E "^RMSE"
+  for run in "pt-nee|" "bdpt|--connection-candidates 1 --light-paths 1" "bdpt|" "bdpt|--connection-candidates 16 --light-paths 0.33"; do
+    i=${run%%|*}; o=${run#*|}
+    echo "== bench $i $o: $(timeout -k 5 60 "$N" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 $o 2>&1 | grep -E 'GPU' | head -1)"
+  done
+  echo "== 10 s, 8 candidates, light paths 0.5"
+  timeout -k 5 60 "$N" render $CB --integrator bdpt --time 10 --seed 3 -o /tmp/s10.exr 2>&1 | grep -E "spp in"
+  "$N" diff /tmp/s10.exr "$REF" --below 1 --blocks 32 2>&1 | grep -vE "^(relMSE)"
+  ;;
+s38b)
+  # Session 38, shared candidates (.device/bidir-new.gz): the Cornell box at 1 s and 0.1 s
+  # against .device/ref.exr with 8 candidates and fewer light paths per pixel; the caustic
+  # scene over four more seeds at 1 / 4 / 8 candidates; seed pairs (the variance between
+  # them) on Sponza's geometry under sun and sky (2 s) and the rough Cornell box (1 s); then
+  # issue #17's traversal figures (one round).
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  for r in 1 2; do
+    for run in "pt-nee|" "bdpt|" "bdpt|--connection-candidates 8" "bdpt|--connection-candidates 8 --light-paths 0.5" "bdpt|--connection-candidates 8 --light-paths 0.75"; do
+      i=${run%%|*}; o=${run#*|}
+      for t in 1 0.1; do
+        echo "== cornell $t s $i $o: $(timeout -k 5 60 "$N" render $CB --integrator $i --time $t -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+        "$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+      done
+    done
+  done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for s in 3 4 5 6; do
+    for o in "" "--connection-candidates 4" "--connection-candidates 8"; do
+      echo "== caustic seed $s $o: $(timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 1 --seed $s -o /tmp/c.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
+    done
+  done
+  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  for o in "" "--connection-candidates 8"; do
+    for s in 1 2; do
+      echo "== sponza $o seed $s: $(timeout -k 5 90 "$N" render $SP --integrator bdpt --time 2 --seed $s -o /tmp/s$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s|rror.*')"
+      echo "== rough $o seed $s: $(timeout -k 5 60 "$N" render $RC --integrator bdpt --time 1 --seed $s -o /tmp/r$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s|rror.*')"
+    done
+    "$N" diff /tmp/s1.exr /tmp/s2.exr --below 1 2>&1 | grep -E "^RMSE"
+    "$N" diff /tmp/r1.exr /tmp/r2.exr --below 1 2>&1 | grep -E "^RMSE"
+  done
+  sponza_rounds 1 "$N"
+  ;;
+s38a)
+  # Session 38: the resampled connection's candidates shared within the subgroup (one entry read
+  # per connecting lane, the candidates by shuffles; .device/bidir-new.gz) against the first
+  # design (a 32-byte read per candidate; .device/bidir-head.gz = f824783). `bench render` ms
+  # per 1024 spp on the Cornell box (bdpt, vcm) at 1 / 4 / 8 / 16 / 32 candidates, two rounds
+  # interleaved; then equal time (1 s) against .device/ref.exr, whole image and off the light's
+  # edge, and pt-nee; the hidden light's box (seeds 1, 2) and the caustic scene.
+  N=$PWD/.device/bidir-new; H=$PWD/.device/bidir-head
+  for f in .device/bidir-new.gz .device/bidir-head.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  for r in 1 2; do
+    for n in 1 4 8 16 32; do
+      for b in "$H" "$N"; do
+        [ "$b" = "$H" ] && [ $n -gt 8 ] && continue
+        echo "== $(basename $b) bdpt $n: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 --connection-candidates $n 2>&1 | grep -E 'GPU' | head -1)"
+      done
+    done
+  done
+  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for n in 1 8; do
+    for b in "$H" "$N"; do
+      echo "== $(basename $b) sponza bdpt $n: $(timeout -k 5 90 "$b" bench render $SP --integrator bdpt --spp 64 --warmup 1 --runs 3 --connection-candidates $n 2>&1 | grep -E 'GPU' | head -1)"
+    done
+  done
+  for n in 1 4 8; do
+    for b in "$H" "$N"; do
+      echo "== $(basename $b) vcm $n: $(timeout -k 5 60 "$b" bench render $CB --integrator vcm --spp 256 --warmup 1 --runs 3 --connection-candidates $n 2>&1 | grep -E 'GPU' | head -1)"
+    done
+  done
+  for r in 1 2; do
+    for run in "pt-nee|" "bdpt|" "bdpt|--connection-candidates 4" "bdpt|--connection-candidates 8" "bdpt|--connection-candidates 16"; do
+      i=${run%%|*}; o=${run#*|}
+      echo "== cornell 1 s $i $o: $(timeout -k 5 60 "$N" render $CB --integrator $i --time 1 -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      "$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+    done
+  done
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for o in "" "--connection-candidates 8"; do
+    for s in 1 2; do
+      echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      echo "== caustic $o seed $s: $(timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 1 --seed $s -o /tmp/c$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/c$s.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
+    done
+    "$N" diff /tmp/h1.exr /tmp/h2.exr --below 1 2>&1 | grep -E "^RMSE"
+  done
+  ;;
 s37g)
   # Session 37 (run as one call beside s37f): Sponza's geometry under sun and sky, 640 x 360,
   # `render --time 2`, and the hidden light's box at seeds 3 and 4, the uniform draw against 4

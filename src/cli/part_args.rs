@@ -78,13 +78,15 @@ pub fn render_info(loaded: &LoadedScene, settings: &RenderSettings, samples: Sam
     info.set(keys::INTEGRATOR, s.integrator.name());
     let mut set = format!("sampler {:?} max_depth {} rr_depth {} tri_test {:?}", s.sampler, s.max_depth, s.rr_depth, s.bvh.tri_test);
     if let bidir::render::Integrator::Bdpt(_) | bidir::render::Integrator::Vcm(_) = s.integrator {
-        set += &format!(" light_path_len {} light_paths {}", s.light_path_len, s.light_path_ratio);
+        let features = bidir::gpu_data::SceneFeatures::of(&loaded.scene);
+        set += &format!(" light_path_len {} light_paths {}", s.light_path_len, s.light_path_ratio_for(&features));
         if s.direct_light_tracing {
             set += " direct_light_tracing";
         }
-        set += &format!(" mis {:?}", s.mis_for(&bidir::gpu_data::SceneFeatures::of(&loaded.scene)));
-        if s.connection_candidates > 1 {
-            set += &format!(" connection_candidates {}", s.connection_candidates);
+        set += &format!(" mis {:?}", s.mis_for(&features));
+        let candidates = s.connection_candidates_for(&features);
+        if candidates > 1 {
+            set += &format!(" connection_candidates {candidates}");
         }
     }
     if let bidir::render::Integrator::Vcm(_) = s.integrator {

@@ -66,9 +66,11 @@ pub struct SettingsArgs {
     pub light_path_len: u32,
     /// BDPT with the light vertex cache: light paths per iteration as a multiple of the pixel
     /// count (more help caustics and light tracing, fewer save time where light paths
-    /// rarely matter). The other joins pair one light path with each pixel.
-    #[arg(long, default_value_t = 1.0, value_name = "RATIO")]
-    pub light_paths: f32,
+    /// rarely matter). The other joins pair one light path with each pixel. Default: 0.5 for
+    /// bdpt in scenes with only diffuse surfaces (with its 8 connection candidates), 1
+    /// otherwise (docs/results.md, "Candidates shared within the subgroup")
+    #[arg(long, value_name = "RATIO")]
+    pub light_paths: Option<f32>,
     /// Samples of a pixel rendered at once, each by its own GPU thread (0: enough to fill
     /// the GPU, 1 on CPU devices).
     #[arg(long, default_value_t = 0, value_name = "N")]
@@ -149,13 +151,14 @@ pub struct SettingsArgs {
     /// BDPT and VCM with the light vertex cache (bdpt, bdpt:lvc=N, vcm): draw each connection's
     /// light vertex from N uniform candidates by resampling, in proportion to what each would
     /// carry if nothing blocked it; one shadow ray per connection either way. 1 draws it
-    /// uniformly. More candidates lower the variance per sample (4: 17-30 % in the scenes
-    /// measured, free on CPU devices) but cost GPUs time (NVIDIA H100: 4 took 18 % more per
-    /// sample: 6 % less error at equal time on the Cornell box, level on a caustic seen through
-    /// glass; docs/results.md, "Connections resampled from several candidates"). Any N is
-    /// unbiased
-    #[arg(long, default_value_t = 1, value_name = "N")]
-    pub connection_candidates: u32,
+    /// uniformly. The candidates are those drawn by the GPU subgroup's lanes that connect at
+    /// once (at most its size: 8 on lavapipe, 32 on NVIDIA), so each costs arithmetic, not a
+    /// read: on an NVIDIA H200, 8 candidates take a Cornell box sample 8 % more time for 22-27 %
+    /// less variance off the light's edge. Default: 8 for bdpt in scenes with only diffuse
+    /// surfaces, 1 otherwise (glossy and glass scenes measured level or worse; docs/results.md,
+    /// "Candidates shared within the subgroup"). Any N is unbiased
+    #[arg(long, value_name = "N")]
+    pub connection_candidates: Option<u32>,
     /// VCM: the first iteration's merge radius, a fraction of the scene's bounding-box
     /// diagonal (0.001), or a length in scene units with the suffix u (0.02u).
     #[arg(long, default_value = "0.001", value_name = "R")]
@@ -168,8 +171,10 @@ pub struct SettingsArgs {
 impl SettingsArgs {
     /// Settings for `integrator` with these flags applied.
     pub fn settings(&self, integrator: Integrator) -> anyhow::Result<RenderSettings> {
-        if !(self.light_paths > 0.0 && self.light_paths.is_finite()) {
-            bail!("--light-paths must be a positive multiple of the pixel count");
+        if let Some(ratio) = self.light_paths {
+            if !(ratio > 0.0 && ratio.is_finite()) {
+                bail!("--light-paths must be a positive multiple of the pixel count");
+            }
         }
         let mut s = RenderSettings::new(integrator);
         s.seed = self.seed;
@@ -221,11 +226,13 @@ impl SettingsArgs {
             "auto" => None,
             other => Some(other.parse().map_err(|_| anyhow::anyhow!("--mis {other}: auto | balance | power"))?),
         };
-        if !(1..=MAX_CONNECTION_CANDIDATES).contains(&self.connection_candidates) {
-            bail!("--connection-candidates {}: a whole number from 1 to {MAX_CONNECTION_CANDIDATES}", self.connection_candidates);
+        if let Some(n) = self.connection_candidates {
+            if !(1..=MAX_CONNECTION_CANDIDATES).contains(&n) {
+                bail!("--connection-candidates {n}: a whole number from 1 to {MAX_CONNECTION_CANDIDATES}");
+            }
         }
         s.connection_candidates = self.connection_candidates;
-        if s.connection_candidates > 1 && !matches!(integrator, Integrator::Bdpt(Join::Lvc(_)) | Integrator::Vcm(_)) {
+        if self.connection_candidates.is_some_and(|n| n > 1) && !matches!(integrator, Integrator::Bdpt(Join::Lvc(_)) | Integrator::Vcm(_)) {
             bail!(
                 "--connection-candidates resamples the light vertex cache's connections (bdpt, bdpt:lvc=N, vcm), not {}'s",
                 integrator.name()

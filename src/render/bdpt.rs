@@ -168,7 +168,7 @@ impl Bdpt {
         wavefront: Option<u64>,
     ) -> Result<Bdpt, RenderError> {
         let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
-        let ratio = settings.light_path_ratio;
+        let ratio = settings.light_path_ratio_for(&scene.features);
         if !(ratio > 0.0 && ratio.is_finite()) {
             return Err(RenderError::Unsupported(format!("light paths per pixel must be a positive number, not {ratio}")));
         }
@@ -207,14 +207,14 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
         specs.push(Spec { id: abi::SPEC_MIS_BALANCE, value: (settings.mis_for(&scene.features) == super::Mis::Balance) as u32 });
         specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
-        if !(1..=super::MAX_CONNECTION_CANDIDATES).contains(&settings.connection_candidates) {
+        let candidates = settings.connection_candidates_for(&scene.features);
+        if !(1..=super::MAX_CONNECTION_CANDIDATES).contains(&candidates) {
             return Err(RenderError::Unsupported(format!(
-                "connection candidates: {} (1 to {})",
-                settings.connection_candidates,
+                "connection candidates: {candidates} (1 to {})",
                 super::MAX_CONNECTION_CANDIDATES
             )));
         }
-        specs.push(Spec { id: abi::SPEC_LVC_CANDIDATES, value: settings.connection_candidates });
+        specs.push(Spec { id: abi::SPEC_LVC_CANDIDATES, value: candidates });
         let capacity = paths.saturating_mul(light_path_len);
         let wavefront = match wavefront {
             Some(_) if vcm.is_some() => return Err(RenderError::Unsupported("VCM has no wavefront form: add --wavefront off".into())),
@@ -246,7 +246,7 @@ impl Bdpt {
                 compact: ctx.create_kernel(&kernels::LVC_COMPACT, &specs)?,
                 index: ctx.create_buffer(
                     "bdpt.lvc_index",
-                    paths as u64 * light_path_len as u64 * lvc_entry_bytes(settings.connection_candidates),
+                    paths as u64 * light_path_len as u64 * lvc_entry_bytes(candidates),
                     Memory::Device,
                 )?,
                 total: ctx.create_buffer("bdpt.lvc_total", 16, Memory::Device)?,

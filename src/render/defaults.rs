@@ -203,6 +203,40 @@ pub fn default_mis(integrator: Integrator, features: &SceneFeatures) -> Mis {
     }
 }
 
+/// Light paths per pixel for BDPT's default join (the light vertex cache, one connection) where
+/// `--light-paths` does not say: half a light path per pixel in scenes with only diffuse
+/// surfaces, where its connections take [`default_connection_candidates`]' eight candidates;
+/// one otherwise, and for every other integrator and join. With the connections resampled,
+/// fewer light paths lose less than their time buys: NVIDIA H200, the Cornell box 256² at 1 s
+/// against the sharper reference, RMSE 0.000358-0.000364 with one light path per pixel and
+/// uniform connections, 0.000337-0.000344 with 8 candidates, 0.000308-0.000310 with 8
+/// candidates and half a light path per pixel (pt-nee: 0.000306); at 0.1 s 0.00142, 0.00125-0.00142
+/// and 0.00123-0.00124 (docs/results.md, "Candidates shared within the subgroup").
+pub fn default_light_path_ratio(integrator: Integrator, features: &SceneFeatures) -> f32 {
+    match integrator {
+        Integrator::Bdpt(Join::DEFAULT) if features.only_diffuse() => 0.5,
+        _ => 1.0,
+    }
+}
+
+/// Candidates of each connection to the light vertex cache (`--connection-candidates`) where
+/// the settings do not say: eight for BDPT's default join in scenes with only diffuse surfaces,
+/// one (the uniform draw) otherwise. The candidates are shared within the subgroup
+/// (glsl/common/bdpt_camera_path.glsl), so each costs arithmetic and shuffles, not a read:
+/// NVIDIA H200, the Cornell box 256², a BDPT sample 160.6 ms per 1024 spp with 1, 171.3 with 4,
+/// 173.2 with 8, 176.2 with 16. Where it was measured at equal time (docs/results.md,
+/// "Candidates shared within the subgroup"): the Cornell box -9 to -14 % MSE, the box whose
+/// light hides above a panel -6 % (-22 % off the light's edge); in scenes with glossy or
+/// glass surfaces, where the target's blindness to visibility and to the lobes costs more,
+/// the rough Cornell box +11 %, the caustic scene level over six seeds, Sponza under its sun
+/// and sky level off the sun's edge: those keep the uniform draw. VCM keeps it too.
+pub fn default_connection_candidates(integrator: Integrator, features: &SceneFeatures) -> u32 {
+    match integrator {
+        Integrator::Bdpt(Join::DEFAULT) if features.only_diffuse() => 8,
+        _ => 1,
+    }
+}
+
 /// The most triangles per leaf and the obvhs quality preset a BVH of `layout` is built with
 /// for the integrators where `--bvh-leaf-size` / `--bvh-quality` do not say: the 4-wide BVH
 /// of the wavefront forms' trace kernels at 3 and 4, as `bench traversal` measured best for
@@ -339,6 +373,29 @@ mod default_tests {
         assert_eq!(default_mis(Integrator::Bdpt(Join::DEFAULT), &glossy), Mis::Power);
         assert_eq!(default_mis(Integrator::Bdpt(Join::DEFAULT), &glass), Mis::Power);
         assert_eq!(default_mis(Integrator::Vcm(vcm::VcmMode::FULL), &diffuse), Mis::Power);
+    }
+
+    /// Eight shared candidates and half a light path per pixel for BDPT's default join where
+    /// every surface is diffuse; the uniform draw and one light path per pixel in glossy or
+    /// specular scenes, for the other joins (the megakernel joins need one light path per
+    /// pixel) and for VCM.
+    #[test]
+    fn connections_and_light_paths_follow_the_scene() {
+        let diffuse = SceneFeatures::default();
+        let glossy = SceneFeatures { glossy: true, ..diffuse };
+        let glass = SceneFeatures { glass: true, ..diffuse };
+        let bdpt = Integrator::Bdpt(Join::DEFAULT);
+        assert_eq!((default_connection_candidates(bdpt, &diffuse), default_light_path_ratio(bdpt, &diffuse)), (8, 0.5));
+        for features in [&glossy, &glass] {
+            assert_eq!((default_connection_candidates(bdpt, features), default_light_path_ratio(bdpt, features)), (1, 1.0));
+        }
+        for other in [Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(2)), Integrator::Vcm(vcm::VcmMode::FULL)] {
+            assert_eq!((default_connection_candidates(other, &diffuse), default_light_path_ratio(other, &diffuse)), (1, 1.0));
+        }
+        let mut settings = RenderSettings::new(bdpt);
+        assert_eq!((settings.connection_candidates_for(&diffuse), settings.light_path_ratio_for(&diffuse)), (8, 0.5));
+        (settings.connection_candidates, settings.light_path_ratio) = (Some(2), Some(3.0));
+        assert_eq!((settings.connection_candidates_for(&diffuse), settings.light_path_ratio_for(&diffuse)), (2, 3.0));
     }
 
     /// Quality 4 up to the bound for the binary and compressed wide BVHs, 2 past it; the 4-wide

@@ -34,8 +34,8 @@ mod wavefront_queues;
 pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
 pub use defaults::{
-    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_mis, default_one_trace, default_path_regeneration,
-    default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
+    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_connection_candidates, default_light_path_ratio, default_mis,
+    default_one_trace, default_path_regeneration, default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
 };
 pub use film::Film;
 pub use gpu_scene::GpuScene;
@@ -235,7 +235,8 @@ pub struct RenderSettings {
     pub light_path_len: u32,
     /// BDPT with the light vertex cache: light paths per iteration as a multiple of the
     /// pixel count (the megakernel joins need 1: they pair a light path with each pixel).
-    pub light_path_ratio: f32,
+    /// `None` takes [`default_light_path_ratio`] for the integrator and scene.
+    pub light_path_ratio: Option<f32>,
     /// Compile the mirror/glass/texture/alpha code in even where the scene has none (to
     /// measure what specialisation buys).
     pub all_material_code: bool,
@@ -297,11 +298,15 @@ pub struct RenderSettings {
     pub mis: Option<Mis>,
     /// BDPT and VCM with the light vertex cache (`bdpt`, `bdpt:lvc=N`, `vcm`): each
     /// connection's light vertex is resampled from this many uniform draws by its unshadowed
-    /// contribution (`--connection-candidates`); 1, the default, draws it uniformly. Every count
+    /// contribution (`--connection-candidates`); 1 draws it uniformly; `None` takes
+    /// [`default_connection_candidates`] for the integrator and scene. Every count
     /// is unbiased: more candidates lower the variance per sample and cost time
     /// ([`MAX_CONNECTION_CANDIDATES`] at most; docs/results.md, "Connections resampled from
-    /// several candidates"). The other joins ignore it.
-    pub connection_candidates: u32,
+    /// several candidates"). The candidates are the entries drawn by the subgroup's lanes that
+    /// connect at the same time, so a connection gets fewer where fewer lanes connect (at most
+    /// the subgroup's size: 8 on lavapipe, 32 on NVIDIA), and above 1 the image depends on the
+    /// device's subgroups. The other joins ignore it.
+    pub connection_candidates: Option<u32>,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
     /// of the megakernel; bdpt with the light vertex cache's fixed joins: its light and camera
@@ -320,6 +325,19 @@ impl RenderSettings {
     /// an integrator switch takes the new integrator's default) and where a part records it.
     pub fn mis_for(&self, features: &SceneFeatures) -> Mis {
         self.mis.unwrap_or_else(|| default_mis(self.integrator, features))
+    }
+
+    /// Light paths per pixel BDPT with the light vertex cache traces in a scene of `features`:
+    /// `--light-paths`, or [`default_light_path_ratio`]. Resolved as [`Self::mis_for`] is.
+    pub fn light_path_ratio_for(&self, features: &SceneFeatures) -> f32 {
+        self.light_path_ratio.unwrap_or_else(|| default_light_path_ratio(self.integrator, features))
+    }
+
+    /// Candidates of each connection to the light vertex cache in a scene of `features`:
+    /// `--connection-candidates`, or [`default_connection_candidates`]. Resolved as
+    /// [`Self::mis_for`] is.
+    pub fn connection_candidates_for(&self, features: &SceneFeatures) -> u32 {
+        self.connection_candidates.unwrap_or_else(|| default_connection_candidates(self.integrator, features))
     }
 
     /// These settings for another integrator: Russian roulette follows the new integrator's
@@ -341,7 +359,7 @@ impl RenderSettings {
             seed: 0,
             sampler: Sampler::Sobol,
             light_path_len: 8,
-            light_path_ratio: 1.0,
+            light_path_ratio: None,
             sample_slices: 0,
             all_material_code: false,
             pass_target: Duration::from_millis(250),
@@ -359,7 +377,7 @@ impl RenderSettings {
             shadow_queue: None,
             direct_light_tracing: false,
             mis: None,
-            connection_candidates: 1,
+            connection_candidates: None,
             wavefront: None,
             count_traversal: false,
         }
@@ -415,9 +433,10 @@ pub struct Renderer {
     first_hit: Option<first_hit::FirstHitPass>,
 }
 
-/// Most candidates [`RenderSettings::connection_candidates`] takes: each is a random read and
-/// an evaluation of the connection.
-pub const MAX_CONNECTION_CANDIDATES: u32 = 64;
+/// Most candidates [`RenderSettings::connection_candidates`] takes: a connection's candidates
+/// are the entries drawn by the lanes of its subgroup's 32 that connect at once
+/// (glsl/common/bdpt_camera_path.glsl), so more could never be used.
+pub const MAX_CONNECTION_CANDIDATES: u32 = 32;
 /// Invocations that keep a large GPU busy (132 SMs x 2,048 resident threads on an H100).
 const TARGET_INVOCATIONS: u64 = 1 << 18;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
@@ -473,7 +492,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
             // BDPT's passes share their slots: a light path's, or a pixel's camera sample's.
             Integrator::Bdpt(join) => {
                 let bytes = bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1));
-                (bytes as f64 * settings.light_path_ratio.max(1.0) as f64).ceil() as u64
+                (bytes as f64 * settings.light_path_ratio_for(features).max(1.0) as f64).ceil() as u64
             }
             _ => pt_wavefront::SLOT_BYTES,
         };
@@ -482,7 +501,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
         TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, MAX_SLICES)
     };
     if settings.integrator.stores_light_vertices() {
-        let per_sample = (pixels as f64 * settings.light_path_ratio.max(0.0) as f64).max(1.0) as u64;
+        let per_sample = (pixels as f64 * settings.light_path_ratio_for(features).max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
         // BDPT's wavefront passes want millions of slots, so their iterations may take more
         // light paths: the store may grow to the shadow queue's budget (a sixteenth of the
@@ -558,7 +577,7 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     let mut invocations = shadow_queue::invocations(window.width(), window.height(), slices);
     if integrator.stores_light_vertices() {
-        invocations = bdpt::queue_invocations(invocations, pixels, settings.light_path_ratio, slices);
+        invocations = bdpt::queue_invocations(invocations, pixels, settings.light_path_ratio_for(&scene.features), slices);
     }
     if settings.wavefront == Some(true) && !defaults::wavefront_supported(integrator) {
         return Err(RenderError::Unsupported(format!(

@@ -363,8 +363,8 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
         if !push_descriptor {
             missing.push("VK_KHR_push_descriptor".into());
         }
-        if !(subgroup_in_compute && ops.basic && ops.vote && ops.arithmetic && ops.ballot) {
-            missing.push("subgroup basic/vote/arithmetic/ballot operations in compute".into());
+        if !(subgroup_in_compute && ops.basic && ops.vote && ops.arithmetic && ops.ballot && ops.shuffle) {
+            missing.push("subgroup basic/vote/arithmetic/ballot/shuffle operations in compute".into());
         }
         let (min_sg, max_sg) = if api >= vk::API_VERSION_1_3 && size_control.max_subgroup_size > 0 {
             (size_control.min_subgroup_size, size_control.max_subgroup_size)
