@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check).
+# Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs).
 # Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
@@ -63,6 +63,30 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s38d)
+  # Session 38: light paths per pixel with 8 shared candidates where the light hides above a
+  # panel (seed pairs 1-2 and 3-4, RMSE between them over every pixel and off the bright
+  # region) and on the Cornell box (1 s against .device/ref.exr, two rounds).
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  for o in "--connection-candidates 1 --light-paths 1" "--light-paths 1" "--light-paths 0.75" "--light-paths 0.5"; do
+    for p in "1 2" "3 4"; do
+      set -- $p
+      for s in $1 $2; do
+        echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      done
+      "$N" diff /tmp/h$1.exr /tmp/h$2.exr --below 1 2>&1 | grep -E "^RMSE"
+    done
+  done
+  for r in 1 2; do
+    for run in "pt-nee|" "bdpt|--light-paths 1" "bdpt|--light-paths 0.75" "bdpt|"; do
+      i=${run%%|*}; o=${run#*|}
+      echo "== cornell 1 s $i $o: $(timeout -k 5 60 "$N" render $CB --integrator $i --time 1 -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      "$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
+    done
+  done
+  ;;
 s38c)
   # Session 38, shared candidates (.device/bidir-new.gz: bdpt's default in diffuse scenes is 8
   # candidates and 0.5 light paths per pixel) with fewer light paths per pixel: the

@@ -211,7 +211,11 @@ pub fn default_mis(integrator: Integrator, features: &SceneFeatures) -> Mis {
 /// against the sharper reference, RMSE 0.000358-0.000364 with one light path per pixel and
 /// uniform connections, 0.000337-0.000344 with 8 candidates, 0.000308-0.000310 with 8
 /// candidates and half a light path per pixel (pt-nee: 0.000306); at 0.1 s 0.00142, 0.00125-0.00142
-/// and 0.00123-0.00124 (docs/results.md, "Candidates shared within the subgroup").
+/// and 0.00123-0.00124; an H100 1.74-1.77x, 1.45x and 1.11-1.14x pt-nee's MSE at 1 s (0.75 light
+/// paths: 1.30x). Where light paths carry more, the box whose light hides above a panel, half a
+/// light path costs 10 % in MSE over the whole image against the uniform draw with one (H100;
+/// 22 % less off the bright region around the light), 18 % against 8 candidates with one
+/// (docs/results.md, "Candidates shared within the subgroup").
 pub fn default_light_path_ratio(integrator: Integrator, features: &SceneFeatures) -> f32 {
     match integrator {
         Integrator::Bdpt(Join::DEFAULT) if features.only_diffuse() => 0.5,
@@ -225,7 +229,7 @@ pub fn default_light_path_ratio(integrator: Integrator, features: &SceneFeatures
 /// (glsl/common/bdpt_camera_path.glsl), so each costs arithmetic and shuffles, not a read:
 /// NVIDIA H200, the Cornell box 256², a BDPT sample 160.6 ms per 1024 spp with 1, 171.3 with 4,
 /// 173.2 with 8, 176.2 with 16. Where it was measured at equal time (docs/results.md,
-/// "Candidates shared within the subgroup"): the Cornell box -9 to -14 % MSE, the box whose
+/// "Candidates shared within the subgroup"): the Cornell box -8 to -14 % MSE, the box whose
 /// light hides above a panel -6 % (-22 % off the light's edge); in scenes with glossy or
 /// glass surfaces, where the target's blindness to visibility and to the lobes costs more,
 /// the rough Cornell box +11 %, the caustic scene level over six seeds, Sponza under its sun
