@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs).
+# Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table).
 # Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
@@ -63,6 +63,25 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s38e)
+  # Session 38, issue #16's table: pt, pt-nee, bdpt and bdpt:full on the Cornell box (256²,
+  # against .device/ref.exr) and the caustic scene (128², against its reference), `bench render`
+  # Msamples/s and `render --time 0.1 / 1`, with this commit's build (.device/bidir-new.gz) and
+  # bdpt also with f824783's (.device/bidir-head.gz: the uniform draw, one light path per pixel).
+  N=$PWD/.device/bidir-new; H=$PWD/.device/bidir-head
+  for f in .device/bidir-new.gz .device/bidir-head.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+  for run in "$N|pt" "$N|pt-nee" "$H|bdpt" "$N|bdpt" "$N|bdpt:full"; do
+    b=${run%%|*}; i=${run#*|}
+    for sc in cornell caustic; do
+      if [ $sc = cornell ]; then S="$CB"; R="$REF"; else S="$CAU"; R=assets/scenes/caustic/reference.exr; fi
+      echo "== $sc $i $(basename $b): $(timeout -k 5 60 "$b" bench render $S --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms \([0-9.]+ Msamples/s\)')"
+      for t in 0.1 1; do
+        echo "   $t s: $(timeout -k 5 60 "$b" render $S --integrator $i --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$b" diff /tmp/q.exr "$R" 2>&1 | grep -E '^RMSE ')"
+      done
+    done
+  done
+  ;;
 s38d)
   # Session 38: light paths per pixel with 8 shared candidates where the light hides above a
   # panel (seed pairs 1-2 and 3-4, RMSE between them over every pixel and off the bright
