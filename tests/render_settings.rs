@@ -40,6 +40,13 @@ fn values_differing(a: &[f32], b: &[f32], relative: f32) -> usize {
     a.iter().zip(b).filter(|(x, y)| (*x - *y).abs() > relative * x.abs()).count()
 }
 
+// SHARED_CANDIDATES: the tests below that compare two ways of rendering one image value for
+// value pin BDPT's connections to one candidate. Several are shared among the lanes of a
+// subgroup that connect at once (glsl/common/bdpt_camera_path.glsl), so the image depends on
+// which slots share a subgroup: the same expectation, not the same values, between the two
+// forms, and in the wavefront form from run to run (tests/render_cornell.rs checks each form
+// against the references with shared candidates).
+
 /// The BVH's build where `--bvh-quality` does not say (`render::default_bvh_build`): the
 /// binary and compressed wide BVHs at quality 4 for scenes up to the bound on any device; the
 /// renderer's settings say which, and a quality asked for is kept.
@@ -135,6 +142,8 @@ fn four_wide_bvh_gives_the_binary_bvhs_image() {
         let image = |layout: BvhLayout| {
             let mut settings = RenderSettings::new(integrator);
             settings.bvh_layout = Some(layout);
+            // One candidate: shared ones follow which lanes connect together (SHARED_CANDIDATES).
+            settings.connection_candidates = Some(1);
             render_values(&ctx, &scene, &camera, settings, 4)
         };
         let (binary, wide) = (image(BvhLayout::Bvh2), image(BvhLayout::Bvh4));
@@ -244,6 +253,8 @@ fn bdpt_shadow_queue_gives_the_same_image_in_a_crop() {
         settings.crop = Some(Crop { x0: 5, y0: 3, x1: 17, y1: 11 });
         settings.light_path_ratio = Some(2.0);
         settings.sample_slices = 3;
+        // One candidate: shared ones follow which lanes connect together (SHARED_CANDIDATES).
+        settings.connection_candidates = Some(1);
         render_values(&ctx, &scene, &camera, settings, 6)
     };
     let off = image(None);
@@ -350,10 +361,7 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
             settings.bvh_layout = Some(layout);
             settings.sample_slices = slices;
             settings.light_path_ratio = Some(ratio);
-            // One candidate per connection: several are shared among the lanes of a subgroup
-            // that connect at once (glsl/common/bdpt_camera_path.glsl), which differ between
-            // the two forms, so their images differ as two seeds' do (render_cornell checks
-            // each form's against the references).
+            // One candidate per connection (SHARED_CANDIDATES).
             settings.connection_candidates = Some(1);
             render_values(&ctx, scene, &camera, settings, 6)
         };

@@ -80,6 +80,9 @@ fn no_merge_equals_bdpt() {
             s.mis = Some(mis);
             s.light_path_ratio = Some(1.0);
             s.connection_candidates = Some(candidates);
+            // VCM's camera pass is a megakernel: so must BDPT's be (GPUs default to its
+            // wavefront form), whose lanes then share candidates as VCM's do.
+            s.wavefront = Some(false);
             s
         };
         let a = render(&scene, settings(Integrator::Bdpt(Join::DEFAULT)), 2, 3..=3).remove(0);

@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table; run on an H100, to run on the H200); s38f (prepared: BDPT's megakernels against its wavefront form under the new defaults).
+# Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table; run on an H100, to run on the H200); s38f (under the new defaults: whether a seed gives one image in each form; BDPT's megakernels against its wavefront form).
 # Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
 # Parts of session 35 (no device was lent that session; run in session 36): s35a (the megakernel path tracer as a module per loop form, 0d0ba13, against .device/bidir-pre35.gz; the compressed wide BVH at build quality 2 and 4; pt-nee and pt on the Cornell box, pt-nee on the caustic scene, which needs .device/scenes/caustic).
@@ -64,17 +64,24 @@ shader_cache() {
 }
 case "${1:-speed}" in
 s38f)
-  # Session 38 (prepared, not run): with the new defaults (8 shared candidates, half a light
-  # path per pixel on diffuse scenes) BDPT's megakernels against its wavefront form on the
-  # Cornell box and the hidden light's box, `bench render` ms per 1024 spp, two rounds.
+  # Session 38: under the new defaults (8 shared candidates, half a light path per pixel on
+  # diffuse scenes), whether a seed gives one image (two renders of 64 spp, seed 1, each form:
+  # the wavefront form's live-slot lists are filled in the order subgroups reach an atomic, so
+  # which slots share a subgroup after a pass's first launch may vary), and BDPT's megakernels
+  # against its wavefront form: `bench render` ms per 1024 spp and `render --time 1` against
+  # .device/ref.exr on the Cornell box, two rounds.
   N=$PWD/.device/bidir-new
   gunzip -kf .device/bidir-new.gz; chmod +x "$N"
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+  for w in on off; do
+    for k in 1 2; do timeout -k 5 60 "$N" render $CB --integrator bdpt --wavefront $w --spp 64 --seed 1 -o /tmp/d$k.exr > /dev/null 2>&1; done
+    echo "== same seed twice, --wavefront $w: $("$N" diff /tmp/d1.exr /tmp/d2.exr 2>&1 | grep -E '^RMSE ')"
+  done
+  for k in 1 2; do timeout -k 5 60 "$N" render $CB --integrator bdpt --connection-candidates 1 --spp 64 --seed 1 -o /tmp/d$k.exr > /dev/null 2>&1; done
+  echo "== same seed twice, wavefront, 1 candidate: $("$N" diff /tmp/d1.exr /tmp/d2.exr 2>&1 | grep -E '^RMSE ')"
   for r in 1 2; do
-    for sc in "$CB" "$HID"; do
-      for w in on off; do
-        echo "== $(echo $sc | cut -c1-30) --wavefront $w: $(timeout -k 5 60 "$N" bench render $sc --integrator bdpt --wavefront $w --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
-      done
+    for w in on off; do
+      echo "== bench --wavefront $w: $(timeout -k 5 60 "$N" bench render $CB --integrator bdpt --wavefront $w --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+      echo "== 1 s --wavefront $w: $(timeout -k 5 60 "$N" render $CB --integrator bdpt --wavefront $w --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE ')"
     done
   done
   ;;

@@ -152,9 +152,10 @@ pub struct SettingsArgs {
     /// light vertex from N uniform candidates by resampling, in proportion to what each would
     /// carry if nothing blocked it; one shadow ray per connection either way. 1 draws it
     /// uniformly. The candidates are those drawn by the GPU subgroup's lanes that connect at
-    /// once (at most its size: 8 on lavapipe, 32 on NVIDIA), so each costs arithmetic, not a
-    /// read: on an NVIDIA H200, 8 candidates take a Cornell box sample 8 % more time for 22-27 %
-    /// less variance off the light's edge. Default: 8 for bdpt in scenes with only diffuse
+    /// once (at most 32, or the subgroup's size if smaller: 8 on lavapipe), so each costs arithmetic, not a
+    /// read: on an NVIDIA H200, 8 candidates take a Cornell box sample 8 % more time, for 27 %
+    /// less variance per sample off the light's edge. Above 1, the GPUs' wavefront form gives a
+    /// seed a different image from run to run (the same expectation and noise). Default: 8 for bdpt in scenes with only diffuse
     /// surfaces, 1 otherwise (glossy and glass scenes measured level or worse; docs/results.md,
     /// "Candidates shared within the subgroup"). Any N is unbiased
     #[arg(long, value_name = "N")]

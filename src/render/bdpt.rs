@@ -169,7 +169,7 @@ impl Bdpt {
         wavefront: Option<u64>,
     ) -> Result<Bdpt, RenderError> {
         let (light_path_len, sampler) = (settings.light_path_len, settings.sampler);
-        let ratio = settings.light_path_ratio_for(&scene.features);
+        let ratio = settings.light_path_ratio_for(&scene.estimator_features);
         if !(ratio > 0.0 && ratio.is_finite()) {
             return Err(RenderError::Unsupported(format!("light paths per pixel must be a positive number, not {ratio}")));
         }
@@ -206,9 +206,9 @@ impl Bdpt {
         specs.push(Spec { id: abi::SPEC_STATS, value: settings.count_traversal as u32 });
         specs.push(sampler.spec());
         specs.push(Spec { id: abi::SPEC_DIRECT_LIGHT_TRACING, value: settings.direct_light_tracing as u32 });
-        specs.push(Spec { id: abi::SPEC_MIS_BALANCE, value: (settings.mis_for(&scene.features) == super::Mis::Balance) as u32 });
+        specs.push(Spec { id: abi::SPEC_MIS_BALANCE, value: (settings.mis_for(&scene.estimator_features) == super::Mis::Balance) as u32 });
         specs.push(Spec { id: abi::SPEC_LIGHT_VERTEX_WORDS, value: words });
-        let candidates = settings.connection_candidates_for(&scene.features);
+        let candidates = settings.connection_candidates_for(&scene.estimator_features);
         if !(1..=super::MAX_CONNECTION_CANDIDATES).contains(&candidates) {
             return Err(RenderError::Unsupported(format!(
                 "connection candidates: {candidates} (1 to {})",

@@ -30,7 +30,13 @@ pub struct GpuScene {
     pub env_texels: Buffer,
     pub env_alias: Buffer,
     pub punctual: Buffer,
+    /// The code the kernels are specialised for: what the scene has, or everything under
+    /// `RenderSettings::all_material_code`.
     pub features: SceneFeatures,
+    /// What the scene has, never widened by `all_material_code`: the estimators' defaults (BDPT's
+    /// MIS heuristic, light paths per pixel, connection candidates) follow it, so that compiling
+    /// all the material code in measures the same estimator.
+    pub estimator_features: SceneFeatures,
     pub emitter_count: u32,
     pub emitter_weight: f32,
     /// Total bytes uploaded.
@@ -165,6 +171,7 @@ impl GpuScene {
             env_alias,
             punctual,
             features,
+            estimator_features: features,
             emitter_count: lights.emitters.len() as u32,
             emitter_weight: lights.total_weight,
             bytes,

@@ -304,8 +304,10 @@ pub struct RenderSettings {
     /// ([`MAX_CONNECTION_CANDIDATES`] at most; docs/results.md, "Connections resampled from
     /// several candidates"). The candidates are the entries drawn by the subgroup's lanes that
     /// connect at the same time, so a connection gets fewer where fewer lanes connect (at most
-    /// the subgroup's size: 8 on lavapipe, 32 on NVIDIA), and above 1 the image depends on the
-    /// device's subgroups. The other joins ignore it.
+    /// 32, or the subgroup's size if smaller: 8 on lavapipe), and above 1 the image depends on
+    /// which lanes connect together: on the device's subgroups, and in the wavefront form on the
+    /// order in which subgroups list their live slots, so a seed's image varies from run to run
+    /// there (the same expectation and variance). The other joins ignore it.
     pub connection_candidates: Option<u32>,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
@@ -475,24 +477,24 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
     }
 }
 
-/// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`) of a
-/// scene with `features`. The wavefront forms take more: their trace kernels need many rays
+/// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`) of
+/// `scene`. The wavefront forms take more: their trace kernels need many rays
 /// per launch (`pt_wavefront::TARGET_SLOTS`), within the memory their slots (and BDPT's
 /// light-vertex store) may take.
-fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatures, pixels: u32) -> u32 {
+fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pixels: u32) -> u32 {
     if settings.sample_slices > 0 {
         return settings.sample_slices;
     }
     if on_cpu(ctx) {
         return 1;
     }
-    let wave = wavefront(ctx, settings, settings.integrator, features);
+    let wave = wavefront(ctx, settings, settings.integrator, &scene.features);
     let mut s = if wave {
         let slot_bytes = match settings.integrator {
             // BDPT's passes share their slots: a light path's, or a pixel's camera sample's.
             Integrator::Bdpt(join) => {
                 let bytes = bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1));
-                (bytes as f64 * settings.light_path_ratio_for(features).max(1.0) as f64).ceil() as u64
+                (bytes as f64 * settings.light_path_ratio_for(&scene.estimator_features).max(1.0) as f64).ceil() as u64
             }
             _ => pt_wavefront::SLOT_BYTES,
         };
@@ -501,7 +503,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, features: &SceneFeatu
         TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, MAX_SLICES)
     };
     if settings.integrator.stores_light_vertices() {
-        let per_sample = (pixels as f64 * settings.light_path_ratio_for(features).max(0.0) as f64).max(1.0) as u64;
+        let per_sample = (pixels as f64 * settings.light_path_ratio_for(&scene.estimator_features).max(0.0) as f64).max(1.0) as u64;
         let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
         // BDPT's wavefront passes want millions of slots, so their iterations may take more
         // light paths: the store may grow to the shadow queue's budget (a sixteenth of the
@@ -577,7 +579,7 @@ fn build_kernels(
     check_layout(scene.bvh.layout)?;
     let mut invocations = shadow_queue::invocations(window.width(), window.height(), slices);
     if integrator.stores_light_vertices() {
-        invocations = bdpt::queue_invocations(invocations, pixels, settings.light_path_ratio_for(&scene.features), slices);
+        invocations = bdpt::queue_invocations(invocations, pixels, settings.light_path_ratio_for(&scene.estimator_features), slices);
     }
     if settings.wavefront == Some(true) && !defaults::wavefront_supported(integrator) {
         return Err(RenderError::Unsupported(format!(
@@ -639,7 +641,7 @@ impl Renderer {
         }
         let window = window(&settings, camera)?;
         let pixels = camera.width * camera.height;
-        let slices = sample_slices(ctx, &settings, &gscene.features, slice_pixels(&settings, pixels, window));
+        let slices = sample_slices(ctx, &settings, &gscene, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, window, &settings, slices)?;
         let film = Film::new(ctx, window.width(), window.height(), kernels.splats(), slices)?;
         let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
@@ -732,7 +734,7 @@ impl Renderer {
         let window = window(&self.settings, camera)?;
         if (camera.width, camera.height) != (self.camera.size.x, self.camera.size.y) {
             let pixels = camera.width * camera.height;
-            let slices = sample_slices(&self.ctx, &self.settings, &self.scene.features, slice_pixels(&self.settings, pixels, window));
+            let slices = sample_slices(&self.ctx, &self.settings, &self.scene, slice_pixels(&self.settings, pixels, window));
             // Path tracers keep their kernels unless their shadow-ray queue is sized by the
             // film; BDPT's store is sized by the pixel count.
             let kernels = if self.kernels.sized_by_pixels() {
@@ -765,7 +767,7 @@ impl Renderer {
         let settings = self.settings.with_integrator(integrator);
         let (x0, y0) = (self.camera.window_x, self.camera.window_y);
         let window = Crop { x0, y0, x1: x0 + self.film.width, y1: y0 + self.film.height };
-        let slices = sample_slices(&self.ctx, &settings, &self.scene.features, slice_pixels(&settings, pixels, window));
+        let slices = sample_slices(&self.ctx, &settings, &self.scene, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(&self.ctx, &self.scene, integrator, pixels, window, &settings, slices)?;
         let film = Film::new(&self.ctx, self.film.width, self.film.height, kernels.splats(), slices)?;
         self.kernels = kernels;
