@@ -795,18 +795,31 @@ impl Renderer {
         Ok(())
     }
 
-    /// How the kernels run, for logs and image metadata: [`kernel_form`] of the settings, and
-    /// the shadow-ray queue in use (with the slots that fit).
+    /// How the kernels run, for logs and image metadata: [`kernel_form`] of the settings, the
+    /// shadow-ray queue in use (with the slots that fit), and the light vertex cache's
+    /// connection candidates and light paths per pixel where they are not 1 (they follow the
+    /// scene by default: `default_connection_candidates`, `default_light_path_ratio`).
     pub fn kernel_form(&self) -> String {
-        let form = match (self.kernels.shadow_queue(), self.settings.integrator) {
+        let mut form = match (self.kernels.shadow_queue(), self.settings.integrator) {
             (Some(q), Integrator::PtNee) => format!("{}, shadow queue {q}", kernel_form(&self.settings)),
             (Some(q), _) => format!("{}, shadow queue {}", kernel_form(&self.settings), q.slots),
             (None, _) => kernel_form(&self.settings),
         };
-        match self.kernels.wavefront() {
-            true => format!("{form}, wavefront"),
-            false => form,
+        if self.kernels.wavefront() {
+            form += ", wavefront";
         }
+        if let Integrator::Bdpt(Join::Lvc(_)) | Integrator::Vcm(_) = self.settings.integrator {
+            let features = &self.scene.estimator_features;
+            let candidates = self.settings.connection_candidates_for(features);
+            if candidates > 1 {
+                form += &format!(", {candidates} connection candidates");
+            }
+            let ratio = self.settings.light_path_ratio_for(features);
+            if ratio != 1.0 {
+                form += &format!(", {ratio} light paths per pixel");
+            }
+        }
+        form
     }
 
     /// The integrator's kernels (e.g. for their compile statistics, `Kernel::statistics`).
