@@ -217,10 +217,18 @@ pub fn default_mis(integrator: Integrator, features: &SceneFeatures) -> Mis {
 /// 22 % less off the bright region around the light), 18 % against 8 candidates with one
 /// (docs/results.md, "Candidates shared within the subgroup").
 pub fn default_light_path_ratio(integrator: Integrator, features: &SceneFeatures) -> f32 {
-    match integrator {
-        Integrator::Bdpt(Join::DEFAULT) if features.only_diffuse() => 0.5,
-        _ => 1.0,
+    if resampled_diffuse_bdpt(integrator, features) {
+        0.5
+    } else {
+        1.0
     }
+}
+
+/// Where BDPT takes its resampled connections and half a light path per pixel by default:
+/// its default join in scenes with only diffuse surfaces. One predicate for both defaults,
+/// which were measured together and only pay together.
+fn resampled_diffuse_bdpt(integrator: Integrator, features: &SceneFeatures) -> bool {
+    integrator == Integrator::Bdpt(Join::DEFAULT) && features.only_diffuse()
 }
 
 /// Candidates of each connection to the light vertex cache (`--connection-candidates`) where
@@ -235,9 +243,10 @@ pub fn default_light_path_ratio(integrator: Integrator, features: &SceneFeatures
 /// the rough Cornell box +11 %, the caustic scene level over six seeds, Sponza under its sun
 /// and sky level off the sun's edge: those keep the uniform draw. VCM keeps it too.
 pub fn default_connection_candidates(integrator: Integrator, features: &SceneFeatures) -> u32 {
-    match integrator {
-        Integrator::Bdpt(Join::DEFAULT) if features.only_diffuse() => 8,
-        _ => 1,
+    if resampled_diffuse_bdpt(integrator, features) {
+        8
+    } else {
+        1
     }
 }
 
@@ -400,6 +409,9 @@ mod default_tests {
         assert_eq!((settings.connection_candidates_for(&diffuse), settings.light_path_ratio_for(&diffuse)), (8, 0.5));
         (settings.connection_candidates, settings.light_path_ratio) = (Some(2), Some(3.0));
         assert_eq!((settings.connection_candidates_for(&diffuse), settings.light_path_ratio_for(&diffuse)), (2, 3.0));
+        // The joins without the cache ignore candidates set by hand.
+        settings.integrator = Integrator::Bdpt(Join::Full);
+        assert_eq!(settings.connection_candidates_for(&diffuse), 1);
     }
 
     /// Quality 4 up to the bound for the binary and compressed wide BVHs, 2 past it; the 4-wide

@@ -336,10 +336,15 @@ impl RenderSettings {
     }
 
     /// Candidates of each connection to the light vertex cache in a scene of `features`:
-    /// `--connection-candidates`, or [`default_connection_candidates`]. Resolved as
-    /// [`Self::mis_for`] is.
+    /// `--connection-candidates`, or [`default_connection_candidates`]; 1 for the joins without
+    /// the cache, which ignore it. Resolved as [`Self::mis_for`] is.
     pub fn connection_candidates_for(&self, features: &SceneFeatures) -> u32 {
-        self.connection_candidates.unwrap_or_else(|| default_connection_candidates(self.integrator, features))
+        match self.integrator {
+            Integrator::Bdpt(bdpt::Join::Lvc(_)) | Integrator::Vcm(_) => {
+                self.connection_candidates.unwrap_or_else(|| default_connection_candidates(self.integrator, features))
+            }
+            _ => 1,
+        }
     }
 
     /// These settings for another integrator: Russian roulette follows the new integrator's
