@@ -37,6 +37,13 @@ PRE=${PRE:-$PWD/.device/bidir-pre}
 OUT=${OUT:-/tmp/pending}
 mkdir -p "$OUT"
 CB="--width 256 --height 256"
+# The scenes of sessions 37 and 38's parts: the box whose light hides above a panel (built as
+# tests/render_caustic.rs builds it), the caustic scene at its test's camera, Sponza's geometry
+# under sun and sky, the rough Cornell box.
+HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
+CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
+SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
 # Sponza's CameraMain at build quality 5 through the 4-wide BVH (issue #17's setting) with the
 # binary $1 and any further options: the primary, shadow and diffuse lines of its report.
 sponza_q5() {
@@ -92,7 +99,6 @@ s38e)
   # bdpt also with f824783's (.device/bidir-head.gz: the uniform draw, one light path per pixel).
   N=$PWD/.device/bidir-new; H=$PWD/.device/bidir-head
   for f in .device/bidir-new.gz .device/bidir-head.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
-  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
   for run in "$N|pt" "$N|pt-nee" "$H|bdpt" "$N|bdpt" "$N|bdpt:full"; do
     b=${run%%|*}; i=${run#*|}
     for sc in cornell caustic; do
@@ -110,7 +116,6 @@ s38d)
   # region) and on the Cornell box (1 s against .device/ref.exr, two rounds).
   N=$PWD/.device/bidir-new
   gunzip -kf .device/bidir-new.gz; chmod +x "$N"
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
   for o in "--connection-candidates 1 --light-paths 1" "--light-paths 1" "--light-paths 0.75" "--light-paths 0.5"; do
     for p in "1 2" "3 4"; do
       set -- $p
@@ -145,7 +150,6 @@ s38c)
       done
     done
   done
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
   for o in "--connection-candidates 1 --light-paths 1" "" "--connection-candidates 16 --light-paths 0.5" "--connection-candidates 16 --light-paths 0.33"; do
     for s in 1 2; do
       echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
@@ -168,10 +172,12 @@ s38b)
   # scene over four more seeds at 1 / 4 / 8 candidates; seed pairs (the variance between
   # them) on Sponza's geometry under sun and sky (2 s) and the rough Cornell box (1 s); then
   # issue #17's traversal figures (one round).
+  # Run before the diffuse scenes' defaults changed (7064d96); the options now pin what its
+  # rows meant then (the uniform draw and one light path per pixel unless said).
   N=$PWD/.device/bidir-new
   gunzip -kf .device/bidir-new.gz; chmod +x "$N"
   for r in 1 2; do
-    for run in "pt-nee|" "bdpt|" "bdpt|--connection-candidates 8" "bdpt|--connection-candidates 8 --light-paths 0.5" "bdpt|--connection-candidates 8 --light-paths 0.75"; do
+    for run in "pt-nee|" "bdpt|--connection-candidates 1 --light-paths 1" "bdpt|--connection-candidates 8 --light-paths 1" "bdpt|--connection-candidates 8 --light-paths 0.5" "bdpt|--connection-candidates 8 --light-paths 0.75"; do
       i=${run%%|*}; o=${run#*|}
       for t in 1 0.1; do
         echo "== cornell $t s $i $o: $(timeout -k 5 60 "$N" render $CB --integrator $i --time $t -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
@@ -179,14 +185,11 @@ s38b)
       done
     done
   done
-  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
   for s in 3 4 5 6; do
     for o in "" "--connection-candidates 4" "--connection-candidates 8"; do
       echo "== caustic seed $s $o: $(timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 1 --seed $s -o /tmp/c.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
     done
   done
-  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
-  RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
   for o in "" "--connection-candidates 8"; do
     for s in 1 2; do
       echo "== sponza $o seed $s: $(timeout -k 5 90 "$N" render $SP --integrator bdpt --time 2 --seed $s -o /tmp/s$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s|rror.*')"
@@ -204,37 +207,36 @@ s38a)
   # per 1024 spp on the Cornell box (bdpt, vcm) at 1 / 4 / 8 / 16 / 32 candidates, two rounds
   # interleaved; then equal time (1 s) against .device/ref.exr, whole image and off the light's
   # edge, and pt-nee; the hidden light's box (seeds 1, 2) and the caustic scene.
+  # Run before the diffuse scenes' defaults changed (7064d96); the options now pin what its
+  # rows meant then (the uniform draw and one light path per pixel unless said).
   N=$PWD/.device/bidir-new; H=$PWD/.device/bidir-head
   for f in .device/bidir-new.gz .device/bidir-head.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
   for r in 1 2; do
     for n in 1 4 8 16 32; do
       for b in "$H" "$N"; do
         [ "$b" = "$H" ] && [ $n -gt 8 ] && continue
-        echo "== $(basename $b) bdpt $n: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 --connection-candidates $n 2>&1 | grep -E 'GPU' | head -1)"
+        echo "== $(basename $b) bdpt $n: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 --connection-candidates $n --light-paths 1 2>&1 | grep -E 'GPU' | head -1)"
       done
     done
   done
-  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   for n in 1 8; do
     for b in "$H" "$N"; do
-      echo "== $(basename $b) sponza bdpt $n: $(timeout -k 5 90 "$b" bench render $SP --integrator bdpt --spp 64 --warmup 1 --runs 3 --connection-candidates $n 2>&1 | grep -E 'GPU' | head -1)"
+      echo "== $(basename $b) sponza bdpt $n: $(timeout -k 5 90 "$b" bench render $SP --integrator bdpt --spp 64 --warmup 1 --runs 3 --connection-candidates $n --light-paths 1 2>&1 | grep -E 'GPU' | head -1)"
     done
   done
   for n in 1 4 8; do
     for b in "$H" "$N"; do
-      echo "== $(basename $b) vcm $n: $(timeout -k 5 60 "$b" bench render $CB --integrator vcm --spp 256 --warmup 1 --runs 3 --connection-candidates $n 2>&1 | grep -E 'GPU' | head -1)"
+      echo "== $(basename $b) vcm $n: $(timeout -k 5 60 "$b" bench render $CB --integrator vcm --spp 256 --warmup 1 --runs 3 --connection-candidates $n --light-paths 1 2>&1 | grep -E 'GPU' | head -1)"
     done
   done
   for r in 1 2; do
-    for run in "pt-nee|" "bdpt|" "bdpt|--connection-candidates 4" "bdpt|--connection-candidates 8" "bdpt|--connection-candidates 16"; do
+    for run in "pt-nee|" "bdpt|--connection-candidates 1 --light-paths 1" "bdpt|--connection-candidates 4 --light-paths 1" "bdpt|--connection-candidates 8 --light-paths 1" "bdpt|--connection-candidates 16 --light-paths 1"; do
       i=${run%%|*}; o=${run#*|}
       echo "== cornell 1 s $i $o: $(timeout -k 5 60 "$N" render $CB --integrator $i --time 1 -o /tmp/q.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
       "$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E "^RMSE"
     done
   done
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
-  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
-  for o in "" "--connection-candidates 8"; do
+  for o in "--connection-candidates 1 --light-paths 1" "--connection-candidates 8 --light-paths 1"; do
     for s in 1 2; do
       echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
       echo "== caustic $o seed $s: $(timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 1 --seed $s -o /tmp/c$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/c$s.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
@@ -249,8 +251,6 @@ s37g)
   # seed 2 printed no result: this part keeps every message of that render.
   N=$PWD/.device/bidir-new
   gunzip -kf .device/bidir-new.gz; chmod +x "$N"
-  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
   for o in "" "--connection-candidates 4"; do
     for s in 1 2; do
       echo "== sponza $o seed $s"; rm -f /tmp/s$s.exr
@@ -268,7 +268,6 @@ s37f)
   # draw, seeds 3 to 6 (1 s, 128², RMSE against its reference), with the committed build.
   N=$PWD/.device/bidir-new
   gunzip -kf .device/bidir-new.gz; chmod +x "$N"
-  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
   for s in 3 4 5 6; do
     for o in "" "--connection-candidates 4"; do
       echo "== caustic seed $s $o: $(timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 1 --seed $s -o /tmp/c.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
@@ -282,8 +281,6 @@ s37e)
   # (RMSE between them; the caustic scene also against its reference).
   N=$PWD/.device/bidir-new
   gunzip -kf .device/bidir-new.gz; chmod +x "$N"
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
-  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
   for r in 1 2; do
     for run in "bdpt|" "bdpt|--connection-candidates 4" "pt-nee|"; do
       i=${run%%|*}; o=${run#*|}
@@ -310,8 +307,6 @@ s37d)
   # interleaved; then `render --time 1` against .device/ref.exr.
   N=$PWD/.device/bidir-new; E=$PWD/.device/bidir-exp
   for f in .device/bidir.gz .device/bidir-new.gz .device/bidir-exp.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
-  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   g() { grep -oE 'GPU [0-9.]+ ms'; }
   for r in 1 2; do
     for run in "$B|" "$N|" "$N|--connection-candidates 2" "$N|--connection-candidates 4" "$E|RIS4"; do
@@ -333,7 +328,6 @@ s37c)
   # 1024 spp (Cornell box) and per 64 spp (Sponza's geometry under sun and sky).
   E=$PWD/.device/bidir-exp
   gunzip -kf .device/bidir-exp.gz; chmod +x "$E"
-  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   for r in 1 2; do
     for m in 1 2 4; do
       for p in 0 1 2; do
@@ -358,9 +352,6 @@ s37b)
   # reference; Sponza's geometry under sun and sky (glossy: 96-byte vertices), ms per 64 spp.
   E=$PWD/.device/bidir-exp
   gunzip -kf .device/bidir-exp.gz; chmod +x "$E"
-  HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
-  CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
-  SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   for r in 1 2; do
     for m in 1 2 4 8; do
       export BIDIR_EXP_RIS=$m
