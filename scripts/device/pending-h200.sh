@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts of session 39: s39a (where a BDPT sample's time goes under session 38's defaults, kernel by kernel; fewer light paths with 16 candidates at equal time on the Cornell box and where the light hides); s39b (fewer light paths with 16 and 32 candidates on the Cornell box; run on an H100); s39c and s39d (not run: no machine was lent again that session): s39c the time-budgeted render's passes (BIDIR_PASS_LOG) for bdpt and pt-nee at 0.1 s; s39d a measurement build, scripts/device/s39d.patch applied to c821483, built, stripped and gzipped as .device/bidir-exp.gz: the camera step draws the light vertex cache's first entry beside the random stream at the vertex's start, so that its read overlaps the BSDF and the light sample; against .device/bidir-new.gz (this commit).
 # Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table; run on an H100, to run on the H200); s38f (under the new defaults: whether a seed gives one image in each form; BDPT's megakernels against its wavefront form).
 # Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
@@ -70,6 +71,73 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s39d)
+  # Session 39, issue #16: a measurement build (.device/bidir-exp.gz) whose camera step draws
+  # the light vertex cache's first entry beside the random stream at the vertex's start, so its
+  # read overlaps the BSDF and the light sample, against this commit's (.device/bidir-new.gz):
+  # `bench render` GPU ms, two rounds interleaved, Cornell box 256² (1024 spp), the hidden
+  # light's box, Sponza's geometry under sun and sky (64 spp, 8 candidates: its default is 1).
+  N=$PWD/.device/bidir-new; X=$PWD/.device/bidir-exp
+  for f in .device/bidir-new.gz .device/bidir-exp.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  for r in 1 2; do
+    for b in "$N" "$X"; do
+      echo "== $(basename $b) round $r"
+      echo "   cornell: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -E '^(bdpt_camera|GPU|bdpt:)' | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
+      echo "   hidden: $(timeout -k 5 60 "$b" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
+      echo "   sponza 8: $(timeout -k 5 60 "$b" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
+    done
+  done
+  echo "== info --kernels"
+  for b in "$N" "$X"; do timeout -k 5 120 "$b" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront"; done
+  ;;
+s39c)
+  # Session 39, issue #16: the time-budgeted render's passes (BIDIR_PASS_LOG=1: samples, the
+  # model's prediction, the time taken) for bdpt and pt-nee at 0.1 s (three fresh processes
+  # each) and bdpt at 1 s, Cornell box 256²; the caustic scene's bdpt at 0.1 s.
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  for i in bdpt pt-nee bdpt pt-nee bdpt pt-nee; do
+    echo "== 0.1 s $i"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$N" render $CB --integrator $i --time 0.1 -o /tmp/q.exr 2>&1 | grep -vE "^(Wrote|wrote)"
+  done
+  echo "== 1 s bdpt"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$N" render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | tail -12
+  echo "== caustic 0.1 s bdpt"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$N" render $CAU --integrator bdpt --time 0.1 -o /tmp/q.exr 2>&1
+  ;;
+s39b)
+  # Session 39, issue #16: fewer light paths per pixel with more shared candidates on the
+  # Cornell box: `bench render` ms per 1024 spp and 1 s RMSE against .device/ref.exr (two runs).
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  for o in "--light-paths 0.25 --connection-candidates 32" "--light-paths 0.125 --connection-candidates 16" "--light-paths 0.125 --connection-candidates 32" "--light-paths 0.0625 --connection-candidates 32"; do
+    echo "== bench $o: $(timeout -k 5 60 "$N" bench render $CB --integrator bdpt $o --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    for r in 1 2; do
+      echo "   1 s: $(timeout -k 5 60 "$N" render $CB --integrator bdpt $o --time 1 --seed $r -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+  done
+  echo "== bench pt-nee: $(timeout -k 5 60 "$N" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  ;;
+s39a)
+  # Session 39, issue #16: where a BDPT sample's time goes under session 38's defaults (8 shared
+  # candidates, half a light path per pixel), kernel by kernel, against pt-nee and against one
+  # light path per pixel and one candidate; the kernels' registers; fewer light paths with 16
+  # candidates at equal time on the Cornell box and where the light hides.
+  N=$PWD/.device/bidir-new
+  gunzip -kf .device/bidir-new.gz; chmod +x "$N"
+  timeout -k 5 120 "$N" info --kernels 2>&1 | grep -iE "bdpt|pt_|trace|kernel|regist" | head -40
+  for o in "--integrator pt-nee" "--integrator bdpt" "--integrator bdpt --connection-candidates 1" "--integrator bdpt --connection-candidates 1 --light-paths 1" "--integrator bdpt --light-paths 0.33 --connection-candidates 16" "--integrator bdpt --light-paths 0.25 --connection-candidates 16"; do
+    echo "== bench $o"; timeout -k 5 60 "$N" bench render $CB $o --spp 1024 --warmup 1 --runs 3 2>&1 | grep -vE "^setup"
+  done
+  for r in 1 2; do
+    for o in "--integrator pt-nee" "--integrator bdpt" "--integrator bdpt --light-paths 0.33 --connection-candidates 16" "--integrator bdpt --light-paths 0.25 --connection-candidates 16"; do
+      echo "== 1 s $o: $(timeout -k 5 60 "$N" render $CB $o --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$N" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+  done
+  for o in "" "--light-paths 0.33 --connection-candidates 16" "--light-paths 0.25 --connection-candidates 16"; do
+    for s in 1 2; do
+      echo "== hidden $o seed $s: $(timeout -k 5 60 "$N" render $HID --integrator bdpt --time 1 --seed $s -o /tmp/h$s.exr $o 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+    done
+    "$N" diff /tmp/h1.exr /tmp/h2.exr --below 1 2>&1 | grep -E "^RMSE"
+  done
+  ;;
 s38f)
   # Session 38: under the new defaults (8 shared candidates, half a light path per pixel on
   # diffuse scenes), whether a seed gives one image (two renders of 64 spp, seed 1, each form:
