@@ -55,6 +55,16 @@ pub fn sanitize(msg: &str) -> String {
     out
 }
 
+/// A file's path for a message: control characters escaped (tabs and newlines too), nothing
+/// truncated, since the path is what a user needs whole to find the file.
+pub fn path(p: &std::path::Path) -> String {
+    let mut out = String::new();
+    for c in p.display().to_string().chars() {
+        push_escaped(&mut out, c, true);
+    }
+    out
+}
+
 fn push_escaped(out: &mut String, c: char, escape_whitespace: bool) {
     if c.is_control() && (escape_whitespace || c != '\t') {
         out.extend(c.escape_default());
@@ -72,6 +82,8 @@ mod tests {
         assert_eq!(quote("a\0b\x1b[2Jc"), "a\\u{0}b\\u{1b}[2Jc");
         assert_eq!(sanitize("line 1\nbad \x07bell"), "line 1\nbad \\u{7}bell");
         assert_eq!(quote("plain 1.5"), "plain 1.5");
+        let long = format!("/scenes/{}/a\0b\x1b[2J.mtl", "d".repeat(100));
+        assert_eq!(path(std::path::Path::new(&long)), long.replace('\0', "\\u{0}").replace('\x1b', "\\u{1b}"));
     }
 
     #[test]

@@ -339,6 +339,21 @@ fn unknown_material_name_is_escaped() {
     assert!(!e.chars().any(char::is_control) && e.contains("'3/\\u{1b}[2J'"), "{e:?}");
 }
 
+/// Found by the loader fuzzer's long run (session 39): a material library whose name holds a
+/// NUL and terminal escapes made an error (the library cannot be opened) that echoed its path
+/// raw; paths in messages are escaped, and kept whole however long they are.
+#[test]
+fn library_path_with_control_characters_is_escaped() {
+    let dir = std::env::temp_dir().join(format!("bidir-mtllib-{}-{}", std::process::id(), "d".repeat(80)));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("esc.obj");
+    std::fs::write(&obj, "mtllib \x1b[2J\u{9b}\0.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let e = scene::load(&obj, &LoadOptions { strict: false }).expect_err("a NUL in a file name").to_string();
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(!e.chars().any(char::is_control), "{e:?}");
+    assert!(e.contains(&format!("{}/\\u{{1b}}[2J\\u{{9b}}\\u{{0}}.mtl: cannot read", dir.display())), "{e}");
+}
+
 #[test]
 fn gltf_node_with_two_parents() {
     let e = error("gltf_two_parents.gltf");

@@ -117,7 +117,11 @@ impl<'a> Requests<'a> {
                                 None => SceneError::Texture {
                                     file: req.file.clone(),
                                     at: req.at.clone(),
-                                    msg: format!("image '{}' not found (looked for {})", crate::text::quote(&req.name), path.display()),
+                                    msg: format!(
+                                        "image '{}' not found (looked for {})",
+                                        crate::text::quote(&req.name),
+                                        crate::text::path(&path)
+                                    ),
                                 },
                             },
                             format!("{}: texture '{}' not found (looked for {}); using none", req.at, req.name, path.display()),
