@@ -40,12 +40,11 @@ fn values_differing(a: &[f32], b: &[f32], relative: f32) -> usize {
     a.iter().zip(b).filter(|(x, y)| (*x - *y).abs() > relative * x.abs()).count()
 }
 
-// SHARED_CANDIDATES: the tests below that compare two ways of rendering one image value for
-// value pin BDPT's connections to one candidate. Several are shared among the lanes of a
-// subgroup that connect at once (glsl/common/bdpt_camera_path.glsl), so the image depends on
-// which slots share a subgroup: the same expectation, not the same values, between the two
-// forms, and in the wavefront form from run to run (tests/render_cornell.rs checks each form
-// against the references with shared candidates).
+// SHARED_CANDIDATES: BDPT's resampled connections take their candidates from a group (an 8 x 4
+// block of pixels, one sample, one vertex count), whose reads the lanes of a subgroup share
+// (glsl/common/bdpt_camera_path.glsl): an image is the same whichever lanes connect together,
+// so the tests below that compare two ways of rendering one image value for value keep the
+// scene's default candidates (8 for BDPT's default join on the diffuse box) or ask for several.
 
 /// The BVH's build where `--bvh-quality` does not say (`render::default_bvh_build`): the
 /// binary and compressed wide BVHs at quality 4 for scenes up to the bound on any device; the
@@ -142,8 +141,7 @@ fn four_wide_bvh_gives_the_binary_bvhs_image() {
         let image = |layout: BvhLayout| {
             let mut settings = RenderSettings::new(integrator);
             settings.bvh_layout = Some(layout);
-            // One candidate: shared ones follow which lanes connect together (SHARED_CANDIDATES).
-            settings.connection_candidates = Some(1);
+            // The diffuse box's default: 8 shared candidates (SHARED_CANDIDATES).
             render_values(&ctx, &scene, &camera, settings, 4)
         };
         let (binary, wide) = (image(BvhLayout::Bvh2), image(BvhLayout::Bvh4));
@@ -253,8 +251,8 @@ fn bdpt_shadow_queue_gives_the_same_image_in_a_crop() {
         settings.crop = Some(Crop { x0: 5, y0: 3, x1: 17, y1: 11 });
         settings.light_path_ratio = Some(2.0);
         settings.sample_slices = 3;
-        // One candidate: shared ones follow which lanes connect together (SHARED_CANDIDATES).
-        settings.connection_candidates = Some(1);
+        // The diffuse box's default: 8 shared candidates, the crop cutting their pixel blocks
+        // (SHARED_CANDIDATES).
         render_values(&ctx, &scene, &camera, settings, 6)
     };
     let off = image(None);
@@ -361,8 +359,8 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
             settings.bvh_layout = Some(layout);
             settings.sample_slices = slices;
             settings.light_path_ratio = Some(ratio);
-            // One candidate per connection (SHARED_CANDIDATES).
-            settings.connection_candidates = Some(1);
+            // Eight shared candidates per connection, on every join (SHARED_CANDIDATES).
+            settings.connection_candidates = Some(8);
             render_values(&ctx, scene, &camera, settings, 6)
         };
         let (mega, wave) = (image(false), image(true));

@@ -65,8 +65,8 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 }
 
 // One connection of the light vertex cache, its vertex resampled (Talbot et al. 2005,
-// "Importance Resampling for Global Illumination") from up to LVC_CANDIDATES entries drawn
-// uniformly from the `total` cached. Each candidate i is weighed by p_hat_i, its unshadowed,
+// "Importance Resampling for Global Illumination") from LVC_CANDIDATES entries drawn uniformly
+// from the `total` cached. Each candidate i is weighed by p_hat_i, its unshadowed,
 // MIS-weighted connection over its probability of being drawn and stored, computed from the
 // entry's preview of the vertex (lvc_compact.comp: position, shading normal, lobe pick,
 // luminance of beta f and the light side's MIS sum, taken as diffuse); one candidate s is kept
@@ -79,66 +79,98 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // goes where the unshadowed contributions are large. Returns the contribution where it is added
 // now (as connect()).
 //
-// The candidates are shared within the subgroup: every invocation that makes this connection
-// draws one entry and reads its 32 bytes, and takes as its candidates the entries of the next
-// LVC_CANDIDATES invocations doing the same (itself first, cyclically among the active lanes of
-// its 32-lane quarter of the ballot), by shuffles. Each invocation's candidates are still
-// independent uniform draws from the cache, independent of its own path, and how many it gets
-// (M, fewer where fewer lanes connect) does not depend on what they are: the estimate is
-// unbiased, with the variance of M independent candidates. Neighbours that share candidates
-// have correlated errors, not larger ones. A candidate costs shuffles and arithmetic, not a
-// random read (docs/integrators.md: the first design's 32-byte read per candidate cost an
-// H100 6 ms per 1024 spp each on the Cornell box).
+// The candidates belong to a group, not to the lanes: every camera vertex of one 8 x 4 block
+// of the full image's pixels, one sample index, one vertex count and one connection (`join`)
+// draws the same LVC_CANDIDATES entries, by hashes of the group's key (lvc_group_seed), which
+// no path's random numbers enter. So each vertex's candidates are independent uniform draws,
+// independent of its path, and a pixel's estimate depends only on its pixel, sample and seed:
+// the same in the megakernels and the wavefront form, from run to run, and in a crop or a
+// sample range of the image (docs/scale-out.md). The lanes of a subgroup's 32-lane quarter
+// that connect with one key share the reads: the group's m lanes each read every m-th entry
+// (32 bytes), in ceil(LVC_CANDIDATES / m) rounds, and the others take it by shuffles. A
+// candidate costs shuffles and arithmetic where a group fills its lanes, a read where it does
+// not (docs/integrators.md: the first design's 32-byte read per candidate cost an H100 6 ms per
+// 1024 spp each on the Cornell box).
 const float PREVIEW_COS_MIN = 1.0e-3;
 
-vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, uint depth, uint total, vec3 scale, inout Rng rng, inout uvec2 stats) {
-    uint e = rng_below(rng, total) * LVC_ENTRY_WORDS;
-    uvec4 own0 = lvc_index[e];
-    uvec4 own1 = lvc_index[e + 1u];
-    // The connecting lanes of this lane's quarter of the ballot, rotated so that bit 0 is this
-    // lane (always set).
+// The key of this camera sample's candidate groups (connect_resampled): its pixel's 8 x 4 block
+// of the full image, its sample index and the seed. Set by the includer before the path.
+uint lvc_group = 0u;
+uint lvc_group_seed(uvec2 px, uint sample_index, uint seed) {
+    uint block = (px.y >> 2u) * 0x10000u + (px.x >> 3u);
+    return pcg_hash(pcg_hash(block ^ 0x632be5abu) ^ pcg_hash(sample_index ^ pcg_hash(seed ^ 0x9e3779b9u)));
+}
+
+vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, uint depth, uint join, uint total, vec3 scale, inout Rng rng, inout uvec2 stats) {
+    uint key = pcg_hash(lvc_group ^ pcg_hash(depth ^ pcg_hash(join ^ 0x2c1b3c6du)));
+    // The lanes of this lane's 32-lane quarter connecting with this key (itself among them),
+    // found one key at a time: a loop over the subgroup's distinct keys, uniform.
     uint lane = gl_SubgroupInvocationID;
-    uint quarter = lane & ~31u;
-    uint r = lane & 31u;
-    uint word = subgroupBallot(true)[lane >> 5u];
-    uint pool = r == 0u ? word : (word >> r) | (word << (32u - r));
+    uint quarter = lane >> 5u;
+    uvec4 todo = subgroupBallot(true);
+    uint group = 0u;
+    while (todo != uvec4(0u)) {
+        uint leader_key = subgroupShuffle(key, subgroupBallotFindLSB(todo));
+        bool same = key == leader_key;
+        uvec4 with_key = subgroupBallot(same);
+        if (same) {
+            group = with_key[quarter];
+        }
+        todo &= ~with_key;
+    }
+    uint m = bitCount(group);
+    uint rank = bitCount(group & ((1u << (lane & 31u)) - 1u));
+    uint rounds = subgroupMax((LVC_CANDIDATES + m - 1u) / m);
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
-    uint m = 0u;
     uvec2 chosen = uvec2(0u);
-    // A fixed trip count, every shuffle made by every connecting lane (an exhausted pool
-    // shuffles this lane's own entry and ignores it).
-    for (uint i = 0u; i < LVC_CANDIDATES; i++) {
-        uint src = pool != 0u ? quarter | ((r + uint(findLSB(pool))) & 31u) : lane;
-        uvec4 w0 = subgroupShuffle(own0, src);
-        uvec4 w1 = subgroupShuffle(own1, src);
-        float u_keep = rng_next(rng);
-        // No `continue` here: the next candidate's shuffles are made by every lane together.
-        vec3 v = uintBitsToFloat(w1.xyz) - p;
-        float dist2 = dot(v, v);
-        vec3 dir = v * inversesqrt(dist2);
-        float cos_c = dot(ns_f, dir);
-        // Where the camera side's cosines are not positive x is 0: so is p_hat.
-        if (pool != 0u && cos_c > 0.0 && dot(ng_f, dir) > 0.0) {
-            vec3 ns_y;
-            float pick;
-            lvc_preview_unpack(w0.z, ns_y, pick);
-            float cos_y = max(-dot(ns_y, dir), PREVIEW_COS_MIN);
-            float cam_dir_pdf_w, cam_rev_pdf_w;
-            vec3 f = continuous_eval(c, ns_f, wo, dir, cam_dir_pdf_w, cam_rev_pdf_w);
-            float w_light = mis(cam_dir_pdf_w * cos_y / dist2) * (vm_light + uintBitsToFloat(w0.w));
-            float w_camera = mis(pick * cos_y / PI * cos_c / dist2) * (vm_camera + d_vcm + d_vc * mis(cam_rev_pdf_w));
-            float p_hat = luminance(f) * uintBitsToFloat(w1.w) * uintBitsToFloat(w0.y) * (cos_c * cos_y / dist2) / (w_light + 1.0 + w_camera);
-            if (p_hat > 0.0) {
-                p_hat_sum += p_hat;
-                if (u_keep * p_hat_sum < p_hat) {
-                    p_hat_s = p_hat;
-                    chosen = w0.xy;
+    for (uint t = 0u; t < rounds; t++) {
+        // This round's entries: t m + i, read by the group's lane of rank i.
+        uint first = t * m;
+        uvec4 own0 = uvec4(0u);
+        uvec4 own1 = uvec4(0u);
+        if (first + rank < LVC_CANDIDATES) {
+            uint e = index_below(pcg_hash(key ^ pcg_hash(first + rank + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+            own0 = lvc_index[e];
+            own1 = lvc_index[e + 1u];
+        }
+        uint pool = group;
+        // A fixed trip count, every shuffle made by every connecting lane (past this round's
+        // entries a lane shuffles its own and ignores it).
+        for (uint i = 0u; i < LVC_CANDIDATES; i++) {
+            bool valid = pool != 0u && first + i < LVC_CANDIDATES;
+            uint src = pool != 0u ? (quarter << 5u) | uint(findLSB(pool)) : lane;
+            uvec4 w0 = subgroupShuffle(own0, src);
+            uvec4 w1 = subgroupShuffle(own1, src);
+            pool &= pool - 1u;
+            // No `continue` here: the next candidate's shuffles are made by every lane together.
+            if (valid) {
+                float u_keep = rng_next(rng);
+                vec3 v = uintBitsToFloat(w1.xyz) - p;
+                float dist2 = dot(v, v);
+                vec3 dir = v * inversesqrt(dist2);
+                float cos_c = dot(ns_f, dir);
+                // Where the camera side's cosines are not positive x is 0: so is p_hat.
+                if (cos_c > 0.0 && dot(ng_f, dir) > 0.0) {
+                    vec3 ns_y;
+                    float pick;
+                    lvc_preview_unpack(w0.z, ns_y, pick);
+                    float cos_y = max(-dot(ns_y, dir), PREVIEW_COS_MIN);
+                    float cam_dir_pdf_w, cam_rev_pdf_w;
+                    vec3 f = continuous_eval(c, ns_f, wo, dir, cam_dir_pdf_w, cam_rev_pdf_w);
+                    float w_light = mis(cam_dir_pdf_w * cos_y / dist2) * (vm_light + uintBitsToFloat(w0.w));
+                    float w_camera = mis(pick * cos_y / PI * cos_c / dist2) * (vm_camera + d_vcm + d_vc * mis(cam_rev_pdf_w));
+                    float p_hat = luminance(f) * uintBitsToFloat(w1.w) * uintBitsToFloat(w0.y) * (cos_c * cos_y / dist2) / (w_light + 1.0 + w_camera);
+                    if (p_hat > 0.0) {
+                        p_hat_sum += p_hat;
+                        if (u_keep * p_hat_sum < p_hat) {
+                            p_hat_s = p_hat;
+                            chosen = w0.xy;
+                        }
+                    }
                 }
             }
         }
-        m += pool != 0u ? 1u : 0u;
-        pool &= pool - 1u;
     }
     if (p_hat_s <= 0.0) {
         return vec3(0.0);
@@ -151,7 +183,7 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     if (max3(x) <= 0.0) {
         return vec3(0.0);
     }
-    vec3 contrib = scale * uintBitsToFloat(chosen.y) * x * (p_hat_sum / (float(m) * p_hat_s));
+    vec3 contrib = scale * uintBitsToFloat(chosen.y) * x * (p_hat_sum / (float(LVC_CANDIDATES) * p_hat_s));
     if (!camera_shadow_clear(shadow_ray_between(p, ng_f, y.pos, y.ng), contrib, stats)) {
         return vec3(0.0);
     }

@@ -185,7 +185,7 @@
                 for (uint j = 0u; j < joins; j++) {
                     if (LVC_CANDIDATES > 1u) {
                         // Each connection's vertex resampled from several (bdpt_camera_path.glsl).
-                        radiance += connect_resampled(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, depth, total, beta * scale, rng, stats);
+                        radiance += connect_resampled(s.p, ns_f, ng_f, wo, bsdf, sigma_in, d_vcm, d_vc, vm_camera, vm_light, depth, j, total, beta * scale, rng, stats);
                         continue;
                     }
                     uvec2 entry = lvc_index[rng_below(rng, total) * LVC_ENTRY_WORDS].xy; // (slot, seen / stored)

@@ -104,6 +104,7 @@ void main() {
     uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
     uint image_pixel = px.y * pc.camera.size.x + px.x;
     Rng rng = rng_init(image_pixel, pc.sample_base + slice, pc.seed);
+    lvc_group = lvc_group_seed(px, pc.sample_base + slice, pc.seed);
     vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
     g_query = slice * pixels + pixel;
     vec3 l = camera_path(slice * pc.camera.size.x * pc.camera.size.y + image_pixel, xy, rng);

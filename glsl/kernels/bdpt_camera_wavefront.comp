@@ -120,6 +120,7 @@ void run_slot() {
     uint pixel = wp.y * pc.camera.window_size.x + wp.x;
     uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
     uint image_pixel = px.y * pc.camera.size.x + px.x;
+    lvc_group = lvc_group_seed(px, pc.sample_base + slice, pc.seed);
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     float count = 0.0;

@@ -151,11 +151,11 @@ pub struct SettingsArgs {
     /// BDPT and VCM with the light vertex cache (bdpt, bdpt:lvc=N, vcm): draw each connection's
     /// light vertex from N uniform candidates by resampling, in proportion to what each would
     /// carry if nothing blocked it; one shadow ray per connection either way. 1 draws it
-    /// uniformly. The candidates are those drawn by the GPU subgroup's lanes that connect at
-    /// once (at most 32, or the subgroup's size if smaller: 8 on lavapipe), so each costs arithmetic, not a
-    /// read: on an NVIDIA H200, 8 candidates take a Cornell box sample 8 % more time, for 27 %
-    /// less variance per sample off the light's edge. Above 1, the GPUs' wavefront form gives a
-    /// seed a different image from run to run (the same expectation and noise). Default: 8 for bdpt in scenes with only diffuse
+    /// uniformly. The candidates are drawn for a block of 8 x 4 pixels at once and the GPU
+    /// subgroup's lanes share their reads, so each costs mostly arithmetic: on an NVIDIA H200, 8
+    /// candidates took a Cornell box sample 8 % more time (session 38's form, which took them
+    /// from the lanes), for 27 % less variance per sample off the light's edge. A seed gives
+    /// one image in every form and part of a render. Default: 8 for bdpt in scenes with only diffuse
     /// surfaces, 1 otherwise (glossy and glass scenes measured level or worse; docs/results.md,
     /// "Candidates shared within the subgroup"). Any N is unbiased
     #[arg(long, value_name = "N")]

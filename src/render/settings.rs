@@ -258,12 +258,11 @@ pub struct RenderSettings {
     /// [`default_connection_candidates`] for the integrator and scene. Every count
     /// is unbiased: more candidates lower the variance per sample and cost time
     /// ([`MAX_CONNECTION_CANDIDATES`] at most; docs/results.md, "Connections resampled from
-    /// several candidates"). The candidates are the entries drawn by the subgroup's lanes that
-    /// connect at the same time, so a connection gets fewer where fewer lanes connect (at most
-    /// 32, or the subgroup's size if smaller: 8 on lavapipe), and above 1 the image depends on
-    /// which lanes connect together: on the device's subgroups, and in the wavefront form on the
-    /// order in which subgroups list their live slots, so a seed's image varies from run to run
-    /// there (the same expectation and variance). The other joins ignore it.
+    /// several candidates"). The candidates belong to a block of 8 x 4 pixels at one sample and
+    /// vertex count, drawn by hashes of that group's key, and the subgroup's lanes connecting
+    /// for one group share their reads (glsl/common/bdpt_camera_path.glsl): a pixel's estimate
+    /// depends on its pixel, sample and seed alone, in either form, in crops and in sample
+    /// ranges. The other joins ignore it.
     pub connection_candidates: Option<u32>,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
