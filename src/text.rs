@@ -2,9 +2,13 @@
 //! terminal control characters, no NUL) and truncated (a 60,000-digit number is not echoed
 //! whole), so an error message is always one readable line per line it meant to have.
 
-/// Longest run of non-blank characters shown whole; longer ones keep their start and say how
-/// long they were.
+/// Longest run of non-blank characters [`quote`] shows whole (one token of a scene file or a
+/// flag); longer ones keep their start and say how long they were.
 const MAX_WORD: usize = 64;
+/// The same for a word of a whole message ([`sanitize`]): as long as a path may be (Linux's
+/// PATH_MAX), since a message's words include the paths of the files it is about, which a user
+/// needs whole; the tokens inside it were quoted to `MAX_WORD` where the message was made.
+const MAX_MESSAGE_WORD: usize = 4096;
 /// Characters of a long word that are kept.
 const KEEP: usize = 32;
 /// Longest message shown whole (in characters).
@@ -25,13 +29,14 @@ pub fn quote(s: &str) -> String {
 }
 
 /// A whole message made safe to print: control characters other than newlines escaped, every
-/// word longer than `MAX_WORD` characters truncated, the whole at most `MAX_MESSAGE` characters.
+/// word longer than `MAX_MESSAGE_WORD` characters truncated, the whole at most `MAX_MESSAGE`
+/// characters.
 pub fn sanitize(msg: &str) -> String {
     let mut out = String::new();
     let mut word = String::new();
     let flush = |word: &mut String, out: &mut String| {
         let n = word.chars().count();
-        if n > MAX_WORD {
+        if n > MAX_MESSAGE_WORD {
             out.extend(word.chars().take(KEEP));
             out.push_str(&format!("... ({n} characters)"));
         } else {
@@ -94,5 +99,8 @@ mod tests {
         let s = sanitize(&format!("x.mtl:3: '{digits}' is not a finite number"));
         assert!(s.len() < 200 && s.ends_with("is not a finite number"), "{s}");
         assert!(sanitize(&"word ".repeat(5000)).chars().count() < MAX_MESSAGE + 40);
+        // A path, however deep, stays whole in a message.
+        let path = format!("/{}/scene.mtl:3:", "d".repeat(300));
+        assert_eq!(sanitize(&format!("{path} bad")), format!("{path} bad"));
     }
 }

@@ -252,6 +252,20 @@ fn untrusted_text_is_escaped_and_truncated() {
     assert!(err.len() < 400, "{} bytes: {err}", err.len());
 }
 
+/// Paths in messages are shown whole however deep they are (the CLI's last escaping pass once
+/// cut every word past 64 characters, paths among them), with control characters escaped.
+#[test]
+fn long_paths_are_shown_whole() {
+    let dir = scratch(&format!("deep-{}", "d".repeat(90)));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("scene.obj");
+    std::fs::write(&obj, "mtllib gone\u{7}.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let missing = format!("{}/gone\\u{{7}}.mtl", dir.display());
+    let err = fails(&["info", "--strict", obj.to_str().unwrap()], &["scene.obj:1: material library", &missing]);
+    assert!(!err.contains('\u{7}') && !err.contains("characters)"), "{err:?}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn gltf_two_parents_and_bad_glb_magic() {
     fails(&["info", &data("gltf_two_parents.gltf")], &["node 1 \"Shared\": has two parents"]);

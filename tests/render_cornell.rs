@@ -217,9 +217,9 @@ fn bdpt_with_resampled_connections_matches_references() {
 #[test]
 fn bdpt_wavefront_with_shared_candidates_matches_references() {
     // The wavefront camera pass (the GPUs' form; lavapipe runs the megakernels by default)
-    // with the default 8 candidates, shared among the lanes of a subgroup that connect at once
-    // by shuffles: a lane that read another's entry wrongly, or a pool that counted a lane
-    // not connecting, fails here.
+    // with the default 8 candidates, drawn per block of pixels and read once for the lanes of a
+    // subgroup connecting for one block, by shuffles: a lane that took another's entry wrongly,
+    // or an estimate that counted only the candidates of positive weight (checked), fails here.
     let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
     settings.wavefront = Some(true);
     settings.connection_candidates = Some(8);

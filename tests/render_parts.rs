@@ -156,8 +156,8 @@ fn crops_merge_bdpt() {
 /// reads the connecting lanes share (glsl/common/bdpt_camera_path.glsl). The candidates belong
 /// to a block of pixels, not to the lanes that happen to connect together, so crop windows that
 /// cut the blocks (and the subgroups) and sample ranges still give the whole render's image.
-/// (Session 38's first design took them from the lanes: 4 crops merged at RMSE 0.0026 from the
-/// whole render at 6 spp.)
+/// (Session 38's lane pools took them from the lanes: these 4 crops merged at RMSE 0.0026 from
+/// the whole render at 6 spp; the ranges guard the same for sample ranges and slices.)
 #[test]
 fn parts_merge_bdpt_with_shared_candidates() {
     crops_merge(Integrator::Bdpt(Join::DEFAULT));

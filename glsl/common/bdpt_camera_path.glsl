@@ -83,11 +83,14 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // of the full image's pixels, one sample index, one vertex count and one connection (`join`)
 // draws the same LVC_CANDIDATES entries, by hashes of the group's key (lvc_group_seed), which
 // no path's random numbers enter. So each vertex's candidates are independent uniform draws,
-// independent of its path, and a pixel's estimate depends only on its pixel, sample and seed:
-// the same in the megakernels and the wavefront form, from run to run, and in a crop or a
-// sample range of the image (docs/scale-out.md). The lanes of a subgroup's 32-lane quarter
+// independent of its path, and which vertices share them does not depend on which lanes
+// connect together: the megakernels and the wavefront form make the same choices, from run to
+// run, and in a crop or a sample range of the image (docs/scale-out.md), up to the rounding of
+// the two kernels' arithmetic. The lanes of a subgroup's 32-lane quarter
 // that connect with one key share the reads: the group's m lanes each read every m-th entry
 // (32 bytes), in ceil(LVC_CANDIDATES / m) rounds, and the others take it by shuffles. A
+// block's pixels share their candidates at one sample, so their errors are correlated (at a
+// few samples per pixel the noise may show the 8 x 4 grid faintly), not larger. A
 // candidate costs shuffles and arithmetic where a group fills its lanes, a read where it does
 // not (docs/integrators.md: the first design's 32-byte read per candidate cost an H100 6 ms per
 // 1024 spp each on the Cornell box).
@@ -107,19 +110,25 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     // found one key at a time: a loop over the subgroup's distinct keys, uniform.
     uint lane = gl_SubgroupInvocationID;
     uint quarter = lane >> 5u;
+    // Branch-free and bounded by the subgroup's size, so that lanes which had not rejoined
+    // (Vulkan promises it only with VK_KHR_shader_maximal_reconvergence) could not keep it
+    // from ending; the leader leaves `todo` in any case, and a lane left without a group forms
+    // its own.
     uvec4 todo = subgroupBallot(true);
     uint group = 0u;
-    while (todo != uvec4(0u)) {
-        uint leader_key = subgroupShuffle(key, subgroupBallotFindLSB(todo));
+    for (uint found = 0u; found < gl_SubgroupSize && todo != uvec4(0u); found++) {
+        uint leader = subgroupBallotFindLSB(todo);
+        uint leader_key = subgroupShuffle(key, leader);
         bool same = key == leader_key;
         uvec4 with_key = subgroupBallot(same);
-        if (same) {
-            group = with_key[quarter];
-        }
+        group = same ? with_key[quarter] : group;
         todo &= ~with_key;
+        todo[leader >> 5u] &= ~(1u << (leader & 31u));
     }
+    uint own_bit = 1u << (lane & 31u);
+    group = (group & own_bit) != 0u ? group : own_bit;
     uint m = bitCount(group);
-    uint rank = bitCount(group & ((1u << (lane & 31u)) - 1u));
+    uint rank = bitCount(group & (own_bit - 1u));
     uint rounds = subgroupMax((LVC_CANDIDATES + m - 1u) / m);
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
@@ -134,11 +143,15 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
             own0 = lvc_index[e];
             own1 = lvc_index[e + 1u];
         }
+        // This round's entries for this lane's group, and for the subgroup's largest: the trip
+        // count, uniform, so that every connecting lane makes every shuffle (past its group's
+        // entries a lane shuffles its own and ignores it). One group of m lanes takes N
+        // iterations in all, as many as candidates, however its rounds fall.
+        uint here = first < LVC_CANDIDATES ? min(m, LVC_CANDIDATES - first) : 0u;
+        uint trips = subgroupMax(here);
         uint pool = group;
-        // A fixed trip count, every shuffle made by every connecting lane (past this round's
-        // entries a lane shuffles its own and ignores it).
-        for (uint i = 0u; i < LVC_CANDIDATES; i++) {
-            bool valid = pool != 0u && first + i < LVC_CANDIDATES;
+        for (uint i = 0u; i < trips; i++) {
+            bool valid = i < here;
             uint src = pool != 0u ? (quarter << 5u) | uint(findLSB(pool)) : lane;
             uvec4 w0 = subgroupShuffle(own0, src);
             uvec4 w1 = subgroupShuffle(own1, src);

@@ -154,8 +154,8 @@ pub struct SettingsArgs {
     /// uniformly. The candidates are drawn for a block of 8 x 4 pixels at once and the GPU
     /// subgroup's lanes share their reads, so each costs mostly arithmetic: on an NVIDIA H200, 8
     /// candidates took a Cornell box sample 8 % more time (session 38's form, which took them
-    /// from the lanes), for 27 % less variance per sample off the light's edge. A seed gives
-    /// one image in every form and part of a render. Default: 8 for bdpt in scenes with only diffuse
+    /// from the lanes), for 27 % less variance per sample off the light's edge. Which lanes
+    /// connect together changes nothing: parts of a render merge exactly. Default: 8 for bdpt in scenes with only diffuse
     /// surfaces, 1 otherwise (glossy and glass scenes measured level or worse; docs/results.md,
     /// "Candidates shared within the subgroup"). Any N is unbiased
     #[arg(long, value_name = "N")]

@@ -381,7 +381,8 @@ gpu_consts! {
     /// the power heuristic with exponent 2 (`RenderSettings::mis`; glsl/common/bdpt.glsl).
     pub const SPEC_MIS_BALANCE: u32 = 62;
     /// BDPT and VCM with the light vertex cache: N > 1 resamples each connection's light vertex
-    /// from N uniform draws, shared within the subgroup, by its unshadowed contribution
+    /// from N uniform draws (per block of pixels, their reads shared within the subgroup), by its
+    /// unshadowed contribution
     /// (`RenderSettings::connection_candidates`; glsl/common/bdpt_camera_path.glsl); 1 draws it
     /// uniformly.
     pub const SPEC_LVC_CANDIDATES: u32 = 63;

@@ -74,8 +74,8 @@ pub fn queue_invocations(camera_invocations: u64, pixels: u32, ratio: f32, slice
 /// Bytes of a light vertex cache entry (`BIND_LVC_INDEX`, glsl/common/lvc_entry.glsl): the slot
 /// and the inverse of its path's reservoir probability, so a connection reads the entry and the
 /// vertex and not the path's counts too; where connections are resampled from several
-/// candidates, a 16-byte preview of the vertex beside it, so a connection reads 32 bytes and
-/// shares them with the lanes of its subgroup that connect beside it.
+/// candidates, a 16-byte preview of the vertex beside it: 32 bytes a candidate, read once for
+/// the lanes of a subgroup that connect for one block of pixels.
 fn lvc_entry_bytes(connection_candidates: u32) -> u64 {
     16 * if connection_candidates > 1 { abi::LVC_ENTRY_WORDS_RESAMPLED } else { abi::LVC_ENTRY_WORDS_UNIFORM } as u64
 }

@@ -258,11 +258,12 @@ pub struct RenderSettings {
     /// [`default_connection_candidates`] for the integrator and scene. Every count
     /// is unbiased: more candidates lower the variance per sample and cost time
     /// ([`MAX_CONNECTION_CANDIDATES`] at most; docs/results.md, "Connections resampled from
-    /// several candidates"). The candidates belong to a block of 8 x 4 pixels at one sample and
-    /// vertex count, drawn by hashes of that group's key, and the subgroup's lanes connecting
-    /// for one group share their reads (glsl/common/bdpt_camera_path.glsl): a pixel's estimate
-    /// depends on its pixel, sample and seed alone, in either form, in crops and in sample
-    /// ranges. The other joins ignore it.
+    /// several candidates"). The candidates belong to a block of 8 x 4 pixels at one sample,
+    /// vertex count and connection, drawn by hashes of that group's key, and the subgroup's
+    /// lanes connecting for one group share their reads (glsl/common/bdpt_camera_path.glsl):
+    /// which lanes connect together changes nothing, so either form, a crop and a sample range
+    /// (at multiples of the slice count) make the whole render's choices. The other joins
+    /// ignore it.
     pub connection_candidates: Option<u32>,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
@@ -357,7 +358,9 @@ pub fn default_rr_depth(integrator: Integrator) -> u32 {
     }
 }
 
-/// Most candidates [`RenderSettings::connection_candidates`] takes: a connection's candidates
-/// are the entries drawn by the lanes of its subgroup's 32 that connect at once
-/// (glsl/common/bdpt_camera_path.glsl), so more could never be used.
+/// Most candidates [`RenderSettings::connection_candidates`] takes. Each costs the p_hat of a
+/// connection and a share of a read (glsl/common/bdpt_camera_path.glsl): past 16 the H200
+/// measured no gain at equal time (docs/results.md, "Candidates shared within the subgroup"),
+/// and 32 is a subgroup quarter's lanes, one round of reads where a block's pixels connect
+/// together.
 pub const MAX_CONNECTION_CANDIDATES: u32 = 32;

@@ -268,7 +268,7 @@ fn texture_request(
                 name: name.clone(),
                 source: Source::File(path),
                 role,
-                at: format!("{}:{line}", lib.display()),
+                at: format!("{}:{line}", crate::text::path(lib)),
                 file: lib.to_path_buf(),
                 line: Some(line),
             }))

@@ -202,7 +202,11 @@ fn image_request<'a>(
 ) -> Result<Option<u32>, SceneError> {
     let index = image.index();
     let label = image.name().map(str::to_owned);
-    let at = format!("{}: image {index}{}", file.display(), label.as_ref().map_or(String::new(), |n| format!(" \"{n}\"")));
+    let at = format!(
+        "{}: image {index}{}",
+        crate::text::path(file),
+        label.as_ref().map_or(String::new(), |n| format!(" \"{}\"", crate::text::quote(n)))
+    );
     let source = match image.source() {
         ::gltf::image::Source::View { view, mime_type } => {
             let start = view.offset();
