@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 39: s39a (where a BDPT sample's time goes under session 38's defaults, kernel by kernel; fewer light paths with 16 candidates at equal time on the Cornell box and where the light hides); s39b (fewer light paths with 16 and 32 candidates on the Cornell box; run on an H100); s39c and s39d (not run: no machine was lent again that session): s39c the time-budgeted render's passes (BIDIR_PASS_LOG) for bdpt and pt-nee at 0.1 s; s39d a measurement build, scripts/device/s39d.patch applied to c821483, built, stripped and gzipped as .device/bidir-exp.gz: the camera step draws the light vertex cache's first entry beside the random stream at the vertex's start, so that its read overlaps the BSDF and the light sample; against a build of c821483 (the patch applies to c821483 only: on the candidate groups that followed, the group's first entry could be read at the vertex's start the same way, its key being known there); s39e (not run: the candidates drawn per group of pixels, with .device/bidir-new.gz a build of 3a6688e or later and .device/bidir-base.gz one of c821483, the lanes' pools, e.g. `git worktree add /tmp/c8 c821483` built with its own CARGO_TARGET_DIR, stripped and gzipped: GPU time, equal time, a seed's image in the wavefront form); s39f (not run: groups of 16 x 8 pixels, a measurement build of scripts/device/s39f.patch as .device/bidir-g16.gz, against 8 x 4).
+# Parts of session 39: s39a (where a BDPT sample's time goes under session 38's defaults, kernel by kernel; fewer light paths with 16 candidates at equal time on the Cornell box and where the light hides); s39b (fewer light paths with 16 and 32 candidates on the Cornell box; run on an H100); s39c and s39d (not run: no machine was lent again that session): s39c the time-budgeted render's passes (BIDIR_PASS_LOG) for bdpt and pt-nee at 0.1 s; s39d a measurement build, scripts/device/s39d.patch applied to c821483, built, stripped and gzipped as .device/bidir-exp.gz: the camera step draws the light vertex cache's first entry beside the random stream at the vertex's start, so that its read overlaps the BSDF and the light sample; against a build of c821483 (.device/bidir-base.gz) (the patch applies to c821483 only: on the candidate groups that followed, the group's first entry could be read at the vertex's start the same way, its key being known there); s39e (not run: the candidates drawn per group of pixels, with .device/bidir-new.gz a build of 3a6688e or later and .device/bidir-base.gz one of c821483, the lanes' pools, e.g. `git worktree add /tmp/c8 c821483` built with its own CARGO_TARGET_DIR, stripped and gzipped: GPU time, equal time, a seed's image in the wavefront form); s39f (not run: groups of 16 x 8 pixels, a measurement build of scripts/device/s39f.patch as .device/bidir-g16.gz, against 8 x 4).
 # Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table; run on an H100, to run on the H200); s38f (under the new defaults: whether a seed gives one image in each form; BDPT's megakernels against its wavefront form).
 # Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
 # Parts of session 36: s36a (run on an H100: the GPUs' default build quality for the compressed wide and binary BVHs; BDPT's BVH on the Cornell box; issue #16's equal-time table); s36b (quality 4 as the default: BDPT's wavefront form against its megakernels on the H200, issue #16's table); s36c (BDPT's MIS heuristic, the balance heuristic on the diffuse box, at equal time).
@@ -63,6 +63,28 @@ sponza_rounds() {
     done
   done
 }
+# Session 39's parts: unpack .device/bidir-NAME.gz for each NAME given (the binary is then
+# .device/bidir-NAME).
+unpack() {
+  for n in "$@"; do gunzip -kf ".device/bidir-$n.gz"; chmod +x ".device/bidir-$n"; done
+}
+# One round of BDPT's cost with the binary $1: `bench render` GPU ms and the camera kernel's
+# share on the Cornell box and the hidden light's box (1024 spp), with `sponza` as $2 also
+# Sponza's geometry under sun and sky with 8 candidates (64 spp), and with `time` as $2 or $3
+# the Cornell box at 1 s against .device/ref.exr.
+bdpt_round() {
+  local b=$1; shift
+  local costs='GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+'
+  echo "== $(basename "$b") $(date +%T)"
+  echo "   cornell: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$costs" | tr '\n' ' ')"
+  echo "   hidden: $(timeout -k 5 60 "$b" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$costs" | tr '\n' ' ')"
+  for what in "$@"; do
+    case $what in
+      sponza) echo "   sponza 8: $(timeout -k 5 60 "$b" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$costs" | tr '\n' ' ')" ;;
+      time) echo "   1 s: $(timeout -k 5 60 "$b" render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$b" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')" ;;
+    esac
+  done
+}
 # The trace kernels of the binary $1 as the driver compiled them, archived as $OUT/$2 (read
 # with scripts/device/sass.py).
 shader_cache() {
@@ -78,15 +100,9 @@ s39f)
   # less; `bench render` GPU ms, two rounds interleaved, and the Cornell box at 1 s (the per-pixel
   # variance on lavapipe was level: RMSE between seeds 1-2 at 64², 1,024 spp 0.001547 / 0.001112
   # off the edge, against 0.001537 / 0.001096).
-  N=$PWD/.device/bidir-new; G=$PWD/.device/bidir-g16
-  for f in .device/bidir-new.gz .device/bidir-g16.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  unpack new g16
   for r in 1 2; do
-    for b in "$N" "$G"; do
-      echo "== $(basename $b) round $r"
-      echo "   cornell: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-      echo "   hidden: $(timeout -k 5 60 "$b" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-      echo "   1 s: $(timeout -k 5 60 "$b" render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$b" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
-    done
+    for n in new g16; do bdpt_round "$PWD/.device/bidir-$n" time; done
   done
   ;;
 s39e)
@@ -95,18 +111,12 @@ s39e)
   # session 38's lanes' pools (.device/bidir-base.gz, a build of c821483): `bench render` GPU ms
   # (two rounds interleaved: the Cornell box 256² and the hidden light's box at 1024 spp,
   # Sponza's geometry under sun and sky with 8 candidates at 64 spp), `render --time 1` on the
-  # Cornell box against .device/ref.exr (two runs each), and whether a seed gives one image in
-  # the wavefront form now (two renders of 64 spp, seed 1).
-  N=$PWD/.device/bidir-new; X=$PWD/.device/bidir-base
-  for f in .device/bidir-new.gz .device/bidir-base.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  # Cornell box against .device/ref.exr, and whether a seed gives one image in the wavefront
+  # form now (two renders of 64 spp, seed 1) and the megakernels' image.
+  unpack new base
+  N=$PWD/.device/bidir-new
   for r in 1 2; do
-    for b in "$X" "$N"; do
-      echo "== $(basename $b) round $r"
-      echo "   cornell: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-      echo "   hidden: $(timeout -k 5 60 "$b" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-      echo "   sponza 8: $(timeout -k 5 60 "$b" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-      echo "   1 s: $(timeout -k 5 60 "$b" render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$b" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
-    done
+    for n in base new; do bdpt_round "$PWD/.device/bidir-$n" sponza time; done
   done
   for k in 1 2; do timeout -k 5 60 "$N" render $CB --integrator bdpt --spp 64 --seed 1 -o /tmp/d$k.exr > /dev/null 2>&1; done
   echo "== same seed twice, wavefront, 8 candidates: $("$N" diff /tmp/d1.exr /tmp/d2.exr 2>&1 | grep -E '^RMSE ')"
@@ -114,23 +124,17 @@ s39e)
   echo "== the megakernels' image of that seed: $("$N" diff /tmp/d1.exr /tmp/d3.exr 2>&1 | grep -E '^RMSE ')"
   ;;
 s39d)
-  # Session 39, issue #16: a measurement build (.device/bidir-exp.gz) whose camera step draws
-  # the light vertex cache's first entry beside the random stream at the vertex's start, so its
-  # read overlaps the BSDF and the light sample, against this commit's (.device/bidir-new.gz):
-  # `bench render` GPU ms, two rounds interleaved, Cornell box 256² (1024 spp), the hidden
-  # light's box, Sponza's geometry under sun and sky (64 spp, 8 candidates: its default is 1).
-  N=$PWD/.device/bidir-new; X=$PWD/.device/bidir-exp
-  for f in .device/bidir-new.gz .device/bidir-exp.gz; do gunzip -kf "$f"; chmod +x "${f%.gz}"; done
+  # Session 39, issue #16: a measurement build (scripts/device/s39d.patch on c821483, as
+  # .device/bidir-exp.gz) whose camera step draws the light vertex cache's first entry beside
+  # the random stream at the vertex's start, so its read overlaps the BSDF and the light sample,
+  # against c821483's own build (.device/bidir-base.gz): `bench render` GPU ms, two rounds
+  # interleaved, and the camera kernel's registers.
+  unpack base exp
   for r in 1 2; do
-    for b in "$N" "$X"; do
-      echo "== $(basename $b) round $r"
-      echo "   cornell: $(timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -E '^(bdpt_camera|GPU|bdpt:)' | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-      echo "   hidden: $(timeout -k 5 60 "$b" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-      echo "   sponza 8: $(timeout -k 5 60 "$b" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
-    done
+    for n in base exp; do bdpt_round "$PWD/.device/bidir-$n" sponza; done
   done
   echo "== info --kernels"
-  for b in "$N" "$X"; do timeout -k 5 120 "$b" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront"; done
+  for n in base exp; do timeout -k 5 120 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront"; done
   ;;
 s39c)
   # Session 39, issue #16: the time-budgeted render's passes (BIDIR_PASS_LOG=1: samples, the
