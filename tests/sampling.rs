@@ -695,6 +695,57 @@ fn every_index_below_n_is_drawn_in_proportion() {
     finish(ctx);
 }
 
+/// ballot_nth (glsl/common/ballot.glsl), by which the resampled connections' lanes find the
+/// lane that read a candidate (connect_resampled): the n-th set bit of a 128-bit ballot, on
+/// ballots of every density, with bits at the words' edges; and ballot_from, the ballot from a
+/// lane on.
+#[test]
+fn ballot_nth_finds_the_lane_of_each_rank() {
+    let ctx = gpu();
+    {
+        let s = SamplingKernel::new(&ctx);
+        let mut pcg = common::Pcg::new(31);
+        let mut ballots: Vec<[u32; 4]> =
+            vec![[1, 0, 0, 0], [0, 0, 0, 1 << 31], [u32::MAX; 4], [0x8000_0001, 1, 0x8000_0000, 0], [0, 0xffff_0000, 0, 0xffff]];
+        for density in [1u32, 2, 8, 16, 31] {
+            for _ in 0..256 {
+                // Each bit set with probability density / 32.
+                let mut b = [0u32; 4];
+                for w in b.iter_mut() {
+                    for bit in 0..32 {
+                        if pcg.below(32) < density {
+                            *w |= 1 << bit;
+                        }
+                    }
+                }
+                if b == [0; 4] {
+                    b[pcg.below(4) as usize] = 1 << pcg.below(32);
+                }
+                ballots.push(b);
+            }
+        }
+        let input: Vec<Vec4> = ballots
+            .iter()
+            .map(|b| Vec4::new(f32::from_bits(b[0]), f32::from_bits(b[1]), f32::from_bits(b[2]), f32::from_bits(b[3])))
+            .collect();
+        let input = ctx.upload_buffer("sampling.ballots", &input).unwrap();
+        let push = abi::SamplingTestPush { mode: abi::SAMPLING_BALLOT_NTH, count: ballots.len() as u32, seed: 1, ..Default::default() };
+        let out = s.run(push, 1, Some(&input));
+        for (b, v) in ballots.iter().zip(&out) {
+            let lanes: Vec<u32> = (0..128u32).filter(|&l| b[(l / 32) as usize] & (1 << (l % 32)) != 0).collect();
+            let c = lanes.len();
+            let got = [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()];
+            for (k, n) in [0, c / 3, c - 1].into_iter().enumerate() {
+                assert_eq!(got[k], lanes[n], "ballot {b:08x?}: set bit {n} of {c} is lane {}, ballot_nth says {}", lanes[n], got[k]);
+            }
+            // From the lane of rank c / 2 on: that lane first, c - c / 2 lanes.
+            let (lowest, kept) = (v.w.to_bits() & 255, v.w.to_bits() >> 8);
+            assert_eq!((lowest, kept as usize), (lanes[c / 2], c - c / 2), "ballot {b:08x?}: ballot_from at set bit {} of {c}", c / 2);
+        }
+    }
+    finish(ctx);
+}
+
 /// The arithmetic the watertight triangle test's CPU twin (src/bvh/intersect.rs) assumes of the
 /// device: under `precise`, every fma() rounds one way, once or twice (`device_fma`, which the
 /// hit-for-hit tests in tests/traversal.rs ask), and a b + c is never contracted into one.

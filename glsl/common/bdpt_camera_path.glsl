@@ -86,14 +86,18 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // independent of its path, and which vertices share them does not depend on which lanes
 // connect together: the megakernels and the wavefront form make the same choices, from run to
 // run, and in a crop or a sample range of the image (docs/scale-out.md), up to the rounding of
-// the two kernels' arithmetic. The lanes of a subgroup's 32-lane quarter
-// that connect with one key share the reads: the group's m lanes each read every m-th entry
-// (32 bytes), in ceil(LVC_CANDIDATES / m) rounds, and the others take it by shuffles. A
-// block's pixels share their candidates at one sample, so their errors are correlated (at a
-// few samples per pixel the noise may show the 8 x 4 grid faintly), not larger. A
-// candidate costs shuffles and arithmetic where a group fills its lanes, a read where it does
-// not (docs/integrators.md: the first design's 32-byte read per candidate cost an H100 6 ms per
-// 1024 spp each on the Cornell box).
+// the two kernels' arithmetic. The connecting lanes of a subgroup share the reads: group g's
+// candidate i is virtual entry g N + i, and the lane of rank r reads entry r of each pass of
+// as many entries as lanes (32 bytes each), so a subgroup reads each of its groups' entries
+// once, spread over all its lanes, however they fall into groups (in the wavefront form,
+// where compaction lists the live slots of a few blocks in one subgroup, as well as in the
+// megakernels, where a subgroup is one block); every lane then takes its group's entries by
+// shuffles. A block's pixels share their candidates at one sample, so their errors are
+// correlated (at a few samples per pixel the noise may show the 8 x 4 grid faintly), not
+// larger (docs/integrators.md: the first design's 32-byte read per candidate cost an H100 6 ms
+// per 1024 spp each on the Cornell box).
+#include "ballot.glsl"
+
 const float PREVIEW_COS_MIN = 1.0e-3;
 
 // The key of this camera sample's candidate groups (connect_resampled): its pixel's 8 x 4 block
@@ -106,56 +110,87 @@ uint lvc_group_seed(uvec2 px, uint sample_index, uint seed) {
 
 vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, uint depth, uint join, uint total, vec3 scale, inout Rng rng, inout uvec2 stats) {
     uint key = pcg_hash(lvc_group ^ pcg_hash(depth ^ pcg_hash(join ^ 0x2c1b3c6du)));
-    // The lanes of this lane's 32-lane quarter connecting with this key (itself among them),
-    // found one key at a time: a loop over the subgroup's distinct keys, uniform.
-    uint lane = gl_SubgroupInvocationID;
-    uint quarter = lane >> 5u;
-    // Branch-free and bounded by the subgroup's size, so that lanes which had not rejoined
-    // (Vulkan promises it only with VK_KHR_shader_maximal_reconvergence) could not keep it
-    // from ending; the leader leaves `todo` in any case, and a lane left without a group forms
-    // its own.
-    uvec4 todo = subgroupBallot(true);
+    // The connecting lanes (the active ones) and this lane's rank among them.
+    uvec4 connecting = subgroupBallot(true);
+    uint lanes = subgroupBallotBitCount(connecting);
+    uint rank = subgroupBallotExclusiveBitCount(connecting);
+    // The subgroup's distinct keys, numbered in the order found (one per pass of a uniform
+    // loop): `group` is this lane's, and the lane of rank j keeps group j's key. Branch-free
+    // and bounded by the subgroup's size, so that lanes which had not rejoined (Vulkan
+    // promises it only with VK_KHR_shader_maximal_reconvergence) could not keep it from ending;
+    // the leader leaves `todo` in any case.
+    uvec4 todo = connecting;
     uint group = 0u;
+    uint group_key = key;
+    uint groups = 0u;
     for (uint found = 0u; found < gl_SubgroupSize && todo != uvec4(0u); found++) {
         uint leader = subgroupBallotFindLSB(todo);
         uint leader_key = subgroupShuffle(key, leader);
         bool same = key == leader_key;
-        uvec4 with_key = subgroupBallot(same);
-        group = same ? with_key[quarter] : group;
-        todo &= ~with_key;
+        todo &= ~subgroupBallot(same);
         todo[leader >> 5u] &= ~(1u << (leader & 31u));
+        group = same ? found : group;
+        group_key = rank == found ? leader_key : group_key;
+        groups = found + 1u;
     }
-    uint own_bit = 1u << (lane & 31u);
-    group = (group & own_bit) != 0u ? group : own_bit;
-    uint m = bitCount(group);
-    uint rank = bitCount(group & (own_bit - 1u));
-    uint rounds = subgroupMax((LVC_CANDIDATES + m - 1u) / m);
+    // Group g's candidate i is virtual entry g N + i (N = LVC_CANDIDATES). The connecting lanes
+    // read them together, one per lane at a time: in a pass from virtual entry `first`, the lane
+    // of rank r reads entry first + r, so that a subgroup reads each of its groups' entries
+    // once, spread over all its lanes, however they fall into groups; then every lane takes
+    // those of its group's entries that this pass read by shuffles from the lanes that read
+    // them, in candidate order (the order of the random numbers it draws).
+    bool all_lanes = lanes == gl_SubgroupSize;
+    uint entries = groups * LVC_CANDIDATES;
+    uint base = group * LVC_CANDIDATES;
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
     uvec2 chosen = uvec2(0u);
-    for (uint t = 0u; t < rounds; t++) {
-        // This round's entries: t m + i, read by the group's lane of rank i.
-        uint first = t * m;
+    for (uint first = 0u; first < entries; first += lanes) {
+        uint v = first + rank;
+        // Group v / N's key, from the lane of that rank (shuffled by every lane), or this
+        // lane's own where there is one group (as in the megakernels).
+        uint g_key = key;
+        if (groups > 1u) {
+            uint g = min(v / LVC_CANDIDATES, groups - 1u);
+            g_key = subgroupShuffle(group_key, all_lanes ? g : ballot_nth(connecting, g));
+        }
         uvec4 own0 = uvec4(0u);
         uvec4 own1 = uvec4(0u);
-        if (first + rank < LVC_CANDIDATES) {
-            uint e = index_below(pcg_hash(key ^ pcg_hash(first + rank + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+        if (v < entries) {
+            uint e = index_below(pcg_hash(g_key ^ pcg_hash(v % LVC_CANDIDATES + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
             own0 = lvc_index[e];
             own1 = lvc_index[e + 1u];
         }
-        // This round's entries for this lane's group, and for the subgroup's largest: the trip
-        // count, uniform, so that every connecting lane makes every shuffle (past its group's
-        // entries a lane shuffles its own and ignores it). One group of m lanes takes N
-        // iterations in all, as many as candidates, however its rounds fall.
-        uint here = first < LVC_CANDIDATES ? min(m, LVC_CANDIDATES - first) : 0u;
-        uint trips = subgroupMax(here);
-        uint pool = group;
-        for (uint i = 0u; i < trips; i++) {
-            bool valid = i < here;
-            uint src = pool != 0u ? (quarter << 5u) | uint(findLSB(pool)) : lane;
+        // This lane's candidates lo..hi - 1 were read in this pass, candidate lo by the lane
+        // of rank base + lo - first; the trip count is the subgroup's largest count (uniform),
+        // so that every connecting lane makes every shuffle (past its count a lane shuffles its
+        // own and ignores it).
+        uint lo = uint(clamp(int(first) - int(base), 0, int(LVC_CANDIDATES)));
+        uint hi = uint(clamp(int(first + lanes) - int(base), 0, int(LVC_CANDIDATES)));
+        uint count = hi - lo;
+        uint trips = subgroupMax(count);
+        // Which lane read this lane's next candidate: a cursor over the connecting lanes from
+        // that rank, past one lane a candidate.
+        uvec4 cursor = connecting;
+        uint r0 = base + lo - first;
+        if (count > 0u && r0 != 0u) {
+            cursor = ballot_from(connecting, ballot_nth(connecting, r0));
+        }
+        for (uint t = 0u; t < trips; t++) {
+            bool valid = t < count;
+            uint src = gl_SubgroupInvocationID;
+            if (gl_SubgroupSize <= 32u) {
+                // One word of lanes (a constant test once the driver knows the size).
+                src = valid ? uint(findLSB(cursor.x)) : src;
+                cursor.x = valid ? cursor.x & (cursor.x - 1u) : cursor.x;
+            } else {
+                src = valid ? subgroupBallotFindLSB(cursor) : src;
+                for (uint w = 0u; w < 4u; w++) {
+                    cursor[w] &= valid && (src >> 5u) == w ? ~(1u << (src & 31u)) : 0xffffffffu;
+                }
+            }
             uvec4 w0 = subgroupShuffle(own0, src);
             uvec4 w1 = subgroupShuffle(own1, src);
-            pool &= pool - 1u;
             // No `continue` here: the next candidate's shuffles are made by every lane together.
             if (valid) {
                 float u_keep = rng_next(rng);

@@ -17,6 +17,9 @@
 // - SAMPLING_INDEX: index_below(u, n) for u, n = the bits of in[i].x, in[i].y:
 //   out[i] = (the index as bits, what is left of u within it).
 // - SAMPLING_FMA: precise fma(a, b, c) and a * b + c for in[i].xyz = (a, b, c), out[i].xy.
+// - SAMPLING_BALLOT_NTH: ballot_nth (ballot.glsl) of the ballot in[i] (as bits) for the ranks
+//   0, c / 3 and c - 1 of its c set bits, out[i].xyz (as bits); ballot_from of the ballot at
+//   the lane of rank c / 2: its lowest lane + 256 x its count, out[i].w.
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
@@ -34,6 +37,7 @@ layout(constant_id = SPEC_HAS_ROUGH_GLASS) const uint HAS_ROUGH_GLASS = 1u;
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "env.glsl"
+#include "ballot.glsl"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = SAMPLING_BIND_OUT) writeonly buffer Out { vec4 result[]; };
@@ -156,5 +160,13 @@ void main() {
         precise float fused = fma(v.x, v.y, v.z);
         precise float separate = v.x * v.y + v.z;
         result[i] = vec4(fused, separate, 0.0, 0.0);
+    } else if (pc.mode == SAMPLING_BALLOT_NTH) {
+        uvec4 b = floatBitsToUint(input_dirs[i]);
+        uint c = bitCount(b.x) + bitCount(b.y) + bitCount(b.z) + bitCount(b.w);
+        // ballot_from at the lane of rank c / 2: its lowest lane and how many it keeps.
+        uvec4 from = ballot_from(b, ballot_nth(b, c / 2u));
+        uint lowest = from.x != 0u ? uint(findLSB(from.x)) : (from.y != 0u ? 32u + uint(findLSB(from.y)) : (from.z != 0u ? 64u + uint(findLSB(from.z)) : 96u + uint(findLSB(from.w))));
+        uint kept = bitCount(from.x) + bitCount(from.y) + bitCount(from.z) + bitCount(from.w);
+        result[i] = uintBitsToFloat(uvec4(ballot_nth(b, 0u), ballot_nth(b, c / 3u), ballot_nth(b, c - 1u), lowest | (kept << 8u)));
     }
 }

@@ -93,6 +93,26 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s40a)
+  # Session 40: the candidate groups' reads shared by every connecting lane of the subgroup
+  # (group g's candidate i is virtual entry g N + i; in a pass from entry `first` the lane of
+  # rank r reads entry first + r): .device/bidir-rd1t.gz this commit (passes of as many entries
+  # as lanes, each lane's trips its count of candidates in the pass), .device/bidir-rd1tg16.gz
+  # the same with 16 x 8 groups, .device/bidir-rd2d.gz a form with passes of two entries per
+  # lane (every lane makes N trips a pass, each read set shuffled where some lane takes from
+  # it); against session 39's reads per group (.device/bidir-new.gz, 3a6688e;
+  # .device/bidir-g16.gz its 16 x 8 groups) and the lanes' pools (.device/bidir-base.gz,
+  # c821483): `bench render` GPU ms on the Cornell box, the hidden light's box and Sponza, two
+  # rounds interleaved; the Cornell box at 1 s in the second; the camera kernel's registers.
+  unpack base new g16 rd1t rd1tg16 rd2d
+  for r in 1 2; do
+    for n in base new g16 rd1t rd1tg16 rd2d; do
+      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
+    done
+  done
+  echo "== info --kernels"
+  for n in new rd1t; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -2 | tr '\n' ' ')"; done
+  ;;
 s39f)
   # Session 39: candidate groups of 16 x 8 pixels (a measurement build, scripts/device/s39f.patch
   # on 38264bd, .device/bidir-g16.gz) against 8 x 4 (.device/bidir-new.gz): in the wavefront form
