@@ -84,9 +84,10 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // draws the same LVC_CANDIDATES entries, by hashes of the group's key (lvc_group_seed), which
 // no path's random numbers enter. So each vertex's candidates are independent uniform draws,
 // independent of its path, and which vertices share them does not depend on which lanes
-// connect together: the megakernels and the wavefront form make the same choices, from run to
-// run, and in a crop or a sample range of the image (docs/scale-out.md), up to the rounding of
-// the two kernels' arithmetic. The connecting lanes of a subgroup share the reads: group g's
+// connect together: the megakernels and the wavefront form make the same choices over the
+// same light paths (the same sample slices), from run to run, and in a crop or a sample range
+// of the image (docs/scale-out.md), up to the rounding of the two kernels' arithmetic. The
+// connecting lanes of a subgroup share the reads: group g's
 // candidate i is virtual entry g N + i, and the lane of rank r reads entry r of each pass of
 // as many entries as lanes (32 bytes each), so a subgroup reads each of its groups' entries
 // once, spread over all its lanes, however they fall into groups (in the wavefront form,
