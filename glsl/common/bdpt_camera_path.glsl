@@ -87,16 +87,17 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // connect together: the megakernels and the wavefront form make the same choices over the
 // same light paths (the same sample slices), from run to run, and in a crop or a sample range
 // of the image (docs/scale-out.md), up to the rounding of the two kernels' arithmetic. The
-// connecting lanes of a subgroup share the reads: group g's
-// candidate i is virtual entry g N + i, and the lane of rank r reads entry r of each pass of
-// as many entries as lanes (32 bytes each), so a subgroup reads each of its groups' entries
-// once, spread over all its lanes, however they fall into groups (in the wavefront form,
-// where compaction lists the live slots of a few blocks in one subgroup, as well as in the
-// megakernels, where a subgroup is one block); every lane then takes its group's entries by
+// connecting lanes of a subgroup share the reads: for k groups, group g's candidate i is
+// virtual entry i k + g, and the lane of rank r reads entry r of each pass of as many entries
+// as lanes (32 bytes each), so a subgroup reads each of its groups' entries once, spread over
+// all its lanes however they fall into groups (in the wavefront form compaction lists the live
+// slots of several blocks in one subgroup; in the megakernels a 32-lane subgroup is one
+// block), and each pass serves every group alike; every lane then takes its group's entries by
 // shuffles. A block's pixels share their candidates at one sample, so their errors are
 // correlated (at a few samples per pixel the noise may show the 8 x 4 grid faintly), not
-// larger (docs/integrators.md: the first design's 32-byte read per candidate cost an H100 6 ms
-// per 1024 spp each on the Cornell box).
+// larger. A candidate costs shuffles and arithmetic, its read shared (docs/integrators.md: the
+// first design's 32-byte read per candidate cost an H100 6 ms per 1024 spp each on the Cornell
+// box).
 #include "ballot.glsl"
 
 const float PREVIEW_COS_MIN = 1.0e-3;
@@ -119,7 +120,8 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     // loop): `group` is this lane's, and the lane of rank j keeps group j's key. Branch-free
     // and bounded by the subgroup's size, so that lanes which had not rejoined (Vulkan
     // promises it only with VK_KHR_shader_maximal_reconvergence) could not keep it from ending;
-    // the leader leaves `todo` in any case.
+    // the leader leaves `todo` in any case (a lane that matched no ballot, possible only where
+    // lanes had not rejoined and shuffles are undefined anyway, would take group 0's entries).
     uvec4 todo = connecting;
     uint group = 0u;
     uint group_key = key;
@@ -134,60 +136,72 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
         group_key = rank == found ? leader_key : group_key;
         groups = found + 1u;
     }
-    // Group g's candidate i is virtual entry g N + i (N = LVC_CANDIDATES). The connecting lanes
-    // read them together, one per lane at a time: in a pass from virtual entry `first`, the lane
-    // of rank r reads entry first + r, so that a subgroup reads each of its groups' entries
-    // once, spread over all its lanes, however they fall into groups; then every lane takes
-    // those of its group's entries that this pass read by shuffles from the lanes that read
-    // them, in candidate order (the order of the random numbers it draws).
+    // Group g's candidate i is virtual entry i k + g (k groups; N = LVC_CANDIDATES candidates
+    // each). The connecting lanes read them together, one per lane at a time: in a pass from
+    // virtual entry `first`, the lane of rank r reads entry first + r, so that a subgroup reads
+    // each of its groups' entries once, spread over all its lanes however they fall into
+    // groups, and each pass takes about lanes / k candidates of every group, so that all lanes
+    // are busy in every trip; then every lane takes those of its group's entries that this
+    // pass read by shuffles from the lanes that read them, in candidate order (the order of the
+    // random numbers it draws).
     bool all_lanes = lanes == gl_SubgroupSize;
-    uint entries = groups * LVC_CANDIDATES;
-    uint base = group * LVC_CANDIDATES;
+    uint k = groups;
+    uint entries = k * LVC_CANDIDATES;
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
     uvec2 chosen = uvec2(0u);
     for (uint first = 0u; first < entries; first += lanes) {
-        uint v = first + rank;
-        // Group v / N's key, from the lane of that rank (shuffled by every lane), or this
-        // lane's own where there is one group (as in the megakernels).
-        uint g_key = key;
-        if (groups > 1u) {
-            uint g = min(v / LVC_CANDIDATES, groups - 1u);
-            g_key = subgroupShuffle(group_key, all_lanes ? g : ballot_nth(connecting, g));
+        uint read_at = first + rank;
+        uint read_i = read_at / k;
+        // Group read_at's key, from the lane of that rank (shuffled by every lane), or this
+        // lane's own where there is one group (as in the megakernels on NVIDIA's subgroups).
+        uint read_key = key;
+        if (k > 1u) {
+            uint g = read_at < entries ? read_at - read_i * k : 0u;
+            read_key = subgroupShuffle(group_key, all_lanes ? g : ballot_nth(connecting, g));
         }
         uvec4 own0 = uvec4(0u);
         uvec4 own1 = uvec4(0u);
-        if (v < entries) {
-            uint e = index_below(pcg_hash(g_key ^ pcg_hash(v % LVC_CANDIDATES + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+        if (read_at < entries) {
+            uint e = index_below(pcg_hash(read_key ^ pcg_hash(read_i + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
             own0 = lvc_index[e];
             own1 = lvc_index[e + 1u];
         }
-        // This lane's candidates lo..hi - 1 were read in this pass, candidate lo by the lane
-        // of rank base + lo - first; the trip count is the subgroup's largest count (uniform),
-        // so that every connecting lane makes every shuffle (past its count a lane shuffles its
-        // own and ignores it).
-        uint lo = uint(clamp(int(first) - int(base), 0, int(LVC_CANDIDATES)));
-        uint hi = uint(clamp(int(first + lanes) - int(base), 0, int(LVC_CANDIDATES)));
-        uint count = hi - lo;
+        // This lane's candidates lo..hi - 1 were read in this pass (those with first <= i k +
+        // group < first + lanes), candidate i by the lane of rank i k + group - first; the trip
+        // count is the subgroup's largest count (uniform), so that every connecting lane makes
+        // every shuffle (past its count a lane shuffles its own and ignores it).
+        uint end = first + lanes;
+        uint lo = min(first > group ? (first - group + k - 1u) / k : 0u, LVC_CANDIDATES);
+        uint hi = min(end > group ? (end - group + k - 1u) / k : 0u, LVC_CANDIDATES);
+        uint count = hi > lo ? hi - lo : 0u;
         uint trips = subgroupMax(count);
-        // Which lane read this lane's next candidate: a cursor over the connecting lanes from
-        // that rank, past one lane a candidate.
+        // With one group the readers of a lane's candidates are consecutive: a cursor over the
+        // connecting lanes from the first one's rank, past one lane a candidate (no ballot_nth
+        // a candidate, whose bit counts a CPU's lanes pay for).
         uvec4 cursor = connecting;
-        uint r0 = base + lo - first;
-        if (count > 0u && r0 != 0u) {
+        uint r0 = lo * k + group - first;
+        if (k == 1u && count > 0u && r0 != 0u) {
             cursor = ballot_from(connecting, ballot_nth(connecting, r0));
         }
         for (uint t = 0u; t < trips; t++) {
             bool valid = t < count;
             uint src = gl_SubgroupInvocationID;
-            if (gl_SubgroupSize <= 32u) {
+            if (k > 1u) {
+                uint r = (lo + t) * k + group - first;
+                src = valid ? (all_lanes ? r : ballot_nth(connecting, r)) : src;
+            } else if (gl_SubgroupSize <= 32u) {
                 // One word of lanes (a constant test once the driver knows the size).
                 src = valid ? uint(findLSB(cursor.x)) : src;
                 cursor.x = valid ? cursor.x & (cursor.x - 1u) : cursor.x;
             } else {
-                src = valid ? subgroupBallotFindLSB(cursor) : src;
-                for (uint w = 0u; w < 4u; w++) {
-                    cursor[w] &= valid && (src >> 5u) == w ? ~(1u << (src & 31u)) : 0xffffffffu;
+                uint w = 0u;
+                for (uint j = 3u; j > 0u; j--) {
+                    w = cursor[j - 1u] != 0u ? j - 1u : w;
+                }
+                src = valid ? 32u * w + uint(findLSB(cursor[w])) : src;
+                for (uint j = 0u; j < 4u; j++) {
+                    cursor[j] &= valid && j == w ? cursor[j] - 1u : 0xffffffffu;
                 }
             }
             uvec4 w0 = subgroupShuffle(own0, src);

@@ -361,6 +361,5 @@ pub fn default_rr_depth(integrator: Integrator) -> u32 {
 /// Most candidates [`RenderSettings::connection_candidates`] takes. Each costs the p_hat of a
 /// connection and a share of a read (glsl/common/bdpt_camera_path.glsl): past 16 the H200
 /// measured no gain at equal time (docs/results.md, "Candidates shared within the subgroup"),
-/// and 32 is a subgroup quarter's lanes, one round of reads where a block's pixels connect
-/// together.
+/// and 32 candidates of one group are one pass of reads on NVIDIA's 32-lane subgroups.
 pub const MAX_CONNECTION_CANDIDATES: u32 = 32;
