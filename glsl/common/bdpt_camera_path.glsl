@@ -151,8 +151,12 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     float p_hat_s = 0.0;
     uvec2 chosen = uvec2(0u);
     for (uint first = 0u; first < entries; first += lanes) {
+        // (With one group, as in the megakernels, no division: a CPU's lanes divide one by one.)
         uint read_at = first + rank;
-        uint read_i = read_at / k;
+        uint read_i = read_at;
+        if (k > 1u) {
+            read_i = read_at / k;
+        }
         // Group read_at's key, from the lane of that rank (shuffled by every lane), or this
         // lane's own where there is one group (as in the megakernels on NVIDIA's subgroups).
         uint read_key = key;
@@ -172,8 +176,12 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
         // count is the subgroup's largest count (uniform), so that every connecting lane makes
         // every shuffle (past its count a lane shuffles its own and ignores it).
         uint end = first + lanes;
-        uint lo = min(first > group ? (first - group + k - 1u) / k : 0u, LVC_CANDIDATES);
-        uint hi = min(end > group ? (end - group + k - 1u) / k : 0u, LVC_CANDIDATES);
+        uint lo = min(first, LVC_CANDIDATES);
+        uint hi = min(end, LVC_CANDIDATES);
+        if (k > 1u) {
+            lo = min(first > group ? (first - group + k - 1u) / k : 0u, LVC_CANDIDATES);
+            hi = min(end > group ? (end - group + k - 1u) / k : 0u, LVC_CANDIDATES);
+        }
         uint count = hi > lo ? hi - lo : 0u;
         uint trips = subgroupMax(count);
         // With one group the readers of a lane's candidates are consecutive: a cursor over the
