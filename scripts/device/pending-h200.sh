@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 40 (not run: every call after the first start was refused): s40a and s40b (a shorter cut) time the candidate groups' reads shared by the whole subgroup (fb09d7b or later as .device/bidir-rd1t.gz; with scripts/device/s39f.patch as .device/bidir-rd1tg16.gz; with scripts/device/s40a-two-sets.patch as .device/bidir-rd2e.gz) against session 39's reads per group (.device/bidir-new.gz, 3a6688e; with s39f.patch .device/bidir-g16.gz) and the lanes' pools (.device/bidir-base.gz, c821483), on Sponza above all; each built, stripped and gzipped. Session 39's s39c, s39e and s39f ran in session 40's one start (an H100; docs/results.md, "The candidate groups on a GPU").
+# Parts of session 40 (not run: every call after the first start was refused): s40a and s40b (a shorter cut) time the candidate groups' reads shared by the whole subgroup (.device/bidir-cur.gz a build of 7d2104b or later; .device/bidir-rd1t.gz fb09d7b's group-after-group order; .device/bidir-rd2e.gz scripts/device/s40a-two-sets.patch applied to c111b56) against session 39's reads per group (.device/bidir-new.gz, 3a6688e; with s39f.patch .device/bidir-g16.gz) and the lanes' pools (.device/bidir-base.gz, c821483), on Sponza above all; each built, stripped and gzipped. Session 39's s39c, s39e and s39f ran in session 40's one start (an H100; docs/results.md, "The candidate groups on a GPU").
 # Parts of session 39: s39a (where a BDPT sample's time goes under session 38's defaults, kernel by kernel; fewer light paths with 16 candidates at equal time on the Cornell box and where the light hides); s39b (fewer light paths with 16 and 32 candidates on the Cornell box; run on an H100); s39c (run in session 40) and s39d (not run in sessions 39 and 40): s39c the time-budgeted render's passes (BIDIR_PASS_LOG) for bdpt and pt-nee at 0.1 s; s39d a measurement build, scripts/device/s39d.patch applied to c821483, built, stripped and gzipped as .device/bidir-exp.gz: the camera step draws the light vertex cache's first entry beside the random stream at the vertex's start, so that its read overlaps the BSDF and the light sample; against a build of c821483 (.device/bidir-base.gz) (the patch applies to c821483 only: on the candidate groups that followed, the group's first entry could be read at the vertex's start the same way, its key being known there); s39e (run in session 40: the candidates drawn per group of pixels, with .device/bidir-new.gz a build of 3a6688e or later and .device/bidir-base.gz one of c821483, the lanes' pools, e.g. `git worktree add /tmp/c8 c821483` built with its own CARGO_TARGET_DIR, stripped and gzipped: GPU time, equal time, a seed's image in the wavefront form); s39f (run in session 40: groups of 16 x 8 pixels, a measurement build of scripts/device/s39f.patch as .device/bidir-g16.gz, against 8 x 4).
 # Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table; run on an H100, to run on the H200); s38f (under the new defaults: whether a seed gives one image in each form; BDPT's megakernels against its wavefront form).
 # Parts of session 37: s37a (issue #16's equal-time error at and off the light's edge, bdpt under either MIS heuristic against pt-nee; bdpt's light paths per pixel); s37b (a measurement build: the light vertex cache's connection resampled from several candidates; run first on an H100); s37c (the same build: its loads reordered); s37d (cache entries that carry the reservoir factor, against ff286b1 and the measurement build); s37e (4 resampled candidates at equal time on three scenes); s37f (the caustic scene, more seeds); s37g (Sponza and the hidden light's box with 4 candidates; its Sponza render at seed 2 gave no result on the H100: rerun it).
@@ -95,32 +95,33 @@ shader_cache() {
 }
 case "${1:-speed}" in
 s40b)
-  # Session 40: s40a cut to fit what was left of the session's device time: one round of the
-  # six builds (Cornell box, the hidden light's box, Sponza), then session 39's groups and this
-  # commit's reads again, interleaved, with the Cornell box at 1 s.
-  unpack base new g16 rd1t rd1tg16 rd2e
-  for n in base new g16 rd1t rd1tg16 rd2e; do bdpt_round "$PWD/.device/bidir-$n" sponza; done
-  for n in new rd1t; do bdpt_round "$PWD/.device/bidir-$n" sponza time; done
+  # Session 40: s40a cut short: one round of the builds (Cornell box, the hidden light's box,
+  # Sponza), then session 39's groups and this commit's reads again, interleaved, with the
+  # Cornell box at 1 s.
+  unpack base new g16 rd1t rd2e cur
+  for n in base new g16 rd1t rd2e cur; do bdpt_round "$PWD/.device/bidir-$n" sponza; done
+  for n in new cur; do bdpt_round "$PWD/.device/bidir-$n" sponza time; done
   ;;
 s40a)
   # Session 40: the candidate groups' reads shared by every connecting lane of the subgroup
-  # (group g's candidate i is virtual entry g N + i; in a pass from entry `first` the lane of
-  # rank r reads entry first + r): .device/bidir-rd1t.gz this commit (passes of as many entries
-  # as lanes, each lane's trips its count of candidates in the pass), .device/bidir-rd1tg16.gz
-  # the same with 16 x 8 groups (scripts/device/s39f.patch), .device/bidir-rd2e.gz a form with
-  # passes of two entries per lane (every lane makes N trips a pass, each read set shuffled
-  # where some lane takes from it; scripts/device/s40a-two-sets.patch); against session 39's reads per group (.device/bidir-new.gz, 3a6688e;
-  # .device/bidir-g16.gz its 16 x 8 groups) and the lanes' pools (.device/bidir-base.gz,
-  # c821483): `bench render` GPU ms on the Cornell box, the hidden light's box and Sponza, two
-  # rounds interleaved; the Cornell box at 1 s in the second; the camera kernel's registers.
-  unpack base new g16 rd1t rd1tg16 rd2e
+  # (in a pass from virtual entry `first` the lane of rank r reads entry first + r):
+  # .device/bidir-cur.gz a build of 7d2104b or later (for k groups, group g's candidate i is
+  # entry i k + g, each pass serving every group alike), .device/bidir-rd1t.gz fb09d7b's (g N +
+  # i: group after group), .device/bidir-rd2e.gz a form with passes of two entries per lane
+  # (scripts/device/s40a-two-sets.patch on c111b56); against session 39's reads per group
+  # (.device/bidir-new.gz, 3a6688e; .device/bidir-g16.gz its 16 x 8 groups, s39f.patch) and the
+  # lanes' pools (.device/bidir-base.gz, c821483): `bench render` GPU ms on the Cornell box,
+  # the hidden light's box and Sponza, two rounds interleaved; the Cornell box at 1 s in the
+  # second; the camera kernel's registers. (16 x 8 groups over the shared reads: bundle a build
+  # of HEAD with s39f.patch as .device/bidir-curg16.gz and add it to the list.)
+  unpack base new g16 rd1t rd2e cur
   for r in 1 2; do
-    for n in base new g16 rd1t rd1tg16 rd2e; do
+    for n in base new g16 rd1t rd2e cur; do
       if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
     done
   done
   echo "== info --kernels"
-  for n in new rd1t; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -2 | tr '\n' ' ')"; done
+  for n in new cur; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -2 | tr '\n' ' ')"; done
   ;;
 s39f)
   # Session 39: candidate groups of 16 x 8 pixels (a measurement build, scripts/device/s39f.patch
