@@ -26,15 +26,4 @@ uint ballot_nth(uvec4 b, uint n) {
     return lane;
 }
 
-// The ballot `b` without its lanes below `lane`.
-uvec4 ballot_from(uvec4 b, uint lane) {
-    uvec4 r;
-    for (uint w = 0u; w < 4u; w++) {
-        uint lo = 32u * w;
-        uint keep = lane <= lo ? 0xffffffffu : (lane >= lo + 32u ? 0u : ~((1u << (lane - lo)) - 1u));
-        r[w] = b[w] & keep;
-    }
-    return r;
-}
-
 #endif

@@ -184,14 +184,10 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
         }
         uint count = hi > lo ? hi - lo : 0u;
         uint trips = subgroupMax(count);
-        // With one group the readers of a lane's candidates are consecutive: a cursor over the
-        // connecting lanes from the first one's rank, past one lane a candidate (no ballot_nth
-        // a candidate, whose bit counts a CPU's lanes pay for).
+        // With one group the readers of a lane's candidates in a pass are the connecting lanes
+        // in order from rank 0: a cursor over them, past one lane a candidate (no ballot_nth a
+        // candidate, whose bit counts a CPU's lanes pay for).
         uvec4 cursor = connecting;
-        uint r0 = lo * k + group - first;
-        if (k == 1u && count > 0u && r0 != 0u) {
-            cursor = ballot_from(connecting, ballot_nth(connecting, r0));
-        }
         for (uint t = 0u; t < trips; t++) {
             bool valid = t < count;
             uint src = gl_SubgroupInvocationID;
@@ -204,7 +200,7 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
                 cursor.x = valid ? cursor.x & (cursor.x - 1u) : cursor.x;
             } else {
                 uint w = 0u;
-                for (uint j = 3u; j > 0u; j--) {
+                for (uint j = 4u; j > 0u; j--) {
                     w = cursor[j - 1u] != 0u ? j - 1u : w;
                 }
                 src = valid ? 32u * w + uint(findLSB(cursor[w])) : src;

@@ -18,8 +18,7 @@
 //   out[i] = (the index as bits, what is left of u within it).
 // - SAMPLING_FMA: precise fma(a, b, c) and a * b + c for in[i].xyz = (a, b, c), out[i].xy.
 // - SAMPLING_BALLOT_NTH: ballot_nth (ballot.glsl) of the ballot in[i] (as bits) for the ranks
-//   0, c / 3 and c - 1 of its c set bits, out[i].xyz (as bits); ballot_from of the ballot at
-//   the lane of rank c / 2: its lowest lane + 256 x its count, out[i].w.
+//   0, c / 3, c / 2 and c - 1 of its c set bits, out[i] (as bits).
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
@@ -163,10 +162,6 @@ void main() {
     } else if (pc.mode == SAMPLING_BALLOT_NTH) {
         uvec4 b = floatBitsToUint(input_dirs[i]);
         uint c = bitCount(b.x) + bitCount(b.y) + bitCount(b.z) + bitCount(b.w);
-        // ballot_from at the lane of rank c / 2: its lowest lane and how many it keeps.
-        uvec4 from = ballot_from(b, ballot_nth(b, c / 2u));
-        uint lowest = from.x != 0u ? uint(findLSB(from.x)) : (from.y != 0u ? 32u + uint(findLSB(from.y)) : (from.z != 0u ? 64u + uint(findLSB(from.z)) : 96u + uint(findLSB(from.w))));
-        uint kept = bitCount(from.x) + bitCount(from.y) + bitCount(from.z) + bitCount(from.w);
-        result[i] = uintBitsToFloat(uvec4(ballot_nth(b, 0u), ballot_nth(b, c / 3u), ballot_nth(b, c - 1u), lowest | (kept << 8u)));
+        result[i] = uintBitsToFloat(uvec4(ballot_nth(b, 0u), ballot_nth(b, c / 3u), ballot_nth(b, c / 2u), ballot_nth(b, c - 1u)));
     }
 }

@@ -254,9 +254,7 @@ gpu_consts! {
     /// intersect.glsl assume.
     pub const SAMPLING_FMA: u32 = 11;
     /// ballot_nth (glsl/common/ballot.glsl) of the ballot `in[i]` (its four words as bits)
-    /// for the ranks 0, c / 3 and c - 1 of its c set bits: `out[i].xyz`, the lanes as bits;
-    /// ballot_from of the ballot at the lane of rank c / 2: `out[i].w` = its lowest lane +
-    /// 256 x its count of lanes, as bits.
+    /// for the ranks 0, c / 3, c / 2 and c - 1 of its c set bits: `out[i]`, the lanes as bits.
     pub const SAMPLING_BALLOT_NTH: u32 = 12;
     /// The numbers of SAMPLING_RNG before which a group starts: the 3rd, 6th, 7th and 12th
     /// (under Sobol' everywhere dimension 2 to 4, 7 to 8, 9 to 12 and 17 to 20; with ten
