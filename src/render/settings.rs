@@ -260,7 +260,8 @@ pub struct RenderSettings {
     /// ([`MAX_CONNECTION_CANDIDATES`] at most; docs/results.md, "Connections resampled from
     /// several candidates"). The candidates belong to a block of 8 x 4 pixels at one sample,
     /// vertex count and connection, drawn by hashes of that group's key, and the subgroup's
-    /// lanes connecting for one group share their reads (glsl/common/bdpt_camera_path.glsl):
+    /// connecting lanes share the reads of all its groups' candidates
+    /// (glsl/common/bdpt_camera_path.glsl):
     /// which lanes connect together changes nothing, so either form, a crop and a sample range
     /// (at multiples of the slice count) make the whole render's choices. The other joins
     /// ignore it.
