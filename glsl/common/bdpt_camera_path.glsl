@@ -151,16 +151,14 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     float p_hat_s = 0.0;
     uvec2 chosen = uvec2(0u);
     for (uint first = 0u; first < entries; first += lanes) {
-        // (With one group, as in the megakernels, no division: a CPU's lanes divide one by one.)
+        // Entry read_at is candidate read_i of group g, whose key the lane of rank g holds
+        // (shuffled by every lane). With one group, as in the megakernels, it is this lane's own
+        // key and no division is made: a CPU's lanes divide one by one.
         uint read_at = first + rank;
         uint read_i = read_at;
-        if (k > 1u) {
-            read_i = read_at / k;
-        }
-        // Group read_at's key, from the lane of that rank (shuffled by every lane), or this
-        // lane's own where there is one group (as in the megakernels on NVIDIA's subgroups).
         uint read_key = key;
         if (k > 1u) {
+            read_i = read_at / k;
             uint g = read_at < entries ? read_at - read_i * k : 0u;
             read_key = subgroupShuffle(group_key, all_lanes ? g : ballot_nth(connecting, g));
         }
