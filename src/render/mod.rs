@@ -541,16 +541,23 @@ impl Renderer {
     }
 
     /// Renders samples `first..first + spp` and teaches the pass model how long it took.
-    /// With `BIDIR_PASS_LOG` set, each pass prints its size, the model's prediction and the
-    /// time it took to stderr.
+    /// With `BIDIR_PASS_LOG` set, each pass prints its size, the model's prediction, the time
+    /// it took and its submissions (each a host round trip) to stderr.
     pub fn adaptive_pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
         let predicted = self.pacing.known().then(|| self.pacing.seconds(spp));
+        let submissions = self.ctx.submissions();
         let t = Instant::now();
         self.pass_at(first, spp)?;
         let took = t.elapsed().as_secs_f64();
         if std::env::var_os("BIDIR_PASS_LOG").is_some() {
             let predicted = predicted.map_or("-".to_string(), |p| format!("{:.2} ms", p * 1e3));
-            eprintln!("pass: samples {first}..{} ({spp} spp), predicted {predicted}, took {:.2} ms", first + spp, took * 1e3);
+            let submissions = self.ctx.submissions() - submissions;
+            eprintln!(
+                "pass: samples {first}..{} ({spp} spp), predicted {predicted}, took {:.2} ms, {submissions} submissions, slices {}",
+                first + spp,
+                took * 1e3,
+                self.slices
+            );
         }
         self.pacing.record(spp, took);
         Ok(())

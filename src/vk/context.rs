@@ -11,7 +11,7 @@ use std::{
     ffi::{CStr, CString},
     mem::ManuallyDrop,
     sync::{
-        atomic::{AtomicBool, Ordering},
+        atomic::{AtomicBool, AtomicU64, Ordering},
         Arc, Mutex,
     },
     time::Duration,
@@ -126,6 +126,8 @@ pub(crate) struct Shared {
     /// Set when a submission timed out: the device may still be executing, so nothing is
     /// destroyed (destroying in-flight objects is undefined behaviour).
     pub poisoned: AtomicBool,
+    /// Submissions made so far (`Context::submissions`).
+    pub submissions: AtomicU64,
     /// Per-kernel GPU timing, when on (`Context::set_profiling`).
     pub profiler: Mutex<Option<super::profile::Profiler>>,
     _log: Arc<ValidationLog>,
@@ -274,6 +276,7 @@ impl Context {
                     info,
                     gpu_timeout: opts.gpu_timeout,
                     poisoned: AtomicBool::new(false),
+                    submissions: AtomicU64::new(0),
                     profiler: Mutex::new(None),
                     _log: log.clone(),
                 };
@@ -286,6 +289,12 @@ impl Context {
                 Err(e)
             }
         }
+    }
+
+    /// Submissions made through this context so far (each one waited for): what a pass's
+    /// host round trips are (`BIDIR_PASS_LOG`).
+    pub fn submissions(&self) -> u64 {
+        self.shared.submissions.load(Ordering::Relaxed)
     }
 
     /// The chosen device.

@@ -148,6 +148,7 @@ impl Context {
             s.return_fence(fence);
             return Err(VkError::Vk { what: format!("submit {what}"), result });
         }
+        s.submissions.fetch_add(1, Ordering::Relaxed);
         // From here the commands are the GPU's until the fence signals: not freed on drop.
         let cmd = std::mem::replace(&mut r.cmd, vk::CommandBuffer::null());
         // The wait below must happen whatever `meanwhile` does (it may unwind).
