@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Part of session 41: s41a (s40a, then the passes of a time-budgeted render with their submissions, .device/bidir-c41.gz a build of 0becd4b or later).
 # Parts of session 40 (not run: every call after the first start was refused): s40a and s40b (a shorter cut) time the candidate groups' reads shared by the whole subgroup (.device/bidir-cur.gz a build of bf1cb13 or later; .device/bidir-rd1t.gz fb09d7b's group-after-group order; .device/bidir-rd2e.gz scripts/device/s40a-two-sets.patch applied to c111b56) against session 39's reads per group (.device/bidir-new.gz, 3a6688e; with s39f.patch .device/bidir-g16.gz) and the lanes' pools (.device/bidir-base.gz, c821483), on Sponza above all; each built, stripped and gzipped. Session 39's s39c, s39e and s39f ran in session 40's one start (an H100; docs/results.md, "The candidate groups on a GPU").
 # Parts of session 39: s39a (where a BDPT sample's time goes under session 38's defaults, kernel by kernel; fewer light paths with 16 candidates at equal time on the Cornell box and where the light hides); s39b (fewer light paths with 16 and 32 candidates on the Cornell box; run on an H100); s39c (run in session 40) and s39d (not run in sessions 39 and 40): s39c the time-budgeted render's passes (BIDIR_PASS_LOG) for bdpt and pt-nee at 0.1 s; s39d a measurement build, scripts/device/s39d.patch applied to c821483, built, stripped and gzipped as .device/bidir-exp.gz: the camera step draws the light vertex cache's first entry beside the random stream at the vertex's start, so that its read overlaps the BSDF and the light sample; against a build of c821483 (.device/bidir-base.gz) (the patch applies to c821483 only: on the candidate groups that followed, the group's first entry could be read at the vertex's start the same way, its key being known there); s39e (run in session 40: the candidates drawn per group of pixels, with .device/bidir-new.gz a build of 3a6688e or later and .device/bidir-base.gz one of c821483, the lanes' pools, e.g. `git worktree add /tmp/c8 c821483` built with its own CARGO_TARGET_DIR, stripped and gzipped: GPU time, equal time, a seed's image in the wavefront form); s39f (run in session 40: groups of 16 x 8 pixels, a measurement build of scripts/device/s39f.patch as .device/bidir-g16.gz, against 8 x 4).
 # Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table; run on an H100, to run on the H200); s38f (under the new defaults: whether a seed gives one image in each form; BDPT's megakernels against its wavefront form).
@@ -94,6 +95,19 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s41a)
+  # Session 41: s40a (session 40's candidate reads, never run), then what a time-budgeted
+  # render's passes spend (.device/bidir-c41.gz, a build of 0becd4b or later, whose
+  # BIDIR_PASS_LOG gives each pass's submissions and slices): bdpt at 0.1 s in three fresh
+  # processes and at 1 s, pt-nee at 0.1 s, the Cornell box; bdpt's kernel table at 1024 spp.
+  bash "$0" s40a
+  unpack c41
+  b=$PWD/.device/bidir-c41
+  for r in 1 2 3; do echo "== bdpt 0.1 s ($r)"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$b" render $CB --integrator bdpt --time 0.1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in"; done
+  echo "== bdpt 1 s"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$b" render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in"
+  echo "== pt-nee 0.1 s"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$b" render $CB --integrator pt-nee --time 0.1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in"
+  echo "== bdpt bench 1024 spp"; timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | tail -25
+  ;;
 s40b)
   # Session 40: s40a cut short: one round of the builds (Cornell box, the hidden light's box,
   # Sponza), then session 39's groups and this commit's reads again, interleaved, with the
