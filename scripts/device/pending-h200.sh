@@ -107,6 +107,11 @@ s41a)
   echo "== bdpt 1 s"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$b" render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in"
   echo "== pt-nee 0.1 s"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$b" render $CB --integrator pt-nee --time 0.1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in"
   echo "== bdpt bench 1024 spp"; timeout -k 5 60 "$b" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | tail -25
+  # A measurement build (scripts/device/s41-state-write.patch on 0becd4b, .device/bidir-sw.gz):
+  # the camera wavefront's state written without its medium and opacity seed where the scene
+  # has neither (16 of 80 bytes a step), against c41, two rounds interleaved.
+  unpack sw
+  for r in 1 2; do for n in c41 sw; do bdpt_round "$PWD/.device/bidir-$n" sponza; done; done
   ;;
 s40b)
   # Session 40: s40a cut short: one round of the builds (Cornell box, the hidden light's box,
