@@ -100,7 +100,15 @@ s41a)
   # render's passes spend (.device/bidir-c41.gz, a build of 0becd4b or later, whose
   # BIDIR_PASS_LOG gives each pass's submissions and slices): bdpt at 0.1 s in three fresh
   # processes and at 1 s, pt-nee at 0.1 s, the Cornell box; bdpt's kernel table at 1024 spp.
-  bash "$0" s40a
+  # (s40a without g16 and rd1t, whose binaries no longer fit the carry beside c41 and sw.)
+  unpack base new rd2e cur
+  for r in 1 2; do
+    for n in base new rd2e cur; do
+      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
+    done
+  done
+  echo "== info --kernels"
+  for n in new cur; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -2 | tr '\n' ' ')"; done
   unpack c41
   b=$PWD/.device/bidir-c41
   for r in 1 2 3; do echo "== bdpt 0.1 s ($r)"; BIDIR_PASS_LOG=1 timeout -k 5 60 "$b" render $CB --integrator bdpt --time 0.1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in"; done
