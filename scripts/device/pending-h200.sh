@@ -95,6 +95,23 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s41b)
+  # Session 41: what the candidate groups cost on the H200 (s41a: the lanes' pools c821483
+  # 129.3 ms on the Cornell box against 137.4-137.7 for the groups), and three measurement
+  # builds on 0becd4b: fp (scripts/device/s41-one-key.patch: a subgroup of one key skips the key
+  # loop by one vote), g16c (s39f.patch: groups of 16 x 8 pixels) and g16f (both); two rounds
+  # interleaved, the Cornell box at 1 s in the second; every build's camera kernel registers;
+  # pt-nee's 1024 spp for the ratio.
+  unpack base new c41 fp g16c g16f
+  for r in 1 2; do
+    for n in base new c41 fp g16c g16f; do
+      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
+    done
+  done
+  echo "== info --kernels"
+  for n in base new c41 fp g16c g16f; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"; done
+  echo "== pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-c41 bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  ;;
 s41a)
   # Session 41: s40a (session 40's candidate reads, never run), then what a time-budgeted
   # render's passes spend (.device/bidir-c41.gz, a build of 0becd4b or later, whose
