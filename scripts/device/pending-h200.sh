@@ -111,6 +111,14 @@ s41b)
   echo "== info --kernels"
   for n in base new c41 fp g16c g16f; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"; done
   echo "== pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-c41 bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  # BDPT's iterations: a pass piece costs about 3 ms beyond its samples (s41a's pass log:
+  # t = 3.0 ms x pieces + 0.12 ms x spp), the launches' tails; larger iterations amortise it.
+  for sl in 64 128 256 512 1024; do
+    echo "== slices $sl: cornell $(timeout -k 5 60 .device/bidir-c41 bench render $CB --integrator bdpt --sample-slices $sl --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|wall [0-9.]+ ms' | tr '\n' ' ') hidden $(timeout -k 5 60 .device/bidir-c41 bench render $HID --integrator bdpt --sample-slices $sl --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms' | tr '\n' ' ')"
+  done
+  for sl in 32 64; do echo "== sponza slices $sl: $(timeout -k 5 60 .device/bidir-c41 bench render $SP --integrator bdpt --sample-slices $sl --spp 128 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|wall [0-9.]+ ms|error.*' | tr '\n' ' ')"; done
+  echo "== sponza default: $(timeout -k 5 60 .device/bidir-c41 bench render $SP --integrator bdpt --spp 128 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|wall [0-9.]+ ms|[0-9]+ slices' | tr '\n' ' ')"
+  for sl in 128 256 512; do echo "== 1 s slices $sl: $(timeout -k 5 60 .device/bidir-c41 render $CB --integrator bdpt --sample-slices $sl --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $(.device/bidir-c41 diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"; done
   ;;
 s41a)
   # Session 41: s40a (session 40's candidate reads, never run), then what a time-budgeted
