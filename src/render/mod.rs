@@ -298,14 +298,24 @@ impl Renderer {
         let pixels = camera.width * camera.height;
         let slices = sample_slices(ctx, &settings, &gscene, slice_pixels(&settings, pixels, window));
         let kernels = build_kernels(ctx, &gscene, settings.integrator, pixels, window, &settings, slices)?;
-        let pacing = PassModel::new(if kernels.slice_aligned() { slices } else { 1 });
         let film = Film::new(ctx, window.width(), window.height(), kernels.splats(), slices)?;
         let camera = crate::gpu_data::gpu_camera_window(&crate::gpu_data::gpu_camera(camera), window);
         let first_hit = settings
             .first_hit
             .map(|aovs| first_hit::FirstHitPass::new(ctx, &gscene, settings.sampler, window.width(), window.height(), aovs))
             .transpose()?;
-        Ok(Renderer { ctx: ctx.clone(), scene: gscene, film, kernels, camera, settings, samples: 0, pacing, slices, first_hit })
+        Ok(Renderer {
+            ctx: ctx.clone(),
+            scene: gscene,
+            film,
+            kernels,
+            camera,
+            settings,
+            samples: 0,
+            pacing: PassModel::default(),
+            slices,
+            first_hit,
+        })
     }
 
     /// Most samples of a pixel one pass renders at once (BDPT iterations hold this many
@@ -420,7 +430,7 @@ impl Renderer {
         self.slices = slices;
         self.settings.rr_depth = settings.rr_depth;
         self.settings.integrator = integrator;
-        self.pacing = PassModel::new(if self.kernels.slice_aligned() { slices } else { 1 });
+        self.pacing = PassModel::default();
         self.samples = 0;
         if let Some(f) = &self.first_hit {
             f.clear(&self.ctx)?;
@@ -516,8 +526,7 @@ impl Renderer {
     /// `pass_target`, or one sample per pixel while nothing has been measured (calibration).
     pub fn next_pass_spp(&self) -> u32 {
         let target = self.settings.pass_target.as_secs_f64();
-        let first = self.settings.sample_start + self.samples;
-        let sized = if self.pacing.known() { self.pacing.spp_within(first, target) } else { 1 };
+        let sized = if self.pacing.known() { self.pacing.spp_within(target) } else { 1 };
         sized.clamp(1, self.max_pass_spp())
     }
 
@@ -525,7 +534,7 @@ impl Renderer {
     /// anything was measured), for callers that schedule passes themselves (`multi`).
     pub fn pass_spp_within(&self, seconds: f64) -> u32 {
         if self.pacing.known() {
-            self.pacing.spp_within(self.settings.sample_start + self.samples, seconds).clamp(1, self.max_pass_spp())
+            self.pacing.spp_within(seconds).clamp(1, self.max_pass_spp())
         } else {
             1
         }
@@ -535,7 +544,7 @@ impl Renderer {
     /// With `BIDIR_PASS_LOG` set, each pass prints its size, the model's prediction, the time
     /// it took and its submissions (each a host round trip) to stderr.
     pub fn adaptive_pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
-        let predicted = self.pacing.known().then(|| self.pacing.seconds(first, spp));
+        let predicted = self.pacing.known().then(|| self.pacing.seconds(spp));
         let submissions = self.ctx.submissions();
         let t = Instant::now();
         self.pass_at(first, spp)?;
@@ -550,7 +559,7 @@ impl Renderer {
                 self.slices
             );
         }
-        self.pacing.record(first, spp, took);
+        self.pacing.record(spp, took);
         Ok(())
     }
 
@@ -592,8 +601,15 @@ impl Renderer {
             if self.samples > 0 && (left <= 0.0 || stop_requested()) {
                 break;
             }
-            let first = self.settings.sample_start + self.samples;
-            let Some(cap) = self.pacing.budgeted_spp(first, self.samples > 0, left, budget) else { break };
+            let cap = if !self.pacing.known() {
+                1
+            } else {
+                match self.pacing.spp_within(left) {
+                    0 if self.samples > 0 && self.pacing.seconds(1) - left > 0.1 * budget => break,
+                    0 => 1,
+                    _ => self.pacing.spp_within_budget(left, budget).max(1),
+                }
+            };
             self.adaptive_pass(cap)?;
             progress(Progress { samples: self.samples, elapsed: start.elapsed() });
         }
