@@ -95,6 +95,18 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s41c)
+  # Session 41 (run on an H100; the model reverted, 1fce64e): the pass model with pieces (.device/bidir-pace.gz, 0ce278d: a pass
+  # costs overhead x pieces + per_spp x spp, a held pass ends on an iteration's boundary)
+  # against c41's one overhead a pass: bdpt at 0.1 s, four fresh processes each, interleaved;
+  # pt-nee at 0.1 s (one piece a pass: unchanged); bdpt at 1 s.
+  unpack c41 pace
+  for r in 1 2 3 4; do
+    for n in c41 pace; do echo "== $n bdpt 0.1 s ($r): $(BIDIR_PASS_LOG=1 timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt --time 0.1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in" | sed -E 's/pass: samples //; s/, slices [0-9]+//; s/ submissions//' | tr '\n' '|')"; done
+  done
+  for n in c41 pace; do echo "== $n pt-nee 0.1 s: $(timeout -k 5 60 .device/bidir-$n render $CB --integrator pt-nee --time 0.1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"; done
+  for n in c41 pace; do echo "== $n bdpt 1 s: $(timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"; done
+  ;;
 s41b)
   # Session 41: what the candidate groups cost on the H200 (s41a: the lanes' pools c821483
   # 129.3 ms on the Cornell box against 137.4-137.7 for the groups), and three measurement
