@@ -95,6 +95,25 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s41d)
+  # Session 41: the camera kernel's registers (s41b: 72 with the lanes' pools, 96 with every
+  # form of the groups). nd (scripts/device/s41-cursor.patch on 1fce64e): where the subgroup's
+  # connecting lanes can read every group's N candidates at once (k N <= lanes) the lane of
+  # rank g N + i reads group g's candidate i and each lane takes its group's by a cursor over
+  # the N lanes from rank g N, N trips of a fixed count as the pools had; else every lane reads
+  # its own N (the same entries). nd16: the same with groups of 16 x 8 (s39f.patch); against the
+  # pools (base), the groups (c41) and their 16 x 8 form (g16c); two rounds interleaved, the
+  # Cornell box at 1 s in the second; registers.
+  unpack base c41 g16c nd nd16
+  for r in 1 2; do
+    for n in base c41 g16c nd nd16; do
+      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
+    done
+  done
+  echo "== info --kernels"
+  for n in base c41 g16c nd nd16; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"; done
+  echo "== pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-c41 bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  ;;
 s41c)
   # Session 41 (run on an H100; the model reverted, 1fce64e): the pass model with pieces (.device/bidir-pace.gz, 0ce278d: a pass
   # costs overhead x pieces + per_spp x spp, a held pass ends on an iteration's boundary)
