@@ -40,7 +40,7 @@ fn values_differing(a: &[f32], b: &[f32], relative: f32) -> usize {
     a.iter().zip(b).filter(|(x, y)| (*x - *y).abs() > relative * x.abs()).count()
 }
 
-// SHARED_CANDIDATES: BDPT's resampled connections take their candidates from a group (an 8 x 4
+// SHARED_CANDIDATES: BDPT's resampled connections take their candidates from a group (a 16 x 8
 // block of pixels, one sample, one vertex count), whose reads the lanes of a subgroup share
 // (glsl/common/bdpt_camera_path.glsl): an image is the same whichever lanes connect together,
 // so the tests below that compare two ways of rendering one image value for value keep the

@@ -1,27 +1,27 @@
-// Lanes of a subgroup ballot (the uvec4 of subgroupBallot) by rank; no subgroup operations
-// here, so tests can run them on any ballot (glsl/tests/sampling.comp, SAMPLING_BALLOT_NTH).
+// Lanes of a subgroup ballot (the uvec4 of subgroupBallot, lane l at bit l % 32 of word l / 32);
+// no subgroup operations here, so tests can run them on any ballot (glsl/tests/sampling.comp,
+// SAMPLING_BALLOT_CURSOR).
 #ifndef BIDIR_BALLOT_GLSL
 #define BIDIR_BALLOT_GLSL
 
-// The lane whose bit is the n-th (from 0) set bit of the ballot `b`, for n below its count:
-// the lane that subgroupBallotExclusiveBitCount ranks n. Branch-free: past the words that
-// hold n set bits or fewer, then a binary search within the word (halves of 16, 8, 4, 2, 1).
-uint ballot_nth(uvec4 b, uint n) {
-    uint word = b.x;
-    uint lane = 0u;
-    for (uint w = 0u; w < 3u; w++) {
-        uint c = bitCount(word);
-        bool past = n >= c;
-        n = past ? n - c : n;
-        lane = past ? lane + 32u : lane;
-        word = past ? b[w + 1u] : word;
+// The ballot `b` without its lanes below `start` (0 to 128).
+uvec4 ballot_from(uvec4 b, uint start) {
+    for (uint w = 0u; w < 4u; w++) {
+        uint below = start >= 32u * (w + 1u) ? 0xffffffffu : (start > 32u * w ? (1u << (start - 32u * w)) - 1u : 0u);
+        b[w] &= ~below;
     }
-    for (uint width = 16u; width > 0u; width >>= 1u) {
-        uint low = bitCount(word & ((1u << width) - 1u));
-        bool skip = n >= low;
-        n = skip ? n - low : n;
-        word = skip ? word >> width : word;
-        lane = skip ? lane + width : lane;
+    return b;
+}
+
+// The lowest lane of the ballot `b` (not empty), taken out of it.
+uint ballot_take_lowest(inout uvec4 b) {
+    uint w = 0u;
+    for (uint j = 4u; j > 0u; j--) {
+        w = b[j - 1u] != 0u ? j - 1u : w;
+    }
+    uint lane = 32u * w + uint(findLSB(b[w]));
+    for (uint j = 0u; j < 4u; j++) {
+        b[j] &= j == w ? b[j] - 1u : 0xffffffffu;
     }
     return lane;
 }

@@ -79,7 +79,7 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // goes where the unshadowed contributions are large. Returns the contribution where it is added
 // now (as connect()).
 //
-// The candidates belong to a group, not to the lanes: every camera vertex of one 8 x 4 block
+// The candidates belong to a group, not to the lanes: every camera vertex of one 16 x 8 block
 // of the full image's pixels, one sample index, one vertex count and one connection (`join`)
 // draws the same LVC_CANDIDATES entries, by hashes of the group's key (lvc_group_seed), which
 // no path's random numbers enter. So each vertex's candidates are independent uniform draws,
@@ -87,26 +87,29 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // connect together: the megakernels and the wavefront form make the same choices over the
 // same light paths (the same sample slices), from run to run, and in a crop or a sample range
 // of the image (docs/scale-out.md), up to the rounding of the two kernels' arithmetic. The
-// connecting lanes of a subgroup share the reads: for k groups, group g's candidate i is
-// virtual entry i k + g, and the lane of rank r reads entry r of each pass of as many entries
-// as lanes (32 bytes each), so a subgroup reads each of its groups' entries once, spread over
-// all its lanes however they fall into groups (in the wavefront form compaction lists the live
-// slots of several blocks in one subgroup; in the megakernels a 32-lane subgroup is one
-// block), and each pass serves every group alike; every lane then takes its group's entries by
-// shuffles. A block's pixels share their candidates at one sample, so their errors are
-// correlated (at a few samples per pixel the noise may show the 8 x 4 grid faintly), not
-// larger. A candidate costs shuffles and arithmetic, its read shared (docs/integrators.md: the
-// first design's 32-byte read per candidate cost an H100 6 ms per 1024 spp each on the Cornell
-// box).
+// connecting lanes of a subgroup share the reads where they can read all its groups'
+// candidates at once (k groups, k N <= lanes: in the megakernels a 32-lane subgroup lies in one
+// block, in the wavefront form compaction lists the live slots of a few blocks in one
+// subgroup): the lane of rank g N + i reads group g's candidate i (32 bytes), and every lane
+// takes its group's N by shuffles from the N lanes from rank g N on, in one loop of N trips;
+// elsewhere every lane reads its own N. The loop holds no more than the lanes' pools of session
+// 38 held (72 registers in the wavefront camera kernel on NVIDIA's driver, against 96 for
+// session 39 and 40's passes over the entries; docs/results.md, session 41). A block's pixels
+// share their candidates at one sample, so their errors are correlated (at a few samples per
+// pixel the noise may show the 16 x 8 grid faintly), not larger. A shared candidate costs
+// shuffles and arithmetic (docs/integrators.md: the first design's 32-byte read per candidate
+// cost an H100 6 ms per 1024 spp each on the Cornell box).
+
 #include "ballot.glsl"
 
 const float PREVIEW_COS_MIN = 1.0e-3;
 
-// The key of this camera sample's candidate groups (connect_resampled): its pixel's 8 x 4 block
-// of the full image, its sample index and the seed. Set by the includer before the path.
+// The key of this camera sample's candidate groups (connect_resampled): its pixel's 16 x 8
+// block of the full image, its sample index and the seed (blocks of 8 x 4 took 2 % more on an
+// H100's Cornell box, more keys sharing a subgroup). Set by the includer before the path.
 uint lvc_group = 0u;
 uint lvc_group_seed(uvec2 px, uint sample_index, uint seed) {
-    uint block = (px.y >> 2u) * 0x10000u + (px.x >> 3u);
+    uint block = (px.y >> 3u) * 0x10000u + (px.x >> 4u);
     return pcg_hash(pcg_hash(block ^ 0x632be5abu) ^ pcg_hash(sample_index ^ pcg_hash(seed ^ 0x9e3779b9u)));
 }
 
@@ -116,15 +119,20 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     uvec4 connecting = subgroupBallot(true);
     uint lanes = subgroupBallotBitCount(connecting);
     uint rank = subgroupBallotExclusiveBitCount(connecting);
-    // The subgroup's distinct keys, numbered in the order found (one per pass of a uniform
-    // loop): `group` is this lane's, and the lane of rank j keeps group j's key. Branch-free
-    // and bounded by the subgroup's size, so that lanes which had not rejoined (Vulkan
-    // promises it only with VK_KHR_shader_maximal_reconvergence) could not keep it from ending;
-    // the leader leaves `todo` in any case (a lane that matched no ballot, possible only where
-    // lanes had not rejoined and shuffles are undefined anyway, would take group 0's entries).
+    // The subgroup's distinct keys (groups), numbered in the order found (one per pass of a
+    // uniform loop). Where the subgroup's connecting lanes can read every group's candidates
+    // at once (k groups, k N <= lanes), group g's candidate i is read by the lane of rank g N
+    // + i, and this lane takes its group's from the N lanes from rank `group` N on by a
+    // cursor; else each lane reads its own. Either way candidate i of a group is entry
+    // hash(key, i): the same values in the same order whoever reads them. Branch-free and
+    // bounded by the subgroup's size, so that lanes which had not rejoined (Vulkan promises
+    // it only with VK_KHR_shader_maximal_reconvergence) could not keep it from ending; the
+    // leader leaves `todo` in any case (a lane that matched no ballot, possible only where
+    // lanes had not rejoined and shuffles are undefined anyway, would read its own).
     uvec4 todo = connecting;
-    uint group = 0u;
-    uint group_key = key;
+    uint group = gl_SubgroupSize;
+    uint read_key = key;
+    uint start = 0u; // the lane of rank group N
     uint groups = 0u;
     for (uint found = 0u; found < gl_SubgroupSize && todo != uvec4(0u); found++) {
         uint leader = subgroupBallotFindLSB(todo);
@@ -132,107 +140,66 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
         bool same = key == leader_key;
         todo &= ~subgroupBallot(same);
         todo[leader >> 5u] &= ~(1u << (leader & 31u));
+        uint first_reader = subgroupBallotFindLSB(subgroupBallot(rank == found * LVC_CANDIDATES));
         group = same ? found : group;
-        group_key = rank == found ? leader_key : group_key;
+        start = same ? first_reader : start;
+        read_key = rank / LVC_CANDIDATES == found ? leader_key : read_key;
         groups = found + 1u;
     }
-    // Group g's candidate i is virtual entry i k + g (k groups; N = LVC_CANDIDATES candidates
-    // each). The connecting lanes read them together, one per lane at a time: in a pass from
-    // virtual entry `first`, the lane of rank r reads entry first + r, so that a subgroup reads
-    // each of its groups' entries once, spread over all its lanes however they fall into
-    // groups, and each pass takes about lanes / k candidates of every group, so that all lanes
-    // are busy in every trip; then every lane takes those of its group's entries that this
-    // pass read by shuffles from the lanes that read them, in candidate order (the order of the
-    // random numbers it draws).
-    bool all_lanes = lanes == gl_SubgroupSize;
-    uint k = groups;
-    uint entries = k * LVC_CANDIDATES;
+    bool fits = groups * LVC_CANDIDATES <= lanes; // uniform
+    uvec4 own0 = uvec4(0u);
+    uvec4 own1 = uvec4(0u);
+    if (fits && rank < groups * LVC_CANDIDATES) {
+        uint e = index_below(pcg_hash(read_key ^ pcg_hash(rank % LVC_CANDIDATES + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+        own0 = lvc_index[e];
+        own1 = lvc_index[e + 1u];
+    }
+    // This lane's group's readers: the connecting lanes from `start` on (the first N of them).
+    uvec4 cursor = ballot_from(connecting, start);
+    bool share = subgroupAll(fits && group < groups);
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
     uvec2 chosen = uvec2(0u);
-    for (uint first = 0u; first < entries; first += lanes) {
-        // Entry read_at is candidate read_i of group g, whose key the lane of rank g holds
-        // (shuffled by every lane). With one group, as in the megakernels, it is this lane's own
-        // key and no division is made: a CPU's lanes divide one by one.
-        uint read_at = first + rank;
-        uint read_i = read_at;
-        uint read_key = key;
-        if (k > 1u) {
-            read_i = read_at / k;
-            uint g = read_at < entries ? read_at - read_i * k : 0u;
-            read_key = subgroupShuffle(group_key, all_lanes ? g : ballot_nth(connecting, g));
-        }
-        uvec4 own0 = uvec4(0u);
-        uvec4 own1 = uvec4(0u);
-        if (read_at < entries) {
-            uint e = index_below(pcg_hash(read_key ^ pcg_hash(read_i + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
-            own0 = lvc_index[e];
-            own1 = lvc_index[e + 1u];
-        }
-        // This lane's candidates lo..hi - 1 were read in this pass (those with first <= i k +
-        // group < first + lanes), candidate i by the lane of rank i k + group - first; the trip
-        // count is the subgroup's largest count (uniform), so that every connecting lane makes
-        // every shuffle (past its count a lane shuffles its own and ignores it).
-        uint end = first + lanes;
-        uint lo = min(first, LVC_CANDIDATES);
-        uint hi = min(end, LVC_CANDIDATES);
-        if (k > 1u) {
-            lo = min(first > group ? (first - group + k - 1u) / k : 0u, LVC_CANDIDATES);
-            hi = min(end > group ? (end - group + k - 1u) / k : 0u, LVC_CANDIDATES);
-        }
-        uint count = hi > lo ? hi - lo : 0u;
-        uint trips = subgroupMax(count);
-        // With one group the readers of a lane's candidates in a pass are the connecting lanes
-        // in order from rank 0: a cursor over them, past one lane a candidate (no ballot_nth a
-        // candidate, whose bit counts a CPU's lanes pay for).
-        uvec4 cursor = connecting;
-        for (uint t = 0u; t < trips; t++) {
-            bool valid = t < count;
-            uint src = gl_SubgroupInvocationID;
-            if (k > 1u) {
-                uint r = (lo + t) * k + group - first;
-                src = valid ? (all_lanes ? r : ballot_nth(connecting, r)) : src;
-            } else if (gl_SubgroupSize <= 32u) {
+    for (uint i = 0u; i < LVC_CANDIDATES; i++) {
+        uvec4 w0;
+        uvec4 w1;
+        if (share) {
+            uint src;
+            if (gl_SubgroupSize <= 32u) {
                 // One word of lanes (a constant test once the driver knows the size).
-                src = valid ? uint(findLSB(cursor.x)) : src;
-                cursor.x = valid ? cursor.x & (cursor.x - 1u) : cursor.x;
+                src = uint(findLSB(cursor.x));
+                cursor.x &= cursor.x - 1u;
             } else {
-                uint w = 0u;
-                for (uint j = 4u; j > 0u; j--) {
-                    w = cursor[j - 1u] != 0u ? j - 1u : w;
-                }
-                src = valid ? 32u * w + uint(findLSB(cursor[w])) : src;
-                for (uint j = 0u; j < 4u; j++) {
-                    cursor[j] &= valid && j == w ? cursor[j] - 1u : 0xffffffffu;
-                }
+                src = ballot_take_lowest(cursor);
             }
-            uvec4 w0 = subgroupShuffle(own0, src);
-            uvec4 w1 = subgroupShuffle(own1, src);
-            // No `continue` here: the next candidate's shuffles are made by every lane together.
-            if (valid) {
-                float u_keep = rng_next(rng);
-                vec3 v = uintBitsToFloat(w1.xyz) - p;
-                float dist2 = dot(v, v);
-                vec3 dir = v * inversesqrt(dist2);
-                float cos_c = dot(ns_f, dir);
-                // Where the camera side's cosines are not positive x is 0: so is p_hat.
-                if (cos_c > 0.0 && dot(ng_f, dir) > 0.0) {
-                    vec3 ns_y;
-                    float pick;
-                    lvc_preview_unpack(w0.z, ns_y, pick);
-                    float cos_y = max(-dot(ns_y, dir), PREVIEW_COS_MIN);
-                    float cam_dir_pdf_w, cam_rev_pdf_w;
-                    vec3 f = continuous_eval(c, ns_f, wo, dir, cam_dir_pdf_w, cam_rev_pdf_w);
-                    float w_light = mis(cam_dir_pdf_w * cos_y / dist2) * (vm_light + uintBitsToFloat(w0.w));
-                    float w_camera = mis(pick * cos_y / PI * cos_c / dist2) * (vm_camera + d_vcm + d_vc * mis(cam_rev_pdf_w));
-                    float p_hat = luminance(f) * uintBitsToFloat(w1.w) * uintBitsToFloat(w0.y) * (cos_c * cos_y / dist2) / (w_light + 1.0 + w_camera);
-                    if (p_hat > 0.0) {
-                        p_hat_sum += p_hat;
-                        if (u_keep * p_hat_sum < p_hat) {
-                            p_hat_s = p_hat;
-                            chosen = w0.xy;
-                        }
-                    }
+            w0 = subgroupShuffle(own0, src);
+            w1 = subgroupShuffle(own1, src);
+        } else {
+            uint e = index_below(pcg_hash(key ^ pcg_hash(i + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+            w0 = lvc_index[e];
+            w1 = lvc_index[e + 1u];
+        }
+        float u_keep = rng_next(rng);
+        vec3 v = uintBitsToFloat(w1.xyz) - p;
+        float dist2 = dot(v, v);
+        vec3 dir = v * inversesqrt(dist2);
+        float cos_c = dot(ns_f, dir);
+        // Where the camera side's cosines are not positive x is 0: so is p_hat.
+        if (cos_c > 0.0 && dot(ng_f, dir) > 0.0) {
+            vec3 ns_y;
+            float pick;
+            lvc_preview_unpack(w0.z, ns_y, pick);
+            float cos_y = max(-dot(ns_y, dir), PREVIEW_COS_MIN);
+            float cam_dir_pdf_w, cam_rev_pdf_w;
+            vec3 f = continuous_eval(c, ns_f, wo, dir, cam_dir_pdf_w, cam_rev_pdf_w);
+            float w_light = mis(cam_dir_pdf_w * cos_y / dist2) * (vm_light + uintBitsToFloat(w0.w));
+            float w_camera = mis(pick * cos_y / PI * cos_c / dist2) * (vm_camera + d_vcm + d_vc * mis(cam_rev_pdf_w));
+            float p_hat = luminance(f) * uintBitsToFloat(w1.w) * uintBitsToFloat(w0.y) * (cos_c * cos_y / dist2) / (w_light + 1.0 + w_camera);
+            if (p_hat > 0.0) {
+                p_hat_sum += p_hat;
+                if (u_keep * p_hat_sum < p_hat) {
+                    p_hat_s = p_hat;
+                    chosen = w0.xy;
                 }
             }
         }

@@ -17,8 +17,8 @@
 // - SAMPLING_INDEX: index_below(u, n) for u, n = the bits of in[i].x, in[i].y:
 //   out[i] = (the index as bits, what is left of u within it).
 // - SAMPLING_FMA: precise fma(a, b, c) and a * b + c for in[i].xyz = (a, b, c), out[i].xy.
-// - SAMPLING_BALLOT_NTH: ballot_nth (ballot.glsl) of the ballot in[i] (as bits) for the ranks
-//   0, c / 3, c / 2 and c - 1 of its c set bits, out[i] (as bits).
+// - SAMPLING_BALLOT_CURSOR: ballot.glsl's cursor over the ballot in[i] (as bits) from lane
+//   s = 37 i mod 129: out[i] = (first and second lane taken or 128, lanes left, s) as bits.
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
@@ -159,9 +159,12 @@ void main() {
         precise float fused = fma(v.x, v.y, v.z);
         precise float separate = v.x * v.y + v.z;
         result[i] = vec4(fused, separate, 0.0, 0.0);
-    } else if (pc.mode == SAMPLING_BALLOT_NTH) {
-        uvec4 b = floatBitsToUint(input_dirs[i]);
-        uint c = bitCount(b.x) + bitCount(b.y) + bitCount(b.z) + bitCount(b.w);
-        result[i] = uintBitsToFloat(uvec4(ballot_nth(b, 0u), ballot_nth(b, c / 3u), ballot_nth(b, c / 2u), ballot_nth(b, c - 1u)));
+    } else if (pc.mode == SAMPLING_BALLOT_CURSOR) {
+        uint s = (37u * i) % 129u;
+        uvec4 b = ballot_from(floatBitsToUint(input_dirs[i]), s);
+        uint first = b != uvec4(0u) ? ballot_take_lowest(b) : 128u;
+        uint second = b != uvec4(0u) ? ballot_take_lowest(b) : 128u;
+        uint left = bitCount(b.x) + bitCount(b.y) + bitCount(b.z) + bitCount(b.w);
+        result[i] = uintBitsToFloat(uvec4(first, second, left, s));
     }
 }

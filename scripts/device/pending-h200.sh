@@ -95,6 +95,22 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s41e)
+  # Session 41: the kept form (.device/bidir-fin.gz, a build of the commit that keeps the
+  # groups' candidates in one loop of N trips over 16 x 8 blocks) against the pools (base) and
+  # the groups in passes (c41): two rounds interleaved, the Cornell box at 1 s in the second;
+  # pt-nee's 1024 spp; bdpt at 0.1 s in three fresh processes (the ramp).
+  unpack base c41 fin
+  for r in 1 2; do
+    for n in base c41 fin; do
+      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
+    done
+  done
+  echo "== fin registers: $(timeout -k 5 45 .device/bidir-fin info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"
+  echo "== pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-fin bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  echo "== pt-nee 1 s: $(timeout -k 5 60 .device/bidir-fin render $CB --integrator pt-nee --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $(.device/bidir-fin diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+  for r in 1 2 3; do echo "== fin bdpt 0.1 s ($r): $(BIDIR_PASS_LOG=1 timeout -k 5 60 .device/bidir-fin render $CB --integrator bdpt --time 0.1 -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in" | sed -E 's/pass: samples //; s/, slices [0-9]+//; s/ submissions//' | tr '\n' '|')"; done
+  ;;
 s41d)
   # Session 41: the camera kernel's registers (s41b: 72 with the lanes' pools, 96 with every
   # form of the groups). nd (scripts/device/s41-cursor.patch on 1fce64e): where the subgroup's

@@ -151,7 +151,7 @@ pub struct SettingsArgs {
     /// BDPT and VCM with the light vertex cache (bdpt, bdpt:lvc=N, vcm): draw each connection's
     /// light vertex from N uniform candidates by resampling, in proportion to what each would
     /// carry if nothing blocked it; one shadow ray per connection either way. 1 draws it
-    /// uniformly. The candidates are drawn for a block of 8 x 4 pixels at once and the GPU
+    /// uniformly. The candidates are drawn for a block of 16 x 8 pixels at once and the GPU
     /// subgroup's lanes share their reads, so each costs mostly arithmetic: on an NVIDIA H200, 8
     /// candidates took a Cornell box sample 8 % more time (session 38's form, which took them
     /// from the lanes), for 27 % less variance per sample off the light's edge. Which lanes

@@ -253,9 +253,11 @@ gpu_consts! {
     /// (fma(a, b, c), a b + c), the first one rounding, the second two, as the CPU twins of
     /// intersect.glsl assume.
     pub const SAMPLING_FMA: u32 = 11;
-    /// ballot_nth (glsl/common/ballot.glsl) of the ballot `in[i]` (its four words as bits)
-    /// for the ranks 0, c / 3, c / 2 and c - 1 of its c set bits: `out[i]`, the lanes as bits.
-    pub const SAMPLING_BALLOT_NTH: u32 = 12;
+    /// glsl/common/ballot.glsl's cursor on the ballot `in[i]` (its four words as bits) from
+    /// lane s = 37 i mod 129: `out[i]` = (the first and second lanes taken from
+    /// `ballot_from(b, s)` by `ballot_take_lowest`, or 128 where none was left, the lanes
+    /// left after them, s), as bits.
+    pub const SAMPLING_BALLOT_CURSOR: u32 = 12;
     /// The numbers of SAMPLING_RNG before which a group starts: the 3rd, 6th, 7th and 12th
     /// (under Sobol' everywhere dimension 2 to 4, 7 to 8, 9 to 12 and 17 to 20; with ten
     /// Sobol' dimensions 9 to 10, where the hash chain starts).

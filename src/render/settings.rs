@@ -258,10 +258,10 @@ pub struct RenderSettings {
     /// [`default_connection_candidates`] for the integrator and scene. Every count
     /// is unbiased: more candidates lower the variance per sample and cost time
     /// ([`MAX_CONNECTION_CANDIDATES`] at most; docs/results.md, "Connections resampled from
-    /// several candidates"). The candidates belong to a block of 8 x 4 pixels at one sample,
+    /// several candidates"). The candidates belong to a block of 16 x 8 pixels at one sample,
     /// vertex count and connection, drawn by hashes of that group's key, and the subgroup's
-    /// connecting lanes share the reads of all its groups' candidates
-    /// (glsl/common/bdpt_camera_path.glsl):
+    /// connecting lanes share their reads where they can read all its groups' candidates at
+    /// once (glsl/common/bdpt_camera_path.glsl):
     /// which lanes connect together changes nothing, so either form, a crop and a sample range
     /// (at multiples of the slice count) make the whole render's choices. The other joins
     /// ignore it.
@@ -362,5 +362,6 @@ pub fn default_rr_depth(integrator: Integrator) -> u32 {
 /// Most candidates [`RenderSettings::connection_candidates`] takes. Each costs the p_hat of a
 /// connection and a share of a read (glsl/common/bdpt_camera_path.glsl): past 16 the H200
 /// measured no gain at equal time (docs/results.md, "Candidates shared within the subgroup"),
-/// and 32 candidates of one group are one pass of reads on NVIDIA's 32-lane subgroups.
+/// and 32 candidates of one group are as many as NVIDIA's 32-lane subgroups read at once (with
+/// more groups in the subgroup, or fewer lanes connecting, each lane reads its own).
 pub const MAX_CONNECTION_CANDIDATES: u32 = 32;
