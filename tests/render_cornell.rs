@@ -218,8 +218,10 @@ fn bdpt_with_resampled_connections_matches_references() {
 fn bdpt_wavefront_with_shared_candidates_matches_references() {
     // The wavefront camera pass (the GPUs' form; lavapipe runs the megakernels by default)
     // with the default 8 candidates, drawn per block of pixels and read once for the lanes of a
-    // subgroup connecting for one block, by shuffles: a lane that took another's entry wrongly,
-    // or an estimate that counted only the candidates of positive weight (checked), fails here.
+    // subgroup connecting for one block (where they can serve all its blocks), by shuffles: an
+    // estimate that counted only the candidates of positive weight (checked), or a lane that
+    // took an entry twice or missed one, fails here. (A lane that took another group's
+    // candidates would stay unbiased: wavefront_bdpt_gives_the_megakernels_image guards that.)
     let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
     settings.wavefront = Some(true);
     settings.connection_candidates = Some(8);

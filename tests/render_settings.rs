@@ -344,14 +344,19 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
     (specular.materials[short].refractivity, specular.materials[short].ior) = (1.0, 1.5);
     specular.materials[tall].reflectivity = 1.0;
     scene.materials[tall].blend = Some(0.5);
-    for (scene, join, layout, slices, ratio) in [
-        (&scene, Join::Lvc(1), BvhLayout::Cwbvh, 1, 1.0),
-        (&scene, Join::Lvc(1), BvhLayout::Bvh2, 3, 1.0),
-        (&scene, Join::Lvc(3), BvhLayout::Bvh4, 3, 1.0),
-        (&scene, Join::Lvc(1), BvhLayout::Bvh4, 3, 2.0),
-        (&scene, Join::Lvc(2), BvhLayout::Bvh2, 1, 0.5),
-        (&specular, Join::Lvc(1), BvhLayout::Cwbvh, 3, 1.0),
-        (&specular, Join::Lvc(3), BvhLayout::Bvh4, 1, 1.0),
+    // Two and three candidates: lavapipe's 8-lane subgroups share them among the blocks that
+    // compaction puts in one subgroup of the wavefront form (up to 4 and 2 groups), where the
+    // megakernels' subgroups hold one block; eight are shared there only by one block's 8 lanes.
+    for (scene, join, layout, slices, ratio, candidates) in [
+        (&scene, Join::Lvc(1), BvhLayout::Cwbvh, 1, 1.0, 8),
+        (&scene, Join::Lvc(1), BvhLayout::Bvh2, 3, 1.0, 8),
+        (&scene, Join::Lvc(3), BvhLayout::Bvh4, 3, 1.0, 8),
+        (&scene, Join::Lvc(1), BvhLayout::Bvh4, 3, 2.0, 8),
+        (&scene, Join::Lvc(2), BvhLayout::Bvh2, 1, 0.5, 8),
+        (&scene, Join::Lvc(1), BvhLayout::Bvh4, 3, 1.0, 2),
+        (&scene, Join::Lvc(2), BvhLayout::Cwbvh, 3, 0.5, 3),
+        (&specular, Join::Lvc(1), BvhLayout::Cwbvh, 3, 1.0, 8),
+        (&specular, Join::Lvc(3), BvhLayout::Bvh4, 1, 1.0, 8),
     ] {
         let image = |wavefront: bool| {
             let mut settings = RenderSettings::new(Integrator::Bdpt(join));
@@ -359,8 +364,8 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
             settings.bvh_layout = Some(layout);
             settings.sample_slices = slices;
             settings.light_path_ratio = Some(ratio);
-            // Eight shared candidates per connection, on every join (SHARED_CANDIDATES).
-            settings.connection_candidates = Some(8);
+            // Shared candidates per connection, on every join (SHARED_CANDIDATES).
+            settings.connection_candidates = Some(candidates);
             render_values(&ctx, scene, &camera, settings, 6)
         };
         let (mega, wave) = (image(false), image(true));
@@ -371,7 +376,7 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
         assert_eq!(
             differ,
             0,
-            "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel, glass and mirror {glass}: {differ} of {} values differ",
+            "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel, {candidates} candidates, glass and mirror {glass}: {differ} of {} values differ",
             join.name(),
             layout.name(),
             mega.len()

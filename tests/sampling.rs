@@ -697,7 +697,7 @@ fn every_index_below_n_is_drawn_in_proportion() {
 
 /// The cursor of glsl/common/ballot.glsl, by which the resampled connections' lanes find the
 /// lanes that read their group's candidates (connect_resampled): the lanes of a 128-bit ballot
-/// from a start lane, taken lowest first, on ballots of every density, with bits at the words'
+/// from a start lane, taken lowest first until none is left, on ballots of every density, with bits at the words'
 /// edges and starts on every lane (NVIDIA's 32-lane subgroups take a one-word form instead;
 /// the devices here have no wider subgroups, so this is where the wide form is tested).
 #[test]
@@ -733,10 +733,11 @@ fn ballot_cursor_takes_the_lanes_from_a_start_in_order() {
         for (i, (b, v)) in ballots.iter().zip(&out).enumerate() {
             let start = (37 * i as u32) % 129;
             let lanes: Vec<u32> = (start..128u32).filter(|&l| b[(l / 32) as usize] & (1 << (l % 32)) != 0).collect();
-            let want =
-                [lanes.first().copied().unwrap_or(128), lanes.get(1).copied().unwrap_or(128), lanes.len().saturating_sub(2) as u32, start];
+            // Every lane taken in order until none is left, folded as the shader folds them.
+            let order = lanes.iter().fold(0u32, |h, &l| h.wrapping_mul(31).wrapping_add(l + 1));
+            let want = [lanes.first().copied().unwrap_or(128), lanes.get(1).copied().unwrap_or(128), lanes.len() as u32, order];
             let got = [v.x.to_bits(), v.y.to_bits(), v.z.to_bits(), v.w.to_bits()];
-            assert_eq!(got, want, "ballot {b:08x?} from lane {start}: (first, second, left, start)");
+            assert_eq!(got, want, "ballot {b:08x?} from lane {start}: (first, second, taken, order)");
             starts.insert(start);
         }
         assert_eq!(starts.len(), 129, "every start lane, 0 to 128");

@@ -88,13 +88,13 @@ vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, fl
 // same light paths (the same sample slices), from run to run, and in a crop or a sample range
 // of the image (docs/scale-out.md), up to the rounding of the two kernels' arithmetic. The
 // connecting lanes of a subgroup share the reads where they can read all its groups'
-// candidates at once (k groups, k N <= lanes: in the megakernels a 32-lane subgroup lies in one
-// block, in the wavefront form compaction lists the live slots of a few blocks in one
-// subgroup): the lane of rank g N + i reads group g's candidate i (32 bytes), and every lane
+// candidates at once (k groups, k N <= lanes: in the megakernels a 32-lane subgroup covers 8 x 4
+// pixels, in one block where the window's origin is on a multiple of 8; in the wavefront form
+// compaction lists the live slots of a few blocks in one subgroup): the lane of rank g N + i reads group g's candidate i (32 bytes), and every lane
 // takes its group's N by shuffles from the N lanes from rank g N on, in one loop of N trips;
 // elsewhere every lane reads its own N. The loop holds no more than the lanes' pools of session
-// 38 held (72 registers in the wavefront camera kernel on NVIDIA's driver, against 96 for
-// session 39 and 40's passes over the entries; docs/results.md, session 41). A block's pixels
+// 38 held (in session 41 the wavefront camera kernel took 72 registers on NVIDIA's driver with
+// it, 96 with session 39 and 40's passes over the entries; docs/results.md). A block's pixels
 // share their candidates at one sample, so their errors are correlated (at a few samples per
 // pixel the noise may show the 16 x 8 grid faintly), not larger. A shared candidate costs
 // shuffles and arithmetic (docs/integrators.md: the first design's 32-byte read per candidate
@@ -140,7 +140,9 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
         bool same = key == leader_key;
         todo &= ~subgroupBallot(same);
         todo[leader >> 5u] &= ~(1u << (leader & 31u));
-        uint first_reader = subgroupBallotFindLSB(subgroupBallot(rank == found * LVC_CANDIDATES));
+        // (Past the connecting lanes, where the reads do not fit and the cursor goes unused, the
+        // last lane: never an empty ballot.)
+        uint first_reader = subgroupBallotFindLSB(subgroupBallot(rank == min(found * LVC_CANDIDATES, lanes - 1u)));
         group = same ? found : group;
         start = same ? first_reader : start;
         read_key = rank / LVC_CANDIDATES == found ? leader_key : read_key;

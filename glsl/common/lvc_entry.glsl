@@ -9,8 +9,8 @@ layout(constant_id = SPEC_LVC_CANDIDATES) const uint LVC_CANDIDATES = 1u;
 
 // 16-byte words of an entry: (slot, its path's seen / stored as float bits, -, -); where
 // connections are resampled, a second word previews the vertex for the resampling's target, so
-// a candidate is one read of 32 bytes, shared by the lanes that connect with its group
-// (connect_resampled): the first word's z holds the shading normal octahedral in 2 x 12 bits
+// a candidate is one read of 32 bytes, shared by the lanes that connect with its group where
+// the subgroup's lanes can serve all its groups (connect_resampled): the first word's z holds the shading normal octahedral in 2 x 12 bits
 // and the lobe pick in the top 8, its w dVCM + dVC mis(reverse pdf), the light side's MIS sum
 // taken as diffuse; the second word is (pos, luminance of beta f).
 const uint LVC_ENTRY_WORDS = LVC_CANDIDATES > 1u ? LVC_ENTRY_WORDS_RESAMPLED : LVC_ENTRY_WORDS_UNIFORM;

@@ -18,7 +18,8 @@
 //   out[i] = (the index as bits, what is left of u within it).
 // - SAMPLING_FMA: precise fma(a, b, c) and a * b + c for in[i].xyz = (a, b, c), out[i].xy.
 // - SAMPLING_BALLOT_CURSOR: ballot.glsl's cursor over the ballot in[i] (as bits) from lane
-//   s = 37 i mod 129: out[i] = (first and second lane taken or 128, lanes left, s) as bits.
+//   s = 37 i mod 129, taken until empty: out[i] = (first and second lane taken or 128, lanes
+//   taken, their order folded as h 31 + lane + 1) as bits.
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
@@ -162,9 +163,14 @@ void main() {
     } else if (pc.mode == SAMPLING_BALLOT_CURSOR) {
         uint s = (37u * i) % 129u;
         uvec4 b = ballot_from(floatBitsToUint(input_dirs[i]), s);
-        uint first = b != uvec4(0u) ? ballot_take_lowest(b) : 128u;
-        uint second = b != uvec4(0u) ? ballot_take_lowest(b) : 128u;
-        uint left = bitCount(b.x) + bitCount(b.y) + bitCount(b.z) + bitCount(b.w);
-        result[i] = uintBitsToFloat(uvec4(first, second, left, s));
+        uvec4 took = uvec4(128u, 128u, 0u, 0u);
+        for (uint n = 0u; n < 128u && b != uvec4(0u); n++) {
+            uint lane = ballot_take_lowest(b);
+            took.x = n == 0u ? lane : took.x;
+            took.y = n == 1u ? lane : took.y;
+            took.z = n + 1u;
+            took.w = took.w * 31u + lane + 1u;
+        }
+        result[i] = uintBitsToFloat(took);
     }
 }

@@ -152,7 +152,7 @@ pub struct SettingsArgs {
     /// light vertex from N uniform candidates by resampling, in proportion to what each would
     /// carry if nothing blocked it; one shadow ray per connection either way. 1 draws it
     /// uniformly. The candidates are drawn for a block of 16 x 8 pixels at once and the GPU
-    /// subgroup's lanes share their reads, so each costs mostly arithmetic: on an NVIDIA H200, 8
+    /// subgroup's lanes share their reads where they can, so each costs mostly arithmetic: on an NVIDIA H200, 8
     /// candidates took a Cornell box sample 8 % more time (session 38's form, which took them
     /// from the lanes), for 27 % less variance per sample off the light's edge. Which lanes
     /// connect together changes nothing: parts of a render merge exactly. Default: 8 for bdpt in scenes with only diffuse

@@ -254,9 +254,9 @@ gpu_consts! {
     /// intersect.glsl assume.
     pub const SAMPLING_FMA: u32 = 11;
     /// glsl/common/ballot.glsl's cursor on the ballot `in[i]` (its four words as bits) from
-    /// lane s = 37 i mod 129: `out[i]` = (the first and second lanes taken from
-    /// `ballot_from(b, s)` by `ballot_take_lowest`, or 128 where none was left, the lanes
-    /// left after them, s), as bits.
+    /// lane s = 37 i mod 129, `ballot_take_lowest` until `ballot_from(b, s)` is empty: `out[i]`
+    /// = (the first and second lanes taken, or 128, the lanes taken, their order folded as h 31
+    /// + lane + 1), as bits.
     pub const SAMPLING_BALLOT_CURSOR: u32 = 12;
     /// The numbers of SAMPLING_RNG before which a group starts: the 3rd, 6th, 7th and 12th
     /// (under Sobol' everywhere dimension 2 to 4, 7 to 8, 9 to 12 and 17 to 20; with ten

@@ -75,7 +75,8 @@ pub fn queue_invocations(camera_invocations: u64, pixels: u32, ratio: f32, slice
 /// and the inverse of its path's reservoir probability, so a connection reads the entry and the
 /// vertex and not the path's counts too; where connections are resampled from several
 /// candidates, a 16-byte preview of the vertex beside it: 32 bytes a candidate, read once for
-/// the lanes of a subgroup that connect for one block of pixels.
+/// the lanes of a subgroup that connect for one block of pixels where they can serve all its
+/// blocks (else by each lane).
 fn lvc_entry_bytes(connection_candidates: u32) -> u64 {
     16 * if connection_candidates > 1 { abi::LVC_ENTRY_WORDS_RESAMPLED } else { abi::LVC_ENTRY_WORDS_UNIFORM } as u64
 }

@@ -233,11 +233,11 @@ fn resampled_diffuse_bdpt(integrator: Integrator, features: &SceneFeatures) -> b
 
 /// Candidates of each connection to the light vertex cache (`--connection-candidates`) where
 /// the settings do not say: eight for BDPT's default join in scenes with only diffuse surfaces,
-/// one (the uniform draw) otherwise. The candidates' reads are shared within the subgroup
-/// (glsl/common/bdpt_camera_path.glsl), so each costs mostly arithmetic and shuffles: NVIDIA
-/// H200, the Cornell box 256², a BDPT sample 160.6 ms per 1024 spp with 1, 171.3 with 4, 173.2
-/// with 8, 176.2 with 16 (session 38's lane-shared form; the groups of pixels that replaced
-/// it in session 39 are not yet measured there). Where it was measured at equal time (docs/results.md,
+/// one (the uniform draw) otherwise. The candidates' reads are shared within the subgroup where
+/// its lanes can serve all its blocks (glsl/common/bdpt_camera_path.glsl), so each costs mostly
+/// arithmetic and shuffles: NVIDIA H200, the Cornell box 256², a BDPT sample 160.6 ms per 1024
+/// spp with 1, 171.3 with 4, 173.2 with 8, 176.2 with 16 (session 38's lane-shared form; session
+/// 41's groups of pixels in one loop of N trips took an H100 2 % less than that form at 8). Where it was measured at equal time (docs/results.md,
 /// "Candidates shared within the subgroup"): the Cornell box -8 to -14 % MSE, the box whose
 /// light hides above a panel -6 % (-22 % off the light's edge); in scenes with glossy or
 /// glass surfaces, where the target's blindness to visibility and to the lobes costs more,
