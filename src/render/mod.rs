@@ -542,7 +542,7 @@ impl Renderer {
 
     /// Renders samples `first..first + spp` and teaches the pass model how long it took.
     /// With `BIDIR_PASS_LOG` set, each pass prints its size, the model's prediction, the time
-    /// it took and its submissions (each a host round trip) to stderr.
+    /// it took, its submissions (each a host round trip) and the sample slices to stderr.
     pub fn adaptive_pass_at(&mut self, first: u32, spp: u32) -> Result<(), RenderError> {
         let predicted = self.pacing.known().then(|| self.pacing.seconds(spp));
         let submissions = self.ctx.submissions();
