@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Parts of session 41: s41a (run on an H200: s40a's builds, then the passes of a time-budgeted render with their submissions, .device/bidir-c41.gz a build of 0becd4b); s41b, s41c, s41d, s41e (run on H100s: the groups' registers, the pass model with pieces, the groups' candidates in one loop of N trips); s41e not yet run on an H200 (.device/bidir-fin.gz a build of 264f878 or later, .device/bidir-base.gz c821483, .device/bidir-c41.gz 0becd4b): run it there for issue #16's figures.
+# Parts of session 41: s41a (run on an H200: s40a's builds, then the passes of a time-budgeted render with their submissions, .device/bidir-c41.gz a build of 0becd4b); s41b, s41c, s41d, s41e (run on H100s: the groups' registers, the pass model with pieces, the groups' candidates in one loop of N trips); s41e not yet run on an H200 (.device/bidir-fin.gz a build of 264f878 or later, .device/bidir-base.gz c821483, .device/bidir-c41.gz 0becd4b): run it there for issue #16's figures; s42a prepared (a measurement build, .device/bidir-part.gz: partial sharing where k N > lanes).
 # Parts of session 40 (not run: every call after the first start was refused): s40a and s40b (a shorter cut) time the candidate groups' reads shared by the whole subgroup (.device/bidir-cur.gz a build of bf1cb13 or later; .device/bidir-rd1t.gz fb09d7b's group-after-group order; .device/bidir-rd2e.gz scripts/device/s40a-two-sets.patch applied to c111b56) against session 39's reads per group (.device/bidir-new.gz, 3a6688e; with s39f.patch .device/bidir-g16.gz) and the lanes' pools (.device/bidir-base.gz, c821483), on Sponza above all; each built, stripped and gzipped. Session 39's s39c, s39e and s39f ran in session 40's one start (an H100; docs/results.md, "The candidate groups on a GPU").
 # Parts of session 39: s39a (where a BDPT sample's time goes under session 38's defaults, kernel by kernel; fewer light paths with 16 candidates at equal time on the Cornell box and where the light hides); s39b (fewer light paths with 16 and 32 candidates on the Cornell box; run on an H100); s39c (run in session 40) and s39d (not run in sessions 39 and 40): s39c the time-budgeted render's passes (BIDIR_PASS_LOG) for bdpt and pt-nee at 0.1 s; s39d a measurement build, scripts/device/s39d.patch applied to c821483, built, stripped and gzipped as .device/bidir-exp.gz: the camera step draws the light vertex cache's first entry beside the random stream at the vertex's start, so that its read overlaps the BSDF and the light sample; against a build of c821483 (.device/bidir-base.gz) (the patch applies to c821483 only: on the candidate groups that followed, the group's first entry could be read at the vertex's start the same way, its key being known there); s39e (run in session 40: the candidates drawn per group of pixels, with .device/bidir-new.gz a build of 3a6688e or later and .device/bidir-base.gz one of c821483, the lanes' pools, e.g. `git worktree add /tmp/c8 c821483` built with its own CARGO_TARGET_DIR, stripped and gzipped: GPU time, equal time, a seed's image in the wavefront form); s39f (run in session 40: groups of 16 x 8 pixels, a measurement build of scripts/device/s39f.patch as .device/bidir-g16.gz, against 8 x 4).
 # Parts of session 38: s38a (the resampled connection's candidates shared within the subgroup, against the first design: cost per candidate count, equal time on three scenes); s38b (light paths per pixel with 8 shared candidates, the caustic scene, Sponza and the rough box; issue #17's figures); s38c (candidates and light paths per pixel together on the Cornell box and the hidden light's box; cost; a 10 s bias check; run on an H100); s38d (light paths per pixel with 8 candidates where the light hides, two seed pairs; run on an H100); s38e (issue #16's table; run on an H100, to run on the H200); s38f (under the new defaults: whether a seed gives one image in each form; BDPT's megakernels against its wavefront form).
@@ -95,6 +95,23 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s42a)
+  # Prepared in session 41 (not run): a measurement build, scripts/device/s42-partial.patch on
+  # 356f616 (.device/bidir-part.gz): where a subgroup holds more candidate groups than its lanes
+  # can read at once (k N > lanes; Sponza's camera kernel still 16 % above the lanes' pools),
+  # the first floor(lanes / N) groups share their reads and only the others read their own,
+  # where 264f878 makes every lane read its own. The same images (lavapipe, 2/3/4/8
+  # candidates, both forms, RMSE 0.000000). Against .device/bidir-fin.gz (264f878) and the
+  # pools (.device/bidir-base.gz): two rounds interleaved, the Cornell box at 1 s in the
+  # second; registers. Keep it if Sponza gains and the boxes and registers stay.
+  unpack base fin part
+  for r in 1 2; do
+    for n in base fin part; do
+      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
+    done
+  done
+  for n in base fin part; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"; done
+  ;;
 s41e)
   # Session 41: the kept form (.device/bidir-fin.gz, a build of the commit that keeps the
   # groups' candidates in one loop of N trips over 16 x 8 blocks) against the pools (base) and
