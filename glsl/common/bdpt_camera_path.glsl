@@ -113,6 +113,13 @@ uint lvc_group_seed(uvec2 px, uint sample_index, uint seed) {
     return pcg_hash(pcg_hash(block ^ 0x632be5abu) ^ pcg_hash(sample_index ^ pcg_hash(seed ^ 0x9e3779b9u)));
 }
 
+// Candidate i of the group of key `key`: its entry's first word in the light vertex cache's
+// listing of `total` entries. The one definition of a group's candidates, whichever lane reads
+// them (connect_resampled).
+uint lvc_candidate_entry(uint key, uint i, uint total) {
+    return index_below(pcg_hash(key ^ pcg_hash(i + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+}
+
 vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, uint depth, uint join, uint total, vec3 scale, inout Rng rng, inout uvec2 stats) {
     uint key = pcg_hash(lvc_group ^ pcg_hash(depth ^ pcg_hash(join ^ 0x2c1b3c6du)));
     // The connecting lanes (the active ones) and this lane's rank among them.
@@ -152,7 +159,7 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     uvec4 own0 = uvec4(0u);
     uvec4 own1 = uvec4(0u);
     if (fits && rank < groups * LVC_CANDIDATES) {
-        uint e = index_below(pcg_hash(read_key ^ pcg_hash(rank % LVC_CANDIDATES + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+        uint e = lvc_candidate_entry(read_key, rank % LVC_CANDIDATES, total);
         own0 = lvc_index[e];
         own1 = lvc_index[e + 1u];
     }
@@ -177,7 +184,7 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
             w0 = subgroupShuffle(own0, src);
             w1 = subgroupShuffle(own1, src);
         } else {
-            uint e = index_below(pcg_hash(key ^ pcg_hash(i + 0x7f4a7c15u)), total) * LVC_ENTRY_WORDS;
+            uint e = lvc_candidate_entry(key, i, total);
             w0 = lvc_index[e];
             w1 = lvc_index[e + 1u];
         }
