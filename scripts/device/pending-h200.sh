@@ -87,6 +87,15 @@ bdpt_round() {
     esac
   done
 }
+# Two rounds of bdpt_round over the builds .device/bidir-NAME for each NAME given, interleaved,
+# Sponza in both and the Cornell box at 1 s in the second.
+bdpt_rounds() {
+  for r in 1 2; do
+    for n in "$@"; do
+      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
+    done
+  done
+}
 # The trace kernels of the binary $1 as the driver compiled them, archived as $OUT/$2 (read
 # with scripts/device/sass.py).
 shader_cache() {
@@ -97,7 +106,7 @@ shader_cache() {
 case "${1:-speed}" in
 s42a)
   # Prepared in session 41 (not run): a measurement build, scripts/device/s42-partial.patch on
-  # 356f616 (.device/bidir-part.gz): where a subgroup holds more candidate groups than its lanes
+  # the commit that adds lvc_candidate_entry (.device/bidir-part.gz): where a subgroup holds more candidate groups than its lanes
   # can read at once (k N > lanes; Sponza's camera kernel still 16 % above the lanes' pools),
   # the first floor(lanes / N) groups share their reads and only the others read their own,
   # where 264f878 makes every lane read its own. The same images (lavapipe, 2/3/4/8
@@ -105,11 +114,7 @@ s42a)
   # pools (.device/bidir-base.gz): two rounds interleaved, the Cornell box at 1 s in the
   # second; registers. Keep it if Sponza gains and the boxes and registers stay.
   unpack base fin part
-  for r in 1 2; do
-    for n in base fin part; do
-      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
-    done
-  done
+  bdpt_rounds base fin part
   for n in base fin part; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"; done
   ;;
 s41e)
@@ -118,11 +123,7 @@ s41e)
   # the groups in passes (c41): two rounds interleaved, the Cornell box at 1 s in the second;
   # pt-nee's 1024 spp; bdpt at 0.1 s in three fresh processes (the ramp).
   unpack base c41 fin
-  for r in 1 2; do
-    for n in base c41 fin; do
-      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
-    done
-  done
+  bdpt_rounds base c41 fin
   echo "== fin registers: $(timeout -k 5 45 .device/bidir-fin info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"
   echo "== pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-fin bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
   echo "== pt-nee 1 s: $(timeout -k 5 60 .device/bidir-fin render $CB --integrator pt-nee --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $(.device/bidir-fin diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
@@ -138,11 +139,7 @@ s41d)
   # pools (base), the groups (c41) and their 16 x 8 form (g16c); two rounds interleaved, the
   # Cornell box at 1 s in the second; registers.
   unpack base c41 g16c nd nd16
-  for r in 1 2; do
-    for n in base c41 g16c nd nd16; do
-      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
-    done
-  done
+  bdpt_rounds base c41 g16c nd nd16
   echo "== info --kernels"
   for n in base c41 g16c nd nd16; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"; done
   echo "== pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-c41 bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
@@ -167,11 +164,7 @@ s41b)
   # interleaved, the Cornell box at 1 s in the second; every build's camera kernel registers;
   # pt-nee's 1024 spp for the ratio.
   unpack base new c41 fp g16c g16f
-  for r in 1 2; do
-    for n in base new c41 fp g16c g16f; do
-      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
-    done
-  done
+  bdpt_rounds base new c41 fp g16c g16f
   echo "== info --kernels"
   for n in base new c41 fp g16c g16f; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -1 | grep -oE "Register Count [0-9]+")"; done
   echo "== pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-c41 bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
@@ -191,11 +184,7 @@ s41a)
   # processes and at 1 s, pt-nee at 0.1 s, the Cornell box; bdpt's kernel table at 1024 spp.
   # (s40a without g16 and rd1t, whose binaries no longer fit the carry beside c41 and sw.)
   unpack base new rd2e cur
-  for r in 1 2; do
-    for n in base new rd2e cur; do
-      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
-    done
-  done
+  bdpt_rounds base new rd2e cur
   echo "== info --kernels"
   for n in new cur; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -2 | tr '\n' ' ')"; done
   unpack c41
@@ -231,11 +220,7 @@ s40a)
   # second; the camera kernel's registers. (16 x 8 groups over the shared reads: bundle a build
   # of HEAD with s39f.patch as .device/bidir-curg16.gz and add it to the list.)
   unpack base new g16 rd1t rd2e cur
-  for r in 1 2; do
-    for n in base new g16 rd1t rd2e cur; do
-      if [ "$r" = 2 ]; then bdpt_round "$PWD/.device/bidir-$n" sponza time; else bdpt_round "$PWD/.device/bidir-$n" sponza; fi
-    done
-  done
+  bdpt_rounds base new g16 rd1t rd2e cur
   echo "== info --kernels"
   for n in new cur; do echo "$n: $(timeout -k 5 45 ".device/bidir-$n" info --kernels 2>&1 | grep -E "bdpt:lvc=1 / bdpt_camera_wavefront" | head -2 | tr '\n' ' ')"; done
   ;;
