@@ -25,8 +25,18 @@ const UNOPTIMISED: &[&str] = &["abi_layout"];
 /// (glsl/common/traverse_cwbvh.glsl) or the 4-wide one (traverse_bvh4.glsl), which the
 /// renderer binds where they trace faster (`render::default_bvh_layout`). Each gets a
 /// `<STEM>_FORMS: LayoutForms` naming all three.
-const WIDE_VARIANTS: &[&str] =
-    &["pt", "pt_loop", "pt_queue", "shadow_queue", "shadow_queue_splat", "bdpt_light", "bdpt_camera", "first_hit"];
+const WIDE_VARIANTS: &[&str] = &[
+    "pt",
+    "pt_loop",
+    "pt_queue",
+    "shadow_queue",
+    "shadow_queue_splat",
+    "bdpt_light",
+    "bdpt_camera",
+    "bdpt_light_finish",
+    "bdpt_camera_finish",
+    "first_hit",
+];
 
 fn main() {
     let root = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap());

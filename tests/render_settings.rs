@@ -4,7 +4,7 @@
 mod common;
 
 use bidir::bvh::BvhLayout;
-use bidir::render::{Integrator, Join, RenderError, RenderSettings, Renderer};
+use bidir::render::{Integrator, Join, RenderError, RenderSettings, Renderer, WavefrontFinish};
 use bidir::scene::Scene;
 use common::{finish, gpu};
 
@@ -347,7 +347,11 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
     // Two and three candidates: lavapipe's 8-lane subgroups share them among the blocks that
     // compaction puts in one subgroup of the wavefront form (up to 4 and 2 groups), where the
     // megakernels' subgroups hold one block; eight are shared there only by one block's 8 lanes.
-    for (scene, join, layout, slices, ratio, candidates) in [
+    // Each case's wavefront form ends its passes as by default (a finishing launch once few paths
+    // are live), and one other way: launches until none queues a ray, or the finishing launch
+    // after 2 or 4 launches (most paths still live: it runs nearly all of the pass).
+    let others = [WavefrontFinish::Off, WavefrontFinish::After(2), WavefrontFinish::After(4)];
+    for (i, (scene, join, layout, slices, ratio, candidates)) in [
         (&scene, Join::Lvc(1), BvhLayout::Cwbvh, 1, 1.0, 8),
         (&scene, Join::Lvc(1), BvhLayout::Bvh2, 3, 1.0, 8),
         (&scene, Join::Lvc(3), BvhLayout::Bvh4, 3, 1.0, 8),
@@ -357,10 +361,14 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
         (&scene, Join::Lvc(2), BvhLayout::Cwbvh, 3, 0.5, 3),
         (&specular, Join::Lvc(1), BvhLayout::Cwbvh, 3, 1.0, 8),
         (&specular, Join::Lvc(3), BvhLayout::Bvh4, 1, 1.0, 8),
-    ] {
-        let image = |wavefront: bool| {
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let image = |wavefront: bool, finish: WavefrontFinish| {
             let mut settings = RenderSettings::new(Integrator::Bdpt(join));
             settings.wavefront = Some(wavefront);
+            settings.wavefront_finish = finish;
             settings.bvh_layout = Some(layout);
             settings.sample_slices = slices;
             settings.light_path_ratio = Some(ratio);
@@ -368,19 +376,23 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
             settings.connection_candidates = Some(candidates);
             render_values(&ctx, scene, &camera, settings, 6)
         };
-        let (mega, wave) = (image(false), image(true));
+        let mega = image(false, WavefrontFinish::Auto);
         let lit = mega.iter().filter(|&&v| v > 0.0).count();
         assert!(lit * 3 > mega.len(), "{lit} of {} values above 0", mega.len());
-        let differ = values_differing(&wave, &mega, 1e-5);
-        let glass = scene.materials[short].refractivity > 0.0;
-        assert_eq!(
-            differ,
-            0,
-            "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel, {candidates} candidates, glass and mirror {glass}: {differ} of {} values differ",
-            join.name(),
-            layout.name(),
-            mega.len()
-        );
+        for finish in [WavefrontFinish::Auto, others[i % others.len()]] {
+            let wave = image(true, finish);
+            let differ = values_differing(&wave, &mega, 1e-5);
+            let glass = scene.materials[short].refractivity > 0.0;
+            assert_eq!(
+                differ,
+                0,
+                "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel, {candidates} candidates, glass and mirror {glass}, finish {}: {differ} of {} values differ",
+                join.name(),
+                layout.name(),
+                finish.name(),
+                mega.len()
+            );
+        }
     }
     // Joins without a fixed number of connections per vertex have no wavefront form.
     for integrator in [Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(0)), Integrator::Vcm(bidir::render::vcm::VcmMode::FULL)] {

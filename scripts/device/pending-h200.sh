@@ -104,6 +104,53 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s42c)
+  # Session 42: BDPT's passes ended by a finishing launch (--wavefront-finish; .device/bidir-fin2.gz,
+  # the working tree of that change): off (launches until one queues no ray, as before), auto,
+  # and fixed counts of launches; GPU and wall ms of bench render, two rounds interleaved; the
+  # Cornell box at 1 s and 0.1 s; the launches auto chose (BIDIR_WF_LOG).
+  unpack fin2
+  F=$PWD/.device/bidir-fin2
+  for r in 1 2; do
+    for f in off auto 6 8 10 12 14 16; do
+      echo "== cornell finish $f: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 --wavefront-finish $f 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    done
+    for f in off auto 8 12; do
+      echo "== hidden finish $f: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 --wavefront-finish $f 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    done
+    for f in off auto; do
+      echo "== sponza 8 finish $f: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 --wavefront-finish $f 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+      echo "== cornell 1 s finish $f: $(timeout -k 5 60 "$F" render $CB --integrator bdpt --time 1 --wavefront-finish $f -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+    echo "== pt-nee 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+  done
+  for f in off auto off auto; do echo "== bdpt 0.1 s finish $f: $(BIDIR_PASS_LOG=1 timeout -k 5 60 "$F" render $CB --integrator bdpt --time 0.1 --wavefront-finish $f -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in" | sed -E 's/pass: samples //; s/, slices [0-9]+//; s/ submissions//' | tr '\n' '|')"; done
+  echo "== auto's launches (Cornell, 256 spp)"
+  BIDIR_WF_LOG=1 timeout -k 5 60 "$F" render $CB --integrator bdpt --spp 256 -o /tmp/q.exr 2>&1 | grep -E "wavefront batch|spp in" | cut -c1-400
+  echo "== kernel table, auto"
+  timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -A14 "^kernel"
+  echo "== registers"; timeout -k 5 45 "$F" info --kernels 2>&1 | grep -E "bdpt_(camera|light)_(wavefront|finish)" | cut -c1-240 | head -8
+  ;;
+s42b)
+  # Session 42: what BDPT's pass tails cost. .device/bidir-log.gz (9de66d8 with BIDIR_WF_LOG:
+  # each batch prints the rays each launch queued). bench render at --max-depth 8 / 12 / 16
+  # against unbounded (0): the time the long paths' launches take beyond their work (an upper
+  # bound on what finishing them in one launch could save); the launches of one iteration;
+  # the kernel table (dispatches per kernel).
+  unpack log
+  L=$PWD/.device/bidir-log
+  for r in 1 2; do
+    for md in 0 8 12 16; do
+      echo "== cornell bdpt max-depth $md: $(timeout -k 5 60 "$L" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 --max-depth $md 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+      echo "== hidden bdpt max-depth $md: $(timeout -k 5 60 "$L" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 --max-depth $md 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+    echo "== cornell pt-nee: $(timeout -k 5 60 "$L" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  done
+  echo "== one iteration's launches (Cornell, 128 spp)"
+  BIDIR_WF_LOG=1 timeout -k 5 60 "$L" render $CB --integrator bdpt --spp 128 -o /tmp/q.exr 2>&1 | grep -E "wavefront batch|spp in" | cut -c1-1500
+  echo "== kernel table"
+  timeout -k 5 60 "$L" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | tail -25
+  ;;
 s42a)
   # Prepared in session 41 (not run): a measurement build, scripts/device/s42-partial.patch on
   # the commit that adds lvc_candidate_entry (.device/bidir-part.gz): where a subgroup holds more candidate groups than its lanes

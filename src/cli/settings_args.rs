@@ -127,6 +127,13 @@ pub struct SettingsArgs {
     /// faster (`render::default_wavefront`), off on CPU devices such as lavapipe.
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub wavefront: String,
+    /// bdpt's wavefront passes: after N launches (an even count), or (auto) after as many as
+    /// the last pass took to leave fewer paths live than a quarter of what the trace kernels
+    /// run at once, one launch runs every path still live to its end, tracing its own rays,
+    /// instead of a launch per bounce down the pass's long tail; off: launches until one
+    /// queues no ray. The image is the same up to the order of float sums.
+    #[arg(long, default_value = "auto", value_name = "auto|off|N")]
+    pub wavefront_finish: String,
     /// Queue the shadow rays of pt-nee's kernel and of BDPT's (or VCM's) camera and light
     /// kernels for a kernel of their own that traces them after it, SLOTS per thread; pt-nee
     /// launches its kernel once per SAMPLES samples per thread (default SLOTS / 8). A thread
@@ -222,6 +229,7 @@ impl SettingsArgs {
             "off" => Some(false),
             other => bail!("--wavefront {other}: auto | on | off"),
         };
+        s.wavefront_finish = self.wavefront_finish.parse().map_err(anyhow::Error::msg)?;
         s.direct_light_tracing = self.direct_light_tracing;
         s.mis = match self.mis.as_str() {
             "auto" => None,

@@ -1,4 +1,4 @@
-use super::bdpt_wavefront::{Pass, WavefrontPasses};
+use super::bdpt_wavefront::{Batch, Pass, WavefrontPasses};
 use super::integrator::{IntegratorKernels, PassInputs};
 use super::{film::Film, gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::LightVertex, kernels};
@@ -427,14 +427,14 @@ impl Bdpt {
             });
             recorded.map(|r| (r, launches))
         };
-        // Batches after the first until a launch queues no ray.
-        let finish = |pass, push: &BdptPush, mut launches| -> std::result::Result<(), RenderError> {
+        // Batches after the first until the pass is over.
+        let finish = |pass, push: &BdptPush, mut batch: Batch| -> std::result::Result<(), RenderError> {
             let mut done = 0;
-            while let Some(next) = w.after_batch(pass, done, launches)? {
-                done += launches;
-                launches = next;
+            while let Some(next) = w.after_batch(pass, done, batch)? {
+                done += batch.launches;
+                batch = next;
                 let name = format!("bdpt wavefront {pass:?} pass");
-                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, slots(pass, push), launches, false))?;
+                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, slots(pass, push), batch, false))?;
             }
             Ok(())
         };

@@ -6,12 +6,20 @@
 //! a loop of launches (path kernel, closest-hit trace of the segments, any-hit trace of the
 //! shadow rays), recorded in batches, each ending in a read of how many rays each launch
 //! queued, until a launch queues none. The two passes share their slots' storage.
+//!
+//! A pass's tail is long: on the Cornell box at 256 x 256 and 128 samples a pixel, 8 M camera
+//! paths are down to 64 K after 10 launches and the last ends after 38, each launch three
+//! dispatches behind barriers. So by default a pass runs `finish_at` launches and then one of
+//! its finishing kernel (`bdpt_*_finish.comp`), in which every path still live runs to its end,
+//! tracing its own rays; the pass is then one submission. `finish_at` follows the last pass of
+//! its kind: the launch after the first that left fewer paths live than a quarter of what the
+//! trace kernels run at once (`--wavefront-finish`: `off`, or a fixed count of launches).
 
 use std::cell::Cell;
 
 use super::bdpt::Join;
 use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues, LIVE_SLOT_BYTES};
-use super::{gpu_scene::GpuScene, RenderError};
+use super::{gpu_scene::GpuScene, settings::WavefrontFinish as Finish, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::BdptWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Recorder, Result, Spec};
 
@@ -50,11 +58,35 @@ pub enum Pass {
     Camera,
 }
 
+/// The launches a batch records, and whether the finishing launch follows them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Batch {
+    pub launches: u32,
+    pub finish: bool,
+}
+
+/// Launches before a pass's finishing one, from the rays each launch of the last pass of its
+/// kind queued (`queued`, its first `finish_at` launches): the launch after the first that left
+/// fewer than `live` paths (segments queued), rounded up to an even count, at least 2; where none
+/// did, four more than before.
+pub fn next_finish_at(queued: &[[u32; 2]], finish_at: u32, live: u32) -> u32 {
+    let f = match queued.iter().position(|c| c[0] < live) {
+        Some(l) => l as u32 + 1,
+        None => finish_at + 4,
+    };
+    ((f.max(2) + 1) & !1).min(abi::WF_MAX_BATCH - 2)
+}
+
 /// The wavefront passes' kernels and the per-slot storage they share, for iterations of up to
 /// `slots` slots (light paths, or pixels of the window times camera samples).
 pub struct WavefrontPasses {
     light: Kernel,
     camera: Kernel,
+    /// The finishing launches' kernels (None where `finish` is Off).
+    finishers: Option<[Kernel; 2]>,
+    finish: Finish,
+    /// Per pass: launches before the finishing one.
+    finish_at: [Cell<u32>; 2],
     queues: Queues,
     state: Buffer,
     contrib: Buffer,
@@ -93,10 +125,25 @@ impl WavefrontPasses {
         let specs = [specs, &[queues.trace_groups_spec()]].concat();
         let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, &specs)?;
         let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, &specs)?;
+        let finish = settings.wavefront_finish;
+        let finishers = match finish {
+            Finish::Off => None,
+            _ => Some([
+                ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FINISH_FORMS), &specs)?,
+                ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FINISH_FORMS), &specs)?,
+            ]),
+        };
+        let first_finish = match finish {
+            Finish::After(n) => n,
+            _ => 10,
+        };
         let buffer = |name: &str, b: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, b, bytes);
         Ok(WavefrontPasses {
             light,
             camera,
+            finishers,
+            finish,
+            finish_at: [Cell::new(first_finish), Cell::new(first_finish)],
             queues,
             state: buffer("state", STATE_BYTES)?,
             // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
@@ -110,6 +157,7 @@ impl WavefrontPasses {
 
     pub fn kernels(&self) -> Vec<&Kernel> {
         let mut k = vec![&self.light, &self.camera];
+        k.extend(self.finishers.iter().flatten());
         k.extend(self.queues.kernels());
         k
     }
@@ -145,15 +193,20 @@ impl WavefrontPasses {
         }
     }
 
-    /// Launches of the first batch of `pass`: as many as the last such pass took, and two more.
-    pub fn first_batch(&self, pass: Pass) -> u32 {
-        even_batch(self.launches[pass as usize].get() + 2)
+    /// The first batch of `pass`: `finish_at` launches and the finishing one, or (Finish::Off)
+    /// as many launches as the last such pass took, and two more.
+    pub fn first_batch(&self, pass: Pass) -> Batch {
+        match self.finishers {
+            Some(_) => Batch { launches: self.finish_at[pass as usize].get(), finish: true },
+            None => Batch { launches: even_batch(self.launches[pass as usize].get() + 2), finish: false },
+        }
     }
 
-    /// Records a batch of `launches` launches of `pass` over `slots` slots, each followed by the
-    /// two traces, and the read-back of their ray counts. `start`: the batch begins the pass
-    /// (its first launch starts every slot's path; `first_batch` launches); every other launch
-    /// runs the slots the launch before listed (`Queues::record_batch`).
+    /// Records `batch` of `pass` over `slots` slots: its launches, each followed by the two
+    /// traces, then its finishing launch if it has one, and the read-back of their ray counts.
+    /// `start`: the batch begins the pass (its first launch starts every slot's path;
+    /// `first_batch`); every other launch runs the slots the launch before listed
+    /// (`Queues::record_batch`).
     #[allow(clippy::too_many_arguments)]
     pub fn record_batch(
         &self,
@@ -163,26 +216,42 @@ impl WavefrontPasses {
         geometry: &[Bind],
         push: &BdptPush,
         slots: u32,
-        launches: u32,
+        batch: Batch,
         start: bool,
     ) -> Result<()> {
         let kernel = self.kernel(pass);
-        self.queues.record_batch(rec, geometry, slots, launches, start, |rec, word| {
+        self.queues.record_batch(rec, geometry, slots, batch.launches, start, |rec, word| {
             let push = wavefront_push(push, word);
             self.queues.dispatch_path(rec, kernel, binds, bytemuck::bytes_of(&push), slots, word)
-        })
+        })?;
+        if batch.finish {
+            let finisher = &self.finishers.as_ref().expect("a finishing batch has its kernels")[pass as usize];
+            // Launch `launches` of the batch, over the slots the last one listed.
+            let word = batch.launches;
+            let push = wavefront_push(push, word);
+            self.queues.dispatch_path(rec, finisher, binds, bytemuck::bytes_of(&push), slots, word)?;
+        }
+        Ok(())
     }
 
-    /// After a batch of `launches` of `pass` (with `done` before it): None where a launch
-    /// queued no ray (the pass is over; its length is remembered for the next), else the
-    /// launches of the next batch (a quarter of those so far, at least 4).
-    pub fn after_batch(&self, pass: Pass, done: u32, launches: u32) -> Result<Option<u32>> {
-        Ok(match self.queues.first_idle_launch(launches)? {
+    /// After `batch` of `pass` (with `done` launches before it): None where the pass is over (a
+    /// launch queued no ray, or the batch finished it; what it took is remembered for the
+    /// next), else the next batch (a quarter of the launches so far, at least 4).
+    pub fn after_batch(&self, pass: Pass, done: u32, batch: Batch) -> Result<Option<Batch>> {
+        let queued = self.queues.queued(batch.launches)?;
+        if batch.finish {
+            if self.finish == Finish::Auto {
+                let live = (self.queues.resident_rays() / 4).max(1);
+                self.finish_at[pass as usize].set(next_finish_at(&queued, batch.launches, live));
+            }
+            return Ok(None);
+        }
+        Ok(match Queues::first_idle_launch(&queued) {
             Some(last) => {
                 self.launches[pass as usize].set(done + last + 1);
                 None
             }
-            None => Some(even_batch((done + launches) / 4)),
+            None => Some(Batch { launches: even_batch((done + batch.launches) / 4), finish: false }),
         })
     }
 }
@@ -210,6 +279,19 @@ fn wavefront_push(p: &BdptPush, launch: u32) -> BdptWavefrontPush {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_pass_finishes_after_the_launch_that_left_few_paths() {
+        let q = [[1000, 0], [800, 900], [300, 400], [90, 100], [40, 50], [10, 9]];
+        // Launch 3 left 90 < 100 paths: finish at launch 4 (launches 0..=3 before it).
+        assert_eq!(next_finish_at(&q, 6, 100), 4);
+        // Odd counts round up, and at least 2 launches run.
+        assert_eq!(next_finish_at(&q, 6, 500), 4);
+        assert_eq!(next_finish_at(&q, 6, 2000), 2);
+        // None fell below: four more.
+        assert_eq!(next_finish_at(&q, 6, 5), 10);
+        assert_eq!(next_finish_at(&q, abi::WF_MAX_BATCH - 2, 5), abi::WF_MAX_BATCH - 2);
+    }
 
     #[test]
     fn only_fixed_cache_joins_run_as_a_wavefront() {

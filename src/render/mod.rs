@@ -43,7 +43,7 @@ pub use gpu_scene::GpuScene;
 pub use integrator::{IntegratorKernels, PassInputs};
 pub use pacing::PassModel;
 pub use pt::PathTracer;
-pub use settings::{default_rr_depth, Integrator, Mis, RenderSettings, Sampler, MAX_CONNECTION_CANDIDATES};
+pub use settings::{default_rr_depth, Integrator, Mis, RenderSettings, Sampler, WavefrontFinish, MAX_CONNECTION_CANDIDATES};
 pub use shadow_queue::ShadowQueue;
 pub use stop::{request_stop, stop_requested};
 pub use tonemap::{Tonemap, TonemapSettings};

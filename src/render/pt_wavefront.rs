@@ -141,7 +141,7 @@ impl IntegratorKernels for WavefrontPathTracer {
                 })
             })?;
             // The first launch that queued no ray ends the pass (the rest found nothing to do).
-            match self.queues.first_idle_launch(launches)? {
+            match Queues::first_idle_launch(&self.queues.queued(launches)?) {
                 Some(last) => {
                     done += last + 1;
                     break;

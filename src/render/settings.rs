@@ -175,6 +175,59 @@ mod sampler_tests {
             assert!(bad.parse::<Sampler>().is_err(), "{bad} was accepted");
         }
     }
+
+    /// `--wavefront-finish` reads back what it names and refuses odd, too small or too large
+    /// counts (a batch's launches are even, and the finishing launch needs a dispatch entry).
+    #[test]
+    fn wavefront_finishes_read_back() {
+        use super::WavefrontFinish;
+        let most = abi::WF_MAX_BATCH - 2;
+        for f in [WavefrontFinish::Off, WavefrontFinish::Auto, WavefrontFinish::After(2), WavefrontFinish::After(most)] {
+            assert_eq!(f.name().parse::<WavefrontFinish>(), Ok(f), "{}", f.name());
+        }
+        for bad in ["0", "1", "3", &(most + 2).to_string(), "on", ""] {
+            assert!(bad.parse::<WavefrontFinish>().is_err(), "{bad} was accepted");
+        }
+    }
+}
+
+/// How BDPT's wavefront passes end (`--wavefront-finish`; src/render/bdpt_wavefront.rs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WavefrontFinish {
+    /// Launches until one queues no ray.
+    Off,
+    /// A finishing launch, in which every path still live runs to its end tracing its own
+    /// rays, after this many launches (even, from 2 to `WF_MAX_BATCH - 2`).
+    After(u32),
+    /// The finishing launch after as many launches as the last pass of the kind took to leave
+    /// fewer paths live than a quarter of what the trace kernels run at once.
+    Auto,
+}
+
+impl WavefrontFinish {
+    /// The name `from_str` reads back.
+    pub fn name(self) -> String {
+        match self {
+            WavefrontFinish::Off => "off".into(),
+            WavefrontFinish::After(n) => n.to_string(),
+            WavefrontFinish::Auto => "auto".into(),
+        }
+    }
+}
+
+impl std::str::FromStr for WavefrontFinish {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let most = crate::gpu::abi::WF_MAX_BATCH - 2;
+        match s {
+            "off" => Ok(WavefrontFinish::Off),
+            "auto" => Ok(WavefrontFinish::Auto),
+            _ => match s.parse::<u32>() {
+                Ok(n) if (2..=most).contains(&n) && n % 2 == 0 => Ok(WavefrontFinish::After(n)),
+                _ => Err(format!("--wavefront-finish {s}: auto | off | an even count of launches from 2 to {most}")),
+            },
+        }
+    }
 }
 
 /// How to render.
@@ -273,6 +326,9 @@ pub struct RenderSettings {
     /// without a wavefront form is an error. Either gives the same image (up to the order of
     /// float sums).
     pub wavefront: Option<bool>,
+    /// BDPT's wavefront passes: how each ends (`--wavefront-finish`). Every way gives the same
+    /// image (up to the order of float sums and ties between equally near triangles).
+    pub wavefront_finish: WavefrontFinish,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
     pub count_traversal: bool,
@@ -343,6 +399,7 @@ impl RenderSettings {
             mis: None,
             connection_candidates: None,
             wavefront: None,
+            wavefront_finish: WavefrontFinish::Auto,
             count_traversal: false,
         }
     }

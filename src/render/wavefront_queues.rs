@@ -246,12 +246,28 @@ impl Queues {
         t.record_trace_queued(rec, geometry, rays, hits, stats, slots * self.shadow, shadow, true, sized(true))
     }
 
-    /// After a batch of `launches`: the first launch that queued no ray (the pass is over after
-    /// it), if one did.
-    pub fn first_idle_launch(&self, launches: u32) -> Result<Option<u32>> {
+    /// After a batch of `launches`: the segments and shadow rays each launch queued. With
+    /// `BIDIR_WF_LOG` set, prints them to stderr.
+    pub fn queued(&self, launches: u32) -> Result<Vec<[u32; 2]>> {
         let counts: Vec<u32> = self.counts_read.read()?;
-        let queued = counts.chunks(2).take(launches as usize).map(|c| c[0] + c[1]);
-        Ok(queued.enumerate().find(|&(_, n)| n == 0).map(|(l, _)| l as u32))
+        let queued: Vec<[u32; 2]> = counts.chunks(2).take(launches as usize).map(|c| [c[0], c[1]]).collect();
+        if std::env::var_os("BIDIR_WF_LOG").is_some() {
+            let rays: Vec<String> = queued.iter().map(|c| format!("{}+{}", c[0], c[1])).collect();
+            eprintln!("wavefront batch of {launches} launches, segments+shadow rays queued: {}", rays.join(" "));
+        }
+        Ok(queued)
+    }
+
+    /// The first of `queued`'s launches that queued no ray (the pass is over after it), if one
+    /// did.
+    pub fn first_idle_launch(queued: &[[u32; 2]]) -> Option<u32> {
+        queued.iter().position(|c| c[0] + c[1] == 0).map(|l| l as u32)
+    }
+
+    /// Rays the trace kernels run at once: a persistent kernel's resident invocations (else
+    /// the queues' slots).
+    pub fn resident_rays(&self) -> u32 {
+        self.tracer.queued_groups(self.slots).saturating_mul(abi::TRACE_WG_SIZE).min(self.slots)
     }
 }
 

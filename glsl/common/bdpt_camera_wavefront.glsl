@@ -1,0 +1,261 @@
+// The body of BDPT's camera pass as a wavefront (glsl/kernels/bdpt_camera_wavefront.comp, and
+// with BDPT_WF_FINISH defined bdpt_camera_finish.comp; `--wavefront` with bdpt and the light
+// vertex cache; after
+// Laine, Karras & Aila 2013, as pt_wavefront.comp does for the path tracers): the megakernel's
+// camera subpaths (glsl/common/bdpt_camera_step.glsl, bdpt_camera_path.glsl) with their
+// segments, light samples' shadow rays and connections' shadow rays traced by the trace
+// kernels (trace_kernel.glsl) between its launches.
+//
+// One slot per megakernel invocation (pixel of the window and camera sample of the iteration),
+// with its random numbers. Each launch takes up what the trace kernels found for the slot's
+// last rays: the contribution of each of its shadow rays that is clear, then the scattering at
+// its segment's hit (one step of the megakernel's loop), which leaves the next segment and up to
+// BDPT_WF_SHADOW_RAYS shadow rays; or, in the first launch of a pass, the start of the slot's
+// camera sample. The host runs launch, closest-hit trace, any-hit trace, launch, ... until a
+// launch queues no ray (src/render/bdpt_wavefront.rs); each launch after a pass's first runs
+// only the slots that queued a ray in the launch before (wf_active.glsl). The rays are packed at the front of
+// their queues (counted in BIND_WF_COUNTS, where the trace kernels read how many there are);
+// a shadow ray's contribution waits in BIND_WF_CONTRIB at the ray's place (in the half of
+// the buffer of the launch's parity). Sums go to the
+// pixel (or its slice) as they arise; a NaN or Inf contribution is dropped and counted.
+//
+// With BDPT_WF_FINISH (the pass's finishing launch, src/render/bdpt_wavefront.rs): each listed
+// slot runs the rest of its path in this launch, tracing each step's shadow rays and next
+// segment itself (trace_ray over the BVH the trace kernels traverse, as the megakernel does),
+// so that a pass's long tail of launches over a few live paths becomes one launch. It queues
+// no ray and sizes no launch after it. The sums are the same terms as the launches' would be.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_shuffle : require
+#define BDPT_WAVEFRONT
+#include "bidir_abi.glsl"
+#include "ray.glsl"
+#include "rng.glsl"
+#include "scene.glsl"
+#include "bsdf.glsl"
+#include "lights.glsl"
+#include "emission.glsl"
+#include "env.glsl"
+#include "punctual.glsl"
+#include "volume.glsl"
+#include "bdpt.glsl"
+#include "vcm.glsl"
+#include "wf_active.glsl"
+
+layout(local_size_x = WF_WG_SIZE) in;
+layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
+layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
+layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
+// The light vertex cache: stored slots of every light path, densely listed.
+layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (lvc_entry.glsl)
+layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
+layout(std430, binding = BIND_PT_SUSPENDED) buffer State { BdptCameraState state[]; };
+layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
+layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
+layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
+layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
+layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
+layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec4 wf_index[]; };
+layout(push_constant) uniform Push { BdptWavefrontPush pc; };
+#define BDPT_JOIN JOIN_LVC
+
+// The shadow rays of this launch's scattering and what each adds if it is clear.
+ShadowRay wf_shadow[BDPT_WF_SHADOW_RAYS];
+vec3 wf_shadow_contrib[BDPT_WF_SHADOW_RAYS];
+uint wf_shadow_count = 0u;
+
+// A shadow ray for the any-hit trace kernel that runs after this launch; one too short to
+// hold an occluder counts as clear now, as shadow_ray_clear has it.
+bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
+    if (!(r.tmax > 0.0)) {
+        return true;
+    }
+    wf_shadow[wf_shadow_count] = r;
+    wf_shadow_contrib[wf_shadow_count] = contrib;
+    wf_shadow_count++;
+    return false;
+}
+
+#include "bdpt_camera_path.glsl"
+
+// A ray for the trace kernels from `o` along `d` up to `tmax`; its tmin slot carries the
+// path's stochastic-opacity seed where the scene has alpha (SPEC_RAY_SEED), else 0.
+GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
+    return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
+}
+
+// A finite contribution adds to `sum`; a NaN or Inf one is counted in `bad`.
+void add_finite(inout vec3 sum, inout uint bad, vec3 c) {
+    if (any(isnan(c)) || any(isinf(c))) {
+        bad++;
+    } else {
+        sum += c;
+    }
+}
+
+// One launch's work for this invocation's slot, if it has one.
+void run_slot() {
+    // Slot -> (slice, pixel of the camera's window), as bdpt_camera.comp maps its invocations.
+    uint tiles = tiled_count(pc.camera.window_size);
+    uint samples = max(pc.camera_samples, 1u);
+    uint g;
+    if (!wf_slot(pc.launch, tiles * samples, g)) {
+        return; // past the slots, or not listed
+    }
+    uint slice = g / tiles;
+    bool valid;
+    uvec2 wp = tiled_pixel(g % tiles, pc.camera.window_size, valid);
+    if (!valid) {
+        return;
+    }
+    // The pass's first launch starts every slot's path: nothing to read.
+    bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
+    uint launch = wf_launch(pc.launch);
+    BdptCameraState st = BdptCameraState(uvec4(0u), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
+    uvec4 queued = uvec4(0u); // where the last launch queued its rays
+    if (!fresh) {
+        st = state[g];
+        queued = wf_index[g];
+    }
+    uint status = st.rng_status.w;
+    if (status == PT_DONE && queued.z == 0u) {
+        return; // nothing left, nothing pending
+    }
+    uint pixels = pc.camera.window_size.x * pc.camera.window_size.y;
+    uint pixel = wp.y * pc.camera.window_size.x + wp.x;
+    uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
+    uint image_pixel = px.y * pc.camera.size.x + px.x;
+    lvc_group = lvc_group_seed(px, pc.sample_base + slice, pc.seed);
+    vec3 sum = vec3(0.0);
+    uint bad = 0u;
+    float count = 0.0;
+
+    // The last launch's shadow rays: what each that is clear adds. The contributions
+    // alternate between the buffer's halves from launch to launch (batches have even lengths),
+    // so that no slot overwrites one another slot has yet to read.
+    uint half_len = uint(wf_contrib.length()) / 2u;
+    uint read_half = (launch & 1u) == 0u ? half_len : 0u;
+    uint write_half = half_len - read_half;
+    for (uint i = 0u; i < queued.z; i++) {
+        if (wf_shadow_hits[queued.y + i].tri == NO_HIT) {
+            add_finite(sum, bad, wf_contrib[read_half + queued.y + i].rgb);
+        }
+    }
+
+    // The camera subpath: one step at what its segment found (the megakernel's loop body,
+    // bdpt_camera_step.glsl, run once), or its start.
+    Rng rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
+    blend_seed = st.sigma_seed.w;
+    vec3 o = uintBitsToFloat(st.o_depth.xyz);
+    uint depth = st.o_depth.w;
+    vec3 d = st.d_dvcm.xyz;
+    float d_vcm = st.d_dvcm.w;
+    vec3 beta = st.beta_dvc.xyz;
+    float d_vc = st.beta_dvc.w;
+    vec3 sigma_near = uintBitsToFloat(st.sigma_seed.xyz);
+    // BDPT's values of VCM's terms (vcm.glsl: no merging) and of the megakernel joins'.
+    float d_vc_merge = 0.0;
+    float d_vm = 0.0;
+    bool merge_pending = false;
+    VcmFactors k = VcmFactors(0.0, 0.0);
+    float vm_light = 0.0;
+    uvec2 lc = uvec2(0u);
+    uint base = 0u;
+    bool alive = false;
+    vec3 radiance = vec3(0.0);
+    uvec2 stats = uvec2(0u);
+    if (status == PT_SUSPENDED) {
+        GpuHit gh = wf_hits[queued.x];
+        TraceHit h = TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v));
+#ifdef BDPT_WF_FINISH
+        for (;;) {
+#endif
+        do {
+#include "bdpt_camera_step.glsl"
+            alive = true;
+            depth++;
+        } while (false);
+#ifdef BDPT_WF_FINISH
+            // The step's sums and its shadow rays, each clear one's contribution on its own
+            // (as the next launch would add them), then the next segment.
+            add_finite(sum, bad, radiance);
+            radiance = vec3(0.0);
+            for (uint i = 0u; i < wf_shadow_count; i++) {
+                if (shadow_ray_clear(wf_shadow[i], stats)) {
+                    add_finite(sum, bad, wf_shadow_contrib[i]);
+                }
+            }
+            wf_shadow_count = 0u;
+            if (!alive) {
+                break;
+            }
+            alive = false;
+            h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
+        }
+#endif
+    } else if (status == PT_FRESH) {
+        // The megakernel's start (bdpt_camera.comp: main and camera_path).
+        rng = rng_init(image_pixel, pc.sample_base + slice, pc.seed);
+        vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
+        if (HAS_ALPHA != 0u) {
+            blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
+        }
+        o = pc.camera.eye.xyz;
+        d = camera_direction(pc.camera, xy);
+        beta = vec3(1.0);
+        d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
+        d_vc = 0.0;
+        sigma_near = vec3(0.0);
+        depth = 1u;
+        alive = true;
+        count = 1.0;
+    }
+    add_finite(sum, bad, radiance);
+
+    // The rays, packed at the front of the queues (a subgroup's together, in lane order).
+    uvec4 ext_lanes = subgroupBallot(alive);
+    uint ext_count = subgroupBallotBitCount(ext_lanes);
+    uint shadow_total = subgroupAdd(wf_shadow_count);
+    uvec2 queue_base = uvec2(0u);
+    if (subgroupElect()) {
+        queue_base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * launch], ext_count) : 0u;
+        queue_base.y = shadow_total > 0u ? atomicAdd(wf_counts[2u * launch + 1u], shadow_total) : 0u;
+    }
+    queue_base = subgroupBroadcastFirst(queue_base);
+    uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count), wf_shadow_count, 0u);
+    if (alive) {
+        state[g] = BdptCameraState(uvec4(floatBitsToUint(o), depth), vec4(d, d_vcm), vec4(beta, d_vc), uvec4(floatBitsToUint(sigma_near), blend_seed),
+            uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
+    } else if (status != PT_DONE) {
+        state[g].rng_status.w = PT_DONE;
+    }
+    for (uint i = 0u; i < wf_shadow_count; i++) {
+        wf_shadow_rays[next.y + i] = wavefront_ray(wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);
+        wf_contrib[write_half + next.y + i] = vec4(wf_shadow_contrib[i], 0.0);
+    }
+    if (alive || wf_shadow_count > 0u || queued.z > 0u) {
+        wf_index[g] = next;
+    }
+    wf_list_next(pc.launch, g, alive || wf_shadow_count > 0u);
+
+    if (count > 0.0 || any(notEqual(sum, vec3(0.0)))) {
+        if (samples == 1u) {
+            accum[pixel] += vec4(sum, count);
+        } else {
+            slices_out[slice * pixels + pixel] += vec4(sum, count);
+        }
+    }
+    if (bad > 0u) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], bad);
+    }
+}
+
+void main() {
+    run_slot();
+#ifndef BDPT_WF_FINISH
+    wf_end_launch(pc.launch);
+#endif
+}

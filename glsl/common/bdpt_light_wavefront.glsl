@@ -1,0 +1,230 @@
+// The body of BDPT's light pass as a wavefront (glsl/kernels/bdpt_light_wavefront.comp, and
+// with BDPT_WF_FINISH defined bdpt_light_finish.comp, whose launch runs each listed path to its
+// end, tracing its joins and segments itself, as bdpt_camera_wavefront.glsl says; `--wavefront`
+// with bdpt and the light vertex cache; after
+// Laine, Karras & Aila 2013, as bdpt_camera_wavefront.glsl does for the camera pass): the light
+// megakernel's subpaths (glsl/common/bdpt_light_path.glsl, bdpt_light_step.glsl) with their
+// segments and their joins' shadow rays traced by the trace kernels (trace_kernel.glsl) between
+// its launches.
+//
+// One slot per light path of the iteration, with its random numbers. Each launch takes up what
+// the trace kernels found for the slot's last rays: the join to the eye, splatted where its
+// shadow ray is clear, then the step at its segment's hit (one pass of the megakernel's loop:
+// the vertex offered to the store, its join, the next segment); or, in the first launch of a
+// pass, the path's start at a light. The host runs launch, closest-hit trace, any-hit trace,
+// launch, ... until a launch queues no ray (src/render/bdpt_wavefront.rs); each launch after
+// the first runs only the slots that queued a ray in the launch before (wf_active.glsl), which
+// matters here: light paths have long tails. A path that ends writes its stored and seen
+// counts for the light vertex cache, as the megakernel does. The join's contribution waits in
+// BIND_WF_CONTRIB at its ray's place, in the half of the buffer of the launch's parity, its
+// film pixel in the slot's BIND_WF_INDEX entry (w); a NaN or Inf contribution is dropped and
+// counted.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_EXT_shader_atomic_float : require
+#include "bidir_abi.glsl"
+#include "ray.glsl"
+#include "rng.glsl"
+#include "scene.glsl"
+#include "bsdf.glsl"
+#include "lights.glsl"
+#include "emission.glsl"
+#include "env.glsl"
+#include "punctual.glsl"
+#include "volume.glsl"
+#include "bdpt.glsl"
+#include "vcm.glsl"
+#include "wf_active.glsl"
+
+layout(local_size_x = WF_WG_SIZE) in;
+layout(std430, binding = BIND_SPLAT) buffer Splat { float splat[]; };
+layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
+// Stored vertices per path, for the light vertex cache's scan.
+layout(std430, binding = BIND_LVC_OFFSETS) writeonly buffer LvcOffsets { uint lvc_offsets[]; };
+layout(std430, binding = BIND_PT_SUSPENDED) buffer State { BdptLightState state[]; };
+layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
+layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
+layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
+layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
+layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
+layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec4 wf_index[]; };
+layout(push_constant) uniform Push { BdptWavefrontPush pc; };
+#include "bdpt_light_path.glsl"
+
+// This launch's join to the eye (a step makes at most one): its shadow ray for the any-hit
+// trace kernel, the contribution and the film pixel.
+ShadowRay wf_join;
+vec3 wf_join_contrib;
+uint wf_join_pixel = 0u;
+uint wf_join_count = 0u;
+// A join's splat, or the count of those that are NaN or Inf.
+uint wf_bad = 0u;
+
+void splat_join(vec3 contrib, uint pix) {
+    if (any(isnan(contrib)) || any(isinf(contrib))) {
+        wf_bad++;
+        return;
+    }
+    atomicAdd(splat[3u * pix + 0u], contrib.r);
+    atomicAdd(splat[3u * pix + 1u], contrib.g);
+    atomicAdd(splat[3u * pix + 2u], contrib.b);
+}
+
+// Strategy t = 1 for the step (bdpt_light_step.glsl): the join's shadow ray waits for the next
+// trace; one too short to hold an occluder is clear now, as shadow_ray_clear has it.
+void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3 beta, vec3 sigma, float d_vcm, float d_vc, float vm, inout uvec2 stats) {
+    ShadowRay ray;
+    vec3 contrib;
+    uint pix;
+    if (!camera_join(p, ns_f, ng_f, wi, c, beta, sigma, d_vcm, d_vc, vm, ray, contrib, pix)) {
+        return;
+    }
+    if (!(ray.tmax > 0.0)) {
+        splat_join(contrib, pix);
+        return;
+    }
+    wf_join = ray;
+    wf_join_contrib = contrib;
+    wf_join_pixel = pix;
+    wf_join_count = 1u;
+}
+
+// A ray for the trace kernels from `o` along `d` up to `tmax`; its tmin slot carries the
+// path's stochastic-opacity seed where the scene has alpha (SPEC_RAY_SEED), else 0.
+GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
+    return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
+}
+
+// One launch's work for this invocation's slot, if it has one.
+void run_slot() {
+    uint path;
+    if (!wf_slot(pc.launch, pc.light_path_total, path)) {
+        return; // past the slots, or not listed
+    }
+    // The pass's first launch starts every slot's path: nothing to read.
+    bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
+    uint launch = wf_launch(pc.launch);
+    BdptLightState st = BdptLightState(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
+    uvec4 queued = uvec4(0u); // where the last launch queued its rays
+    if (!fresh) {
+        st = state[path];
+        queued = wf_index[path];
+    }
+    uint status = st.rng_status.w;
+    if (status == PT_DONE && queued.z == 0u) {
+        return; // nothing left, nothing pending
+    }
+
+    // The last launch's join, splatted if its shadow ray is clear. The contributions alternate
+    // between the buffer's halves from launch to launch (batches have even lengths).
+    uint half_len = uint(wf_contrib.length()) / 2u;
+    uint read_half = (launch & 1u) == 0u ? half_len : 0u;
+    uint write_half = half_len - read_half;
+    if (queued.z > 0u && wf_shadow_hits[queued.y].tri == NO_HIT) {
+        splat_join(wf_contrib[read_half + queued.y].rgb, queued.w);
+    }
+
+    // The light subpath: one step at what its segment found (the megakernel's loop body,
+    // bdpt_light_step.glsl, run once), or its start.
+    Rng rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
+    vec3 o = st.o_beta0.xyz;
+    float beta0 = st.o_beta0.w;
+    vec3 d = st.d_dvcm.xyz;
+    float d_vcm = st.d_dvcm.w;
+    vec3 beta = st.beta_dvc.xyz;
+    float d_vc = st.beta_dvc.w;
+    vec3 sigma_near = st.sigma.xyz;
+    uint depth = st.counts.x;
+    uint seen = st.counts.y;
+    uint stored = st.counts.z & 0x7fffffffu;
+    bool at_infinity = (st.counts.z >> 31) != 0u;
+    blend_seed = st.counts.w;
+    // BDPT's values of VCM's terms (vcm.glsl: no merging).
+    float d_vm = 0.0;
+    VcmFactors k = VcmFactors(0.0, 0.0);
+    uint base = path * pc.light_path_len;
+    uvec2 stats = uvec2(0u);
+    bool alive = false;
+    if (status == PT_SUSPENDED) {
+        GpuHit gh = wf_hits[queued.x];
+        TraceHit h = TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v));
+#ifdef BDPT_WF_FINISH
+        for (;;) {
+#endif
+        do {
+#include "bdpt_light_step.glsl"
+            alive = true;
+            depth++;
+        } while (false);
+#ifdef BDPT_WF_FINISH
+            // The step's join to the eye, then the next segment.
+            if (wf_join_count > 0u) {
+                if (shadow_ray_clear(wf_join, stats)) {
+                    splat_join(wf_join_contrib, wf_join_pixel);
+                }
+                wf_join_count = 0u;
+            }
+            if (!alive) {
+                break;
+            }
+            alive = false;
+            h = trace_ray(o, d, 0.0, 3.0e38, false, stats);
+        }
+#endif
+    } else if (status == PT_FRESH) {
+        // The megakernel's start (bdpt_light.comp: light_path).
+        rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
+        if (HAS_ALPHA != 0u) {
+            blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
+        }
+        alive = light_path_start(rng, o, d, beta, d_vcm, d_vc, at_infinity);
+        beta0 = max3(beta);
+        sigma_near = vec3(0.0);
+        depth = 1u;
+        seen = 0u;
+        stored = 0u;
+    }
+
+    // The rays, packed at the front of the queues (a subgroup's together, in lane order).
+    uvec4 ext_lanes = subgroupBallot(alive);
+    uvec4 join_lanes = subgroupBallot(wf_join_count > 0u);
+    uint ext_count = subgroupBallotBitCount(ext_lanes);
+    uint join_count = subgroupBallotBitCount(join_lanes);
+    uvec2 queue_base = uvec2(0u);
+    if (subgroupElect()) {
+        queue_base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * launch], ext_count) : 0u;
+        queue_base.y = join_count > 0u ? atomicAdd(wf_counts[2u * launch + 1u], join_count) : 0u;
+    }
+    queue_base = subgroupBroadcastFirst(queue_base);
+    uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupBallotExclusiveBitCount(join_lanes), wf_join_count, wf_join_pixel);
+    if (alive) {
+        state[path] = BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
+            uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
+    } else if (status != PT_DONE) {
+        // The path ended: its counts for the light vertex cache.
+        light_counts[path] = uvec2(stored, seen);
+        lvc_offsets[path] = stored;
+        state[path].rng_status.w = PT_DONE;
+    }
+    if (wf_join_count > 0u) {
+        wf_shadow_rays[next.y] = wavefront_ray(wf_join.o, wf_join.d, wf_join.tmax, blend_seed);
+        wf_contrib[write_half + next.y] = vec4(wf_join_contrib, 0.0);
+    }
+    if (alive || wf_join_count > 0u || queued.z > 0u) {
+        wf_index[path] = next;
+    }
+    wf_list_next(pc.launch, path, alive || wf_join_count > 0u);
+    if (wf_bad > 0u) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], wf_bad);
+    }
+}
+
+void main() {
+    run_slot();
+#ifndef BDPT_WF_FINISH
+    wf_end_launch(pc.launch);
+#endif
+}
