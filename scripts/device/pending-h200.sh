@@ -123,6 +123,11 @@ s42c)
       echo "== cornell 1 s finish $f: $(timeout -k 5 60 "$F" render $CB --integrator bdpt --time 1 --wavefront-finish $f -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
     done
     echo "== pt-nee 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    # DamagedHelmet (its metal keeps light paths long: about 190 launches a pass in session 20).
+    HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+    for f in off auto; do
+      echo "== helmet finish $f: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 --wavefront-finish $f 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    done
   done
   for f in off auto off auto; do echo "== bdpt 0.1 s finish $f: $(BIDIR_PASS_LOG=1 timeout -k 5 60 "$F" render $CB --integrator bdpt --time 0.1 --wavefront-finish $f -o /tmp/q.exr 2>&1 | grep -E "pass:|spp in" | sed -E 's/pass: samples //; s/, slices [0-9]+//; s/ submissions//' | tr '\n' '|')"; done
   echo "== auto's launches (Cornell, 256 spp)"
