@@ -29,6 +29,7 @@ const WIDE_VARIANTS: &[&str] = &[
     "pt",
     "pt_loop",
     "pt_queue",
+    "pt_finish",
     "shadow_queue",
     "shadow_queue_splat",
     "bdpt_light",

@@ -301,21 +301,36 @@ fn wavefront_gives_the_megakernels_image() {
     let tall = scene.materials.iter().position(|m| m.name == "tallBox").expect("the Cornell box's tall box");
     scene.materials[tall].blend = Some(0.5);
     // (pt finds the small light itself: more samples for a lit image.)
+    // The wavefront form's passes end as by default, and (one per layout) by launches until
+    // none queues a ray, or by a finishing launch after 2 launches (nearly every sample of the
+    // pass run in it) or 6.
+    let finishes = [WavefrontFinish::Off, WavefrontFinish::After(2), WavefrontFinish::After(6)];
     for (integrator, spp) in [(Integrator::Pt, 64), (Integrator::PtNee, 7)] {
-        for (layout, slices) in [(BvhLayout::Cwbvh, 1), (BvhLayout::Bvh2, 3), (BvhLayout::Bvh4, 3)] {
-            let image = |wavefront: bool| {
+        for (i, (layout, slices)) in [(BvhLayout::Cwbvh, 1), (BvhLayout::Bvh2, 3), (BvhLayout::Bvh4, 3)].into_iter().enumerate() {
+            let image = |wavefront: bool, finish: WavefrontFinish| {
                 let mut settings = RenderSettings::new(integrator);
                 settings.wavefront = Some(wavefront);
+                settings.wavefront_finish = finish;
                 settings.bvh_layout = Some(layout);
                 settings.sample_slices = slices;
                 render_values(&ctx, &scene, &camera, settings, spp)
             };
-            let (mega, wave) = (image(false), image(true));
+            let mega = image(false, WavefrontFinish::Auto);
             let name = integrator.name();
             let lit = mega.iter().filter(|&&v| v > 0.0).count();
             assert!(lit * 3 > mega.len(), "{name}: {lit} of {} values above 0", mega.len());
-            let differ = values_differing(&wave, &mega, 1e-5);
-            assert_eq!(differ, 0, "{name} over {}, {slices} slices: {differ} of {} values differ", layout.name(), mega.len());
+            for finish in [WavefrontFinish::Auto, finishes[i]] {
+                let wave = image(true, finish);
+                let differ = values_differing(&wave, &mega, 1e-5);
+                assert_eq!(
+                    differ,
+                    0,
+                    "{name} over {}, {slices} slices, finish {}: {differ} of {} values differ",
+                    layout.name(),
+                    finish.name(),
+                    mega.len()
+                );
+            }
         }
     }
     finish(ctx);

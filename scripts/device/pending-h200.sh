@@ -105,6 +105,37 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s42d)
+  # Session 42: .device/bidir-fin3.gz (the finishing launch for BDPT's passes and the wavefront
+  # path tracer's). Issue #16's table: pt, pt-nee, bdpt and bdpt:full on the Cornell box at
+  # 0.1 s and 1 s against .device/ref.exr, and their 1024-spp cost; the caustic scene's bdpt
+  # with and without the finishing launch (cost, and 0.1 / 1 s against its reference); the
+  # wavefront path tracer on DamagedHelmet (its launches, pt-nee and pt off / auto, the
+  # megakernel, pt-nee at --max-depth 16).
+  unpack fin3
+  F=$PWD/.device/bidir-fin3
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  echo "== helmet pt-nee launches (64 spp), off then auto"
+  for f in off auto; do BIDIR_WF_LOG=1 timeout -k 5 60 "$F" render $HB --integrator pt-nee --spp 64 --wavefront-finish $f -o /tmp/q.exr 2>&1 | grep -E "wavefront batch|spp in" | cut -c1-900; done
+  for r in 1 2; do
+    for o in "pt-nee|--wavefront-finish off" "pt-nee|" "pt-nee|--wavefront off" "pt-nee|--wavefront-finish off --max-depth 16" "pt|--wavefront-finish off" "pt|" "bdpt|--wavefront-finish off" "bdpt|"; do
+      i=${o%%|*}; a=${o#*|}
+      echo "== helmet $i 256 spp [$a]: $(timeout -k 5 60 "$F" bench render $HB --integrator $i --spp 256 --warmup 1 --runs 3 $a 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    done
+  done
+  for i in pt pt-nee bdpt bdpt:full; do
+    echo "== cornell $i 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    for t in 0.1 1; do
+      echo "== cornell $i $t s: $(timeout -k 5 60 "$F" render $CB --integrator $i --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+  done
+  for f in off auto; do
+    echo "== caustic bdpt $f 256 spp: $(timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 --wavefront-finish $f 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    for t in 0.1 1; do
+      echo "== caustic bdpt $f $t s: $(timeout -k 5 60 "$F" render $CAU --integrator bdpt --time $t --wavefront-finish $f -o /tmp/c.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
+    done
+  done
+  ;;
 s42c)
   # Session 42: BDPT's passes ended by a finishing launch (--wavefront-finish; .device/bidir-fin2.gz,
   # the working tree of that change): off (launches until one queues no ray, as before), auto,

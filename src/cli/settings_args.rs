@@ -127,11 +127,12 @@ pub struct SettingsArgs {
     /// faster (`render::default_wavefront`), off on CPU devices such as lavapipe.
     #[arg(long, default_value = "auto", value_name = "auto|on|off")]
     pub wavefront: String,
-    /// bdpt's wavefront passes: after N launches (an even count), or (auto) after as many as
-    /// the last pass took to leave fewer paths live than a quarter of what the trace kernels
-    /// run at once, one launch runs every path still live to its end, tracing its own rays,
-    /// instead of a launch per bounce down the pass's long tail; off: launches until one
-    /// queues no ray. The image is the same up to the order of float sums.
+    /// The wavefront forms (bdpt's passes, pt's and pt-nee's): after N launches (an even
+    /// count), or (auto) after as many as the last pass took to leave fewer paths live than a
+    /// quarter of what the trace kernels run at once, one launch runs every path still live to
+    /// its end (pt and pt-nee: every slot's remaining samples), tracing its own rays, instead
+    /// of a launch per bounce down the pass's long tail; off: launches until one queues no ray.
+    /// The image is the same up to the order of float sums.
     #[arg(long, default_value = "auto", value_name = "auto|off|N")]
     pub wavefront_finish: String,
     /// Queue the shadow rays of pt-nee's kernel and of BDPT's (or VCM's) camera and light

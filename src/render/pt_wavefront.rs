@@ -3,13 +3,15 @@
 //! 2013). A pass is a loop of launches: the path kernel (scatter at the hits, start samples,
 //! leave the next segment and shadow ray per slot), the closest-hit trace of the segments, the
 //! any-hit trace of the shadow rays; recorded in batches, each ending in a read of how many
-//! rays each launch queued, until a launch queues none.
+//! rays each launch queued, until a launch queues none, or (`--wavefront-finish`, as BDPT's
+//! passes) until a finishing launch (`glsl/kernels/pt_finish.comp`) has run the rest of every
+//! slot's samples, tracing their rays itself, once the slots' paths were running out.
 
 use std::cell::Cell;
 
 use super::integrator::{IntegratorKernels, PassInputs};
 use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues};
-use super::{gpu_scene::GpuScene, RenderError};
+use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::PtPush, abi::PtWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Spec};
 
@@ -40,6 +42,11 @@ pub struct WavefrontPathTracer {
     /// Launches a pass took per sample of a slot, learnt from the last pass: sizes the first
     /// batch of the next.
     launches_per_sample: Cell<f64>,
+    /// The finishing launch's kernel (None where `finish` is Off).
+    finisher: Option<Kernel>,
+    finish: WavefrontFinish,
+    /// Launches before the finishing one per sample of a slot, learnt from the last pass.
+    finish_per_sample: Cell<f64>,
 }
 
 impl WavefrontPathTracer {
@@ -60,6 +67,11 @@ impl WavefrontPathTracer {
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(settings.sampler.spec());
         let kernel = ctx.create_kernel(&kernels::PT_WAVEFRONT, &specs)?;
+        let finish = settings.wavefront_finish;
+        let finisher = match finish {
+            WavefrontFinish::Off => None,
+            _ => Some(ctx.create_kernel(scene.bvh.kernel(&kernels::PT_FINISH_FORMS), &specs)?),
+        };
         let what = ("the wavefront path tracer", "pt_wavefront");
         let buffer = |name: &str, bytes: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, bytes, SLOT_BYTES);
         Ok(WavefrontPathTracer {
@@ -70,6 +82,9 @@ impl WavefrontPathTracer {
             index: buffer("queue_index", 8)?,
             slots,
             launches_per_sample: Cell::new(8.0),
+            finisher,
+            finish,
+            finish_per_sample: Cell::new(8.0),
         })
     }
 }
@@ -84,9 +99,21 @@ fn batch_launches(first: bool, samples_per_slot: u32, launches_per_sample: f64, 
     })
 }
 
+/// Launches before a pass's finishing one (`finish`, not Off): `After(n)`'s n, else the last
+/// pass's launches per sample of a slot times this pass's samples; even, from 2 to
+/// `WF_MAX_BATCH - 2` batches' worth.
+fn finish_launches(finish: WavefrontFinish, samples_per_slot: u32, finish_per_sample: f64) -> u32 {
+    let n = match finish {
+        WavefrontFinish::After(n) => n,
+        _ => (samples_per_slot as f64 * finish_per_sample).ceil().min(f64::from(u32::MAX / 2)) as u32,
+    };
+    (n.max(2) + 1) & !1
+}
+
 impl IntegratorKernels for WavefrontPathTracer {
     fn kernels(&self) -> Vec<&Kernel> {
         let mut k = vec![&self.kernel];
+        k.extend(self.finisher.iter());
         k.extend(self.queues.kernels());
         k
     }
@@ -122,9 +149,21 @@ impl IntegratorKernels for WavefrontPathTracer {
         ]);
         binds.extend(self.queues.binds());
         let samples_per_slot = spp.div_ceil(slices);
+        // With a finishing launch: after `finish_at` launches (in batches of at most
+        // WF_MAX_BATCH), and the first launch that left fewer segments than `live`, for the
+        // next pass's count.
+        let finish_at = self.finisher.as_ref().map(|_| finish_launches(self.finish, samples_per_slot, self.finish_per_sample.get()));
+        let live = (self.queues.resident_rays() / 4).max(1);
+        let mut first_below = None;
         let mut done = 0u32;
         loop {
-            let launches = batch_launches(done == 0, samples_per_slot, self.launches_per_sample.get(), done);
+            let (launches, finishing) = match finish_at {
+                Some(f) => {
+                    let n = (f - done).min(abi::WF_MAX_BATCH);
+                    (n, done + n == f)
+                }
+                None => (batch_launches(done == 0, samples_per_slot, self.launches_per_sample.get(), done), false),
+            };
             ctx.submit("wavefront path tracing", |rec| {
                 if done == 0 {
                     // Every slot starts its pass fresh with nothing pending; slices sum from 0.
@@ -138,18 +177,36 @@ impl IntegratorKernels for WavefrontPathTracer {
                 self.queues.record_batch(rec, &geometry, slots, launches, false, |rec, launch| {
                     let push = PtWavefrontPush { launch, ..push };
                     self.queues.dispatch_path(rec, &self.kernel, &binds, bytemuck::bytes_of(&push), slots, launch)
-                })
+                })?;
+                if let Some(finisher) = self.finisher.as_ref().filter(|_| finishing) {
+                    let push = PtWavefrontPush { launch: launches, ..push };
+                    self.queues.dispatch_path(rec, finisher, &binds, bytemuck::bytes_of(&push), slots, launches)?;
+                }
+                Ok(())
             })?;
+            let queued = self.queues.queued(launches)?;
+            if first_below.is_none() {
+                first_below = queued.iter().position(|c| c[0] < live).map(|l| done + l as u32);
+            }
             // The first launch that queued no ray ends the pass (the rest found nothing to do).
-            match Queues::first_idle_launch(&self.queues.queued(launches)?) {
+            match Queues::first_idle_launch(&queued) {
                 Some(last) => {
                     done += last + 1;
+                    break;
+                }
+                None if finishing => {
+                    done += launches + 1;
                     break;
                 }
                 None => done += launches,
             }
         }
         self.launches_per_sample.set(done as f64 / samples_per_slot as f64);
+        if let (Some(f), WavefrontFinish::Auto) = (finish_at, self.finish) {
+            // The launch after the first that left few paths; where none did, four more.
+            let next = first_below.map_or(f + 4, |l| l + 1);
+            self.finish_per_sample.set(f64::from(next) / samples_per_slot as f64);
+        }
         if slices > 1 {
             ctx.submit("wavefront film", |rec| film.record_add_slices(rec, slices))?;
         }
@@ -160,6 +217,14 @@ impl IntegratorKernels for WavefrontPathTracer {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn finishing_launches_scale_with_the_samples_and_stay_even() {
+        assert_eq!(finish_launches(WavefrontFinish::Auto, 8, 6.0), 48);
+        assert_eq!(finish_launches(WavefrontFinish::Auto, 3, 2.5), 8);
+        assert_eq!(finish_launches(WavefrontFinish::Auto, 1, 0.1), 2);
+        assert_eq!(finish_launches(WavefrontFinish::After(6), 100, 9.0), 6);
+    }
 
     #[test]
     fn batches_cover_the_pass_and_stay_bounded() {

@@ -191,7 +191,8 @@ mod sampler_tests {
     }
 }
 
-/// How BDPT's wavefront passes end (`--wavefront-finish`; src/render/bdpt_wavefront.rs).
+/// How the wavefront forms' passes end (`--wavefront-finish`; src/render/bdpt_wavefront.rs,
+/// src/render/pt_wavefront.rs).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum WavefrontFinish {
     /// Launches until one queues no ray.
@@ -326,8 +327,9 @@ pub struct RenderSettings {
     /// without a wavefront form is an error. Either gives the same image (up to the order of
     /// float sums).
     pub wavefront: Option<bool>,
-    /// BDPT's wavefront passes: how each ends (`--wavefront-finish`). Every way gives the same
-    /// image (up to the order of float sums and ties between equally near triangles).
+    /// The wavefront forms' passes (BDPT's light and camera passes, the path tracer's): how
+    /// each ends (`--wavefront-finish`). Every way gives the same image (up to the order of
+    /// float sums and ties between equally near triangles).
     pub wavefront_finish: WavefrontFinish,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).

@@ -1,0 +1,210 @@
+// The body of the wavefront path tracer's path kernel (glsl/kernels/pt_wavefront.comp, and with
+// PT_WF_FINISH defined pt_finish.comp; pt and pt-nee with `--wavefront`; after Laine, Karras &
+// Aila 2013, "Megakernels Considered Harmful"): the megakernel's paths (glsl/common/pt_path.glsl)
+// with their traversal taken out into the trace kernels (trace_kernel.glsl), which then run
+// with their own loops and launch shape (on GPUs the 4-wide BVH's lockstep loops and dynamic
+// fetch) instead of inside a kernel of many live values.
+//
+// One invocation per slot, a slot per megakernel invocation (pixel of the window and sample
+// slice, the same random numbers). Each launch takes up what the trace kernels found for the
+// slot's last rays: the light sample's contribution if its shadow ray was clear, then the
+// scattering at the segment's hit (path_scatter), or where the path ended the start of the
+// slot's next sample of the pass; and it leaves the next segment and the new light sample's
+// shadow ray for them. The host runs launch, closest-hit trace, any-hit trace, launch, ...
+// until a launch leaves no ray (src/render/pt_wavefront.rs). The rays are packed at the front
+// of their queues (counted in BIND_WF_COUNTS, where the trace kernels read how many there are),
+// so the launches that finish the longest paths trace only those. Sums go to the pixel (or its
+// slice) as they arise; a NaN or Inf sample or light contribution is dropped and counted.
+//
+// With PT_WF_FINISH (a pass's finishing launch, src/render/pt_wavefront.rs): each slot runs the
+// rest of its samples in this launch, tracing its shadow rays and segments itself (trace_ray over
+// the BVH the trace kernels traverse, as the megakernel does), each light contribution kept apart
+// as the next launch would add it; it queues no ray.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#define PT_WAVEFRONT
+#include "bidir_abi.glsl"
+#include "ray.glsl"
+#include "rng.glsl"
+#include "scene.glsl"
+#include "bsdf.glsl"
+#include "lights.glsl"
+#include "emission.glsl"
+#include "env.glsl"
+#include "punctual.glsl"
+#include "volume.glsl"
+
+layout(local_size_x = PT_WG_SIZE) in;
+layout(constant_id = SPEC_NEE) const uint NEE = 1u;
+// The megakernel's ways of tracing a shadow ray, none of which runs here.
+const uint ONE_TRACE = 0u;
+const uint SHADOW_SUSPEND = 0u;
+layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
+layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
+layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
+layout(std430, binding = BIND_PT_SUSPENDED) buffer State { PtSuspended state[]; };
+layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
+layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
+layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
+layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
+layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
+layout(std430, binding = BIND_WF_COUNTS) buffer Counts { uint wf_counts[]; };
+layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec2 wf_index[]; };
+layout(push_constant) uniform Push { PtWavefrontPush wpc; };
+#define pc wpc.pt
+
+// The light sample's shadow ray of this launch's bounce, if any (add_if_clear).
+ShadowRay wf_shadow;
+vec3 wf_shadow_contrib = vec3(0.0);
+bool wf_shadow_pending = false;
+
+#include "pt_path.glsl"
+
+// A ray for the trace kernels from `o` along `d` up to `tmax`; its tmin slot carries the
+// path's stochastic-opacity seed where the scene has alpha (SPEC_RAY_SEED), else 0.
+GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
+    return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
+}
+
+void main() {
+    // Slot -> (slice, pixel of the camera's window), as the megakernel maps its invocations (pt_kernel.glsl, pt_invocation).
+    uint g = gl_GlobalInvocationID.x;
+    uint tiles = tiled_count(pc.camera.window_size);
+    uint slices = max(pc.slices, 1u);
+    if (g >= tiles * slices) {
+        return; // past the slots
+    }
+    uint slice = g / tiles;
+    bool valid;
+    uvec2 wp = tiled_pixel(g % tiles, pc.camera.window_size, valid);
+    if (!valid) {
+        return;
+    }
+    // A slot whose samples are done, with no light sample pending, has nothing left to do.
+    uint status = state[g].rng_status.w;
+    vec4 c = wf_contrib[g];
+    if (status == PT_DONE && c.w == 0.0) {
+        return;
+    }
+    uvec2 queued = wf_index[g]; // where the last launch queued its rays
+    uint pixel = wp.y * pc.camera.window_size.x + wp.x;
+    uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
+    uint image_pixel = px.y * pc.camera.size.x + px.x;
+    PixelSums sums = PixelSums(vec3(0.0), 0.0, 0u);
+
+    // The last launch's light sample, if its shadow ray was clear.
+    if (c.w != 0.0 && wf_shadow_hits[queued.y].tri == NO_HIT) {
+        if (any(isnan(c.rgb)) || any(isinf(c.rgb))) {
+            sums.bad++;
+        } else {
+            sums.sum += c.rgb;
+        }
+    }
+
+    // The path: scattered at what its segment found, or (ended, or none yet this pass) the
+    // slot's next sample started.
+    PtSuspended st = state[g];
+    uint s = status == PT_FRESH ? slice : st.sigma_sample.w;
+    Rng rng;
+    PathState path;
+    bool alive = false;
+    uint shadow_seed = 0u;
+    if (status == PT_SUSPENDED) {
+        rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
+        path = PathState(uintBitsToFloat(st.o_depth.xyz), st.d_pdf.xyz, st.throughput_specular.xyz, uintBitsToFloat(st.radiance_seed.xyz),
+            st.throughput_specular.w != 0.0, st.d_pdf.w, st.o_depth.w, uintBitsToFloat(st.sigma_sample.xyz),
+            vec3(0.0), 0.0, vec3(0.0), false);
+        blend_seed = st.radiance_seed.w;
+        GpuHit gh = wf_hits[queued.x];
+        uvec2 stats = uvec2(0u);
+        alive = path_scatter(path, TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v)), rng, stats);
+        shadow_seed = blend_seed; // the shadow ray is this path's, whatever starts next
+        if (!alive) {
+            add_sample(sums, path.radiance);
+            s += slices;
+        }
+    }
+#ifdef PT_WF_FINISH
+    // The rest of the slot's samples: each step's shadow ray (with the opacity seed of the path
+    // that drew it), then the next segment, or where the path ended the slot's next sample.
+    for (;;) {
+        if (wf_shadow_pending) {
+            uint next_seed = blend_seed;
+            blend_seed = shadow_seed;
+            uvec2 stats = uvec2(0u);
+            if (shadow_ray_clear(wf_shadow, stats)) {
+                if (any(isnan(wf_shadow_contrib)) || any(isinf(wf_shadow_contrib))) {
+                    sums.bad++;
+                } else {
+                    sums.sum += wf_shadow_contrib;
+                }
+            }
+            blend_seed = next_seed;
+            wf_shadow_pending = false;
+        }
+        if (!alive) {
+            if (status == PT_DONE || s >= pc.spp) {
+                break;
+            }
+            path = sample_start(image_pixel, s, vec2(px), rng);
+        }
+        uvec2 stats = uvec2(0u);
+        TraceHit h = trace_ray(path.o, path.d, 0.0, 3.0e38, false, stats);
+        alive = path_scatter(path, h, rng, stats);
+        shadow_seed = blend_seed;
+        if (!alive) {
+            add_sample(sums, path.radiance);
+            s += slices;
+        }
+    }
+#else
+    if (!alive && status != PT_DONE && s < pc.spp) {
+        path = sample_start(image_pixel, s, vec2(px), rng);
+        alive = true;
+    }
+#endif
+
+    // The rays, packed at the front of the queues (a subgroup's together, in lane order).
+    uvec4 ext_lanes = subgroupBallot(alive);
+    uvec4 shadow_lanes = subgroupBallot(wf_shadow_pending);
+    uint ext_count = subgroupBallotBitCount(ext_lanes);
+    uint shadow_count = subgroupBallotBitCount(shadow_lanes);
+    uvec2 base = uvec2(0u);
+    if (subgroupElect()) {
+        base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * wpc.launch], ext_count) : 0u;
+        base.y = shadow_count > 0u ? atomicAdd(wf_counts[2u * wpc.launch + 1u], shadow_count) : 0u;
+    }
+    base = subgroupBroadcastFirst(base);
+    queued = base + uvec2(subgroupBallotExclusiveBitCount(ext_lanes), subgroupBallotExclusiveBitCount(shadow_lanes));
+    if (alive) {
+        state[g] = PtSuspended(uvec4(floatBitsToUint(path.o), path.depth), vec4(path.d, path.prev_pdf_w),
+            vec4(path.throughput, path.specular ? 1.0 : 0.0), uvec4(floatBitsToUint(path.radiance), blend_seed),
+            uvec4(floatBitsToUint(path.sigma_near), s),
+            uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        wf_rays[queued.x] = wavefront_ray(path.o, path.d, 3.0e38, blend_seed);
+    } else if (status != PT_DONE) {
+        state[g].rng_status.w = PT_DONE;
+    }
+    if (wf_shadow_pending) {
+        wf_shadow_rays[queued.y] = wavefront_ray(wf_shadow.o, wf_shadow.d, wf_shadow.tmax, shadow_seed);
+    }
+    if (alive || wf_shadow_pending) {
+        wf_index[g] = queued;
+    }
+    if (wf_shadow_pending || c.w != 0.0) {
+        wf_contrib[g] = vec4(wf_shadow_contrib, wf_shadow_pending ? 1.0 : 0.0);
+    }
+
+    if (sums.count > 0.0 || any(notEqual(sums.sum, vec3(0.0)))) {
+        if (slices == 1u) {
+            accum[pixel] += vec4(sums.sum, sums.count);
+        } else {
+            slices_out[slice * pc.camera.window_size.x * pc.camera.window_size.y + pixel] += vec4(sums.sum, sums.count);
+        }
+    }
+    if (sums.bad > 0u) {
+        atomicAdd(render_stats[STAT_NAN_SAMPLES], sums.bad);
+    }
+}
