@@ -105,6 +105,27 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s42e)
+  # Session 42: whether the wavefront path tracer with its finishing launch (.device/bidir-fin3.gz)
+  # now beats the megakernel where the megakernel is the default (the diffuse Cornell box, the
+  # caustic scene's smooth glass, the hidden light's box): bench render, two rounds, and the
+  # Cornell box at 1 s.
+  unpack fin3
+  F=$PWD/.device/bidir-fin3
+  for r in 1 2; do
+    for sc in "cornell|$CB|1024" "hidden|$HID|1024" "caustic|$CAU|1024"; do
+      n=${sc%%|*}; rest=${sc#*|}; S=${rest%|*}; spp=${rest##*|}
+      for i in pt-nee pt; do
+        for w in off on; do
+          echo "== $n $i wavefront $w: $(timeout -k 5 60 "$F" bench render $S --integrator $i --spp $spp --warmup 1 --runs 3 --wavefront $w 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+        done
+      done
+    done
+  done
+  for w in off on off on; do
+    echo "== cornell pt-nee 1 s wavefront $w: $(timeout -k 5 60 "$F" render $CB --integrator pt-nee --time 1 --wavefront $w -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+  done
+  ;;
 s42d)
   # Session 42: .device/bidir-fin3.gz (the finishing launch for BDPT's passes and the wavefront
   # path tracer's). Issue #16's table: pt, pt-nee, bdpt and bdpt:full on the Cornell box at

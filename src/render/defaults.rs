@@ -121,15 +121,20 @@ pub(super) fn resolve_shadow_queue(
 }
 
 /// Whether an integrator runs in its wavefront form by default. pt and pt-nee (the wavefront
-/// path tracer, `pt_wavefront.rs`): on GPUs where the scene has glossy or textured surfaces
-/// and no smooth mirror or glass. NVIDIA
+/// path tracer, `pt_wavefront.rs`): on GPUs where the scene has glossy or textured surfaces,
+/// or smooth mirrors or glass (since session 42, when its passes' finishing launch made it
+/// 1.23x the megakernel's speed on the caustic scene's smooth glass, pt-nee 21.2 against 26.1
+/// ms per 1024 spp on an H100, pt 17.6 against 21.7; the plain Cornell box and the hidden
+/// light's box keep the megakernel there, 72.6 against 53.2 and 57.4; docs/results.md, "A
+/// finishing launch for the wavefront passes"). Before it (NVIDIA
 /// H200, `bench render`, pt-nee, ms per run (docs/results.md, "A wavefront path tracer"):
 /// textured Sponza under sun and sky 58.2 against 79.3 (640 x 360, 64 spp; pt 44.0 against
 /// 51.9), 120.3 against 162.5 at 1920 x 1080; DamagedHelmet 25.1 against 36.0,
 /// MetalRoughSpheres 30.8 against 37.9, CesiumMilkTruck 15.1 against 15.7 (384², 256 spp); the
 /// megakernels stay for the diffuse Cornell box (58.4 against 78.6 ms per 1024 spp: there the
 /// slots' memory traffic costs more than the trace kernels save) and the caustic scene's smooth
-/// glass (102 against 108); CPU devices (llvmpipe: 3-4x slower, its launches' fixed costs).
+/// glass (102 against 108), which has the wavefront form now); CPU devices (llvmpipe: 3-4x
+/// slower, its launches' fixed costs).
 ///
 /// BDPT's passes (`bdpt_wavefront.rs`; bdpt and bdpt:lvc=N, N <= 3) take their wavefront form
 /// on GPUs in every scene but a plain one (untextured diffuse surfaces without mirrors or
@@ -152,7 +157,7 @@ pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneF
     let rich = features.glossy || features.textures;
     let wins = match integrator {
         Integrator::Bdpt(join) => rich || smooth_specular || join == Join::Lvc(1),
-        _ => rich && !smooth_specular,
+        _ => rich || smooth_specular,
     };
     wavefront_supported(integrator) && !on_cpu && wins
 }
@@ -352,10 +357,10 @@ mod default_tests {
             assert_eq!(queue.is_some(), pt_nee == cw, "{f:?}");
             assert_eq!(queue.map(|q| q.pause), (pt_nee == cw).then_some(f != diffuse), "{f:?}");
             assert_eq!(default_shadow_queue(true, BvhLayout::Cwbvh, &f), None);
-            // The wavefront forms: on GPUs, the path tracers' for glossy or textured scenes
-            // without smooth mirrors or glass, BDPT's (fixed cache joins only) for every scene
-            // but the diffuse one, and there too with one connection; never on CPU devices.
-            let wave = f == rough || f == textured_ggx;
+            // The wavefront forms: on GPUs, the path tracers' for every scene but the diffuse
+            // one, BDPT's (fixed cache joins only) likewise, and there too with one
+            // connection; never on CPU devices.
+            let wave = f != diffuse;
             for i in [Integrator::Pt, Integrator::PtNee] {
                 assert_eq!(default_wavefront(false, i, &f), wave, "{f:?}");
                 assert!(!default_wavefront(true, i, &f));
