@@ -405,7 +405,7 @@ impl Bdpt {
         let record_light = |i: usize| {
             let (push, before) = (&pushes[i], i.checked_sub(1).map(|b| &pushes[b]));
             assert!(push.light_path_total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
-            let launches = w.first_batch(Pass::Light);
+            let launches = w.first_batch(Pass::Light, slots(Pass::Light, push));
             let recorded = ctx.record("bdpt wavefront light pass", move |rec| {
                 if let Some(before) = before.filter(|b| b.camera_samples > 1) {
                     film.record_add_slices(rec, before.camera_samples)?;
@@ -420,7 +420,7 @@ impl Bdpt {
         };
         let record_camera = |i: usize| {
             let push = &pushes[i];
-            let launches = w.first_batch(Pass::Camera);
+            let launches = w.first_batch(Pass::Camera, slots(Pass::Camera, push));
             let recorded = ctx.record("bdpt wavefront camera pass", move |rec| {
                 self.record_cache(rec, binds, push)?;
                 w.record_batch(rec, Pass::Camera, binds, geometry, push, slots(Pass::Camera, push), launches, true)

@@ -58,21 +58,35 @@ pub enum Pass {
     Camera,
 }
 
-/// The launches a batch records, and whether the finishing launch follows them.
+/// The launches a batch records over `slots` slots, and whether the finishing launch follows
+/// them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Batch {
     pub launches: u32,
     pub finish: bool,
+    pub slots: u32,
 }
 
-/// Launches before a pass's finishing one, from the rays each launch of the last pass of its
-/// kind queued (`queued`, its first `finish_at` launches): the launch after the first that left
-/// fewer than `live` paths (segments queued), rounded up to an even count, at least 2; where none
-/// did, four more than before.
-pub fn next_finish_at(queued: &[[u32; 2]], finish_at: u32, live: u32) -> u32 {
-    let f = match queued.iter().position(|c| c[0] < live) {
+/// What the last finished pass of a kind left live: the segments each of its launches before
+/// the finishing one queued, over how many slots.
+#[derive(Clone, Debug, Default)]
+struct Tail {
+    segments: Vec<u32>,
+    slots: u32,
+}
+
+/// Launches before the finishing one of a pass over `slots` slots, from the last pass of its
+/// kind (`tail`): the launch after the first whose live paths, scaled to this pass's slots, were
+/// fewer than `live`, rounded up to an even count, at least 2; where none were, four more than
+/// that pass ran; 10 without one.
+fn finish_at(tail: &Tail, slots: u32, live: u32) -> u32 {
+    if tail.slots == 0 {
+        return 10;
+    }
+    let scale = f64::from(slots) / f64::from(tail.slots);
+    let f = match tail.segments.iter().position(|&n| f64::from(n) * scale < f64::from(live)) {
         Some(l) => l as u32 + 1,
-        None => finish_at + 4,
+        None => tail.segments.len() as u32 + 4,
     };
     ((f.max(2) + 1) & !1).min(abi::WF_MAX_BATCH - 2)
 }
@@ -85,8 +99,8 @@ pub struct WavefrontPasses {
     /// The finishing launches' kernels (None where `finish` is Off).
     finishers: Option<[Kernel; 2]>,
     finish: Finish,
-    /// Per pass: launches before the finishing one.
-    finish_at: [Cell<u32>; 2],
+    /// Per pass: what the last one left live, for the next one's finishing launch.
+    tails: [std::cell::RefCell<Tail>; 2],
     queues: Queues,
     state: Buffer,
     contrib: Buffer,
@@ -133,17 +147,13 @@ impl WavefrontPasses {
                 ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FINISH_FORMS), &specs)?,
             ]),
         };
-        let first_finish = match finish {
-            Finish::After(n) => n,
-            _ => 10,
-        };
         let buffer = |name: &str, b: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, b, bytes);
         Ok(WavefrontPasses {
             light,
             camera,
             finishers,
             finish,
-            finish_at: [Cell::new(first_finish), Cell::new(first_finish)],
+            tails: Default::default(),
             queues,
             state: buffer("state", STATE_BYTES)?,
             // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
@@ -193,13 +203,22 @@ impl WavefrontPasses {
         }
     }
 
-    /// The first batch of `pass`: `finish_at` launches and the finishing one, or (Finish::Off)
-    /// as many launches as the last such pass took, and two more.
-    pub fn first_batch(&self, pass: Pass) -> Batch {
-        match self.finishers {
-            Some(_) => Batch { launches: self.finish_at[pass as usize].get(), finish: true },
-            None => Batch { launches: even_batch(self.launches[pass as usize].get() + 2), finish: false },
-        }
+    /// The first batch of `pass` over `slots` slots: launches and the finishing one (`After`'s
+    /// count, or `finish_at` of the last pass's tail), or (Off) as many launches as the last
+    /// such pass took, and two more.
+    pub fn first_batch(&self, pass: Pass, slots: u32) -> Batch {
+        let launches = match self.finish {
+            Finish::Off => return Batch { launches: even_batch(self.launches[pass as usize].get() + 2), finish: false, slots },
+            Finish::After(n) => n,
+            Finish::Auto => finish_at(&self.tails[pass as usize].borrow(), slots, self.live()),
+        };
+        Batch { launches, finish: true, slots }
+    }
+
+    /// Live paths below which a pass finishes (Auto): a quarter of the trace kernels' resident
+    /// rays.
+    fn live(&self) -> u32 {
+        (self.queues.resident_rays() / 4).max(1)
     }
 
     /// Records `batch` of `pass` over `slots` slots: its launches, each followed by the two
@@ -240,10 +259,8 @@ impl WavefrontPasses {
     pub fn after_batch(&self, pass: Pass, done: u32, batch: Batch) -> Result<Option<Batch>> {
         let queued = self.queues.queued(batch.launches)?;
         if batch.finish {
-            if self.finish == Finish::Auto {
-                let live = (self.queues.resident_rays() / 4).max(1);
-                self.finish_at[pass as usize].set(next_finish_at(&queued, batch.launches, live));
-            }
+            let segments = queued.iter().map(|c| c[0]).collect();
+            *self.tails[pass as usize].borrow_mut() = Tail { segments, slots: batch.slots };
             return Ok(None);
         }
         Ok(match Queues::first_idle_launch(&queued) {
@@ -251,7 +268,7 @@ impl WavefrontPasses {
                 self.launches[pass as usize].set(done + last + 1);
                 None
             }
-            None => Some(Batch { launches: even_batch((done + batch.launches) / 4), finish: false }),
+            None => Some(Batch { launches: even_batch((done + batch.launches) / 4), ..batch }),
         })
     }
 }
@@ -282,15 +299,20 @@ mod tests {
 
     #[test]
     fn a_pass_finishes_after_the_launch_that_left_few_paths() {
-        let q = [[1000, 0], [800, 900], [300, 400], [90, 100], [40, 50], [10, 9]];
+        let tail = Tail { segments: vec![1000, 800, 300, 90, 40, 10], slots: 1000 };
         // Launch 3 left 90 < 100 paths: finish at launch 4 (launches 0..=3 before it).
-        assert_eq!(next_finish_at(&q, 6, 100), 4);
+        assert_eq!(finish_at(&tail, 1000, 100), 4);
         // Odd counts round up, and at least 2 launches run.
-        assert_eq!(next_finish_at(&q, 6, 500), 4);
-        assert_eq!(next_finish_at(&q, 6, 2000), 2);
-        // None fell below: four more.
-        assert_eq!(next_finish_at(&q, 6, 5), 10);
-        assert_eq!(next_finish_at(&q, abi::WF_MAX_BATCH - 2, 5), abi::WF_MAX_BATCH - 2);
+        assert_eq!(finish_at(&tail, 1000, 500), 4);
+        assert_eq!(finish_at(&tail, 1000, 2000), 2);
+        // A pass of 8 times the slots leaves 8 times as many live: 40 x 8 < 400 at launch 4.
+        assert_eq!(finish_at(&tail, 8000, 400), 6);
+        // None fell below: four more than that pass ran, at most a batch's worth.
+        assert_eq!(finish_at(&tail, 1000, 5), 10);
+        let long = Tail { segments: vec![1000; abi::WF_MAX_BATCH as usize], slots: 1000 };
+        assert_eq!(finish_at(&long, 1000, 5), abi::WF_MAX_BATCH - 2);
+        // No pass yet: 10.
+        assert_eq!(finish_at(&Tail::default(), 1000, 5), 10);
     }
 
     #[test]
