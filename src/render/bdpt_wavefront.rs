@@ -12,8 +12,9 @@
 //! dispatches behind barriers. So by default a pass runs `finish_at` launches and then one of
 //! its finishing kernel (`bdpt_*_finish.comp`), in which every path still live runs to its end,
 //! tracing its own rays; the pass is then one submission. `finish_at` follows the last pass of
-//! its kind: the launch after the first that left fewer paths live than a quarter of what the
-//! trace kernels run at once (`--wavefront-finish`: `off`, or a fixed count of launches).
+//! its kind: the launch after the first that left fewer paths live (scaled by the ratio of the
+//! two passes' slots) than a quarter of what the trace kernels run at once
+//! (`--wavefront-finish`: `off`, or a fixed count of launches).
 
 use std::cell::Cell;
 
