@@ -414,7 +414,7 @@ impl Bdpt {
                     // The camera pass adds into the slices as its contributions arise.
                     rec.fill_buffer(film.slices_buffer(), 0);
                 }
-                w.record_batch(rec, Pass::Light, binds, geometry, push, slots(Pass::Light, push), launches, true)
+                w.record_batch(rec, Pass::Light, binds, geometry, push, launches, true)
             });
             recorded.map(|r| (r, launches))
         };
@@ -423,7 +423,7 @@ impl Bdpt {
             let launches = w.first_batch(Pass::Camera, slots(Pass::Camera, push));
             let recorded = ctx.record("bdpt wavefront camera pass", move |rec| {
                 self.record_cache(rec, binds, push)?;
-                w.record_batch(rec, Pass::Camera, binds, geometry, push, slots(Pass::Camera, push), launches, true)
+                w.record_batch(rec, Pass::Camera, binds, geometry, push, launches, true)
             });
             recorded.map(|r| (r, launches))
         };
@@ -434,7 +434,7 @@ impl Bdpt {
                 done += batch.launches;
                 batch = next;
                 let name = format!("bdpt wavefront {pass:?} pass");
-                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, slots(pass, push), batch, false))?;
+                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, batch, false))?;
             }
             Ok(())
         };

@@ -222,7 +222,7 @@ impl WavefrontPasses {
         (self.queues.resident_rays() / 4).max(1)
     }
 
-    /// Records `batch` of `pass` over `slots` slots: its launches, each followed by the two
+    /// Records `batch` of `pass` over its slots: its launches, each followed by the two
     /// traces, then its finishing launch if it has one, and the read-back of their ray counts.
     /// `start`: the batch begins the pass (its first launch starts every slot's path;
     /// `first_batch`); every other launch runs the slots the launch before listed
@@ -235,11 +235,10 @@ impl WavefrontPasses {
         binds: &[Bind],
         geometry: &[Bind],
         push: &BdptPush,
-        slots: u32,
         batch: Batch,
         start: bool,
     ) -> Result<()> {
-        let kernel = self.kernel(pass);
+        let (kernel, slots) = (self.kernel(pass), batch.slots);
         self.queues.record_batch(rec, geometry, slots, batch.launches, start, |rec, word| {
             let push = wavefront_push(push, word);
             self.queues.dispatch_path(rec, kernel, binds, bytemuck::bytes_of(&push), slots, word)
