@@ -105,6 +105,22 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s42g)
+  # Session 42, for an H200 if one comes: issue #16's figures with the finishing launch
+  # (.device/bidir-fin4.gz) against none (off): the Cornell box, the hidden light, pt-nee, 1 s.
+  unpack fin4
+  F=$PWD/.device/bidir-fin4
+  for f in off auto; do
+    for sc in "cornell|$CB" "hidden|$HID"; do
+      echo "== ${sc%%|*} bdpt $f: $(timeout -k 5 60 "$F" bench render ${sc#*|} --integrator bdpt --spp 1024 --warmup 1 --runs 3 --wavefront-finish $f 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    done
+  done
+  echo "== cornell pt-nee: $(timeout -k 5 60 "$F" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+  for i in bdpt pt-nee; do
+    echo "== cornell $i 1 s: $(timeout -k 5 60 "$F" render $CB --integrator $i --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    echo "== cornell $i 0.1 s: $(timeout -k 5 60 "$F" render $CB --integrator $i --time 0.1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+  done
+  ;;
 s42f)
   # Session 42: the finishing launch's count scaled by the pass's slots (.device/bidir-fin4.gz)
   # against the count learnt unscaled (.device/bidir-fin3.gz), where passes of other sizes follow
