@@ -40,6 +40,7 @@
 #include "env.glsl"
 #include "punctual.glsl"
 #include "volume.glsl"
+#include "wf_ray.glsl"
 #include "bdpt.glsl"
 #include "vcm.glsl"
 #include "wf_active.glsl"
@@ -79,12 +80,6 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 }
 
 #include "bdpt_camera_path.glsl"
-
-// A ray for the trace kernels from `o` along `d` up to `tmax`; its tmin slot carries the
-// path's stochastic-opacity seed where the scene has alpha (SPEC_RAY_SEED), else 0.
-GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
-    return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
-}
 
 // A finite contribution adds to `sum`; a NaN or Inf one is counted in `bad`.
 void add_finite(inout vec3 sum, inout uint bad, vec3 c) {

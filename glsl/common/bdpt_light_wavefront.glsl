@@ -34,6 +34,7 @@
 #include "env.glsl"
 #include "punctual.glsl"
 #include "volume.glsl"
+#include "wf_ray.glsl"
 #include "bdpt.glsl"
 #include "vcm.glsl"
 #include "wf_active.glsl"
@@ -89,12 +90,6 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
     wf_join_contrib = contrib;
     wf_join_pixel = pix;
     wf_join_count = 1u;
-}
-
-// A ray for the trace kernels from `o` along `d` up to `tmax`; its tmin slot carries the
-// path's stochastic-opacity seed where the scene has alpha (SPEC_RAY_SEED), else 0.
-GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
-    return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
 }
 
 // One launch's work for this invocation's slot, if it has one.

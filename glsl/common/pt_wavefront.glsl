@@ -35,6 +35,7 @@
 #include "env.glsl"
 #include "punctual.glsl"
 #include "volume.glsl"
+#include "wf_ray.glsl"
 
 layout(local_size_x = PT_WG_SIZE) in;
 layout(constant_id = SPEC_NEE) const uint NEE = 1u;
@@ -61,12 +62,6 @@ vec3 wf_shadow_contrib = vec3(0.0);
 bool wf_shadow_pending = false;
 
 #include "pt_path.glsl"
-
-// A ray for the trace kernels from `o` along `d` up to `tmax`; its tmin slot carries the
-// path's stochastic-opacity seed where the scene has alpha (SPEC_RAY_SEED), else 0.
-GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
-    return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
-}
 
 void main() {
     // Slot -> (slice, pixel of the camera's window), as the megakernel maps its invocations (pt_kernel.glsl, pt_invocation).

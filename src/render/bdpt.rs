@@ -405,7 +405,7 @@ impl Bdpt {
         let record_light = |i: usize| {
             let (push, before) = (&pushes[i], i.checked_sub(1).map(|b| &pushes[b]));
             assert!(push.light_path_total <= self.light_paths * self.max_camera_samples, "more light paths than the store holds");
-            let launches = w.first_batch(Pass::Light, slots(Pass::Light, push));
+            let batch = w.first_batch(Pass::Light, slots(Pass::Light, push));
             let recorded = ctx.record("bdpt wavefront light pass", move |rec| {
                 if let Some(before) = before.filter(|b| b.camera_samples > 1) {
                     film.record_add_slices(rec, before.camera_samples)?;
@@ -414,21 +414,21 @@ impl Bdpt {
                     // The camera pass adds into the slices as its contributions arise.
                     rec.fill_buffer(film.slices_buffer(), 0);
                 }
-                w.record_batch(rec, Pass::Light, binds, geometry, push, launches, true)
+                w.record_batch(rec, Pass::Light, binds, geometry, push, batch, true)
             });
-            recorded.map(|r| (r, launches))
+            recorded.map(|r| (r, batch))
         };
         let record_camera = |i: usize| {
             let push = &pushes[i];
-            let launches = w.first_batch(Pass::Camera, slots(Pass::Camera, push));
+            let batch = w.first_batch(Pass::Camera, slots(Pass::Camera, push));
             let recorded = ctx.record("bdpt wavefront camera pass", move |rec| {
                 self.record_cache(rec, binds, push)?;
-                w.record_batch(rec, Pass::Camera, binds, geometry, push, launches, true)
+                w.record_batch(rec, Pass::Camera, binds, geometry, push, batch, true)
             });
-            recorded.map(|r| (r, launches))
+            recorded.map(|r| (r, batch))
         };
         // Batches after the first until the pass is over.
-        let finish = |pass, push: &BdptPush, mut batch: Batch| -> std::result::Result<(), RenderError> {
+        let later_batches = |pass, push: &BdptPush, mut batch: Batch| -> std::result::Result<(), RenderError> {
             let mut done = 0;
             while let Some(next) = w.after_batch(pass, done, batch)? {
                 done += batch.launches;
@@ -443,12 +443,12 @@ impl Bdpt {
         }
         let mut light = Some(record_light(0)?);
         for (i, push) in pushes.iter().enumerate() {
-            let (recorded, launches) = light.take().expect("recorded while the camera pass before ran");
+            let (recorded, batch) = light.take().expect("recorded while the camera pass before ran");
             let camera = ctx.run(recorded, || record_camera(i))??;
-            finish(Pass::Light, push, launches)?;
-            let (recorded, launches) = camera;
+            later_batches(Pass::Light, push, batch)?;
+            let (recorded, batch) = camera;
             let next_light = ctx.run(recorded, || (i + 1 < pushes.len()).then(|| record_light(i + 1)).transpose())??;
-            finish(Pass::Camera, push, launches)?;
+            later_batches(Pass::Camera, push, batch)?;
             light = next_light;
             if light.is_none() && push.camera_samples > 1 {
                 ctx.submit("bdpt film", |rec| film.record_add_slices(rec, push.camera_samples))?;

@@ -20,7 +20,7 @@ use std::cell::Cell;
 
 use super::bdpt::Join;
 use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues, LIVE_SLOT_BYTES};
-use super::{gpu_scene::GpuScene, settings::WavefrontFinish as Finish, RenderError};
+use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::BdptWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Recorder, Result, Spec};
 
@@ -99,7 +99,7 @@ pub struct WavefrontPasses {
     camera: Kernel,
     /// The finishing launches' kernels (None where `finish` is Off).
     finishers: Option<[Kernel; 2]>,
-    finish: Finish,
+    finish: WavefrontFinish,
     /// Per pass: what the last one left live, for the next one's finishing launch.
     tails: [std::cell::RefCell<Tail>; 2],
     queues: Queues,
@@ -142,7 +142,7 @@ impl WavefrontPasses {
         let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, &specs)?;
         let finish = settings.wavefront_finish;
         let finishers = match finish {
-            Finish::Off => None,
+            WavefrontFinish::Off => None,
             _ => Some([
                 ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FINISH_FORMS), &specs)?,
                 ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FINISH_FORMS), &specs)?,
@@ -209,17 +209,11 @@ impl WavefrontPasses {
     /// such pass took, and two more.
     pub fn first_batch(&self, pass: Pass, slots: u32) -> Batch {
         let launches = match self.finish {
-            Finish::Off => return Batch { launches: even_batch(self.launches[pass as usize].get() + 2), finish: false, slots },
-            Finish::After(n) => n,
-            Finish::Auto => finish_at(&self.tails[pass as usize].borrow(), slots, self.live()),
+            WavefrontFinish::Off => return Batch { launches: even_batch(self.launches[pass as usize].get() + 2), finish: false, slots },
+            WavefrontFinish::After(n) => n,
+            WavefrontFinish::Auto => finish_at(&self.tails[pass as usize].borrow(), slots, self.queues.finish_below()),
         };
         Batch { launches, finish: true, slots }
-    }
-
-    /// Live paths below which a pass finishes (Auto): a quarter of the trace kernels' resident
-    /// rays.
-    fn live(&self) -> u32 {
-        (self.queues.resident_rays() / 4).max(1)
     }
 
     /// Records `batch` of `pass` over its slots: its launches, each followed by the two

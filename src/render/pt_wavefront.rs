@@ -100,8 +100,8 @@ fn batch_launches(first: bool, samples_per_slot: u32, launches_per_sample: f64, 
 }
 
 /// Launches before a pass's finishing one (`finish`, not Off): `After(n)`'s n, else the last
-/// pass's launches per sample of a slot times this pass's samples; even, from 2 to
-/// `WF_MAX_BATCH - 2` batches' worth.
+/// pass's launches per sample of a slot times this pass's samples; even, at least 2 (recorded
+/// in batches of at most `WF_MAX_BATCH`).
 fn finish_launches(finish: WavefrontFinish, samples_per_slot: u32, finish_per_sample: f64) -> u32 {
     let n = match finish {
         WavefrontFinish::After(n) => n,
@@ -153,7 +153,7 @@ impl IntegratorKernels for WavefrontPathTracer {
         // WF_MAX_BATCH), and the first launch that left fewer segments than `live`, for the
         // next pass's count.
         let finish_at = self.finisher.as_ref().map(|_| finish_launches(self.finish, samples_per_slot, self.finish_per_sample.get()));
-        let live = (self.queues.resident_rays() / 4).max(1);
+        let live = self.queues.finish_below();
         let mut first_below = None;
         let mut done = 0u32;
         loop {

@@ -264,10 +264,12 @@ impl Queues {
         queued.iter().position(|c| c[0] + c[1] == 0).map(|l| l as u32)
     }
 
-    /// Rays the trace kernels run at once: a persistent kernel's resident invocations (else
-    /// the queues' slots).
-    pub fn resident_rays(&self) -> u32 {
-        self.tracer.queued_groups(self.slots).saturating_mul(abi::TRACE_WG_SIZE).min(self.slots)
+    /// Live paths below which a pass's tail is left to its finishing launch
+    /// (`WavefrontFinish::Auto`): a quarter of the rays the trace kernels run at once (a
+    /// persistent kernel's resident invocations, else the queues' slots).
+    pub fn finish_below(&self) -> u32 {
+        let resident = self.tracer.queued_groups(self.slots).saturating_mul(abi::TRACE_WG_SIZE).min(self.slots);
+        (resident / 4).max(1)
     }
 }
 
