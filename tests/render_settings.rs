@@ -354,9 +354,11 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
     let tall = scene.materials.iter().position(|m| m.name == "tallBox").expect("the Cornell box's tall box");
     let short = scene.materials.iter().position(|m| m.name == "shortBox").expect("the Cornell box's short box");
     // The same box with a smooth glass short box and a mirror tall box (BDPT's wavefront passes
-    // are its default on GPUs in such scenes: paths through specular vertices).
+    // are its default on GPUs in such scenes: paths through specular vertices), the glass
+    // absorbing (a medium, which the passes' path states carry across launches).
     let mut specular = scene.clone();
     (specular.materials[short].refractivity, specular.materials[short].ior) = (1.0, 1.5);
+    specular.materials[short].absorption = glam::Vec3::new(0.002, 0.006, 0.012);
     specular.materials[tall].reflectivity = 1.0;
     scene.materials[tall].blend = Some(0.5);
     // Two and three candidates: lavapipe's 8-lane subgroups share them among the blocks that

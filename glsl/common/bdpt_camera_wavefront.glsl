@@ -52,13 +52,17 @@ layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
 // The light vertex cache: stored slots of every light path, densely listed.
 layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_index[]; }; // entries of LVC_ENTRY_WORDS (lvc_entry.glsl)
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
-layout(std430, binding = BIND_PT_SUSPENDED) buffer State { BdptCameraState state[]; };
+// The slots' paths (`camera_state_load`).
+layout(std430, binding = BIND_PT_SUSPENDED) buffer State { uvec4 state_words[]; };
 layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
-layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
+// Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
+layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
-layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec4 wf_index[]; };
+// Where a slot's last launch queued its rays: its segment's place, then its first shadow ray's
+// with their count from bit WF_SHADOW_COUNT_SHIFT up (read into `queued` below).
+layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec2 wf_index[]; };
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
 #define BDPT_JOIN JOIN_LVC
 
@@ -80,6 +84,30 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 }
 
 #include "bdpt_camera_path.glsl"
+
+// A slot's path: BdptCameraState's words at g * CAMERA_STATE_WORDS, its medium and
+// opacity-seed word last, and neither read nor written (nor given room) in scenes with no medium
+// and no alpha, where a path takes four words: two 32-byte sectors, where five straddle three or
+// four.
+const bool CAMERA_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
+const uint CAMERA_STATE_WORDS = CAMERA_STATE_SIGMA_SEED ? 5u : 4u;
+
+BdptCameraState camera_state_load(uint g) {
+    uint w = g * CAMERA_STATE_WORDS;
+    return BdptCameraState(state_words[w], uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
+        CAMERA_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u), state_words[w + 3u]);
+}
+
+void camera_state_store(uint g, BdptCameraState st) {
+    uint w = g * CAMERA_STATE_WORDS;
+    state_words[w] = st.o_depth;
+    state_words[w + 1u] = floatBitsToUint(st.d_dvcm);
+    state_words[w + 2u] = floatBitsToUint(st.beta_dvc);
+    state_words[w + 3u] = st.rng_status;
+    if (CAMERA_STATE_SIGMA_SEED) {
+        state_words[w + 4u] = st.sigma_seed;
+    }
+}
 
 // A finite contribution adds to `sum`; a NaN or Inf one is counted in `bad`.
 void add_finite(inout vec3 sum, inout uint bad, vec3 c) {
@@ -109,10 +137,11 @@ void run_slot() {
     bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
     uint launch = wf_launch(pc.launch);
     BdptCameraState st = BdptCameraState(uvec4(0u), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
-    uvec4 queued = uvec4(0u); // where the last launch queued its rays
+    uvec3 queued = uvec3(0u); // where the last launch queued its rays: segment, shadow rays, their count
     if (!fresh) {
-        st = state[g];
-        queued = wf_index[g];
+        st = camera_state_load(g);
+        uvec2 entry = wf_index[g];
+        queued = uvec3(entry.x, entry.y & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), entry.y >> WF_SHADOW_COUNT_SHIFT);
     }
     uint status = st.rng_status.w;
     if (status == PT_DONE && queued.z == 0u) {
@@ -134,7 +163,7 @@ void run_slot() {
     uint read_half = (launch & 1u) == 0u ? half_len : 0u;
     uint write_half = half_len - read_half;
     for (uint i = 0u; i < queued.z; i++) {
-        if (wf_shadow_hits[queued.y + i].tri == NO_HIT) {
+        if (wf_shadow_hits[queued.y + i] == NO_HIT) {
             add_finite(sum, bad, wf_contrib[read_half + queued.y + i].rgb);
         }
     }
@@ -219,20 +248,20 @@ void run_slot() {
         queue_base.y = shadow_total > 0u ? atomicAdd(wf_counts[2u * launch + 1u], shadow_total) : 0u;
     }
     queue_base = subgroupBroadcastFirst(queue_base);
-    uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count), wf_shadow_count, 0u);
+    uvec2 next = uvec2(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count));
     if (alive) {
-        state[g] = BdptCameraState(uvec4(floatBitsToUint(o), depth), vec4(d, d_vcm), vec4(beta, d_vc), uvec4(floatBitsToUint(sigma_near), blend_seed),
-            uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        camera_state_store(g, BdptCameraState(uvec4(floatBitsToUint(o), depth), vec4(d, d_vcm), vec4(beta, d_vc),
+            uvec4(floatBitsToUint(sigma_near), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)));
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
     } else if (status != PT_DONE) {
-        state[g].rng_status.w = PT_DONE;
+        state_words[g * CAMERA_STATE_WORDS + 3u].w = PT_DONE;
     }
     for (uint i = 0u; i < wf_shadow_count; i++) {
         wf_shadow_rays[next.y + i] = wavefront_ray(wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);
         wf_contrib[write_half + next.y + i] = vec4(wf_shadow_contrib[i], 0.0);
     }
     if (alive || wf_shadow_count > 0u || queued.z > 0u) {
-        wf_index[g] = next;
+        wf_index[g] = uvec2(next.x, next.y | (wf_shadow_count << WF_SHADOW_COUNT_SHIFT));
     }
     wf_list_next(pc.launch, g, alive || wf_shadow_count > 0u);
 

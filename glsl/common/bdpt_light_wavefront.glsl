@@ -48,7 +48,8 @@ layout(std430, binding = BIND_PT_SUSPENDED) buffer State { BdptLightState state[
 layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
-layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
+// Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
+layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
 layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec4 wf_index[]; };
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
@@ -117,7 +118,7 @@ void run_slot() {
     uint half_len = uint(wf_contrib.length()) / 2u;
     uint read_half = (launch & 1u) == 0u ? half_len : 0u;
     uint write_half = half_len - read_half;
-    if (queued.z > 0u && wf_shadow_hits[queued.y].tri == NO_HIT) {
+    if (queued.z > 0u && wf_shadow_hits[queued.y] == NO_HIT) {
         splat_join(wf_contrib[read_half + queued.y].rgb, queued.w);
     }
 

@@ -49,7 +49,8 @@ layout(std430, binding = BIND_PT_SUSPENDED) buffer State { PtSuspended state[]; 
 layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
-layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { GpuHit wf_shadow_hits[]; };
+// Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
+layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
 layout(std430, binding = BIND_WF_COUNTS) buffer Counts { uint wf_counts[]; };
 layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec2 wf_index[]; };
@@ -90,7 +91,7 @@ void main() {
     PixelSums sums = PixelSums(vec3(0.0), 0.0, 0u);
 
     // The last launch's light sample, if its shadow ray was clear.
-    if (c.w != 0.0 && wf_shadow_hits[queued.y].tri == NO_HIT) {
+    if (c.w != 0.0 && wf_shadow_hits[queued.y] == NO_HIT) {
         if (any(isnan(c.rgb)) || any(isinf(c.rgb))) {
             sums.bad++;
         } else {

@@ -16,7 +16,18 @@ layout(constant_id = SPEC_ANY_HIT) const uint ANY_HIT = 0u;
 layout(constant_id = SPEC_PERSISTENT) const uint PERSISTENT = 0u;
 layout(constant_id = SPEC_RAYS_PER_INVOCATION) const uint RAYS_PER_INVOCATION = 1u;
 layout(std430, binding = BIND_RAYS) readonly buffer Rays { GpuRay rays[]; };
-layout(std430, binding = BIND_HITS) writeonly buffer Hits { GpuHit hits[]; };
+// Per ray its GpuHit's four words (t, tri, u, v); with SPEC_HIT_WORDS (any-hit kernels) one
+// word per ray instead, the hit's `tri` (NO_HIT: clear), the buffer read as words.
+layout(std430, binding = BIND_HITS) writeonly buffer Hits { uvec4 hits[]; };
+layout(constant_id = SPEC_HIT_WORDS) const uint HIT_WORDS = 0u;
+
+void store_hit(uint i, TraceHit h) {
+    if (HIT_WORDS != 0u) {
+        hits[i >> 2u][i & 3u] = h.prim;
+    } else {
+        hits[i] = uvec4(floatBitsToUint(h.t), h.prim, floatBitsToUint(h.bary));
+    }
+}
 layout(std430, binding = BIND_STATS) buffer Stats { uint stat_nodes; uint stat_tris; };
 // Persistent kernels: the next ray to fetch, and the launch's finished workgroups; the last
 // to finish leaves both at 0 for the next launch (`Tracer` zeroes them once, when made).
@@ -52,7 +63,7 @@ void trace_one(uint i, inout uvec2 stats) {
     if (LOCKSTEP != 0u || r.dir.w >= 0.0) {
         h = trace_ray(r.origin.xyz, r.dir.xyz, ray_tmin(r), r.dir.w, ANY_HIT != 0u, stats);
     }
-    hits[i] = GpuHit(h.t, h.prim, h.bary.x, h.bary.y);
+    store_hit(i, h);
 }
 
 // (Not in the lockstep kernel, trace_bvh4_lockstep.comp: its leaf tests read the origin that
@@ -90,7 +101,7 @@ void trace_dynamic(inout uvec2 stats) {
         uint idle_count = subgroupBallotBitCount(idle_lanes);
         if (idle_count >= refill_at) {
             if (idle && ray != NO_RAY) {
-                hits[ray] = GpuHit(hit.t, hit.prim, hit.bary.x, hit.bary.y);
+                store_hit(ray, hit);
                 ray = NO_RAY;
             }
             if (!exhausted) {

@@ -105,6 +105,112 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s43f)
+  # Session 43: the one-word any-hit results as parts of uvec4s (.device/bidir-wrd2.gz; s43e's
+  # aliased blocks were not bound on NVIDIA): each build's wavefront images against its
+  # megakernels on this GPU, then s43c's rounds over 3dc4982 (s43), the index packing (idx) and
+  # wrd2, then the Cornell box at 0.1 s and 1 s with wrd2.
+  unpack s43 idx wrd2
+  for n in idx wrd2; do
+    F=$PWD/.device/bidir-$n
+    for i in bdpt pt-nee; do
+      timeout -k 5 60 "$F" render $CAU --integrator $i --spp 64 --seed 3 --wavefront off -o /tmp/m.exr > /dev/null 2>&1
+      timeout -k 5 60 "$F" render $CAU --integrator $i --spp 64 --seed 3 --wavefront on -o /tmp/w.exr > /dev/null 2>&1
+      echo "== $n $i caustic wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+    done
+    timeout -k 5 60 "$F" render --width 64 --height 64 --integrator bdpt --wavefront off --spp 64 --seed 3 -o /tmp/m.exr > /dev/null 2>&1
+    timeout -k 5 60 "$F" render --width 64 --height 64 --integrator bdpt --wavefront on --spp 64 --seed 3 -o /tmp/w.exr > /dev/null 2>&1
+    echo "== $n cornell bdpt wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  done
+  PT43=1 B43="s43 idx wrd2" bash "$0" s43c
+  F=$PWD/.device/bidir-wrd2
+  for i in bdpt pt-nee; do
+    for t in 0.1 1; do
+      echo "== wrd2 cornell $i $t s: $(timeout -k 5 60 "$F" render $CB --integrator $i --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+  done
+  ;;
+s43e)
+  # Session 43: why the build with one-word any-hit results (.device/bidir-wrd.gz) ran slow on
+  # an H100 in s43c, against the index packing alone (.device/bidir-idx.gz) and aos64: a 64 x 64
+  # render of each in either form against the megakernels, the launches' counts, kernel tables.
+  unpack aos64 idx wrd
+  for n in aos64 idx wrd; do
+    F=$PWD/.device/bidir-$n
+    timeout -k 5 60 "$F" render --width 64 --height 64 --integrator bdpt --wavefront off --spp 64 --seed 3 -o /tmp/m-$n.exr > /dev/null 2>&1
+    BIDIR_WF_LOG=1 timeout -k 5 60 "$F" render --width 64 --height 64 --integrator bdpt --wavefront on --spp 64 --seed 3 -o /tmp/w-$n.exr 2>&1 | grep -E "batch|spp in|rror" | cut -c1-300 | head -8
+    echo "== $n wavefront vs megakernel: $("$F" diff /tmp/w-$n.exr /tmp/m-$n.exr 2>&1 | grep -E '^(RMSE|mean)' | tr '\n' ' ')"
+    echo "== $n pt-nee caustic: $(timeout -k 5 60 "$F" render $CAU --integrator pt-nee --spp 64 --seed 3 --wavefront on -o /tmp/c-$n.exr 2>&1 | grep -E 'spp in|rror') $(timeout -k 5 60 "$F" render $CAU --integrator pt-nee --spp 64 --seed 3 --wavefront off -o /tmp/cm-$n.exr >/dev/null 2>&1; "$F" diff /tmp/c-$n.exr /tmp/cm-$n.exr 2>&1 | grep -E '^RMSE')"
+    echo "== $n kernel table cornell"; timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -E -A8 "^kernel|GPU [0-9.]+ ms|rror"
+  done
+  ;;
+s43c)
+  # Session 43: BDPT's wavefront path states word by word (.device/bidir-soa.gz; the medium's
+  # word left out where a scene has none) against 3dc4982's structs (.device/bidir-s43.gz):
+  # bench render GPU ms and the camera and light kernels' ms, two rounds interleaved.
+  B43=${B43:-s43 soa}
+  unpack $B43
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for r in 1 2; do
+    for n in $B43; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      if [ -n "${PT43:-}" ]; then
+        echo "== $n helmet pt-nee: $(timeout -k 5 60 "$F" bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+        echo "== $n caustic pt-nee: $(timeout -k 5 60 "$F" bench render $CAU --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+        echo "== $n caustic bdpt: $(timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+      fi
+    done
+  done
+  ;;
+s43b)
+  # Session 43: where a BDPT sample's time goes with the finishing launch (kernel tables of
+  # bench render on the Cornell box: bdpt auto, 1 candidate, pt-nee), and the finishing
+  # launch after 2, 4, 6, 8 launches (.device/bidir-s43.gz).
+  unpack s43
+  F=$PWD/.device/bidir-s43
+  for a in "bdpt|" "bdpt|--connection-candidates 1" "pt-nee|" "bdpt|--light-paths 0.25"; do
+    echo "== kernel table ${a%%|*} ${a#*|}"
+    timeout -k 5 60 "$F" bench render $CB --integrator ${a%%|*} ${a#*|} --spp 1024 --warmup 1 --runs 3 2>&1 | grep -E -A24 "^kernel|GPU [0-9.]+ ms"
+  done
+  for f in 2 4 6 8 auto; do
+    echo "== cornell finish $f: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 --wavefront-finish $f 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+  done
+  echo "== registers"; timeout -k 5 45 "$F" info --kernels 2>&1 | grep -E "bdpt_(camera|light)|pt_nee|trace" | cut -c1-200 | head -24
+  ;;
+s43a)
+  # Session 43 (.device/bidir-s43.gz, a build of 3dc4982 with a measurement hook,
+  # BIDIR_EXP_BUILD: obvhs' pre-split thresholds from BIDIR_EXP_SPLIT=low,flow,fhigh,iters).
+  # Issue #16's table on whatever card this is: pt, pt-nee, bdpt, bdpt:full on the Cornell box
+  # (1024-spp cost, 0.1 s and 1 s against .device/ref.exr), the caustic scene's bdpt; then
+  # issue #17's figures (two rounds), then pre-split settings at quality 5.
+  unpack s43
+  F=$PWD/.device/bidir-s43
+  for i in pt pt-nee bdpt bdpt:full; do
+    echo "== cornell $i 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    for t in 0.1 1; do
+      echo "== cornell $i $t s: $(timeout -k 5 60 "$F" render $CB --integrator $i --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+  done
+  echo "== hidden bdpt: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+  for i in pt-nee bdpt; do
+    echo "== caustic $i 256 spp: $(timeout -k 5 60 "$F" bench render $CAU --integrator $i --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    for t in 0.1 1; do
+      echo "== caustic $i $t s: $(timeout -k 5 60 "$F" render $CAU --integrator $i --time $t -o /tmp/c.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
+    done
+  done
+  sponza_rounds 2 "$F"
+  [ "${NO_SPLITS:-}" = 1 ] && exit 0
+  for sp in "0.75,1.3,1.2,16" "1,1.3,1.2,16" "0.5,1.3,1.2,16" "3,1.8,1.6,12"; do
+    for c in "" "--refill 24"; do
+      echo "== split $sp $c"; BIDIR_EXP_BUILD=1 BIDIR_EXP_SPLIT=$sp sponza_q5 "$F" $c
+    done
+  done
+  ;;
 s42g)
   # Session 42, for an H200 if one comes: issue #16's figures with the finishing launch
   # (.device/bidir-fin4.gz) against none (off): the Cornell box, the hidden light, pt-nee, 1 s.

@@ -391,6 +391,11 @@ gpu_consts! {
     /// (`RenderSettings::connection_candidates`; glsl/common/bdpt_camera_path.glsl); 1 draws it
     /// uniformly.
     pub const SPEC_LVC_CANDIDATES: u32 = 63;
+    /// Any-hit trace kernels: 1 writes one word per ray into BIND_HITS, word i of the buffer for
+    /// ray i (`GpuHit::tri`'s: NO_HIT where the segment is clear, 0 where it is blocked), instead
+    /// of a whole `GpuHit`; the wavefront passes' shadow rays, which read nothing else
+    /// (`TraceOptions::any_hit_words`).
+    pub const SPEC_HIT_WORDS: u32 = 64;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
     /// per slot of a wavefront form, its path between launches (`PtSuspended`, or BDPT's camera
     /// and light passes: `BdptCameraState`, `BdptLightState`).
@@ -415,8 +420,10 @@ gpu_consts! {
     /// and BIND_WF_SHADOW_RAYS; the trace kernels read their count there (BIND_RAY_COUNTS) and
     /// the host stops when a launch queues none.
     pub const BIND_WF_COUNTS: u32 = 46;
-    /// Per slot: where its segment and shadow ray went in the queues (uvec2; BDPT's wavefront
-    /// passes: its segment, its first shadow ray and their count, uvec4). They keep their paths
+    /// Per slot: where its segment and shadow ray went in the queues (uvec2; BDPT's light pass:
+    /// its segment, its join's shadow ray, their count and the join's pixel, uvec4; its camera
+    /// pass: its segment, then its first shadow ray with their count above
+    /// WF_SHADOW_COUNT_SHIFT, uvec2). They keep their paths
     /// in BIND_PT_SUSPENDED (`BdptCameraState`, `BdptLightState`) and the contribution of each
     /// queued shadow ray in BIND_WF_CONTRIB at the ray's place (the light pass: the film pixel
     /// of its join to the eye in w).
@@ -429,6 +436,11 @@ gpu_consts! {
     /// Shadow rays a slot of the wavefront camera pass (`bdpt_camera_wavefront.comp`) may queue
     /// per launch: the light sample and up to three connections (`--join lvc=N`, N <= 3).
     pub const BDPT_WF_SHADOW_RAYS: u32 = 4;
+    /// The wavefront camera pass's BIND_WF_INDEX entry is a `uvec2`: the slot's segment's place
+    /// in its ray queue, then its first shadow ray's place with the count of its shadow rays
+    /// (at most BDPT_WF_SHADOW_RAYS) in the bits from this one up. A shadow queue's 32-byte rays
+    /// within one binding's 4 GiB are fewer than 2^27, so the place fits below.
+    pub const WF_SHADOW_COUNT_SHIFT: u32 = 28;
     /// Most launches of `pt_wavefront.comp` one submission records (half BIND_WF_COUNTS's length).
     pub const WF_MAX_BATCH: u32 = 256;
     /// BDPT's wavefront passes (bdpt_light_wavefront.comp, bdpt_camera_wavefront.comp): which
@@ -865,7 +877,10 @@ gpu_structs! {
     }
 
     /// A camera subpath of the wavefront camera pass between its launches (BIND_PT_SUSPENDED;
-    /// glsl/common/bdpt_camera_path.glsl's `CameraPath` without VCM's terms).
+    /// glsl/common/bdpt_camera_path.glsl's `CameraPath` without VCM's terms). The kernel stores
+    /// it as 16-byte words, `sigma_seed` last and only in scenes with a medium or alpha: 64 bytes
+    /// a slot, two 32-byte sectors, in the others (bdpt_camera_wavefront.glsl, `camera_state_load`;
+    /// 10 % of the camera kernel's time on the Cornell box, session 43).
     pub struct BdptCameraState (80 bytes) {
         /// Origin of the next segment (its floats' bits), then the vertex count.
         pub o_depth: UVec4,

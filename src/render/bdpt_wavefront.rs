@@ -34,6 +34,9 @@ pub fn shadow_rays_per_slot(join: Join) -> Option<u32> {
     }
 }
 
+// The camera pass's index entry holds a slot's shadow-ray count above WF_SHADOW_COUNT_SHIFT.
+const _: () = assert!(abi::BDPT_WF_SHADOW_RAYS < 1 << (32 - abi::WF_SHADOW_COUNT_SHIFT));
+
 /// Bytes of a slot's path: the larger of a camera path's (`BdptCameraState`) and a light
 /// path's (`BdptLightState`).
 const STATE_BYTES: u64 = {

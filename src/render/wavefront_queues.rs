@@ -31,6 +31,7 @@ pub fn trace_options(scene: &GpuScene, on_cpu: bool, subgroup_size: u32, alpha: 
     opts.alpha = alpha.then_some(scene.features);
     opts.ray_seed = alpha;
     opts.count_buffer = true;
+    opts.any_hit_words = true;
     if scene.bvh.layout == crate::bvh::BvhLayout::Bvh4 && !on_cpu && subgroup_size >= 32 {
         opts.persistent = Some(0);
         opts.refill_lanes = REFILL_LANES;
@@ -61,7 +62,7 @@ pub struct Queues {
 /// Bytes per slot of `Queues` with `shadow` shadow rays: the segment and its hit, the shadow
 /// rays and theirs.
 pub const fn queue_bytes(shadow: u32) -> u64 {
-    (1 + shadow as u64) * (32 + 16)
+    32 + 16 + shadow as u64 * (32 + 4)
 }
 
 /// Bytes per slot of the lists of live slots (`Queues::new` with `live`): its places in both.
@@ -104,7 +105,8 @@ pub fn slot_buffer(
     bytes: u64,
     slot_bytes: u64,
 ) -> std::result::Result<Buffer, RenderError> {
-    ctx.create_buffer(name, slots * bytes, Memory::Device).map_err(|e| {
+    // Whole 16-byte words: the any-hit kernels write one-word hits as parts of `uvec4`s.
+    ctx.create_buffer(name, (slots * bytes).next_multiple_of(16), Memory::Device).map_err(|e| {
         RenderError::Memory(format!(
             "{what}'s {slots} slots ({} MiB) do not fit ({e}): lower --sample-slices or the image size, or add --wavefront off",
             (slots * slot_bytes) >> 20
@@ -138,7 +140,7 @@ impl Queues {
             rays: buffer("rays", 32)?,
             hits: buffer("hits", 16)?,
             shadow_rays: buffer("shadow_rays", 32 * shadow as u64)?,
-            shadow_hits: buffer("shadow_hits", 16 * shadow as u64)?,
+            shadow_hits: buffer("shadow_hits", 4 * shadow as u64)?,
             counts: ctx.create_buffer(&format!("{prefix}.counts"), batch_bytes, Memory::Device)?,
             counts_read: ctx.create_buffer(&format!("{prefix}.counts_read"), batch_bytes, Memory::Readback)?,
             trace_stats: ctx.create_buffer(&format!("{prefix}.trace_stats"), 8, Memory::Device)?,

@@ -81,6 +81,9 @@ pub struct TraceOptions {
     /// The ray count is read from a buffer a kernel before filled (SPEC_RAY_COUNT_BUFFER;
     /// `Tracer::record_trace_queued`).
     pub count_buffer: bool,
+    /// The any-hit kernel writes one word per ray, NO_HIT where the segment is clear
+    /// (SPEC_HIT_WORDS), instead of a `GpuHit`: a quarter of the bytes, for the wavefront passes.
+    pub any_hit_words: bool,
 }
 
 impl TraceOptions {
@@ -103,6 +106,7 @@ impl TraceOptions {
             workgroup_size: abi::TRACE_WG_SIZE,
             ray_seed: false,
             count_buffer: false,
+            any_hit_words: false,
         }
     }
 }
@@ -294,7 +298,10 @@ impl Tracer {
         };
         Ok(Tracer {
             closest: ctx.create_kernel(source, &with(abi::SPEC_ANY_HIT, 0))?,
-            any: ctx.create_kernel(source, &with(abi::SPEC_ANY_HIT, 1))?,
+            any: ctx.create_kernel(
+                source,
+                &[with(abi::SPEC_ANY_HIT, 1), vec![Spec { id: abi::SPEC_HIT_WORDS, value: opts.any_hit_words as u32 }]].concat(),
+            )?,
             gen_primary: ctx.create_kernel(&kernels::GEN_PRIMARY, &[])?,
             gen_shadow: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 0 }])?,
             gen_diffuse: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 1 }])?,
