@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Parts of session 43: s43a (issue #16's table and #17's figures, run on an H200 with 3dc4982 as .device/bidir-s43.gz; its pre-split settings on an H100), s43b (BDPT's kernel tables, the finishing launch's count; an H100), s43c (the camera state word by word, then in 64 bytes: .device/bidir-soa.gz on an H200, bidir-aos64.gz on an H100), s43e and s43f (the queue index in 8 bytes, one-word any-hit results; H100s), s43g (not run: 0c9bd92's kernels as .device/bidir-wrd2.gz against 3dc4982 for issue #16's table on an H200, and whether 3dc4982's BDPT wavefront image of the caustic scene differs from its megakernels' on a GPU as 0c9bd92's does).
 # Parts of session 42 (all run on H100s): s42a (session 41's partial sharing: not kept), s42b (what BDPT's pass tails cost, by --max-depth; BIDIR_WF_LOG), s42c (the finishing launch, .device/bidir-fin2.gz: --wavefront-finish off / auto / fixed counts, DamagedHelmet in .device/scenes/gltf).
 # Parts of session 41: s41a (run on an H200: s40a's builds, then the passes of a time-budgeted render with their submissions, .device/bidir-c41.gz a build of 0becd4b); s41b, s41c, s41d, s41e (run on H100s: the groups' registers, the pass model with pieces, the groups' candidates in one loop of N trips); s41e not yet run on an H200 (.device/bidir-fin.gz a build of 264f878 or later, .device/bidir-base.gz c821483, .device/bidir-c41.gz 0becd4b): run it there for issue #16's figures; s42a prepared (a measurement build, .device/bidir-part.gz: partial sharing where k N > lanes).
 # Parts of session 40 (not run: every call after the first start was refused): s40a and s40b (a shorter cut) time the candidate groups' reads shared by the whole subgroup (.device/bidir-cur.gz a build of bf1cb13 or later; .device/bidir-rd1t.gz fb09d7b's group-after-group order; .device/bidir-rd2e.gz scripts/device/s40a-two-sets.patch applied to c111b56) against session 39's reads per group (.device/bidir-new.gz, 3a6688e; with s39f.patch .device/bidir-g16.gz) and the lanes' pools (.device/bidir-base.gz, c821483), on Sponza above all; each built, stripped and gzipped. Session 39's s39c, s39e and s39f ran in session 40's one start (an H100; docs/results.md, "The candidate groups on a GPU").
@@ -105,6 +106,33 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s43g)
+  # Session 43: 0c9bd92 (.device/bidir-wrd2.gz, the same kernels) for issue #16's table on
+  # whatever card this is, beside 3dc4982 (.device/bidir-s43.gz): the Cornell box's bdpt and
+  # pt-nee (1024-spp cost, 0.1 s and 1 s), the hidden light, the caustic scene; and whether
+  # 3dc4982's BDPT wavefront image of the caustic scene differs from its megakernels' too.
+  unpack s43 wrd2
+  F=$PWD/.device/bidir-s43
+  timeout -k 5 60 "$F" render $CAU --integrator bdpt --spp 64 --seed 3 --wavefront off -o /tmp/m.exr > /dev/null 2>&1
+  timeout -k 5 60 "$F" render $CAU --integrator bdpt --spp 64 --seed 3 --wavefront on -o /tmp/w.exr > /dev/null 2>&1
+  echo "== s43 bdpt caustic wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  timeout -k 5 60 "$F" render $CAU --integrator bdpt --spp 64 --seed 3 --wavefront off --bvh bvh4 -o /tmp/m.exr > /dev/null 2>&1
+  echo "== s43 bdpt caustic wavefront vs megakernel over bvh4: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  for n in s43 wrd2; do
+    F=$PWD/.device/bidir-$n
+    for i in pt-nee bdpt; do
+      echo "== $n cornell $i 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+    echo "== $n hidden bdpt: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  done
+  F=$PWD/.device/bidir-wrd2
+  for i in bdpt pt-nee; do
+    for t in 0.1 1; do
+      echo "== wrd2 cornell $i $t s: $(timeout -k 5 60 "$F" render $CB --integrator $i --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+      echo "== wrd2 caustic $i $t s: $(timeout -k 5 60 "$F" render $CAU --integrator $i --time $t -o /tmp/c.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
+    done
+  done
+  ;;
 s43f)
   # Session 43: the one-word any-hit results as parts of uvec4s (.device/bidir-wrd2.gz; s43e's
   # aliased blocks were not bound on NVIDIA): each build's wavefront images against its
