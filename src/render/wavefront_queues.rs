@@ -59,8 +59,8 @@ pub struct Queues {
     shadow: u32,
 }
 
-/// Bytes per slot of `Queues` with `shadow` shadow rays: the segment and its hit, the shadow
-/// rays and theirs.
+/// Bytes per slot of `Queues` with `shadow` shadow rays: the segment and its hit (a `GpuHit`),
+/// the shadow rays and theirs (one word each, `TraceOptions::any_hit_words`).
 pub const fn queue_bytes(shadow: u32) -> u64 {
     32 + 16 + shadow as u64 * (32 + 4)
 }
