@@ -99,6 +99,12 @@ fn batch_launches(first: bool, samples_per_slot: u32, launches_per_sample: f64, 
     })
 }
 
+/// The finishing threshold `full` of a pass over all `capacity` slots, for a pass over `slots`
+/// of them (at least 1).
+fn scaled_threshold(full: u32, slots: u64, capacity: u64) -> u32 {
+    ((full as u64 * slots.min(capacity)) / capacity.max(1)).max(1) as u32
+}
+
 /// Launches before a pass's finishing one (`finish`, not Off): `After(n)`'s n, else the last
 /// pass's launches per sample of a slot times this pass's samples; even, at least 2 (recorded
 /// in batches of at most `WF_MAX_BATCH`).
@@ -151,9 +157,12 @@ impl IntegratorKernels for WavefrontPathTracer {
         let samples_per_slot = spp.div_ceil(slices);
         // With a finishing launch: after `finish_at` launches (in batches of at most
         // WF_MAX_BATCH), and the first launch that left fewer segments than `live`, for the
-        // next pass's count.
+        // next pass's count. `live` is the threshold of a pass over all the slots, scaled to this
+        // pass's: a smaller pass (a time-budgeted render's first ones, a remainder) starts with
+        // fewer paths and would cross the whole threshold launches early, and the next full
+        // pass, finishing that early, would run most of its paths in the finishing kernel.
         let finish_at = self.finisher.as_ref().map(|_| finish_launches(self.finish, samples_per_slot, self.finish_per_sample.get()));
-        let live = self.queues.finish_below();
+        let live = scaled_threshold(self.queues.finish_below(), slots as u64, self.slots);
         let mut first_below = None;
         let mut done = 0u32;
         loop {
@@ -206,6 +215,13 @@ impl IntegratorKernels for WavefrontPathTracer {
             // The launch after the first that left few paths; where none did, four more.
             let next = first_below.map_or(f + 4, |l| l + 1);
             self.finish_per_sample.set(f64::from(next) / samples_per_slot as f64);
+            if std::env::var_os("BIDIR_WF_LOG").is_some() {
+                eprintln!(
+                    "wavefront path tracing pass over {slots} slots, {samples_per_slot} samples each: finished after {f} launches, below {live} live segments after {}; next: {:.2} launches a sample",
+                    first_below.map_or("none".to_string(), |l| (l + 1).to_string()),
+                    self.finish_per_sample.get()
+                );
+            }
         }
         if slices > 1 {
             ctx.submit("wavefront film", |rec| film.record_add_slices(rec, slices))?;
@@ -217,6 +233,14 @@ impl IntegratorKernels for WavefrontPathTracer {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_finishing_threshold_scales_with_the_pass_slots() {
+        assert_eq!(scaled_threshold(16_896, 8 << 20, 8 << 20), 16_896);
+        assert_eq!(scaled_threshold(16_896, 1 << 20, 8 << 20), 2_112);
+        assert_eq!(scaled_threshold(16_896, 10, 8 << 20), 1, "never 0: a launch must be able to fall below it");
+        assert_eq!(scaled_threshold(100, 1 << 30, 1 << 20), 100, "not above the whole");
+    }
 
     #[test]
     fn finishing_launches_scale_with_the_samples_and_stay_even() {
