@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Prepared in session 43 for the next: s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz, bidir-s44b.gz, bidir-s44ab.gz against .device/bidir-wrd2.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
+# Prepared in session 43 for the next: s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
 # Parts of session 43: s43a (issue #16's table and #17's figures, run on an H200 with 3dc4982 as .device/bidir-s43.gz; its pre-split settings on an H100), s43b (BDPT's kernel tables, the finishing launch's count; an H100), s43c (the camera state word by word, then in 64 bytes: .device/bidir-soa.gz on an H200, bidir-aos64.gz on an H100), s43e and s43f (the queue index in 8 bytes, one-word any-hit results; H100s), s43g (not run: 0c9bd92's kernels as .device/bidir-wrd2.gz against 3dc4982 for issue #16's table on an H200, and whether 3dc4982's BDPT wavefront image of the caustic scene differs from its megakernels' on a GPU as 0c9bd92's does).
 # Parts of session 42 (all run on H100s): s42a (session 41's partial sharing: not kept), s42b (what BDPT's pass tails cost, by --max-depth; BIDIR_WF_LOG), s42c (the finishing launch, .device/bidir-fin2.gz: --wavefront-finish off / auto / fixed counts, DamagedHelmet in .device/scenes/gltf).
 # Parts of session 41: s41a (run on an H200: s40a's builds, then the passes of a time-budgeted render with their submissions, .device/bidir-c41.gz a build of 0becd4b); s41b, s41c, s41d, s41e (run on H100s: the groups' registers, the pass model with pieces, the groups' candidates in one loop of N trips); s41e not yet run on an H200 (.device/bidir-fin.gz a build of 264f878 or later, .device/bidir-base.gz c821483, .device/bidir-c41.gz 0becd4b): run it there for issue #16's figures; s42a prepared (a measurement build, .device/bidir-part.gz: partial sharing where k N > lanes).
@@ -112,11 +112,13 @@ s44a)
   # states, so that a launch reads them with the path and not from the index buffer:
   # scripts/device/s44a.patch (the camera pass: in its state's fourth word, the random numbers'
   # sample index recomputed, the status read from the vertex count; .device/bidir-s44a.gz),
-  # s44b.patch (the light pass: a sixth word; .device/bidir-s44b.gz) and both
-  # (.device/bidir-s44ab.gz), each on 91d877d, against 0c9bd92's kernels (.device/bidir-wrd2.gz):
-  # each build's wavefront images against its megakernels on this GPU, s43c's rounds, then
-  # issue #16's Cornell figures (0.1 s and 1 s) and pt-nee's.
-  unpack wrd2 s44a s44b s44ab
+  # s44b.patch (the light pass: a sixth word) with s44a.patch (.device/bidir-s44ab.gz), each on
+  # 91d877d, against 0c9bd92's kernels (.device/bidir-wrd2.gz): each build's wavefront images
+  # against its megakernels on this GPU, s43c's rounds, then issue #16's Cornell figures (0.1 s
+  # and 1 s) and pt-nee's; then e6697aa (.device/bidir-head43.gz: the wavefront path tracer's
+  # finishing threshold scaled to the pass's slots) against 0c9bd92 on DamagedHelmet's pt-nee in
+  # fresh processes (session 43 saw 28-72 ms instead of 19 in some).
+  unpack wrd2 s44a s44ab head43
   HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
   for n in wrd2 s44ab; do
     F=$PWD/.device/bidir-$n
@@ -126,7 +128,7 @@ s44a)
       echo "== $n ${sc%%|*} bdpt wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
     done
   done
-  B43="wrd2 s44a s44b s44ab" bash "$0" s43c
+  B43="wrd2 s44a s44ab" bash "$0" s43c
   for n in wrd2 s44ab; do
     F=$PWD/.device/bidir-$n
     for t in 0.1 1; do
@@ -138,6 +140,12 @@ s44a)
   for t in 0.1 1; do
     echo "== cornell pt-nee $t s: $(timeout -k 5 60 "$F" render $CB --integrator pt-nee --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
   done
+  for r in 1 2 3 4; do
+    for n in wrd2 head43; do
+      echo "== $n helmet pt-nee, a fresh process: $(timeout -k 5 60 .device/bidir-$n bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  echo "== head43 helmet pt-nee passes"; BIDIR_WF_LOG=1 timeout -k 5 60 .device/bidir-head43 bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -E "pass over|GPU" | cut -c1-200 | head -20
   ;;
 s43g)
   # Session 43: 0c9bd92 (.device/bidir-wrd2.gz, the same kernels) for issue #16's table on
