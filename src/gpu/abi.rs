@@ -409,7 +409,8 @@ gpu_consts! {
     /// The wavefront path tracer (`pt_wavefront.comp`; `--wavefront`), one slot per megakernel
     /// invocation: the segment each slot's path traces next (`GpuRay`, tmax < 0: none) and what
     /// the closest-hit trace kernel found (`GpuHit`); the light sample's shadow ray and what the
-    /// any-hit kernel found; the contribution that shadow ray carries (rgb; w = 1: pending).
+    /// any-hit kernel found (one word, SPEC_HIT_WORDS); the contribution that shadow ray carries
+    /// (rgb; w = 1: pending).
     pub const BIND_WF_RAYS: u32 = 41;
     pub const BIND_WF_HITS: u32 = 42;
     pub const BIND_WF_SHADOW_RAYS: u32 = 43;
