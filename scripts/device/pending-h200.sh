@@ -70,6 +70,12 @@ sponza_rounds() {
 }
 # Session 39's parts: unpack .device/bidir-NAME.gz for each NAME given (the binary is then
 # .device/bidir-NAME).
+# A time-budgeted render with the binary $1 for $2 seconds and the further options, against
+# $REF (or REFERENCE=FILE): its samples, time and RMSE on one line.
+at_time() {
+  local b=$1 t=$2; shift 2
+  echo "$(timeout -k 5 60 "$b" render "$@" --time "$t" -o /tmp/at_time.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$b" diff /tmp/at_time.exr "${REFERENCE:-$REF}" 2>&1 | grep -E '^RMSE ')"
+}
 unpack() {
   for n in "$@"; do gunzip -kf ".device/bidir-$n.gz"; chmod +x ".device/bidir-$n"; done
 }
@@ -132,13 +138,13 @@ s44a)
   for n in wrd2 s44ab; do
     F=$PWD/.device/bidir-$n
     for t in 0.1 1; do
-      echo "== $n cornell bdpt $t s: $(timeout -k 5 60 "$F" render $CB --integrator bdpt --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+      echo "== $n cornell bdpt $t s: $(at_time "$F" $t $CB --integrator bdpt)"
     done
   done
   F=$PWD/.device/bidir-wrd2
   echo "== cornell pt-nee 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
   for t in 0.1 1; do
-    echo "== cornell pt-nee $t s: $(timeout -k 5 60 "$F" render $CB --integrator pt-nee --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    echo "== cornell pt-nee $t s: $(at_time "$F" $t $CB --integrator pt-nee)"
   done
   for r in 1 2 3 4; do
     for n in wrd2 head43; do
@@ -169,8 +175,8 @@ s43g)
   F=$PWD/.device/bidir-wrd2
   for i in bdpt pt-nee; do
     for t in 0.1 1; do
-      echo "== wrd2 cornell $i $t s: $(timeout -k 5 60 "$F" render $CB --integrator $i --time $t -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
-      echo "== wrd2 caustic $i $t s: $(timeout -k 5 60 "$F" render $CAU --integrator $i --time $t -o /tmp/c.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/c.exr assets/scenes/caustic/reference.exr 2>&1 | grep -E '^RMSE ')"
+      echo "== wrd2 cornell $i $t s: $(at_time "$F" $t $CB --integrator $i)"
+      echo "== wrd2 caustic $i $t s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" $t $CAU --integrator $i)"
     done
   done
   ;;
