@@ -60,9 +60,6 @@ layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuR
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
-// Where a slot's last launch queued its rays: its segment's place, then its first shadow ray's
-// with their count from bit WF_SHADOW_COUNT_SHIFT up (read into `queued` below).
-layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec2 wf_index[]; };
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
 #define BDPT_JOIN JOIN_LVC
 
@@ -85,25 +82,41 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 
 #include "bdpt_camera_path.glsl"
 
-// A slot's path: BdptCameraState's words at g * CAMERA_STATE_WORDS, its medium and
-// opacity-seed word last, and neither read nor written (nor given room) in scenes with no medium
-// and no alpha, where a path takes four words: two 32-byte sectors, where five straddle three or
-// four.
+// A slot's path and where its last launch queued its rays, in 16-byte words at
+// g * CAMERA_STATE_WORDS: the origin and vertex count (CAMERA_DONE once the path has ended),
+// the direction and dVCM, the throughput and dVC, then the random-number state and dimension
+// with the segment's place in its queue and the first shadow ray's with their count from bit
+// WF_SHADOW_COUNT_SHIFT up; last, only in scenes with a medium or alpha, the medium and the
+// opacity seed. Without them a slot takes four words, two 32-byte sectors (five straddle three
+// or four), and one read of them brings the queue's places too. The random numbers' sample index
+// is rng_init's (`rng_init_index`), the status follows from the vertex count.
 const bool CAMERA_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
 const uint CAMERA_STATE_WORDS = CAMERA_STATE_SIGMA_SEED ? 5u : 4u;
+const uint CAMERA_DONE = 0xffffffffu;
 
-BdptCameraState camera_state_load(uint g) {
+// Slot g's path (its sample index `sample_index`) and its queued rays: segment, first shadow
+// ray, their count.
+BdptCameraState camera_state_load(uint g, uint sample_index, out uvec3 queued) {
     uint w = g * CAMERA_STATE_WORDS;
-    return BdptCameraState(state_words[w], uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
-        CAMERA_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u), state_words[w + 3u]);
+    uvec4 o_depth = state_words[w];
+    uvec4 rng_queue = state_words[w + 3u];
+    queued = uvec3(rng_queue.z, rng_queue.w & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), rng_queue.w >> WF_SHADOW_COUNT_SHIFT);
+    uint status = o_depth.w == CAMERA_DONE ? PT_DONE : PT_SUSPENDED;
+    return BdptCameraState(o_depth, uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
+        CAMERA_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u), uvec4(rng_queue.x, rng_init_index(sample_index), rng_queue.y, status));
 }
 
-void camera_state_store(uint g, BdptCameraState st) {
+// The places of slot g's queued rays, packed as `camera_state_load` reads them.
+uvec2 camera_queue_word(uvec2 next, uint shadow_count) {
+    return uvec2(next.x, next.y | (shadow_count << WF_SHADOW_COUNT_SHIFT));
+}
+
+void camera_state_store(uint g, BdptCameraState st, uvec2 queue) {
     uint w = g * CAMERA_STATE_WORDS;
     state_words[w] = st.o_depth;
     state_words[w + 1u] = floatBitsToUint(st.d_dvcm);
     state_words[w + 2u] = floatBitsToUint(st.beta_dvc);
-    state_words[w + 3u] = st.rng_status;
+    state_words[w + 3u] = uvec4(st.rng_status.x, st.rng_status.z, queue);
     if (CAMERA_STATE_SIGMA_SEED) {
         state_words[w + 4u] = st.sigma_seed;
     }
@@ -139,9 +152,7 @@ void run_slot() {
     BdptCameraState st = BdptCameraState(uvec4(0u), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
     uvec3 queued = uvec3(0u); // where the last launch queued its rays: segment, shadow rays, their count
     if (!fresh) {
-        st = camera_state_load(g);
-        uvec2 entry = wf_index[g];
-        queued = uvec3(entry.x, entry.y & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), entry.y >> WF_SHADOW_COUNT_SHIFT);
+        st = camera_state_load(g, pc.sample_base + slice, queued);
     }
     uint status = st.rng_status.w;
     if (status == PT_DONE && queued.z == 0u) {
@@ -251,17 +262,20 @@ void run_slot() {
     uvec2 next = uvec2(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count));
     if (alive) {
         camera_state_store(g, BdptCameraState(uvec4(floatBitsToUint(o), depth), vec4(d, d_vcm), vec4(beta, d_vc),
-            uvec4(floatBitsToUint(sigma_near), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)));
+            uvec4(floatBitsToUint(sigma_near), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
+            camera_queue_word(next, wf_shadow_count));
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
-    } else if (status != PT_DONE) {
-        state_words[g * CAMERA_STATE_WORDS + 3u].w = PT_DONE;
+    } else {
+        if (status != PT_DONE) {
+            state_words[g * CAMERA_STATE_WORDS].w = CAMERA_DONE;
+        }
+        if (wf_shadow_count > 0u || queued.z > 0u) {
+            state_words[g * CAMERA_STATE_WORDS + 3u].zw = camera_queue_word(next, wf_shadow_count);
+        }
     }
     for (uint i = 0u; i < wf_shadow_count; i++) {
         wf_shadow_rays[next.y + i] = wavefront_ray(wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);
         wf_contrib[write_half + next.y + i] = vec4(wf_shadow_contrib[i], 0.0);
-    }
-    if (alive || wf_shadow_count > 0u || queued.z > 0u) {
-        wf_index[g] = uvec2(next.x, next.y | (wf_shadow_count << WF_SHADOW_COUNT_SHIFT));
     }
     wf_list_next(pc.launch, g, alive || wf_shadow_count > 0u);
 

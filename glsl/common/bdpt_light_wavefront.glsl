@@ -17,8 +17,8 @@
 // matters here: light paths have long tails. A path that ends writes its stored and seen
 // counts for the light vertex cache, as the megakernel does. The join's contribution waits in
 // BIND_WF_CONTRIB at its ray's place, in the half of the buffer of the launch's parity, its
-// film pixel in the slot's BIND_WF_INDEX entry (w); a NaN or Inf contribution is dropped and
-// counted.
+// film pixel in the path's queue word (`light_state_load`, w); a NaN or Inf contribution is
+// dropped and counted.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -44,14 +44,14 @@ layout(std430, binding = BIND_SPLAT) buffer Splat { float splat[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 // Stored vertices per path, for the light vertex cache's scan.
 layout(std430, binding = BIND_LVC_OFFSETS) writeonly buffer LvcOffsets { uint lvc_offsets[]; };
-layout(std430, binding = BIND_PT_SUSPENDED) buffer State { BdptLightState state[]; };
+// The light paths (`light_state_load`).
+layout(std430, binding = BIND_PT_SUSPENDED) buffer State { uvec4 state_words[]; };
 layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
-layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec4 wf_index[]; };
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
 #include "bdpt_light_path.glsl"
 
@@ -93,6 +93,33 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
     wf_join_count = 1u;
 }
 
+// A light path and where its last launch queued its rays, in 16-byte words at
+// path * LIGHT_STATE_WORDS: BdptLightState's words up to its random numbers, then the queue's
+// places (its segment, its join's shadow ray, their count, the join's film pixel), then, only in
+// scenes with a medium, the medium's word. Without one a path takes six words, three 32-byte
+// sectors, and one read of them brings the places too.
+const uint LIGHT_STATE_WORDS = HAS_VOLUME != 0u ? 7u : 6u;
+
+BdptLightState light_state_load(uint p, out uvec4 queued) {
+    uint w = p * LIGHT_STATE_WORDS;
+    queued = state_words[w + 5u];
+    return BdptLightState(uintBitsToFloat(state_words[w]), uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
+        HAS_VOLUME != 0u ? uintBitsToFloat(state_words[w + 6u]) : vec4(0.0), state_words[w + 3u], state_words[w + 4u]);
+}
+
+void light_state_store(uint p, BdptLightState st, uvec4 queued) {
+    uint w = p * LIGHT_STATE_WORDS;
+    state_words[w] = floatBitsToUint(st.o_beta0);
+    state_words[w + 1u] = floatBitsToUint(st.d_dvcm);
+    state_words[w + 2u] = floatBitsToUint(st.beta_dvc);
+    state_words[w + 3u] = st.counts;
+    state_words[w + 4u] = st.rng_status;
+    state_words[w + 5u] = queued;
+    if (HAS_VOLUME != 0u) {
+        state_words[w + 6u] = floatBitsToUint(st.sigma);
+    }
+}
+
 // One launch's work for this invocation's slot, if it has one.
 void run_slot() {
     uint path;
@@ -105,8 +132,7 @@ void run_slot() {
     BdptLightState st = BdptLightState(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
     uvec4 queued = uvec4(0u); // where the last launch queued its rays
     if (!fresh) {
-        st = state[path];
-        queued = wf_index[path];
+        st = light_state_load(path, queued);
     }
     uint status = st.rng_status.w;
     if (status == PT_DONE && queued.z == 0u) {
@@ -196,21 +222,21 @@ void run_slot() {
     queue_base = subgroupBroadcastFirst(queue_base);
     uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupBallotExclusiveBitCount(join_lanes), wf_join_count, wf_join_pixel);
     if (alive) {
-        state[path] = BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
-            uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        light_state_store(path, BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
+            uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)), next);
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
     } else if (status != PT_DONE) {
         // The path ended: its counts for the light vertex cache.
         light_counts[path] = uvec2(stored, seen);
         lvc_offsets[path] = stored;
-        state[path].rng_status.w = PT_DONE;
+        state_words[path * LIGHT_STATE_WORDS + 4u].w = PT_DONE;
     }
     if (wf_join_count > 0u) {
         wf_shadow_rays[next.y] = wavefront_ray(wf_join.o, wf_join.d, wf_join.tmax, blend_seed);
         wf_contrib[write_half + next.y] = vec4(wf_join_contrib, 0.0);
     }
-    if (alive || wf_join_count > 0u || queued.z > 0u) {
-        wf_index[path] = next;
+    if (!alive && (wf_join_count > 0u || queued.z > 0u)) {
+        state_words[path * LIGHT_STATE_WORDS + 5u] = next;
     }
     wf_list_next(pc.launch, path, alive || wf_join_count > 0u);
     if (wf_bad > 0u) {

@@ -32,10 +32,16 @@ struct Rng {
     uint dim;     // Sobol: next dimension (stops counting past SOBOL_DIMS)
 };
 
+// The index rng_init(_, sample_index, _) gives (no draw changes it): a path kept between
+// launches need not store it.
+uint rng_init_index(uint sample_index) {
+    return SOBOL_DIMS > 0u ? sample_index : 0u;
+}
+
 Rng rng_init(uint pixel, uint sample_index, uint seed) {
     uint s = pcg_hash(pixel ^ pcg_hash(seed));
     if (SOBOL_DIMS > 0u) {
-        return Rng(s, sample_index, 0u);
+        return Rng(s, rng_init_index(sample_index), 0u);
     }
     return Rng(pcg_hash(s ^ pcg_hash(sample_index)), 0u, 0u);
 }

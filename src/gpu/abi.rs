@@ -421,13 +421,10 @@ gpu_consts! {
     /// and BIND_WF_SHADOW_RAYS; the trace kernels read their count there (BIND_RAY_COUNTS) and
     /// the host stops when a launch queues none.
     pub const BIND_WF_COUNTS: u32 = 46;
-    /// Per slot: where its segment and shadow ray went in the queues (uvec2; BDPT's light pass:
-    /// its segment, its join's shadow ray, their count and the join's pixel, uvec4; its camera
-    /// pass: its segment, then its first shadow ray with their count above
-    /// WF_SHADOW_COUNT_SHIFT, uvec2). They keep their paths
-    /// in BIND_PT_SUSPENDED (`BdptCameraState`, `BdptLightState`) and the contribution of each
-    /// queued shadow ray in BIND_WF_CONTRIB at the ray's place (the light pass: the film pixel
-    /// of its join to the eye in w).
+    /// The wavefront path tracer's slots: where each one's segment and shadow ray went in the
+    /// queues (uvec2). BDPT's wavefront passes keep those places in their paths' state instead
+    /// (BIND_PT_SUSPENDED: `BdptCameraState`, `BdptLightState`), so that one read brings both,
+    /// and the contribution of each queued shadow ray in BIND_WF_CONTRIB at the ray's place.
     pub const BIND_WF_INDEX: u32 = 47;
     /// Trace kernels with SPEC_RAY_COUNT_BUFFER: ray counts, `TracePush::count_index` selects.
     pub const BIND_RAY_COUNTS: u32 = 48;
@@ -437,8 +434,9 @@ gpu_consts! {
     /// Shadow rays a slot of the wavefront camera pass (`bdpt_camera_wavefront.comp`) may queue
     /// per launch: the light sample and up to three connections (`--join lvc=N`, N <= 3).
     pub const BDPT_WF_SHADOW_RAYS: u32 = 4;
-    /// The wavefront camera pass's BIND_WF_INDEX entry is a `uvec2`: the slot's segment's place
-    /// in its ray queue, then its first shadow ray's place with the count of its shadow rays
+    /// The wavefront camera pass keeps its queue places in two words of its path's state
+    /// (`BdptCameraState::rng_status`'s z and w): the slot's segment's place in its ray queue,
+    /// then its first shadow ray's place with the count of its shadow rays
     /// (at most BDPT_WF_SHADOW_RAYS) in the bits from this one up. A shadow queue's 32-byte rays
     /// within one binding's 4 GiB are fewer than 2^27, so the place fits below.
     pub const WF_SHADOW_COUNT_SHIFT: u32 = 28;
@@ -881,7 +879,11 @@ gpu_structs! {
     /// glsl/common/bdpt_camera_path.glsl's `CameraPath` without VCM's terms). The kernel stores
     /// it as 16-byte words, `sigma_seed` last and only in scenes with a medium or alpha: 64 bytes
     /// a slot, two 32-byte sectors, in the others (bdpt_camera_wavefront.glsl, `camera_state_load`;
-    /// 10 % of the camera kernel's time on the Cornell box, session 43).
+    /// 10 % of the camera kernel's time on the Cornell box, session 43). Stored, `rng_status`
+    /// holds the random numbers' state and dimension, then the slot's queue places (the
+    /// segment's, the first shadow ray's with their count above WF_SHADOW_COUNT_SHIFT): the
+    /// sample index is recomputed, the status follows from `o_depth.w` (all ones once the path
+    /// has ended), and a launch reads its queue places with its path (session 44).
     pub struct BdptCameraState (80 bytes) {
         /// Origin of the next segment (its floats' bits), then the vertex count.
         pub o_depth: UVec4,
@@ -897,7 +899,10 @@ gpu_structs! {
     }
 
     /// A light subpath of the wavefront light pass between its launches (BIND_PT_SUSPENDED;
-    /// bdpt_light_wavefront.comp; the light megakernel's loop state without VCM's dVM).
+    /// bdpt_light_wavefront.comp; the light megakernel's loop state without VCM's dVM). The
+    /// kernel stores it as 16-byte words with a sixth after `rng_status`: the slot's queue places
+    /// (its segment, its join's shadow ray, their count, the join's film pixel); `sigma` goes
+    /// last and only in scenes with a medium (`light_state_load`).
     pub struct BdptLightState (96 bytes) {
         /// Origin of the next segment, then the throughput's largest channel leaving the light
         /// (Russian roulette's reference).

@@ -34,22 +34,22 @@ pub fn shadow_rays_per_slot(join: Join) -> Option<u32> {
     }
 }
 
-// The camera pass's index entry holds a slot's shadow-ray count above WF_SHADOW_COUNT_SHIFT.
+// The camera pass's state keeps a slot's shadow-ray count above WF_SHADOW_COUNT_SHIFT.
 const _: () = assert!(abi::BDPT_WF_SHADOW_RAYS < 1 << (32 - abi::WF_SHADOW_COUNT_SHIFT));
 
 /// Bytes of a slot's path: the larger of a camera path's (`BdptCameraState`) and a light
-/// path's (`BdptLightState`).
+/// path's (`BdptLightState` and the 16-byte word of its queue's places).
 const STATE_BYTES: u64 = {
-    let (camera, light) = (std::mem::size_of::<abi::BdptCameraState>(), std::mem::size_of::<abi::BdptLightState>());
+    let (camera, light) = (std::mem::size_of::<abi::BdptCameraState>(), std::mem::size_of::<abi::BdptLightState>() + 16);
     (if camera > light { camera } else { light }) as u64
 };
 
 /// Bytes per slot with `shadow` shadow rays: the path, its rays and hits (and its places in the
-/// lists of live slots), the shadow rays' contributions (twice: launches of alternate parity),
-/// and where its rays went in the queues. A light path queues one shadow ray a launch (its
-/// join to the eye), a camera path `shadow`.
+/// lists of live slots) and the shadow rays' contributions (twice: launches of alternate
+/// parity). A path keeps where its rays went in the queues in its state. A light path queues
+/// one shadow ray a launch (its join to the eye), a camera path `shadow`.
 pub fn slot_bytes(shadow: u32) -> u64 {
-    STATE_BYTES + queue_bytes(shadow) + LIVE_SLOT_BYTES + shadow as u64 * 2 * 16 + 16
+    STATE_BYTES + queue_bytes(shadow) + LIVE_SLOT_BYTES + shadow as u64 * 2 * 16
 }
 
 /// One of BDPT's two passes.
@@ -108,7 +108,6 @@ pub struct WavefrontPasses {
     queues: Queues,
     state: Buffer,
     contrib: Buffer,
-    index: Buffer,
     slots: u64,
     shadow_per_slot: u32,
     /// Launches the last light and camera pass took: sizes the first batch of the next.
@@ -162,7 +161,6 @@ impl WavefrontPasses {
             state: buffer("state", STATE_BYTES)?,
             // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
             contrib: buffer("contrib", 2 * 16 * shadow as u64)?,
-            index: buffer("queue_index", 16)?,
             slots,
             shadow_per_slot: shadow,
             launches: [Cell::new(12), Cell::new(12)],
@@ -189,11 +187,7 @@ impl WavefrontPasses {
 
     /// The slots' buffers, bound beside BDPT's own.
     pub fn binds(&self) -> Vec<Bind<'_>> {
-        let mut b = vec![
-            Bind::buffer(abi::BIND_PT_SUSPENDED, &self.state),
-            Bind::buffer(abi::BIND_WF_CONTRIB, &self.contrib),
-            Bind::buffer(abi::BIND_WF_INDEX, &self.index),
-        ];
+        let mut b = vec![Bind::buffer(abi::BIND_PT_SUSPENDED, &self.state), Bind::buffer(abi::BIND_WF_CONTRIB, &self.contrib)];
         b.extend(self.queues.binds());
         b
     }
