@@ -9,6 +9,12 @@ pub mod render;
 pub mod traversal;
 
 /// Median of a non-empty sample (sorted copy).
+/// The least time the untimed warm-up runs of a benchmark take (when any are asked for): a GPU
+/// left idle (a slow BVH build, the gap between two processes) runs at its idle clock, and a few
+/// runs of milliseconds do not raise it again (`bench traversal` on the H200, session 26;
+/// `bench render` on an H100, session 44: one fresh process in four timed 68 ms, not 19).
+pub const WARMUP_TIME: std::time::Duration = std::time::Duration::from_secs(1);
+
 pub fn median(xs: &[f64]) -> f64 {
     let mut v = xs.to_vec();
     v.sort_by(|a, b| a.total_cmp(b));

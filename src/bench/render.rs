@@ -191,7 +191,8 @@ impl Report {
     }
 }
 
-/// Renders `o.spp` samples per pixel `o.warmup + o.runs` times with `settings` and reports
+/// Renders `o.spp` samples per pixel with `settings`: `o.warmup` untimed runs (and more until
+/// they have taken WARMUP_TIME, where `o.warmup` > 0), then `o.runs` timed ones, and reports
 /// the timed runs' medians. Leaves profiling off.
 pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettings, o: &Options) -> Result<Report, RenderError> {
     let integrator = settings.integrator.name();
@@ -204,9 +205,13 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
     let kernel_form = r.kernel_form();
     let bvh = r.settings().bvh;
     let spp = o.spp.max(1);
-    for _ in 0..o.warmup {
+    // `o.warmup` runs and, where there are any, at least WARMUP_TIME of them.
+    let warm_start = Instant::now();
+    let mut warm_runs = 0;
+    while warm_runs < o.warmup || (o.warmup > 0 && warm_start.elapsed() < super::WARMUP_TIME) {
         r.reset(None)?;
         r.render_spp(spp, |_| {})?;
+        warm_runs += 1;
     }
     let mut per_kernel: std::collections::BTreeMap<String, (Vec<f64>, u64)> = Default::default();
     let (mut gpu, mut wall, mut untimed) = (Vec::new(), Vec::new(), 0);

@@ -39,9 +39,6 @@ impl RayKind {
     pub const ALL: [RayKind; 3] = [RayKind::Primary, RayKind::Shadow, RayKind::Diffuse];
 }
 
-/// The least time the untimed warm-up runs of each ray kind take (when any are asked for).
-pub const WARMUP_TIME: std::time::Duration = std::time::Duration::from_secs(1);
-
 /// Benchmark settings.
 #[derive(Clone, Debug)]
 pub struct Options {
@@ -247,7 +244,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
                 rec.timestamp(&timer, 2);
                 Ok(())
             })?;
-            if warm_runs < opts.warmup || (opts.warmup > 0 && warm_start.elapsed() < WARMUP_TIME) {
+            if warm_runs < opts.warmup || (opts.warmup > 0 && warm_start.elapsed() < super::WARMUP_TIME) {
                 warm_runs += 1;
             } else {
                 sort_times.push(timer.elapsed_ns(0, 1)? * 1e-6);

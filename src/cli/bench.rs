@@ -26,7 +26,8 @@ pub struct RenderBenchArgs {
     /// Samples per pixel of each run.
     #[arg(long, default_value_t = 256)]
     pub spp: u32,
-    /// Untimed runs first.
+    /// Untimed runs first; when not 0, they also last at least 1 s, so that a GPU left idle is
+    /// back at its clock.
     #[arg(long, default_value_t = 2)]
     pub warmup: usize,
     /// Timed runs (the median is reported).
