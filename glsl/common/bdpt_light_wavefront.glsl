@@ -17,8 +17,7 @@
 // matters here: light paths have long tails. A path that ends writes its stored and seen
 // counts for the light vertex cache, as the megakernel does. The join's contribution waits in
 // BIND_WF_CONTRIB at its ray's place, in the half of the buffer of the launch's parity, its
-// film pixel in the path's queue word (`light_state_load`, w); a NaN or Inf contribution is
-// dropped and counted.
+// film pixel in w; a NaN or Inf contribution is dropped and counted.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -51,7 +50,8 @@ layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; 
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
-layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
+// A join's contribution (rgb, a float's bits) and its film pixel (w), at its shadow ray's place.
+layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { uvec4 wf_contrib[]; };
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
 #include "bdpt_light_path.glsl"
 
@@ -94,29 +94,44 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
 }
 
 // A light path and where its last launch queued its rays, in 16-byte words at
-// path * LIGHT_STATE_WORDS: BdptLightState's words up to its random numbers, then the queue's
-// places (its segment, its join's shadow ray, their count, the join's film pixel), then, only in
-// scenes with a medium, the medium's word. Without one a path takes six words, three 32-byte
-// sectors, and one read of them brings the places too.
-const uint LIGHT_STATE_WORDS = HAS_VOLUME != 0u ? 7u : 6u;
+// path * LIGHT_STATE_WORDS: the origin and beta0, the direction and dVCM, the throughput and
+// dVC, the counts (the vertex count, LIGHT_DONE once the path has ended; seen; stored with the
+// light at infinity in bit 31; the opacity seed), then the random numbers' state and dimension
+// with the segment's place in its queue and the join's shadow ray's with their count from bit
+// WF_SHADOW_COUNT_SHIFT up; last, only in scenes with a medium, the medium's word. Without one
+// a path takes five words, three 32-byte sectors where six took four, and one read brings its
+// queue's places too. The random numbers' sample index is rng_init's (`rng_init_index`), the
+// status follows from the vertex count, and the join's film pixel waits with its contribution
+// (BIND_WF_CONTRIB's w).
+const uint LIGHT_STATE_WORDS = HAS_VOLUME != 0u ? 6u : 5u;
+const uint LIGHT_DONE = 0xffffffffu;
 
-BdptLightState light_state_load(uint p, out uvec4 queued) {
+// Path p's state and its queued rays: segment, join's shadow ray, their count.
+BdptLightState light_state_load(uint p, out uvec3 queued) {
     uint w = p * LIGHT_STATE_WORDS;
-    queued = state_words[w + 5u];
+    uvec4 counts = state_words[w + 3u];
+    uvec4 rng_queue = state_words[w + 4u];
+    queued = uvec3(rng_queue.z, rng_queue.w & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), rng_queue.w >> WF_SHADOW_COUNT_SHIFT);
+    uint status = counts.x == LIGHT_DONE ? PT_DONE : PT_SUSPENDED;
     return BdptLightState(uintBitsToFloat(state_words[w]), uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
-        HAS_VOLUME != 0u ? uintBitsToFloat(state_words[w + 6u]) : vec4(0.0), state_words[w + 3u], state_words[w + 4u]);
+        HAS_VOLUME != 0u ? uintBitsToFloat(state_words[w + 5u]) : vec4(0.0), counts,
+        uvec4(rng_queue.x, rng_init_index(pc.sample_base), rng_queue.y, status));
 }
 
-void light_state_store(uint p, BdptLightState st, uvec4 queued) {
+// The places of a path's queued rays, packed as `light_state_load` reads them.
+uvec2 light_queue_word(uvec2 next, uint join_count) {
+    return uvec2(next.x, next.y | (join_count << WF_SHADOW_COUNT_SHIFT));
+}
+
+void light_state_store(uint p, BdptLightState st, uvec2 queue) {
     uint w = p * LIGHT_STATE_WORDS;
     state_words[w] = floatBitsToUint(st.o_beta0);
     state_words[w + 1u] = floatBitsToUint(st.d_dvcm);
     state_words[w + 2u] = floatBitsToUint(st.beta_dvc);
     state_words[w + 3u] = st.counts;
-    state_words[w + 4u] = st.rng_status;
-    state_words[w + 5u] = queued;
+    state_words[w + 4u] = uvec4(st.rng_status.x, st.rng_status.z, queue);
     if (HAS_VOLUME != 0u) {
-        state_words[w + 6u] = floatBitsToUint(st.sigma);
+        state_words[w + 5u] = floatBitsToUint(st.sigma);
     }
 }
 
@@ -130,7 +145,7 @@ void run_slot() {
     bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
     uint launch = wf_launch(pc.launch);
     BdptLightState st = BdptLightState(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
-    uvec4 queued = uvec4(0u); // where the last launch queued its rays
+    uvec3 queued = uvec3(0u); // where the last launch queued its rays: segment, join, their count
     if (!fresh) {
         st = light_state_load(path, queued);
     }
@@ -145,7 +160,8 @@ void run_slot() {
     uint read_half = (launch & 1u) == 0u ? half_len : 0u;
     uint write_half = half_len - read_half;
     if (queued.z > 0u && wf_shadow_hits[queued.y] == NO_HIT) {
-        splat_join(wf_contrib[read_half + queued.y].rgb, queued.w);
+        uvec4 join = wf_contrib[read_half + queued.y];
+        splat_join(uintBitsToFloat(join.rgb), join.w);
     }
 
     // The light subpath: one step at what its segment found (the megakernel's loop body,
@@ -220,23 +236,26 @@ void run_slot() {
         queue_base.y = join_count > 0u ? atomicAdd(wf_counts[2u * launch + 1u], join_count) : 0u;
     }
     queue_base = subgroupBroadcastFirst(queue_base);
-    uvec4 next = uvec4(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupBallotExclusiveBitCount(join_lanes), wf_join_count, wf_join_pixel);
+    uvec2 next = uvec2(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupBallotExclusiveBitCount(join_lanes));
     if (alive) {
         light_state_store(path, BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
-            uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)), next);
+            uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
+            light_queue_word(next, wf_join_count));
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
-    } else if (status != PT_DONE) {
-        // The path ended: its counts for the light vertex cache.
-        light_counts[path] = uvec2(stored, seen);
-        lvc_offsets[path] = stored;
-        state_words[path * LIGHT_STATE_WORDS + 4u].w = PT_DONE;
+    } else {
+        if (status != PT_DONE) {
+            // The path ended: its counts for the light vertex cache.
+            light_counts[path] = uvec2(stored, seen);
+            lvc_offsets[path] = stored;
+            state_words[path * LIGHT_STATE_WORDS + 3u].x = LIGHT_DONE;
+        }
+        if (wf_join_count > 0u || queued.z > 0u) {
+            state_words[path * LIGHT_STATE_WORDS + 4u].zw = light_queue_word(next, wf_join_count);
+        }
     }
     if (wf_join_count > 0u) {
         wf_shadow_rays[next.y] = wavefront_ray(wf_join.o, wf_join.d, wf_join.tmax, blend_seed);
-        wf_contrib[write_half + next.y] = vec4(wf_join_contrib, 0.0);
-    }
-    if (!alive && (wf_join_count > 0u || queued.z > 0u)) {
-        state_words[path * LIGHT_STATE_WORDS + 5u] = next;
+        wf_contrib[write_half + next.y] = uvec4(floatBitsToUint(wf_join_contrib), wf_join_pixel);
     }
     wf_list_next(pc.launch, path, alive || wf_join_count > 0u);
     if (wf_bad > 0u) {

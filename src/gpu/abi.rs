@@ -424,7 +424,8 @@ gpu_consts! {
     /// The wavefront path tracer's slots: where each one's segment and shadow ray went in the
     /// queues (uvec2). BDPT's wavefront passes keep those places in their paths' state instead
     /// (BIND_PT_SUSPENDED: `BdptCameraState`, `BdptLightState`), so that one read brings both,
-    /// and the contribution of each queued shadow ray in BIND_WF_CONTRIB at the ray's place.
+    /// and the contribution of each queued shadow ray in BIND_WF_CONTRIB at the ray's place
+    /// (the light pass: its join's film pixel in w).
     pub const BIND_WF_INDEX: u32 = 47;
     /// Trace kernels with SPEC_RAY_COUNT_BUFFER: ray counts, `TracePush::count_index` selects.
     pub const BIND_RAY_COUNTS: u32 = 48;
@@ -434,9 +435,9 @@ gpu_consts! {
     /// Shadow rays a slot of the wavefront camera pass (`bdpt_camera_wavefront.comp`) may queue
     /// per launch: the light sample and up to three connections (`--join lvc=N`, N <= 3).
     pub const BDPT_WF_SHADOW_RAYS: u32 = 4;
-    /// The wavefront camera pass keeps its queue places in two words of its path's state
-    /// (`BdptCameraState::rng_status`'s z and w): the slot's segment's place in its ray queue,
-    /// then its first shadow ray's place with the count of its shadow rays
+    /// BDPT's wavefront passes keep their queue places in two words of a path's state
+    /// (`BdptCameraState::rng_status`'s z and w, `BdptLightState`'s): the slot's segment's place
+    /// in its ray queue, then its first shadow ray's place with the count of its shadow rays
     /// (at most BDPT_WF_SHADOW_RAYS) in the bits from this one up. A shadow queue's 32-byte rays
     /// within one binding's 4 GiB are fewer than 2^27, so the place fits below.
     pub const WF_SHADOW_COUNT_SHIFT: u32 = 28;
@@ -900,9 +901,12 @@ gpu_structs! {
 
     /// A light subpath of the wavefront light pass between its launches (BIND_PT_SUSPENDED;
     /// bdpt_light_wavefront.comp; the light megakernel's loop state without VCM's dVM). The
-    /// kernel stores it as 16-byte words with a sixth after `rng_status`: the slot's queue places
-    /// (its segment, its join's shadow ray, their count, the join's film pixel); `sigma` goes
-    /// last and only in scenes with a medium (`light_state_load`).
+    /// kernel stores it as 16-byte words, `sigma` last and only in scenes with a medium: 80
+    /// bytes a slot, three 32-byte sectors, in the others (`light_state_load`). Stored,
+    /// `rng_status` holds the random numbers' state and dimension, then the slot's queue places
+    /// (its segment's, its join's shadow ray's with their count above WF_SHADOW_COUNT_SHIFT):
+    /// the sample index is recomputed, the status follows from `counts.x` (all ones once the
+    /// path has ended), and the join's film pixel waits in BIND_WF_CONTRIB's w (session 44).
     pub struct BdptLightState (96 bytes) {
         /// Origin of the next segment, then the throughput's largest channel leaving the light
         /// (Russian roulette's reference).

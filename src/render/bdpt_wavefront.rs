@@ -38,9 +38,9 @@ pub fn shadow_rays_per_slot(join: Join) -> Option<u32> {
 const _: () = assert!(abi::BDPT_WF_SHADOW_RAYS < 1 << (32 - abi::WF_SHADOW_COUNT_SHIFT));
 
 /// Bytes of a slot's path: the larger of a camera path's (`BdptCameraState`) and a light
-/// path's (`BdptLightState` and the 16-byte word of its queue's places).
+/// path's (`BdptLightState`), each with its queue's places in its random numbers' word.
 const STATE_BYTES: u64 = {
-    let (camera, light) = (std::mem::size_of::<abi::BdptCameraState>(), std::mem::size_of::<abi::BdptLightState>() + 16);
+    let (camera, light) = (std::mem::size_of::<abi::BdptCameraState>(), std::mem::size_of::<abi::BdptLightState>());
     (if camera > light { camera } else { light }) as u64
 };
 
