@@ -7,7 +7,8 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Prepared in session 43 for the next: s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
+# Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes).
+# Prepared in session 43 for the next (run in session 44, on an H100): s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
 # Parts of session 43: s43a (issue #16's table and #17's figures, run on an H200 with 3dc4982 as .device/bidir-s43.gz; its pre-split settings on an H100), s43b (BDPT's kernel tables, the finishing launch's count; an H100), s43c (the camera state word by word, then in 64 bytes: .device/bidir-soa.gz on an H200, bidir-aos64.gz on an H100), s43e and s43f (the queue index in 8 bytes, one-word any-hit results; H100s), s43g (not run: 0c9bd92's kernels as .device/bidir-wrd2.gz against 3dc4982 for issue #16's table on an H200, and whether 3dc4982's BDPT wavefront image of the caustic scene differs from its megakernels' on a GPU as 0c9bd92's does).
 # Parts of session 42 (all run on H100s): s42a (session 41's partial sharing: not kept), s42b (what BDPT's pass tails cost, by --max-depth; BIDIR_WF_LOG), s42c (the finishing launch, .device/bidir-fin2.gz: --wavefront-finish off / auto / fixed counts, DamagedHelmet in .device/scenes/gltf).
 # Parts of session 41: s41a (run on an H200: s40a's builds, then the passes of a time-budgeted render with their submissions, .device/bidir-c41.gz a build of 0becd4b); s41b, s41c, s41d, s41e (run on H100s: the groups' registers, the pass model with pieces, the groups' candidates in one loop of N trips); s41e not yet run on an H200 (.device/bidir-fin.gz a build of 264f878 or later, .device/bidir-base.gz c821483, .device/bidir-c41.gz 0becd4b): run it there for issue #16's figures; s42a prepared (a measurement build, .device/bidir-part.gz: partial sharing where k N > lanes).
@@ -113,6 +114,105 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s44f)
+  # Session 44: s44c's question with more processes: 8f63d90 (.device/bidir-s44l.gz, warm-up runs
+  # of at least 1 s) in twelve fresh processes without the shader cache, e6697aa
+  # (.device/bidir-head43.gz, one warm-up run) in six, interleaved; GPU and wall ms.
+  unpack head43 s44l
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2 3 4 5 6; do
+    for n in s44l head43 s44l; do
+      echo "== $n helmet pt-nee, a fresh process, no shader cache: $(__GL_SHADER_DISK_CACHE=0 timeout -k 5 60 .device/bidir-$n bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    done
+  done
+  ;;
+s44e)
+  # Session 44: s44c again with e6697aa alone, six fresh processes without the shader cache,
+  # each with its passes (BIDIR_WF_LOG) and the SM clock sampled every 20 ms while it runs (CLK:
+  # other nvidia-smi fields, e.g. CLK=clocks.mem,pstate).
+  unpack head43
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2 3 4 5 6; do
+    nvidia-smi --query-gpu=${CLK:-clocks.sm} --format=csv,noheader,nounits -lms 20 > /tmp/clk.txt 2>&1 &
+    p=$!
+    __GL_SHADER_DISK_CACHE=0 BIDIR_WF_LOG=1 timeout -k 5 60 .device/bidir-head43 bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 > /tmp/run.txt 2>&1
+    kill $p; wait $p 2>/dev/null
+    echo "== head43 run $r: $(grep -oE 'GPU [0-9.]+ ms' /tmp/run.txt); ${CLK:-clocks.sm} samples: $(uniq -c < /tmp/clk.txt | tr '\n' ' ' | tr -s ' ' | cut -c1-${CLKW:-900})"
+    grep -E 'pass over' /tmp/run.txt | sed -E 's/wavefront path tracing pass over ([0-9]+) slots, ([0-9]+) samples each: finished after ([0-9]+) launches.*next: ([0-9.]+).*/\1:\2:\3:\4/' | tr '\n' ' '; echo
+  done
+  ;;
+s44c)
+  # Session 44: whether a cold pipeline build idles the GPU into a slow benchmark: DamagedHelmet's
+  # pt-nee in fresh processes with the driver's shader cache off (every process compiles its
+  # pipelines), e6697aa (.device/bidir-head43.gz: one warm-up run) against 8f63d90
+  # (.device/bidir-s44l.gz: warm-up runs of at least 1 s), four rounds interleaved, with the
+  # SM clock as a fresh process starts; on an H200 then issue #16's table and #17's figures
+  # with 8f63d90.
+  unpack head43 s44l
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2 3 4; do
+    for n in head43 s44l; do
+      c=$(nvidia-smi --query-gpu=clocks.sm --format=csv,noheader)
+      echo "== $n helmet pt-nee, a fresh process, no shader cache (SM clock before: $c): $(__GL_SHADER_DISK_CACHE=0 timeout -k 5 60 .device/bidir-$n bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then
+    B=$PWD/.device/bidir-s44l bash "$0" s44d
+  fi
+  ;;
+s44d)
+  # Issue #16's table and #17's figures with the binary $B (s44b's).
+  F=$B
+  for i in pt pt-nee bdpt bdpt:full; do
+    echo "== cornell $i 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    for t in 0.1 1; do
+      echo "== cornell $i $t s: $(at_time "$F" $t $CB --integrator $i)"
+    done
+  done
+  for i in pt-nee bdpt; do
+    for t in 0.1 1; do
+      echo "== caustic $i $t s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" $t $CAU --integrator $i)"
+    done
+  done
+  echo "== hidden bdpt: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  sponza_rounds 2 "$F"
+  ;;
+s44b)
+  # Session 44: 002c466 (.device/bidir-s44q.gz: both passes' queue places in their states, bench
+  # render's warm-up of at least 1 s) against 8f63d90 (.device/bidir-s44l.gz: the light pass's
+  # state in 80 bytes): wavefront images against megakernels on this GPU, s43c's rounds with
+  # pt-nee's, issue #16's table with s44l, then e6697aa (.device/bidir-head43.gz, a warm-up of
+  # one run) against s44q on DamagedHelmet's pt-nee in fresh processes; on an H200 also #17's
+  # figures.
+  unpack s44q s44l head43
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  F=$PWD/.device/bidir-s44l
+  for sc in "cornell|--width 64 --height 64" "helmet|$HB" "caustic|$CAU"; do
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront off --spp 16 --seed 3 --sample-slices 16 -o /tmp/m.exr > /dev/null 2>&1
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront on --spp 16 --seed 3 --sample-slices 16 -o /tmp/w.exr > /dev/null 2>&1
+    echo "== s44l ${sc%%|*} bdpt wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  done
+  B43="s44q s44l" PT43=1 bash "$0" s43c
+  for i in pt pt-nee bdpt bdpt:full; do
+    echo "== cornell $i 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    for t in 0.1 1; do
+      echo "== cornell $i $t s: $(at_time "$F" $t $CB --integrator $i)"
+    done
+  done
+  for i in pt-nee bdpt; do
+    for t in 0.1 1; do
+      echo "== caustic $i $t s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" $t $CAU --integrator $i)"
+    done
+  done
+  for r in 1 2 3 4; do
+    for n in head43 s44q; do
+      echo "== $n helmet pt-nee, a fresh process: $(timeout -k 5 60 .device/bidir-$n bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then
+    sponza_rounds 2 "$F"
+  fi
+  ;;
 s44a)
   # Prepared in session 43, not run: the wavefront passes' queue places kept in their path
   # states, so that a launch reads them with the path and not from the index buffer:
