@@ -883,11 +883,14 @@ gpu_structs! {
     /// 10 % of the camera kernel's time on the Cornell box, session 43). Stored, `rng_status`
     /// holds the random numbers' state and dimension, then the slot's queue places (the
     /// segment's, the first shadow ray's with their count above WF_SHADOW_COUNT_SHIFT): the
-    /// sample index is recomputed, the status follows from `o_depth.w` (all ones once the path
-    /// has ended), and a launch reads its queue places with its path (session 44).
+    /// sample index is recomputed, the status follows from `sum_depth.w` (all ones once the path
+    /// has ended), and a launch reads its queue places with its path (session 44). It keeps no
+    /// origin (a launch's step needs only the direction and the hit) but the sample's sum, which
+    /// goes to the film once (session 44).
     pub struct BdptCameraState (80 bytes) {
-        /// Origin of the next segment (its floats' bits), then the vertex count.
-        pub o_depth: UVec4,
+        /// The sample's sum so far (its floats' bits: what the film gets once the sample has
+        /// nothing left to add), then the vertex count (all ones once the path has ended).
+        pub sum_depth: UVec4,
         /// Its direction, then dVCM.
         pub d_dvcm: Vec4,
         /// Throughput, then dVC.
