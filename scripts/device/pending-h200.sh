@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes), s44g (a measurement build: what the camera kernel's film sums and contributions and the light kernel's splats cost; on an H200 then s44d).
+# Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes), s44g (a measurement build: what the camera kernel's film sums and contributions and the light kernel's splats cost; on an H200 then s44d), s44h (the camera kernel's film sums added in place: slower), s44i (the camera state carries the sample's sum to the film once), s44j (issue #16's table with it; #17's figures on an H200).
 # Prepared in session 43 for the next (run in session 44, on an H100): s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
 # Parts of session 43: s43a (issue #16's table and #17's figures, run on an H200 with 3dc4982 as .device/bidir-s43.gz; its pre-split settings on an H100), s43b (BDPT's kernel tables, the finishing launch's count; an H100), s43c (the camera state word by word, then in 64 bytes: .device/bidir-soa.gz on an H200, bidir-aos64.gz on an H100), s43e and s43f (the queue index in 8 bytes, one-word any-hit results; H100s), s43g (not run: 0c9bd92's kernels as .device/bidir-wrd2.gz against 3dc4982 for issue #16's table on an H200, and whether 3dc4982's BDPT wavefront image of the caustic scene differs from its megakernels' on a GPU as 0c9bd92's does).
 # Parts of session 42 (all run on H100s): s42a (session 41's partial sharing: not kept), s42b (what BDPT's pass tails cost, by --max-depth; BIDIR_WF_LOG), s42c (the finishing launch, .device/bidir-fin2.gz: --wavefront-finish off / auto / fixed counts, DamagedHelmet in .device/scenes/gltf).
@@ -114,6 +114,77 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s44i)
+  # Session 44: the camera state carries the sample's sum and goes to the film once (no origin
+  # kept; .device/bidir-carry.gz) against 8f63d90 (bidir-s44l.gz) and s44g's build without film
+  # sums (bidir-xfilm.gz): wavefront images against megakernels, three rounds interleaved, then
+  # issue #16's Cornell figures for both; on an H200 then s44d with bidir-carry.
+  unpack s44l carry xfilm
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  F=$PWD/.device/bidir-carry
+  for sc in "cornell|--width 64 --height 64" "cornell256|$CB" "helmet|$HB" "caustic|$CAU"; do
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront off --spp 16 --seed 3 --sample-slices 16 -o /tmp/m.exr > /dev/null 2>&1
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront on --spp 16 --seed 3 --sample-slices 16 -o /tmp/w.exr > /dev/null 2>&1
+    echo "== carry ${sc%%|*} bdpt wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  done
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for r in 1 2 3; do
+    for n in s44l carry xfilm; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      [ $r = 3 ] && continue
+      [ $n = xfilm ] && continue
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n caustic: $(timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  for n in s44l carry; do
+    for t in 0.1 1; do
+      echo "== $n cornell bdpt $t s: $(at_time "$PWD/.device/bidir-$n" $t $CB --integrator bdpt)"
+    done
+  done
+  echo "== cornell pt-nee 1024 spp: $(timeout -k 5 60 .device/bidir-carry bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  echo "== cornell pt-nee 1 s: $(at_time "$PWD/.device/bidir-carry" 1 $CB --integrator pt-nee)"
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then
+    B=$PWD/.device/bidir-carry bash "$0" s44d
+  fi
+  ;;
+s44h)
+  # Session 44: the camera kernel's film sums added in place (atomicAdd: RED, no read back;
+  # .device/bidir-red.gz) against 8f63d90 (bidir-s44l.gz) and s44g's build without film sums
+  # (bidir-xfilm.gz), three rounds interleaved (the Cornell box, the hidden light, DamagedHelmet,
+  # Sponza); each build's wavefront images against its megakernels; then on an H200 s44d with
+  # bidir-red.
+  unpack s44l red xfilm
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  F=$PWD/.device/bidir-red
+  for sc in "cornell|--width 64 --height 64" "cornell256|$CB" "helmet|$HB" "caustic|$CAU"; do
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront off --spp 16 --seed 3 --sample-slices 16 -o /tmp/m.exr > /dev/null 2>&1
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront on --spp 16 --seed 3 --sample-slices 16 -o /tmp/w.exr > /dev/null 2>&1
+    echo "== red ${sc%%|*} bdpt wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  done
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for r in 1 2 3; do
+    for n in s44l red xfilm; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      [ $r = 3 ] && continue
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+    done
+  done
+  for n in s44l red; do
+    for t in 0.1 1; do
+      echo "== $n cornell bdpt $t s: $(at_time "$PWD/.device/bidir-$n" $t $CB --integrator bdpt)"
+    done
+  done
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then
+    B=$PWD/.device/bidir-red bash "$0" s44d
+  fi
+  ;;
 s44g)
   # Session 44: what each memory stream of BDPT's wavefront passes costs, left out by a
   # measurement build (scripts/device/s44g-exp.patch on 8f63d90; each stream skipped behind a
@@ -196,7 +267,14 @@ s44d)
     done
   done
   echo "== hidden bdpt: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
-  sponza_rounds 2 "$F"
+  [ "${SPONZA:-1}" = 1 ] && sponza_rounds 2 "$F"
+  ;;
+s44j)
+  # Session 44: issue #16's table with 77a31a5 (.device/bidir-carry.gz) on whatever card this
+  # is; #17's figures too on an H200.
+  unpack carry
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then s=1; else s=0; fi
+  SPONZA=$s B=$PWD/.device/bidir-carry bash "$0" s44d
   ;;
 s44b)
   # Session 44: 002c466 (.device/bidir-s44q.gz: both passes' queue places in their states, bench
