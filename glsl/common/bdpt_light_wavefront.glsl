@@ -94,28 +94,31 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
 }
 
 // A light path and where its last launch queued its rays, in 16-byte words at
-// path * LIGHT_STATE_WORDS: the origin and beta0, the direction and dVCM, the throughput and
-// dVC, the counts (the vertex count, LIGHT_DONE once the path has ended; seen; stored with the
-// light at infinity in bit 31; the opacity seed), then the random numbers' state and dimension
-// with the segment's place in its queue and the join's shadow ray's with their count from bit
-// WF_SHADOW_COUNT_SHIFT up; last, only in scenes with a medium, the medium's word. Without one
-// a path takes five words, three 32-byte sectors where six took four, and one read brings its
-// queue's places too. The random numbers' sample index is rng_init's (`rng_init_index`), the
-// status follows from the vertex count, and the join's film pixel waits with its contribution
-// (BIND_WF_CONTRIB's w).
-const uint LIGHT_STATE_WORDS = HAS_VOLUME != 0u ? 6u : 5u;
+// path * LIGHT_STATE_WORDS: the direction and dVCM, the throughput and dVC, then beta0 with the
+// counts (the vertex count, LIGHT_DONE once the path has ended; seen; stored with the light at
+// infinity in bit 31), then the random numbers' state and dimension with the segment's place in
+// its queue and the join's shadow ray's with their count from bit WF_SHADOW_COUNT_SHIFT up;
+// last, only in scenes with a medium or alpha, the medium and the opacity seed. Without them a
+// path takes four words, two 32-byte sectors (six took four sectors and the index's entry one),
+// and one read brings its queue's places too. No origin: a launch's step finds its surface from
+// the hit and the direction alone (surface_at) and makes the next segment's origin itself. The
+// random numbers' sample index is rng_init's (`rng_init_index`), the status follows from the
+// vertex count, and the join's film pixel waits with its contribution (BIND_WF_CONTRIB's w).
+const bool LIGHT_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
+const uint LIGHT_STATE_WORDS = LIGHT_STATE_SIGMA_SEED ? 5u : 4u;
 const uint LIGHT_DONE = 0xffffffffu;
 
 // Path p's state and its queued rays: segment, join's shadow ray, their count.
 BdptLightState light_state_load(uint p, out uvec3 queued) {
     uint w = p * LIGHT_STATE_WORDS;
-    uvec4 counts = state_words[w + 3u];
-    uvec4 rng_queue = state_words[w + 4u];
+    uvec4 beta0_counts = state_words[w + 2u];
+    uvec4 rng_queue = state_words[w + 3u];
+    uvec4 sigma_seed = LIGHT_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
     queued = uvec3(rng_queue.z, rng_queue.w & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), rng_queue.w >> WF_SHADOW_COUNT_SHIFT);
-    uint status = counts.x == LIGHT_DONE ? PT_DONE : PT_SUSPENDED;
-    return BdptLightState(uintBitsToFloat(state_words[w]), uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
-        HAS_VOLUME != 0u ? uintBitsToFloat(state_words[w + 5u]) : vec4(0.0), counts,
-        uvec4(rng_queue.x, rng_init_index(pc.sample_base), rng_queue.y, status));
+    uint status = beta0_counts.y == LIGHT_DONE ? PT_DONE : PT_SUSPENDED;
+    return BdptLightState(vec4(vec3(0.0), uintBitsToFloat(beta0_counts.x)), uintBitsToFloat(state_words[w]),
+        uintBitsToFloat(state_words[w + 1u]), vec4(uintBitsToFloat(sigma_seed.xyz), 0.0),
+        uvec4(beta0_counts.yzw, sigma_seed.w), uvec4(rng_queue.x, rng_init_index(pc.sample_base), rng_queue.y, status));
 }
 
 // The places of a path's queued rays, packed as `light_state_load` reads them.
@@ -125,13 +128,12 @@ uvec2 light_queue_word(uvec2 next, uint join_count) {
 
 void light_state_store(uint p, BdptLightState st, uvec2 queue) {
     uint w = p * LIGHT_STATE_WORDS;
-    state_words[w] = floatBitsToUint(st.o_beta0);
-    state_words[w + 1u] = floatBitsToUint(st.d_dvcm);
-    state_words[w + 2u] = floatBitsToUint(st.beta_dvc);
-    state_words[w + 3u] = st.counts;
-    state_words[w + 4u] = uvec4(st.rng_status.x, st.rng_status.z, queue);
-    if (HAS_VOLUME != 0u) {
-        state_words[w + 5u] = floatBitsToUint(st.sigma);
+    state_words[w] = floatBitsToUint(st.d_dvcm);
+    state_words[w + 1u] = floatBitsToUint(st.beta_dvc);
+    state_words[w + 2u] = uvec4(floatBitsToUint(st.o_beta0.w), st.counts.xyz);
+    state_words[w + 3u] = uvec4(st.rng_status.x, st.rng_status.z, queue);
+    if (LIGHT_STATE_SIGMA_SEED) {
+        state_words[w + 4u] = uvec4(floatBitsToUint(st.sigma.xyz), st.counts.w);
     }
 }
 
@@ -167,7 +169,7 @@ void run_slot() {
     // The light subpath: one step at what its segment found (the megakernel's loop body,
     // bdpt_light_step.glsl, run once), or its start.
     Rng rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
-    vec3 o = st.o_beta0.xyz;
+    vec3 o = vec3(0.0); // the step sets it (the last segment's origin is not needed)
     float beta0 = st.o_beta0.w;
     vec3 d = st.d_dvcm.xyz;
     float d_vcm = st.d_dvcm.w;
@@ -247,10 +249,10 @@ void run_slot() {
             // The path ended: its counts for the light vertex cache.
             light_counts[path] = uvec2(stored, seen);
             lvc_offsets[path] = stored;
-            state_words[path * LIGHT_STATE_WORDS + 3u].x = LIGHT_DONE;
+            state_words[path * LIGHT_STATE_WORDS + 2u].y = LIGHT_DONE;
         }
         if (wf_join_count > 0u || queued.z > 0u) {
-            state_words[path * LIGHT_STATE_WORDS + 4u].zw = light_queue_word(next, wf_join_count);
+            state_words[path * LIGHT_STATE_WORDS + 3u].zw = light_queue_word(next, wf_join_count);
         }
     }
     if (wf_join_count > 0u) {

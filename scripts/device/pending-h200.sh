@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes), s44g (a measurement build: what the camera kernel's film sums and contributions and the light kernel's splats cost; on an H200 then s44d), s44h (the camera kernel's film sums added in place: slower), s44i (the camera state carries the sample's sum to the film once), s44j (issue #16's table with it; #17's figures on an H200).
+# Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes), s44g (a measurement build: what the camera kernel's film sums and contributions and the light kernel's splats cost; on an H200 then s44d), s44h (the camera kernel's film sums added in place: slower), s44i (the camera state carries the sample's sum to the film once), s44j (issue #16's table with it; #17's figures on an H200), s44k (the light state in 64 bytes).
 # Prepared in session 43 for the next (run in session 44, on an H100): s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
 # Parts of session 43: s43a (issue #16's table and #17's figures, run on an H200 with 3dc4982 as .device/bidir-s43.gz; its pre-split settings on an H100), s43b (BDPT's kernel tables, the finishing launch's count; an H100), s43c (the camera state word by word, then in 64 bytes: .device/bidir-soa.gz on an H200, bidir-aos64.gz on an H100), s43e and s43f (the queue index in 8 bytes, one-word any-hit results; H100s), s43g (not run: 0c9bd92's kernels as .device/bidir-wrd2.gz against 3dc4982 for issue #16's table on an H200, and whether 3dc4982's BDPT wavefront image of the caustic scene differs from its megakernels' on a GPU as 0c9bd92's does).
 # Parts of session 42 (all run on H100s): s42a (session 41's partial sharing: not kept), s42b (what BDPT's pass tails cost, by --max-depth; BIDIR_WF_LOG), s42c (the finishing launch, .device/bidir-fin2.gz: --wavefront-finish off / auto / fixed counts, DamagedHelmet in .device/scenes/gltf).
@@ -114,6 +114,35 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s44k)
+  # Session 44: the light state without the origin, 64 bytes without medium and alpha
+  # (.device/bidir-l64.gz) against 77a31a5 (bidir-carry.gz): wavefront images against
+  # megakernels, two rounds interleaved, bdpt at 1 s; on an H200 then issue #16's table with
+  # bidir-l64 (no #17 figures: too little device time).
+  unpack carry l64
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  F=$PWD/.device/bidir-l64
+  for sc in "cornell|--width 64 --height 64" "helmet|$HB" "caustic|$CAU"; do
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront off --spp 16 --seed 3 --sample-slices 16 -o /tmp/m.exr > /dev/null 2>&1
+    timeout -k 5 60 "$F" render ${sc#*|} --integrator bdpt --wavefront on --spp 16 --seed 3 --sample-slices 16 -o /tmp/w.exr > /dev/null 2>&1
+    echo "== l64 ${sc%%|*} bdpt wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  done
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for r in 1 2; do
+    for n in carry l64; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n caustic: $(timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  echo "== l64 cornell bdpt 1 s: $(at_time "$PWD/.device/bidir-l64" 1 $CB --integrator bdpt)"
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then
+    SPONZA=0 B=$PWD/.device/bidir-l64 bash "$0" s44d
+  fi
+  ;;
 s44i)
   # Session 44: the camera state carries the sample's sum and goes to the film once (no origin
   # kept; .device/bidir-carry.gz) against 8f63d90 (bidir-s44l.gz) and s44g's build without film

@@ -904,12 +904,13 @@ gpu_structs! {
 
     /// A light subpath of the wavefront light pass between its launches (BIND_PT_SUSPENDED;
     /// bdpt_light_wavefront.comp; the light megakernel's loop state without VCM's dVM). The
-    /// kernel stores it as 16-byte words, `sigma` last and only in scenes with a medium: 80
-    /// bytes a slot, three 32-byte sectors, in the others (`light_state_load`). Stored,
-    /// `rng_status` holds the random numbers' state and dimension, then the slot's queue places
-    /// (its segment's, its join's shadow ray's with their count above WF_SHADOW_COUNT_SHIFT):
-    /// the sample index is recomputed, the status follows from `counts.x` (all ones once the
-    /// path has ended), and the join's film pixel waits in BIND_WF_CONTRIB's w (session 44).
+    /// kernel stores it as 16-byte words without the origin (no launch reads it back), `sigma`
+    /// and the opacity seed last and only in scenes with a medium or alpha: 64 bytes a slot,
+    /// two 32-byte sectors, in the others (`light_state_load`). Stored, `rng_status` holds the
+    /// random numbers' state and dimension, then the slot's queue places (its segment's, its
+    /// join's shadow ray's with their count above WF_SHADOW_COUNT_SHIFT): the sample index is
+    /// recomputed, the status follows from `counts.x` (all ones once the path has ended), and
+    /// the join's film pixel waits in BIND_WF_CONTRIB's w (session 44).
     pub struct BdptLightState (96 bytes) {
         /// Origin of the next segment, then the throughput's largest channel leaving the light
         /// (Russian roulette's reference).
