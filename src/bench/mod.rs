@@ -8,13 +8,15 @@ pub mod json;
 pub mod render;
 pub mod traversal;
 
-/// Median of a non-empty sample (sorted copy).
 /// The least time the untimed warm-up runs of a benchmark take (when any are asked for): a GPU
-/// left idle (a slow BVH build, the gap between two processes) runs at its idle clock, and a few
-/// runs of milliseconds do not raise it again (`bench traversal` on the H200, session 26;
-/// `bench render` on an H100, session 44: one fresh process in four timed 68 ms, not 19).
+/// left idle (a slow BVH build) runs at its idle clock, and a few runs of milliseconds do not
+/// raise it again (`bench traversal` on the H200, session 26); and a fresh process's first tenth
+/// of a second of GPU work can run slow at full clocks (`bench render` on H100s, session 44: 13 of
+/// 30 processes took 33-88 ms instead of 19 after one warm-up run, none of 20 after 1 s;
+/// docs/results.md, "A fresh process's slow first tenth of a second").
 pub const WARMUP_TIME: std::time::Duration = std::time::Duration::from_secs(1);
 
+/// Median of a non-empty sample (sorted copy).
 pub fn median(xs: &[f64]) -> f64 {
     let mut v = xs.to_vec();
     v.sort_by(|a, b| a.total_cmp(b));

@@ -912,8 +912,8 @@ gpu_structs! {
     /// recomputed, the status follows from `counts.x` (all ones once the path has ended), and
     /// the join's film pixel waits in BIND_WF_CONTRIB's w (session 44).
     pub struct BdptLightState (96 bytes) {
-        /// Origin of the next segment, then the throughput's largest channel leaving the light
-        /// (Russian roulette's reference).
+        /// Origin of the next segment (not stored: no launch reads it back), then the
+        /// throughput's largest channel leaving the light (Russian roulette's reference).
         pub o_beta0: Vec4,
         /// Its direction, then dVCM.
         pub d_dvcm: Vec4,

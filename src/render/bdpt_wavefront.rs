@@ -37,12 +37,12 @@ pub fn shadow_rays_per_slot(join: Join) -> Option<u32> {
 // The camera pass's state keeps a slot's shadow-ray count above WF_SHADOW_COUNT_SHIFT.
 const _: () = assert!(abi::BDPT_WF_SHADOW_RAYS < 1 << (32 - abi::WF_SHADOW_COUNT_SHIFT));
 
-/// Bytes of a slot's path: the larger of a camera path's (`BdptCameraState`) and a light
-/// path's (`BdptLightState`), each with its queue's places in its random numbers' word.
-const STATE_BYTES: u64 = {
-    let (camera, light) = (std::mem::size_of::<abi::BdptCameraState>(), std::mem::size_of::<abi::BdptLightState>());
-    (if camera > light { camera } else { light }) as u64
-};
+/// Bytes of a slot's path: the most 16-byte words a camera or light path's stored form takes
+/// (bdpt_camera_wavefront.glsl's CAMERA_STATE_WORDS, bdpt_light_wavefront.glsl's
+/// LIGHT_STATE_WORDS: four, and a fifth in scenes with a medium or alpha), each with its queue's
+/// places in its random numbers' word and without the light path's origin that
+/// `BdptLightState` names (no launch reads it back).
+const STATE_BYTES: u64 = 5 * 16;
 
 /// Bytes per slot with `shadow` shadow rays: the path, its rays and hits (and its places in the
 /// lists of live slots) and the shadow rays' contributions (twice: launches of alternate
