@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Prepared in session 44 for the next: s45a (the wavefront path tracer's film sums carried in its paths, scripts/device/s45a-pt-film.patch as .device/bidir-ptf.gz against 1dc2453 as .device/bidir-head44.gz; then issue #16's table, and #17's figures on an H200). Its bundles of earlier parts (bidir-carry, bidir-l64, bidir-s44l, bidir-xfilm, ...) are in /work/device-spare or .device.
+# Prepared in session 44 for the next: s45a (the wavefront path tracer's film sums carried in its paths, scripts/device/s45a-pt-film.patch as .device/bidir-ptf.gz, and its state in 64 bytes, scripts/device/s45b-pt-state.patch as .device/bidir-pts.gz, against 1dc2453 as .device/bidir-head44.gz; then issue #16's table, and #17's figures on an H200). Its bundles of earlier parts (bidir-carry, bidir-l64, bidir-s44l, bidir-xfilm, ...) are in /work/device-spare or .device.
 # Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes), s44g (a measurement build: what the camera kernel's film sums and contributions and the light kernel's splats cost; on an H200 then s44d), s44h (the camera kernel's film sums added in place: slower), s44i (the camera state carries the sample's sum to the film once), s44j (issue #16's table with it; #17's figures on an H200), s44k (the light state in 64 bytes).
 # Prepared in session 43 for the next (run in session 44, on an H100): s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
 # Parts of session 43: s43a (issue #16's table and #17's figures, run on an H200 with 3dc4982 as .device/bidir-s43.gz; its pre-split settings on an H100), s43b (BDPT's kernel tables, the finishing launch's count; an H100), s43c (the camera state word by word, then in 64 bytes: .device/bidir-soa.gz on an H200, bidir-aos64.gz on an H100), s43e and s43f (the queue index in 8 bytes, one-word any-hit results; H100s), s43g (not run: 0c9bd92's kernels as .device/bidir-wrd2.gz against 3dc4982 for issue #16's table on an H200, and whether 3dc4982's BDPT wavefront image of the caustic scene differs from its megakernels' on a GPU as 0c9bd92's does).
@@ -119,22 +119,28 @@ s45a)
   # Prepared in session 44, not run: the wavefront path tracer's film sums carried in the path
   # (scripts/device/s45a-pt-film.patch on 1dc2453: the last launch's clear light sample added
   # to the path's radiance where a path goes on, so the film is read and written once a sample,
-  # not each launch; .device/bidir-ptf.gz) against 1dc2453 (.device/bidir-head44.gz): wavefront
+  # not each launch; .device/bidir-ptf.gz), and with it its path state in 64 bytes
+  # (scripts/device/s45b-pt-state.patch on 4a8dfff, which includes s45a's change: no origin, the
+  # queue places and status beside the random numbers, no index buffer, the contribution at the
+  # shadow ray's place in halves of alternate parity; .device/bidir-pts.gz) against 1dc2453
+  # (.device/bidir-head44.gz): wavefront
   # images against megakernels, two rounds interleaved of pt-nee and pt on DamagedHelmet and the
   # caustic scene and pt-nee on the Cornell box in its wavefront form; then issue #16's table
   # with 1dc2453 (s44d; #17's figures too on an H200).
-  unpack head44 ptf
+  unpack head44 ptf pts
   HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
-  F=$PWD/.device/bidir-ptf
-  for sc in "cornell|--width 64 --height 64" "helmet|$HB" "caustic|$CAU"; do
-    for i in pt-nee pt; do
-      timeout -k 5 60 "$F" render ${sc#*|} --integrator $i --wavefront off --spp 16 --seed 3 -o /tmp/m.exr > /dev/null 2>&1
-      timeout -k 5 60 "$F" render ${sc#*|} --integrator $i --wavefront on --spp 16 --seed 3 -o /tmp/w.exr > /dev/null 2>&1
-      echo "== ptf ${sc%%|*} $i wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+  for n in ptf pts; do
+    F=$PWD/.device/bidir-$n
+    for sc in "cornell|--width 64 --height 64" "helmet|$HB" "caustic|$CAU"; do
+      for i in pt-nee pt; do
+        timeout -k 5 60 "$F" render ${sc#*|} --integrator $i --wavefront off --spp 16 --seed 3 -o /tmp/m.exr > /dev/null 2>&1
+        timeout -k 5 60 "$F" render ${sc#*|} --integrator $i --wavefront on --spp 16 --seed 3 -o /tmp/w.exr > /dev/null 2>&1
+        echo "== $n ${sc%%|*} $i wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+      done
     done
   done
   for r in 1 2; do
-    for n in head44 ptf; do
+    for n in head44 ptf pts; do
       F=$PWD/.device/bidir-$n
       for i in pt-nee pt; do
         echo "== $n helmet $i: $(timeout -k 5 60 "$F" bench render $HB --integrator $i --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|pt_wavefront +[0-9.]+' | tr '\n' ' ')"
