@@ -84,7 +84,7 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 #include "bdpt_camera_path.glsl"
 
 // A slot's path and where its last launch queued its rays, in 16-byte words at
-// g * CAMERA_STATE_WORDS: the sample's sum so far and the vertex count (CAMERA_DONE once the
+// g * CAMERA_STATE_WORDS: the sample's sum so far and the vertex count (WF_PATH_DONE once the
 // path has ended), the direction and dVCM, the throughput and dVC, then the random-number state and dimension
 // with the segment's place in its queue and the first shadow ray's with their count from bit
 // WF_SHADOW_COUNT_SHIFT up; last, only in scenes with a medium or alpha, the medium and the
@@ -97,7 +97,6 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 // BDPT 6 % on an H100 (session 44).
 const bool CAMERA_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
 const uint CAMERA_STATE_WORDS = CAMERA_STATE_SIGMA_SEED ? 5u : 4u;
-const uint CAMERA_DONE = 0xffffffffu;
 
 // Slot g's path (its sample index `sample_index`) and its queued rays: segment, first shadow
 // ray, their count.
@@ -105,15 +104,10 @@ BdptCameraState camera_state_load(uint g, uint sample_index, out uvec3 queued) {
     uint w = g * CAMERA_STATE_WORDS;
     uvec4 sum_depth = state_words[w];
     uvec4 rng_queue = state_words[w + 3u];
-    queued = uvec3(rng_queue.z, rng_queue.w & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), rng_queue.w >> WF_SHADOW_COUNT_SHIFT);
-    uint status = sum_depth.w == CAMERA_DONE ? PT_DONE : PT_SUSPENDED;
+    queued = wf_queued(rng_queue.zw);
+    uint status = sum_depth.w == WF_PATH_DONE ? PT_DONE : PT_SUSPENDED;
     return BdptCameraState(sum_depth, uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
         CAMERA_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u), uvec4(rng_queue.x, rng_init_index(sample_index), rng_queue.y, status));
-}
-
-// The places of slot g's queued rays, packed as `camera_state_load` reads them.
-uvec2 camera_queue_word(uvec2 next, uint shadow_count) {
-    return uvec2(next.x, next.y | (shadow_count << WF_SHADOW_COUNT_SHIFT));
 }
 
 void camera_state_store(uint g, BdptCameraState st, uvec2 queue) {
@@ -266,12 +260,12 @@ void run_slot() {
     if (alive) {
         camera_state_store(g, BdptCameraState(uvec4(floatBitsToUint(sum), depth), vec4(d, d_vcm), vec4(beta, d_vc),
             uvec4(floatBitsToUint(sigma_near), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
-            camera_queue_word(next, wf_shadow_count));
+            wf_queue_word(next, wf_shadow_count));
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
     } else if (wf_shadow_count > 0u) {
         // The path ended with shadow rays pending: the next launch adds what they carry.
-        state_words[g * CAMERA_STATE_WORDS] = uvec4(floatBitsToUint(sum), CAMERA_DONE);
-        state_words[g * CAMERA_STATE_WORDS + 3u].zw = camera_queue_word(next, wf_shadow_count);
+        state_words[g * CAMERA_STATE_WORDS] = uvec4(floatBitsToUint(sum), WF_PATH_DONE);
+        state_words[g * CAMERA_STATE_WORDS + 3u].zw = wf_queue_word(next, wf_shadow_count);
     }
     for (uint i = 0u; i < wf_shadow_count; i++) {
         wf_shadow_rays[next.y + i] = wavefront_ray(wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);

@@ -95,7 +95,7 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
 
 // A light path and where its last launch queued its rays, in 16-byte words at
 // path * LIGHT_STATE_WORDS: the direction and dVCM, the throughput and dVC, then beta0 with the
-// counts (the vertex count, LIGHT_DONE once the path has ended; seen; stored with the light at
+// counts (the vertex count, WF_PATH_DONE once the path has ended; seen; stored with the light at
 // infinity in bit 31), then the random numbers' state and dimension with the segment's place in
 // its queue and the join's shadow ray's with their count from bit WF_SHADOW_COUNT_SHIFT up;
 // last, only in scenes with a medium or alpha, the medium and the opacity seed. Without them a
@@ -106,7 +106,6 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
 // vertex count, and the join's film pixel waits with its contribution (BIND_WF_CONTRIB's w).
 const bool LIGHT_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
 const uint LIGHT_STATE_WORDS = LIGHT_STATE_SIGMA_SEED ? 5u : 4u;
-const uint LIGHT_DONE = 0xffffffffu;
 
 // Path p's state and its queued rays: segment, join's shadow ray, their count.
 BdptLightState light_state_load(uint p, out uvec3 queued) {
@@ -114,16 +113,11 @@ BdptLightState light_state_load(uint p, out uvec3 queued) {
     uvec4 beta0_counts = state_words[w + 2u];
     uvec4 rng_queue = state_words[w + 3u];
     uvec4 sigma_seed = LIGHT_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
-    queued = uvec3(rng_queue.z, rng_queue.w & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), rng_queue.w >> WF_SHADOW_COUNT_SHIFT);
-    uint status = beta0_counts.y == LIGHT_DONE ? PT_DONE : PT_SUSPENDED;
+    queued = wf_queued(rng_queue.zw);
+    uint status = beta0_counts.y == WF_PATH_DONE ? PT_DONE : PT_SUSPENDED;
     return BdptLightState(vec4(vec3(0.0), uintBitsToFloat(beta0_counts.x)), uintBitsToFloat(state_words[w]),
         uintBitsToFloat(state_words[w + 1u]), vec4(uintBitsToFloat(sigma_seed.xyz), 0.0),
         uvec4(beta0_counts.yzw, sigma_seed.w), uvec4(rng_queue.x, rng_init_index(pc.sample_base), rng_queue.y, status));
-}
-
-// The places of a path's queued rays, packed as `light_state_load` reads them.
-uvec2 light_queue_word(uvec2 next, uint join_count) {
-    return uvec2(next.x, next.y | (join_count << WF_SHADOW_COUNT_SHIFT));
 }
 
 void light_state_store(uint p, BdptLightState st, uvec2 queue) {
@@ -242,17 +236,17 @@ void run_slot() {
     if (alive) {
         light_state_store(path, BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
             uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
-            light_queue_word(next, wf_join_count));
+            wf_queue_word(next, wf_join_count));
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
     } else {
         if (status != PT_DONE) {
             // The path ended: its counts for the light vertex cache.
             light_counts[path] = uvec2(stored, seen);
             lvc_offsets[path] = stored;
-            state_words[path * LIGHT_STATE_WORDS + 2u].y = LIGHT_DONE;
+            state_words[path * LIGHT_STATE_WORDS + 2u].y = WF_PATH_DONE;
         }
         if (wf_join_count > 0u || queued.z > 0u) {
-            state_words[path * LIGHT_STATE_WORDS + 3u].zw = light_queue_word(next, wf_join_count);
+            state_words[path * LIGHT_STATE_WORDS + 3u].zw = wf_queue_word(next, wf_join_count);
         }
     }
     if (wf_join_count > 0u) {

@@ -13,6 +13,22 @@
 #define WF_WG_SIZE PT_WG_SIZE
 #endif
 
+// A path's vertex count in its stored state once the path has ended (the status, read back from
+// the count: no path reaches it).
+const uint WF_PATH_DONE = 0xffffffffu;
+
+// Where a slot's launch queued its rays, kept in its path's state (bdpt_camera_wavefront.glsl,
+// bdpt_light_wavefront.glsl): the segment's place, then the first shadow ray's with their count
+// from bit WF_SHADOW_COUNT_SHIFT up.
+uvec2 wf_queue_word(uvec2 places, uint shadow_count) {
+    return uvec2(places.x, places.y | (shadow_count << WF_SHADOW_COUNT_SHIFT));
+}
+
+// wf_queue_word's (segment, first shadow ray, their count).
+uvec3 wf_queued(uvec2 word) {
+    return uvec3(word.x, word.y & ((1u << WF_SHADOW_COUNT_SHIFT) - 1u), word.y >> WF_SHADOW_COUNT_SHIFT);
+}
+
 // Per launch l of a batch: the segments (2 l) and shadow rays (2 l + 1) it queued.
 layout(std430, binding = BIND_WF_COUNTS) coherent buffer Counts { uint wf_counts[]; };
 // The most workgroups a trace kernel of these launches starts (`Tracer::queued_groups`: a
