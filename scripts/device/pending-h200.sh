@@ -78,6 +78,14 @@ at_time() {
   local b=$1 t=$2; shift 2
   echo "$(timeout -k 5 60 "$b" render "$@" --time "$t" -o /tmp/at_time.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$b" diff /tmp/at_time.exr "${REFERENCE:-$REF}" 2>&1 | grep -E '^RMSE ')"
 }
+# The binary $1's wavefront image against its megakernels' (16 spp, seed 3) with the further
+# options (a scene and the integrator), as one RMSE line.
+wf_vs_mega() {
+  local b=$1; shift
+  timeout -k 5 60 "$b" render "$@" --wavefront off --spp 16 --seed 3 -o /tmp/m.exr > /dev/null 2>&1
+  timeout -k 5 60 "$b" render "$@" --wavefront on --spp 16 --seed 3 -o /tmp/w.exr > /dev/null 2>&1
+  "$b" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE'
+}
 unpack() {
   for n in "$@"; do gunzip -kf ".device/bidir-$n.gz"; chmod +x ".device/bidir-$n"; done
 }
@@ -133,9 +141,7 @@ s45a)
     F=$PWD/.device/bidir-$n
     for sc in "cornell|--width 64 --height 64" "helmet|$HB" "caustic|$CAU"; do
       for i in pt-nee pt; do
-        timeout -k 5 60 "$F" render ${sc#*|} --integrator $i --wavefront off --spp 16 --seed 3 -o /tmp/m.exr > /dev/null 2>&1
-        timeout -k 5 60 "$F" render ${sc#*|} --integrator $i --wavefront on --spp 16 --seed 3 -o /tmp/w.exr > /dev/null 2>&1
-        echo "== $n ${sc%%|*} $i wavefront vs megakernel: $("$F" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE')"
+        echo "== $n ${sc%%|*} $i wavefront vs megakernel: $(wf_vs_mega "$F" ${sc#*|} --integrator $i)"
       done
     done
   done
