@@ -16,6 +16,12 @@ pub mod traversal;
 /// docs/results.md, "A fresh process's slow first tenth of a second").
 pub const WARMUP_TIME: std::time::Duration = std::time::Duration::from_secs(1);
 
+/// Whether a benchmark that asked for `warmup` untimed runs, has done `done` since `start`,
+/// runs another: until it has done `warmup` and, where `warmup` > 0, for at least WARMUP_TIME.
+pub fn warming_up(done: usize, warmup: usize, start: std::time::Instant) -> bool {
+    done < warmup || (warmup > 0 && start.elapsed() < WARMUP_TIME)
+}
+
 /// Median of a non-empty sample (sorted copy).
 pub fn median(xs: &[f64]) -> f64 {
     let mut v = xs.to_vec();
@@ -28,5 +34,22 @@ pub fn median(xs: &[f64]) -> f64 {
         v[n / 2]
     } else {
         0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::{Duration, Instant};
+
+    #[test]
+    fn warm_up_takes_its_runs_and_then_its_time() {
+        let now = Instant::now();
+        assert!(!warming_up(0, 0, now), "no warm-up asked for: none, however early");
+        assert!(warming_up(1, 2, now), "fewer runs than asked for");
+        assert!(warming_up(2, 2, now), "the runs asked for, but not yet WARMUP_TIME");
+        let long_ago = now.checked_sub(WARMUP_TIME + Duration::from_millis(10)).expect("a machine up for over a second");
+        assert!(!warming_up(2, 2, long_ago), "the runs and the time");
+        assert!(warming_up(1, 2, long_ago), "the time, but not the runs");
     }
 }

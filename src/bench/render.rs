@@ -205,10 +205,9 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &Camera, settings: RenderSettin
     let kernel_form = r.kernel_form();
     let bvh = r.settings().bvh;
     let spp = o.spp.max(1);
-    // `o.warmup` runs and, where there are any, at least WARMUP_TIME of them.
     let warm_start = Instant::now();
     let mut warm_runs = 0;
-    while warm_runs < o.warmup || (o.warmup > 0 && warm_start.elapsed() < super::WARMUP_TIME) {
+    while super::warming_up(warm_runs, o.warmup, warm_start) {
         r.reset(None)?;
         r.render_spp(spp, |_| {})?;
         warm_runs += 1;

@@ -244,7 +244,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
                 rec.timestamp(&timer, 2);
                 Ok(())
             })?;
-            if warm_runs < opts.warmup || (opts.warmup > 0 && warm_start.elapsed() < super::WARMUP_TIME) {
+            if super::warming_up(warm_runs, opts.warmup, warm_start) {
                 warm_runs += 1;
             } else {
                 sort_times.push(timer.elapsed_ns(0, 1)? * 1e-6);
