@@ -305,27 +305,35 @@ fn wavefront_gives_the_megakernels_image() {
     // none queues a ray, or by a finishing launch after 2 launches (nearly every sample of the
     // pass run in it) or 6.
     let finishes = [WavefrontFinish::Off, WavefrontFinish::After(2), WavefrontFinish::After(6)];
+    // And with the short box of absorbing glass (a medium, which the slots' paths carry
+    // across launches), over one layout.
+    let mut medium = scene.clone();
+    let short = medium.materials.iter().position(|m| m.name == "shortBox").expect("the Cornell box's short box");
+    (medium.materials[short].refractivity, medium.materials[short].ior) = (1.0, 1.5);
+    medium.materials[short].absorption = glam::Vec3::new(0.002, 0.006, 0.012);
+    let cases = [(&scene, BvhLayout::Cwbvh, 1), (&scene, BvhLayout::Bvh2, 3), (&scene, BvhLayout::Bvh4, 3), (&medium, BvhLayout::Bvh4, 3)];
     for (integrator, spp) in [(Integrator::Pt, 64), (Integrator::PtNee, 7)] {
-        for (i, (layout, slices)) in [(BvhLayout::Cwbvh, 1), (BvhLayout::Bvh2, 3), (BvhLayout::Bvh4, 3)].into_iter().enumerate() {
+        for (i, (scene, layout, slices)) in cases.into_iter().enumerate() {
             let image = |wavefront: bool, finish: WavefrontFinish| {
                 let mut settings = RenderSettings::new(integrator);
                 settings.wavefront = Some(wavefront);
                 settings.wavefront_finish = finish;
                 settings.bvh_layout = Some(layout);
                 settings.sample_slices = slices;
-                render_values(&ctx, &scene, &camera, settings, spp)
+                render_values(&ctx, scene, &camera, settings, spp)
             };
             let mega = image(false, WavefrontFinish::Auto);
             let name = integrator.name();
             let lit = mega.iter().filter(|&&v| v > 0.0).count();
             assert!(lit * 3 > mega.len(), "{name}: {lit} of {} values above 0", mega.len());
-            for finish in [WavefrontFinish::Auto, finishes[i]] {
+            for finish in [WavefrontFinish::Auto, finishes[i % finishes.len()]] {
                 let wave = image(true, finish);
                 let differ = values_differing(&wave, &mega, 1e-5);
+                let glass = scene.materials[short].refractivity > 0.0;
                 assert_eq!(
                     differ,
                     0,
-                    "{name} over {}, {slices} slices, finish {}: {differ} of {} values differ",
+                    "{name} over {}, {slices} slices, absorbing glass {glass}, finish {}: {differ} of {} values differ",
                     layout.name(),
                     finish.name(),
                     mega.len()

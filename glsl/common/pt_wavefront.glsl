@@ -45,15 +45,17 @@ const uint SHADOW_SUSPEND = 0u;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
-layout(std430, binding = BIND_PT_SUSPENDED) buffer State { PtSuspended state[]; };
+// The slots' paths (`PT_STATE_WORDS` words each, below).
+layout(std430, binding = BIND_PT_SUSPENDED) buffer State { uvec4 state_words[]; };
 layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
+// A light sample's contribution at its shadow ray's place, in the half of the buffer of the
+// launch's parity (the next launch reads it where the ray is clear).
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
 layout(std430, binding = BIND_WF_COUNTS) buffer Counts { uint wf_counts[]; };
-layout(std430, binding = BIND_WF_INDEX) buffer Index { uvec2 wf_index[]; };
 layout(push_constant) uniform Push { PtWavefrontPush wpc; };
 #define pc wpc.pt
 
@@ -63,6 +65,23 @@ vec3 wf_shadow_contrib = vec3(0.0);
 bool wf_shadow_pending = false;
 
 #include "pt_path.glsl"
+
+// A slot's path between launches, in 16-byte words at g * PT_STATE_WORDS: the direction and the
+// last non-delta bounce's pdf; the throughput and the vertex count (bit 31: the last bounce was
+// a delta lobe); the estimate so far and the sample index; the random numbers' state and
+// dimension, the segment's place in its queue, and the shadow ray's place with, from bit 28,
+// whether one is pending and the slot's status (PT_FRESH, PT_SUSPENDED, PT_DONE); last, only in
+// scenes with a medium or alpha, the medium and the opacity seed. No origin: path_scatter finds
+// its surface from the hit and the direction and makes the next origin itself. The random
+// numbers' sample index is rng_init's (`rng_init_index`). A fill with zeros makes every slot
+// PT_FRESH with nothing pending.
+const bool PT_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
+const uint PT_STATE_WORDS = PT_STATE_SIGMA_SEED ? 5u : 4u;
+const uint PT_PLACE_MASK = (1u << 28) - 1u;
+
+uint pt_queue_word(uint shadow_place, bool pending, uint status) {
+    return shadow_place | (pending ? 1u << 28 : 0u) | (status << 29);
+}
 
 void main() {
     // Slot -> (slice, pixel of the camera's window), as the megakernel maps its invocations (pt_kernel.glsl, pt_invocation).
@@ -79,40 +98,57 @@ void main() {
         return;
     }
     // A slot whose samples are done, with no light sample pending, has nothing left to do.
-    uint status = state[g].rng_status.w;
-    vec4 c = wf_contrib[g];
-    if (status == PT_DONE && c.w == 0.0) {
+    uint w = g * PT_STATE_WORDS;
+    uvec4 rng_queue = state_words[w + 3u];
+    uint status = rng_queue.w >> 29;
+    bool pending = ((rng_queue.w >> 28) & 1u) != 0u;
+    if (status == PT_DONE && !pending) {
         return;
     }
-    uvec2 queued = wf_index[g]; // where the last launch queued its rays
+    uvec2 queued = uvec2(rng_queue.z, rng_queue.w & PT_PLACE_MASK); // where the last launch queued its rays
+    uint half_len = uint(wf_contrib.length()) / 2u;
+    uint read_half = (wpc.launch & 1u) == 0u ? half_len : 0u;
+    uint write_half = half_len - read_half;
     uint pixel = wp.y * pc.camera.window_size.x + wp.x;
     uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
     uint image_pixel = px.y * pc.camera.size.x + px.x;
     PixelSums sums = PixelSums(vec3(0.0), 0.0, 0u);
 
-    // The last launch's light sample, if its shadow ray was clear.
-    if (c.w != 0.0 && wf_shadow_hits[queued.y] == NO_HIT) {
+    // The last launch's light sample, if its shadow ray was clear: added to the path's radiance
+    // below where a path goes on in this slot (the film then gets it with the sample's end, not
+    // in a read and a write of its entry each launch), else to the film now.
+    vec3 clear = vec3(0.0);
+    if (pending && wf_shadow_hits[queued.y] == NO_HIT) {
+        vec4 c = wf_contrib[read_half + queued.y];
         if (any(isnan(c.rgb)) || any(isinf(c.rgb))) {
             sums.bad++;
         } else {
-            sums.sum += c.rgb;
+            clear = c.rgb;
         }
     }
 
     // The path: scattered at what its segment found, or (ended, or none yet this pass) the
     // slot's next sample started.
-    PtSuspended st = state[g];
-    uint s = status == PT_FRESH ? slice : st.sigma_sample.w;
-    Rng rng;
+    uint s = slice;
+    Rng rng = Rng(0u, 0u, 0u);
     PathState path;
     bool alive = false;
     uint shadow_seed = 0u;
+    if (status != PT_FRESH) {
+        s = state_words[w + 2u].w;
+    }
     if (status == PT_SUSPENDED) {
-        rng = Rng(st.rng_status.x, st.rng_status.y, st.rng_status.z);
-        path = PathState(uintBitsToFloat(st.o_depth.xyz), st.d_pdf.xyz, st.throughput_specular.xyz, uintBitsToFloat(st.radiance_seed.xyz),
-            st.throughput_specular.w != 0.0, st.d_pdf.w, st.o_depth.w, uintBitsToFloat(st.sigma_sample.xyz),
+        uvec4 d_pdf = state_words[w];
+        uvec4 beta_depth = state_words[w + 1u];
+        uvec4 radiance_sample = state_words[w + 2u];
+        uvec4 sigma_seed = PT_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
+        rng = Rng(rng_queue.x, rng_init_index(pc.sample_base + s), rng_queue.y);
+        // The origin is path_scatter's to make (it reads only the hit and the direction).
+        path = PathState(vec3(0.0), uintBitsToFloat(d_pdf.xyz), uintBitsToFloat(beta_depth.xyz), uintBitsToFloat(radiance_sample.xyz),
+            (beta_depth.w >> 31) != 0u, uintBitsToFloat(d_pdf.w), beta_depth.w & 0x7fffffffu, uintBitsToFloat(sigma_seed.xyz),
             vec3(0.0), 0.0, vec3(0.0), false);
-        blend_seed = st.radiance_seed.w;
+        path.radiance += clear;
+        blend_seed = sigma_seed.w;
         GpuHit gh = wf_hits[queued.x];
         uvec2 stats = uvec2(0u);
         alive = path_scatter(path, TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v)), rng, stats);
@@ -121,6 +157,8 @@ void main() {
             add_sample(sums, path.radiance);
             s += slices;
         }
+    } else {
+        sums.sum += clear; // no path goes on here: the film gets it now
     }
 #ifdef PT_WF_FINISH
     // The rest of the slot's samples: each step's shadow ray (with the opacity seed of the path
@@ -175,22 +213,21 @@ void main() {
     base = subgroupBroadcastFirst(base);
     queued = base + uvec2(subgroupBallotExclusiveBitCount(ext_lanes), subgroupBallotExclusiveBitCount(shadow_lanes));
     if (alive) {
-        state[g] = PtSuspended(uvec4(floatBitsToUint(path.o), path.depth), vec4(path.d, path.prev_pdf_w),
-            vec4(path.throughput, path.specular ? 1.0 : 0.0), uvec4(floatBitsToUint(path.radiance), blend_seed),
-            uvec4(floatBitsToUint(path.sigma_near), s),
-            uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED));
+        state_words[w] = uvec4(floatBitsToUint(path.d), floatBitsToUint(path.prev_pdf_w));
+        state_words[w + 1u] = uvec4(floatBitsToUint(path.throughput), path.depth | (path.specular ? 1u << 31 : 0u));
+        state_words[w + 2u] = uvec4(floatBitsToUint(path.radiance), s);
+        state_words[w + 3u] = uvec4(rng.state, rng.dim, queued.x, pt_queue_word(queued.y, wf_shadow_pending, PT_SUSPENDED));
+        if (PT_STATE_SIGMA_SEED) {
+            state_words[w + 4u] = uvec4(floatBitsToUint(path.sigma_near), blend_seed);
+        }
         wf_rays[queued.x] = wavefront_ray(path.o, path.d, 3.0e38, blend_seed);
-    } else if (status != PT_DONE) {
-        state[g].rng_status.w = PT_DONE;
+    } else if (status != PT_DONE || pending || wf_shadow_pending) {
+        // Done (its samples all ended): what the next launch still has to add, if anything.
+        state_words[w + 3u].w = pt_queue_word(queued.y, wf_shadow_pending, PT_DONE);
     }
     if (wf_shadow_pending) {
         wf_shadow_rays[queued.y] = wavefront_ray(wf_shadow.o, wf_shadow.d, wf_shadow.tmax, shadow_seed);
-    }
-    if (alive || wf_shadow_pending) {
-        wf_index[g] = queued;
-    }
-    if (wf_shadow_pending || c.w != 0.0) {
-        wf_contrib[g] = vec4(wf_shadow_contrib, wf_shadow_pending ? 1.0 : 0.0);
+        wf_contrib[write_half + queued.y] = vec4(wf_shadow_contrib, 0.0);
     }
 
     if (sums.count > 0.0 || any(notEqual(sums.sum, vec3(0.0)))) {

@@ -410,7 +410,8 @@ gpu_consts! {
     /// invocation: the segment each slot's path traces next (`GpuRay`, tmax < 0: none) and what
     /// the closest-hit trace kernel found (`GpuHit`); the light sample's shadow ray and what the
     /// any-hit kernel found (one word, SPEC_HIT_WORDS); the contribution that shadow ray carries
-    /// (rgb; w = 1: pending).
+    /// (rgb, at the ray's place in the half of the buffer of the launch's parity; BDPT's light
+    /// pass: its join's film pixel in w).
     pub const BIND_WF_RAYS: u32 = 41;
     pub const BIND_WF_HITS: u32 = 42;
     pub const BIND_WF_SHADOW_RAYS: u32 = 43;
@@ -421,16 +422,12 @@ gpu_consts! {
     /// and BIND_WF_SHADOW_RAYS; the trace kernels read their count there (BIND_RAY_COUNTS) and
     /// the host stops when a launch queues none.
     pub const BIND_WF_COUNTS: u32 = 46;
-    /// The wavefront path tracer's slots: where each one's segment and shadow ray went in the
-    /// queues (uvec2). BDPT's wavefront passes keep those places in their paths' state instead
-    /// (BIND_PT_SUSPENDED: `BdptCameraState`, `BdptLightState`), so that one read brings both,
-    /// and the contribution of each queued shadow ray in BIND_WF_CONTRIB at the ray's place
-    /// (the light pass: its join's film pixel in w).
-    pub const BIND_WF_INDEX: u32 = 47;
+    // 47 was BIND_WF_INDEX (each wavefront slot's places in the queues), kept in the paths'
+    // state since session 44.
     /// Trace kernels with SPEC_RAY_COUNT_BUFFER: ray counts, `TracePush::count_index` selects.
     pub const BIND_RAY_COUNTS: u32 = 48;
-    /// `PtSuspended::rng_status.w` in the wavefront tracer: the slot's samples of the pass are
-    /// all done (its rays have none).
+    /// A wavefront slot's status (pt_wavefront.glsl's queue word; BDPT's passes: their vertex
+    /// counts' sentinels): the slot's samples of the pass are all done (its rays have none).
     pub const PT_DONE: u32 = 3;
     /// Shadow rays a slot of the wavefront camera pass (`bdpt_camera_wavefront.comp`) may queue
     /// per launch: the light sample and up to three connections (`--join lvc=N`, N <= 3).

@@ -15,9 +15,14 @@ use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::PtPush, abi::PtWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Spec};
 
-/// Bytes per slot: the path (`PtSuspended`), two rays, two hits, the pending contribution and
-/// where its rays went in the queues.
-pub const SLOT_BYTES: u64 = std::mem::size_of::<abi::PtSuspended>() as u64 + queue_bytes(1) + 16 + 8;
+/// Bytes of a slot's path as pt_wavefront.glsl stores it (`PT_STATE_WORDS`: four 16-byte words,
+/// a fifth in scenes with a medium or alpha; no origin, the queue places beside the random
+/// numbers).
+const STATE_BYTES: u64 = 5 * 16;
+
+/// Bytes per slot: the path, two rays, two hits, and the pending light sample's contribution
+/// (twice: launches of alternate parity).
+pub const SLOT_BYTES: u64 = STATE_BYTES + queue_bytes(1) + 2 * 16;
 
 /// Slots the wavefront integrators' passes aim for on GPUs (sample slices enough for about
 /// this many): fewer leave their trace kernels' launches too short to fill the GPU. NVIDIA
@@ -37,7 +42,6 @@ pub struct WavefrontPathTracer {
     queues: Queues,
     state: Buffer,
     contrib: Buffer,
-    index: Buffer,
     slots: u64,
     /// Launches a pass took per sample of a slot, learnt from the last pass: sizes the first
     /// batch of the next.
@@ -77,9 +81,9 @@ impl WavefrontPathTracer {
         Ok(WavefrontPathTracer {
             kernel,
             queues: Queues::new(ctx, scene, what, slots, 1, SLOT_BYTES, false)?,
-            state: buffer("state", std::mem::size_of::<abi::PtSuspended>() as u64)?,
-            contrib: buffer("contrib", 16)?,
-            index: buffer("queue_index", 8)?,
+            state: buffer("state", STATE_BYTES)?,
+            // Two halves, written by launches of alternate parity (pt_wavefront.glsl).
+            contrib: buffer("contrib", 2 * 16)?,
             slots,
             launches_per_sample: Cell::new(8.0),
             finisher,
@@ -151,7 +155,6 @@ impl IntegratorKernels for WavefrontPathTracer {
             Bind::buffer(abi::BIND_SLICES, film.slices_buffer()),
             Bind::buffer(abi::BIND_PT_SUSPENDED, &self.state),
             Bind::buffer(abi::BIND_WF_CONTRIB, &self.contrib),
-            Bind::buffer(abi::BIND_WF_INDEX, &self.index),
         ]);
         binds.extend(self.queues.binds());
         let samples_per_slot = spp.div_ceil(slices);
