@@ -121,6 +121,21 @@ void camera_state_store(uint g, BdptCameraState st, uvec2 queue) {
     }
 }
 
+// The start of the camera sample `sample_index` at image pixel px (`image_pixel` its index;
+// bdpt_camera.comp: main and camera_path): its random numbers after the pixel's and the
+// opacity seed's draws (blend_seed), and its direction with dVCM. The same numbers each time:
+// the pass's first launch starts a path with it, the next starts it again instead of reading
+// a stored state.
+vec4 camera_start(uvec2 px, uint image_pixel, uint sample_index, out Rng rng) {
+    rng = rng_init(image_pixel, sample_index, pc.seed);
+    vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
+    if (HAS_ALPHA != 0u) {
+        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
+    }
+    vec3 d = camera_direction(pc.camera, xy);
+    return vec4(d, mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d)));
+}
+
 // A finite contribution adds to `sum`; a NaN or Inf one is counted in `bad`.
 void add_finite(inout vec3 sum, inout uint bad, vec3 c) {
     if (any(isnan(c)) || any(isinf(c))) {
@@ -142,25 +157,39 @@ void run_slot() {
     uint slice = g / tiles;
     bool valid;
     uvec2 wp = tiled_pixel(g % tiles, pc.camera.window_size, valid);
+    // The pass's first launch starts every slot's path and queues its segment at the slot's
+    // place, storing nothing; the launch after it starts each path again (the same numbers)
+    // and takes up the segment's hit there (wf_first_hits); later launches read the state.
+    bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
+    bool first_hits = wf_first_hits(pc.launch);
+    uint launch = wf_launch(pc.launch);
     if (!valid) {
+        if (fresh) {
+            // A slot past the window's pixels (tiled_pixel) still has its place in the queue.
+            wf_rays[g] = WF_NO_SEGMENT;
+            atomicAdd(wf_counts[0], 1u);
+        }
         return;
     }
-    // The pass's first launch starts every slot's path: nothing to read.
-    bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
-    uint launch = wf_launch(pc.launch);
+    uint pixels = pc.camera.window_size.x * pc.camera.window_size.y;
+    uint pixel = wp.y * pc.camera.window_size.x + wp.x;
+    uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
+    uint image_pixel = px.y * pc.camera.size.x + px.x;
     BdptCameraState st = BdptCameraState(uvec4(0u), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
     uvec3 queued = uvec3(0u); // where the last launch queued its rays: segment, shadow rays, their count
-    if (!fresh) {
+    if (first_hits) {
+        Rng rng0;
+        vec4 d_dvcm = camera_start(px, image_pixel, pc.sample_base + slice, rng0);
+        st = BdptCameraState(uvec4(0u, 0u, 0u, 1u), d_dvcm, vec4(1.0, 1.0, 1.0, 0.0), uvec4(0u, 0u, 0u, blend_seed),
+            uvec4(rng0.state, rng0.index, rng0.dim, PT_SUSPENDED));
+        queued = uvec3(g, 0u, 0u);
+    } else if (!fresh) {
         st = camera_state_load(g, pc.sample_base + slice, queued);
     }
     uint status = st.rng_status.w;
     if (status == PT_DONE && queued.z == 0u) {
         return; // nothing left, nothing pending
     }
-    uint pixels = pc.camera.window_size.x * pc.camera.window_size.y;
-    uint pixel = wp.y * pc.camera.window_size.x + wp.x;
-    uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
-    uint image_pixel = px.y * pc.camera.size.x + px.x;
     lvc_group = lvc_group_seed(px, pc.sample_base + slice, pc.seed);
     vec3 sum = uintBitsToFloat(st.sum_depth.xyz); // the sample's contributions so far
     uint bad = 0u;
@@ -229,16 +258,11 @@ void run_slot() {
         }
 #endif
     } else if (status == PT_FRESH) {
-        // The megakernel's start (bdpt_camera.comp: main and camera_path).
-        rng = rng_init(image_pixel, pc.sample_base + slice, pc.seed);
-        vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
-        if (HAS_ALPHA != 0u) {
-            blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
-        }
+        vec4 d_dvcm = camera_start(px, image_pixel, pc.sample_base + slice, rng);
         o = pc.camera.eye.xyz;
-        d = camera_direction(pc.camera, xy);
+        d = d_dvcm.xyz;
         beta = vec3(1.0);
-        d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
+        d_vcm = d_dvcm.w;
         d_vc = 0.0;
         sigma_near = vec3(0.0);
         depth = 1u;
@@ -257,7 +281,9 @@ void run_slot() {
     }
     queue_base = subgroupBroadcastFirst(queue_base);
     uvec2 next = uvec2(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count));
-    if (alive) {
+    if (fresh) {
+        wf_rays[g] = wavefront_ray(o, d, 3.0e38, blend_seed); // every path is live: no state yet
+    } else if (alive) {
         camera_state_store(g, BdptCameraState(uvec4(floatBitsToUint(sum), depth), vec4(d, d_vcm), vec4(beta, d_vc),
             uvec4(floatBitsToUint(sigma_near), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
             wf_queue_word(next, wf_shadow_count));

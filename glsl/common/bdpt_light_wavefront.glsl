@@ -131,18 +131,41 @@ void light_state_store(uint p, BdptLightState st, uvec2 queue) {
     }
 }
 
+// The start of light path `path` (bdpt_light.comp: light_path): its random numbers after the
+// opacity seed's draw (blend_seed) and the emission's, and the emitted ray; false where no
+// path starts. The same numbers each time: the pass's first launch starts a path with it, the
+// next starts it again instead of reading a stored state.
+bool light_start(uint path, out Rng rng, out vec3 o, out vec3 d, out vec3 beta, out float d_vcm, out float d_vc, out bool at_infinity) {
+    rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
+    if (HAS_ALPHA != 0u) {
+        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
+    }
+    return light_path_start(rng, o, d, beta, d_vcm, d_vc, at_infinity);
+}
+
 // One launch's work for this invocation's slot, if it has one.
 void run_slot() {
     uint path;
     if (!wf_slot(pc.launch, pc.light_path_total, path)) {
         return; // past the slots, or not listed
     }
-    // The pass's first launch starts every slot's path: nothing to read.
+    // The pass's first launch starts every slot's path and queues its segment at the slot's
+    // place, storing nothing; the launch after it starts each path again (the same numbers)
+    // and takes up the segment's hit there (wf_first_hits); later launches read the state.
     bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
     uint launch = wf_launch(pc.launch);
     BdptLightState st = BdptLightState(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
     uvec3 queued = uvec3(0u); // where the last launch queued its rays: segment, join, their count
-    if (!fresh) {
+    if (wf_first_hits(pc.launch)) {
+        Rng rng0;
+        vec3 o0, d0, beta_0;
+        float d_vcm0, d_vc0;
+        bool infinity0;
+        light_start(path, rng0, o0, d0, beta_0, d_vcm0, d_vc0, infinity0); // listed: it started
+        st = BdptLightState(vec4(o0, max3(beta_0)), vec4(d0, d_vcm0), vec4(beta_0, d_vc0), vec4(0.0),
+            uvec4(1u, 0u, infinity0 ? 0x80000000u : 0u, blend_seed), uvec4(rng0.state, rng0.index, rng0.dim, PT_SUSPENDED));
+        queued = uvec3(path, 0u, 0u);
+    } else if (!fresh) {
         st = light_state_load(path, queued);
     }
     uint status = st.rng_status.w;
@@ -208,12 +231,7 @@ void run_slot() {
         }
 #endif
     } else if (status == PT_FRESH) {
-        // The megakernel's start (bdpt_light.comp: light_path).
-        rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
-        if (HAS_ALPHA != 0u) {
-            blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
-        }
-        alive = light_path_start(rng, o, d, beta, d_vcm, d_vc, at_infinity);
+        alive = light_start(path, rng, o, d, beta, d_vcm, d_vc, at_infinity);
         beta0 = max3(beta);
         sigma_near = vec3(0.0);
         depth = 1u;
@@ -221,8 +239,9 @@ void run_slot() {
         stored = 0u;
     }
 
-    // The rays, packed at the front of the queues (a subgroup's together, in lane order).
-    uvec4 ext_lanes = subgroupBallot(alive);
+    // The rays, packed at the front of the queues (a subgroup's together, in lane order); in
+    // the pass's first launch each path's segment (or none) at its own place.
+    uvec4 ext_lanes = subgroupBallot(alive || fresh);
     uvec4 join_lanes = subgroupBallot(wf_join_count > 0u);
     uint ext_count = subgroupBallotBitCount(ext_lanes);
     uint join_count = subgroupBallotBitCount(join_lanes);
@@ -233,11 +252,16 @@ void run_slot() {
     }
     queue_base = subgroupBroadcastFirst(queue_base);
     uvec2 next = uvec2(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupBallotExclusiveBitCount(join_lanes));
+    if (fresh) {
+        wf_rays[path] = alive ? wavefront_ray(o, d, 3.0e38, blend_seed) : WF_NO_SEGMENT;
+    }
     if (alive) {
-        light_state_store(path, BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
-            uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
-            wf_queue_word(next, wf_join_count));
-        wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
+        if (!fresh) { // (the first launch stores no state)
+            light_state_store(path, BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
+                uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
+                wf_queue_word(next, wf_join_count));
+            wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
+        }
     } else {
         if (status != PT_DONE) {
             // The path ended: its counts for the light vertex cache.

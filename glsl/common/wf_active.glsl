@@ -3,7 +3,7 @@
 // listed, those that queued a ray, from an indirect dispatch its last workgroup sized
 // (wf_end_launch), as it sized the launch's two traces from the rays it queued.
 // `launch_word` is the kernel's BdptWavefrontPush::launch (the launch in its batch, and
-// WF_ALL_SLOTS for the pass's first).
+// WF_ALL_SLOTS for the pass's first, WF_FIRST_HITS for the launch after it).
 #ifndef BIDIR_WF_ACTIVE_GLSL
 #define BIDIR_WF_ACTIVE_GLSL
 
@@ -47,7 +47,15 @@ layout(std430, binding = BIND_WF_ACTIVE) coherent buffer Active {
 
 // The launch in its batch.
 uint wf_launch(uint launch_word) {
-    return launch_word & ~WF_ALL_SLOTS;
+    return launch_word & ~(WF_ALL_SLOTS | WF_FIRST_HITS);
+}
+
+// The launch after the pass's first: every path it runs has only its first segment behind it,
+// queued at its slot's place, and no stored state (the first launch writes none: the path
+// kernels start each path again from its random numbers, which costs less than its state's
+// write and read).
+bool wf_first_hits(uint launch_word) {
+    return (launch_word & WF_FIRST_HITS) != 0u;
 }
 
 // The slot this invocation runs, if any: one of `slots` in the pass's first launch, else one of

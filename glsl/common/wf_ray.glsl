@@ -9,4 +9,7 @@ GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
     return GpuRay(vec4(o, HAS_ALPHA != 0u ? uintBitsToFloat(seed) : 0.0), vec4(d, tmax));
 }
 
+// A queue place with no segment to trace (tmax < 0: the trace kernels leave it at once).
+const GpuRay WF_NO_SEGMENT = GpuRay(vec4(0.0), vec4(0.0, 0.0, 1.0, -1.0));
+
 #endif

@@ -459,6 +459,11 @@ gpu_consts! {
     /// Set in `BdptWavefrontPush::launch`: the pass's first launch, which runs every slot (from
     /// a direct dispatch) and starts its path; the launch in the batch is in the other bits.
     pub const WF_ALL_SLOTS: u32 = 0x8000_0000;
+    /// Set in `BdptWavefrontPush::launch` for the launch after a pass's first: the pass's first
+    /// launch queues each slot's segment at the slot's own place and stores no state, and this
+    /// one starts each listed path again from its random numbers (the same values) and takes
+    /// up its segment's hit there (wf_active.glsl, `wf_first_hits`).
+    pub const WF_FIRST_HITS: u32 = 0x4000_0000;
 }
 
 gpu_structs! {

@@ -231,7 +231,9 @@ impl WavefrontPasses {
     ) -> Result<()> {
         let (kernel, slots) = (self.kernel(pass), batch.slots);
         self.queues.record_batch(rec, geometry, slots, batch.launches, start, |rec, word| {
-            let push = wavefront_push(push, word);
+            // The launch after the pass's first starts its paths again (WF_FIRST_HITS).
+            let flags = if start && word == 1 { abi::WF_FIRST_HITS } else { 0 };
+            let push = wavefront_push(push, word | flags);
             self.queues.dispatch_path(rec, kernel, binds, bytemuck::bytes_of(&push), slots, word)
         })?;
         if batch.finish {
