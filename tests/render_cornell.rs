@@ -209,9 +209,11 @@ fn bdpt_with_resampled_connections_matches_references() {
     // Each connection's light vertex resampled from 4 uniform draws (`--connection-candidates
     // 4`; this scene's default is 8, glossy and glass scenes' 1) must converge to the same image: a build that kept the
     // chosen candidate's estimate without the resampling weight fails here.
+    // (Two samples a replicate: at one, the median block's standard error sat at 0.69-0.70 %,
+    // on the edge of what the test needs to judge, and moved across it with the random numbers.)
     let mut settings = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
     settings.connection_candidates = Some(4);
-    check_settings("bdpt --connection-candidates 4", settings, 1);
+    check_settings("bdpt --connection-candidates 4", settings, 2);
 }
 
 #[test]

@@ -169,6 +169,8 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
     uvec2 chosen = uvec2(0u);
+    // The keep decisions' numbers: a hash chain from one draw.
+    uint keep = rng_next_uint(rng);
     for (uint i = 0u; i < LVC_CANDIDATES; i++) {
         uvec4 w0;
         uvec4 w1;
@@ -188,7 +190,8 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
             w0 = lvc_index[e];
             w1 = lvc_index[e + 1u];
         }
-        float u_keep = rng_next(rng);
+        keep = pcg_hash(keep);
+        float u_keep = float(keep >> 8u) * (1.0 / 16777216.0);
         vec3 v = uintBitsToFloat(w1.xyz) - p;
         float dist2 = dot(v, v);
         vec3 dir = v * inversesqrt(dist2);
