@@ -123,6 +123,92 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s45f)
+  # Session 45: the lists of live slots carry each slot's segment place, so a launch reads its
+  # hit beside its state (.device/bidir-ls.gz, on fk) against fk (.device/bidir-fk.gz):
+  # wavefront images against megakernels, two rounds interleaved; the trace kernels alone on
+  # the Cornell box at 2048 x 2048 (bench traversal), beside what they do inside BDPT.
+  unpack fk ls
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for sc in "cornell|--width 64 --height 64" "helmet|$HB" "caustic|$CAU"; do
+    echo "== ls ${sc%%|*} bdpt wavefront vs megakernel: $(wf_vs_mega "$PWD/.device/bidir-ls" ${sc#*|} --integrator bdpt --sample-slices 16)"
+  done
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for r in 1 2; do
+    for n in fk ls; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n caustic: $(timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  echo "== ls cornell bdpt 1 s: $(at_time "$PWD/.device/bidir-ls" 1 $CB --integrator bdpt)"
+  for o in "" "--refill 24"; do
+    echo "== cornell traversal 2048x2048 bvh4 $o"; timeout -k 5 60 "$PWD/.device/bidir-fk" bench traversal --width 2048 --height 2048 --bvh bvh4 --leaf-size 3 --quality 4 --reps 5 $o 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s45e)
+  # Session 45: BDPT's passes start their paths again in the launch after the first instead of
+  # storing and reading their states (.device/bidir-fh.gz), and with it the connection's keep
+  # decisions drawn from a hash chain of one number (.device/bidir-fk.gz), against b67eec1
+  # (.device/bidir-head45.gz): wavefront images against megakernels, two rounds interleaved,
+  # then the Cornell box at 1 s.
+  unpack head45 fh fk
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for n in fh fk; do
+    for sc in "cornell|--width 64 --height 64" "helmet|$HB" "caustic|$CAU"; do
+      echo "== $n ${sc%%|*} bdpt wavefront vs megakernel: $(wf_vs_mega "$PWD/.device/bidir-$n" ${sc#*|} --integrator bdpt --sample-slices 16)"
+    done
+  done
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for r in 1 2; do
+    for n in head45 fh fk; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n caustic: $(timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  for n in head45 fh fk; do
+    echo "== $n cornell bdpt 1 s: $(at_time "$PWD/.device/bidir-$n" 1 $CB --integrator bdpt)"
+  done
+  echo "== pt-nee cornell 1 s: $(at_time "$PWD/.device/bidir-head45" 1 $CB --integrator pt-nee)"
+  echo "== pt-nee cornell: $(timeout -k 5 60 "$PWD/.device/bidir-head45" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  ;;
+s45d)
+  # Session 45: the Cornell box's BDPT over each BVH layout and leaf size (existing options,
+  # b67eec1), and the trace kernels alone on the box (bench traversal), to see whether its
+  # traces (27 % of a BDPT sample there) have an easier form for a scene of 36 triangles.
+  unpack head45
+  F=$PWD/.device/bidir-head45
+  k='GPU [0-9.]+ ms|trace_[a-z0-9]+ +[0-9.]+'
+  for r in 1 2; do
+    for o in "--bvh bvh4" "--bvh cwbvh" "--bvh bvh2" "--bvh bvh4 --bvh-leaf-size 1" "--bvh bvh4 --bvh-leaf-size 2" "--bvh bvh4 --bvh-leaf-size 6" "--bvh bvh4 --bvh-no-occlusion-copy" "--bvh bvh2 --bvh-leaf-size 8" "--bvh cwbvh --bvh-leaf-size 2"; do
+      echo "== $o: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt $o --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+    done
+  done
+  for o in "--bvh bvh4 --leaf-size 3" "--bvh cwbvh" "--bvh bvh2" "--bvh bvh4 --leaf-size 1"; do
+    echo "== traversal $o"; timeout -k 5 60 "$F" bench traversal $o --quality 4 --reps 5 2>&1 | grep -E "^(primary|shadow|diffuse) "
+  done
+  ;;
+s45c)
+  # Session 45: where a BDPT sample's time goes at b67eec1 (.device/bidir-head45.gz), kernel
+  # by kernel, beside pt-nee's, on the Cornell box; the kernels' registers; BDPT's megakernels
+  # on the box; one iteration's launches (BIDIR_WF_LOG).
+  unpack head45
+  F=$PWD/.device/bidir-head45
+  timeout -k 5 120 "$F" info --kernels 2>&1 | grep -E "bdpt|pt_|trace|lvc|Registers|registers" | head -60
+  for i in bdpt pt-nee; do
+    echo "== cornell $i"; timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | tail -25
+  done
+  echo "== cornell bdpt megakernels"; timeout -k 5 60 "$F" bench render $CB --integrator bdpt --wavefront off --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'
+  echo "== hidden bdpt"; timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | tail -25
+  echo "== one iteration"; BIDIR_WF_LOG=1 BIDIR_PASS_LOG=1 timeout -k 5 60 "$F" render $CB --integrator bdpt --spp 256 -o /tmp/it.exr 2>&1 | tail -40
+  ;;
 s45a)
   # Prepared in session 44, not run: the wavefront path tracer's film sums carried in the path
   # (scripts/device/s45a-pt-film.patch on 1dc2453: the last launch's clear light sample added
