@@ -123,6 +123,13 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s45g)
+  # Session 45: issue #16's table with 11be3fd (.device/bidir-fk.gz, the same binary) on
+  # whatever card this is; #17's figures too on an H200.
+  unpack fk
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then s=1; else s=0; fi
+  SPONZA=$s B=$PWD/.device/bidir-fk bash "$0" s44d
+  ;;
 s45f)
   # Session 45: the lists of live slots carry each slot's segment place, so a launch reads its
   # hit beside its state (.device/bidir-ls.gz, on fk) against fk (.device/bidir-fk.gz):
