@@ -123,6 +123,35 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s45h)
+  # Session 45, a measurement build (.device/bidir-st.gz: the queues' any-hit and closest-hit
+  # traces configurable, BIDIR_EXP_SHADOW_TRACE / BIDIR_EXP_EXT_TRACE = lockstep | plain |
+  # refillN): the wavefront integrators with the shadow rays' trace kernel run otherwise.
+  unpack st
+  F=$PWD/.device/bidir-st
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for sc in "cornell|--width 64 --height 64" "helmet|$HB"; do
+    echo "== st lockstep ${sc%%|*} bdpt wavefront vs megakernel: $(BIDIR_EXP_SHADOW_TRACE=lockstep wf_vs_mega "$F" ${sc#*|} --integrator bdpt --sample-slices 16)"
+  done
+  k='GPU [0-9.]+ ms|trace_[a-z0-9_]+ +[0-9.]+'
+  for r in 1 2; do
+    for v in default lockstep plain refill8 refill24 ext-lockstep; do
+      case $v in
+        default) e="" ;;
+        ext-lockstep) e="BIDIR_EXP_EXT_TRACE=lockstep" ;;
+        *) e="BIDIR_EXP_SHADOW_TRACE=$v" ;;
+      esac
+      echo "== $v cornell: $(env $e timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      if [ "$v" = default ] || [ "$v" = lockstep ] || [ "$v" = plain ]; then
+        echo "== $v hidden: $(env $e timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+        echo "== $v helmet: $(env $e timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+        echo "== $v sponza 8: $(env $e timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+        echo "== $v caustic: $(env $e timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+        echo "== $v helmet pt-nee: $(env $e timeout -k 5 60 "$F" bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+      fi
+    done
+  done
+  ;;
 s45g)
   # Session 45: issue #16's table with 11be3fd (.device/bidir-fk.gz, the same binary) on
   # whatever card this is; #17's figures too on an H200.
