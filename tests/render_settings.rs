@@ -293,7 +293,8 @@ fn one_trace_gives_the_same_image() {
 /// launches (packed into queues, each ray carrying its path's stochastic-opacity seed: the tall
 /// box is half-transparent here): pt and pt-nee give the megakernel's image over every layout
 /// the integrators traverse, with one slice and three, up to the order of the film's float sums
-/// (a light sample is added to the pixel, not first to its path's sum): to 1e-5 of each value.
+/// (a clear light sample is added to the radiance of the path that goes on in its slot): to
+/// 1e-5 of each value.
 #[test]
 fn wavefront_gives_the_megakernels_image() {
     let ctx = gpu();
@@ -311,7 +312,17 @@ fn wavefront_gives_the_megakernels_image() {
     let short = medium.materials.iter().position(|m| m.name == "shortBox").expect("the Cornell box's short box");
     (medium.materials[short].refractivity, medium.materials[short].ior) = (1.0, 1.5);
     medium.materials[short].absorption = glam::Vec3::new(0.002, 0.006, 0.012);
-    let cases = [(&scene, BvhLayout::Cwbvh, 1), (&scene, BvhLayout::Bvh2, 3), (&scene, BvhLayout::Bvh4, 3), (&medium, BvhLayout::Bvh4, 3)];
+    // And with no surface that alpha or blending can skip (the slots' paths then take one
+    // 16-byte word less: pt_wavefront.glsl, PT_STATE_WORDS).
+    let mut opaque = scene.clone();
+    opaque.materials[tall].blend = None;
+    let cases = [
+        (&scene, BvhLayout::Cwbvh, 1),
+        (&scene, BvhLayout::Bvh2, 3),
+        (&scene, BvhLayout::Bvh4, 3),
+        (&medium, BvhLayout::Bvh4, 3),
+        (&opaque, BvhLayout::Bvh4, 3),
+    ];
     for (integrator, spp) in [(Integrator::Pt, 64), (Integrator::PtNee, 7)] {
         for (i, (scene, layout, slices)) in cases.into_iter().enumerate() {
             let image = |wavefront: bool, finish: WavefrontFinish| {
@@ -330,10 +341,11 @@ fn wavefront_gives_the_megakernels_image() {
                 let wave = image(true, finish);
                 let differ = values_differing(&wave, &mega, 1e-5);
                 let glass = scene.materials[short].refractivity > 0.0;
+                let blend = scene.materials[tall].blend.is_some();
                 assert_eq!(
                     differ,
                     0,
-                    "{name} over {}, {slices} slices, absorbing glass {glass}, finish {}: {differ} of {} values differ",
+                    "{name} over {}, {slices} slices, absorbing glass {glass}, blending {blend}, finish {}: {differ} of {} values differ",
                     layout.name(),
                     finish.name(),
                     mega.len()
@@ -418,6 +430,24 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
                 mega.len()
             );
         }
+    }
+    // An image whose size is no multiple of the 8 x 8 tiles (TILE_SIZE): the camera pass's first
+    // launch queues a ray without a segment for each slot past the window's pixels, so that
+    // every slot has its place in the queue (bdpt_camera_wavefront.glsl).
+    let (mut odd, odd_camera) = small_cornell(20, 13);
+    odd.materials[tall].blend = Some(0.5);
+    let image = |wavefront: bool, finish: WavefrontFinish| {
+        let mut settings = RenderSettings::new(Integrator::Bdpt(Join::Lvc(1)));
+        settings.wavefront = Some(wavefront);
+        settings.wavefront_finish = finish;
+        settings.bvh_layout = Some(BvhLayout::Bvh4);
+        settings.sample_slices = 3;
+        render_values(&ctx, &odd, &odd_camera, settings, 6)
+    };
+    let mega = image(false, WavefrontFinish::Auto);
+    for finish in [WavefrontFinish::Auto, WavefrontFinish::After(2)] {
+        let differ = values_differing(&image(true, finish), &mega, 1e-5);
+        assert_eq!(differ, 0, "bdpt at 20 x 13, finish {}: {differ} of {} values differ", finish.name(), mega.len());
     }
     // Joins without a fixed number of connections per vertex have no wavefront form.
     for integrator in [Integrator::Bdpt(Join::Full), Integrator::Bdpt(Join::Lvc(0)), Integrator::Vcm(bidir::render::vcm::VcmMode::FULL)] {

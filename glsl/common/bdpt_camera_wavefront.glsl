@@ -11,7 +11,8 @@
 // last rays: the contribution of each of its shadow rays that is clear, then the scattering at
 // its segment's hit (one step of the megakernel's loop), which leaves the next segment and up to
 // BDPT_WF_SHADOW_RAYS shadow rays; or, in the first launch of a pass, the start of the slot's
-// camera sample. The host runs launch, closest-hit trace, any-hit trace, launch, ... until a
+// camera sample, whose segment it queues at the slot's own place and whose state it does not
+// store: the launch after it (WF_FIRST_HITS) starts the path again (`camera_start`). The host runs launch, closest-hit trace, any-hit trace, launch, ... until a
 // launch queues no ray (src/render/bdpt_wavefront.rs); each launch after a pass's first runs
 // only the slots that queued a ray in the launch before (wf_active.glsl). The rays are packed at the front of
 // their queues (counted in BIND_WF_COUNTS, where the trace kernels read how many there are);
@@ -95,11 +96,12 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 // the next segment's origin itself. The sum goes to the film once, when the sample has nothing
 // left to add (the end of `run_slot`): a read and a write of the film per launch cost the Cornell box's
 // BDPT 6 % on an H100 (session 44).
-const bool CAMERA_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
-const uint CAMERA_STATE_WORDS = CAMERA_STATE_SIGMA_SEED ? 5u : 4u;
+const uint CAMERA_STATE_WORDS = WF_STATE_SIGMA_SEED ? 5u : 4u;
 
 // Slot g's path (its sample index `sample_index`) and its queued rays: segment, first shadow
-// ray, their count.
+// ray, their count. Of a path that ended in the launch after the pass's first (which stores its
+// sum and queue word alone, `run_slot`), the other words are another pass's: unused, as the
+// status says it is done.
 BdptCameraState camera_state_load(uint g, uint sample_index, out uvec3 queued) {
     uint w = g * CAMERA_STATE_WORDS;
     uvec4 sum_depth = state_words[w];
@@ -107,7 +109,7 @@ BdptCameraState camera_state_load(uint g, uint sample_index, out uvec3 queued) {
     queued = wf_queued(rng_queue.zw);
     uint status = sum_depth.w == WF_PATH_DONE ? PT_DONE : PT_SUSPENDED;
     return BdptCameraState(sum_depth, uintBitsToFloat(state_words[w + 1u]), uintBitsToFloat(state_words[w + 2u]),
-        CAMERA_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u), uvec4(rng_queue.x, rng_init_index(sample_index), rng_queue.y, status));
+        WF_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u), uvec4(rng_queue.x, rng_init_index(sample_index), rng_queue.y, status));
 }
 
 void camera_state_store(uint g, BdptCameraState st, uvec2 queue) {
@@ -116,24 +118,24 @@ void camera_state_store(uint g, BdptCameraState st, uvec2 queue) {
     state_words[w + 1u] = floatBitsToUint(st.d_dvcm);
     state_words[w + 2u] = floatBitsToUint(st.beta_dvc);
     state_words[w + 3u] = uvec4(st.rng_status.x, st.rng_status.z, queue);
-    if (CAMERA_STATE_SIGMA_SEED) {
+    if (WF_STATE_SIGMA_SEED) {
         state_words[w + 4u] = st.sigma_seed;
     }
 }
 
 // The start of the camera sample `sample_index` at image pixel px (`image_pixel` its index;
-// bdpt_camera.comp: main and camera_path): its random numbers after the pixel's and the
-// opacity seed's draws (blend_seed), and its direction with dVCM. The same numbers each time:
-// the pass's first launch starts a path with it, the next starts it again instead of reading
-// a stored state.
-vec4 camera_start(uvec2 px, uint image_pixel, uint sample_index, out Rng rng) {
-    rng = rng_init(image_pixel, sample_index, pc.seed);
+// bdpt_camera.comp: main and camera_path) as a path state of `status`: its random numbers after
+// the pixel's and the opacity seed's draws, its direction with dVCM, a throughput of 1, one
+// vertex (the eye). The same values each time: the pass's first launch starts a path with it,
+// the next starts it again (PT_SUSPENDED) instead of reading a stored state.
+BdptCameraState camera_start(uvec2 px, uint image_pixel, uint sample_index, uint status) {
+    Rng rng = rng_init(image_pixel, sample_index, pc.seed);
     vec2 xy = vec2(px) + vec2(rng_next(rng), rng_next(rng));
-    if (HAS_ALPHA != 0u) {
-        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
-    }
+    uint seed = HAS_ALPHA != 0u ? rng_next_uint(rng) : 0u; // BLEND's stochastic opacity
     vec3 d = camera_direction(pc.camera, xy);
-    return vec4(d, mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d)));
+    float d_vcm = mis(float(pc.light_paths) / camera_pdf_w(pc.camera, d));
+    return BdptCameraState(uvec4(0u, 0u, 0u, 1u), vec4(d, d_vcm), vec4(1.0, 1.0, 1.0, 0.0), uvec4(0u, 0u, 0u, seed),
+        uvec4(rng.state, rng.index, rng.dim, status));
 }
 
 // A finite contribution adds to `sum`; a NaN or Inf one is counted in `bad`.
@@ -167,7 +169,7 @@ void run_slot() {
         if (fresh) {
             // A slot past the window's pixels (tiled_pixel) still has its place in the queue.
             wf_rays[g] = WF_NO_SEGMENT;
-            atomicAdd(wf_counts[0], 1u);
+            atomicAdd(wf_counts[2u * launch], 1u);
         }
         return;
     }
@@ -175,15 +177,12 @@ void run_slot() {
     uint pixel = wp.y * pc.camera.window_size.x + wp.x;
     uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
     uint image_pixel = px.y * pc.camera.size.x + px.x;
-    BdptCameraState st = BdptCameraState(uvec4(0u), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
-    uvec3 queued = uvec3(0u); // where the last launch queued its rays: segment, shadow rays, their count
-    if (first_hits) {
-        Rng rng0;
-        vec4 d_dvcm = camera_start(px, image_pixel, pc.sample_base + slice, rng0);
-        st = BdptCameraState(uvec4(0u, 0u, 0u, 1u), d_dvcm, vec4(1.0, 1.0, 1.0, 0.0), uvec4(0u, 0u, 0u, blend_seed),
-            uvec4(rng0.state, rng0.index, rng0.dim, PT_SUSPENDED));
+    BdptCameraState st;
+    uvec3 queued; // where the last launch queued its rays: segment, shadow rays, their count
+    if (fresh || first_hits) {
+        st = camera_start(px, image_pixel, pc.sample_base + slice, fresh ? PT_FRESH : PT_SUSPENDED);
         queued = uvec3(g, 0u, 0u);
-    } else if (!fresh) {
+    } else {
         st = camera_state_load(g, pc.sample_base + slice, queued);
     }
     uint status = st.rng_status.w;
@@ -197,9 +196,9 @@ void run_slot() {
     // The last launch's shadow rays: what each that is clear adds. The contributions
     // alternate between the buffer's halves from launch to launch (batches have even lengths),
     // so that no slot overwrites one another slot has yet to read.
-    uint half_len = uint(wf_contrib.length()) / 2u;
-    uint read_half = (launch & 1u) == 0u ? half_len : 0u;
-    uint write_half = half_len - read_half;
+    uvec2 halves = wf_contrib_halves(launch, uint(wf_contrib.length()));
+    uint read_half = halves.x;
+    uint write_half = halves.y;
     for (uint i = 0u; i < queued.z; i++) {
         if (wf_shadow_hits[queued.y + i] == NO_HIT) {
             add_finite(sum, bad, wf_contrib[read_half + queued.y + i].rgb);
@@ -258,19 +257,14 @@ void run_slot() {
         }
 #endif
     } else if (status == PT_FRESH) {
-        vec4 d_dvcm = camera_start(px, image_pixel, pc.sample_base + slice, rng);
-        o = pc.camera.eye.xyz;
-        d = d_dvcm.xyz;
-        beta = vec3(1.0);
-        d_vcm = d_dvcm.w;
-        d_vc = 0.0;
-        sigma_near = vec3(0.0);
-        depth = 1u;
+        o = pc.camera.eye.xyz; // the segment from the eye, queued below
         alive = true;
     }
     add_finite(sum, bad, radiance);
 
-    // The rays, packed at the front of the queues (a subgroup's together, in lane order).
+    // The rays, packed at the front of the queues (a subgroup's together, in lane order); in
+    // the pass's first launch each path's segment at its slot's place instead (the count is
+    // the same: every slot queues one, a slot past the window's pixels one without a segment).
     uvec4 ext_lanes = subgroupBallot(alive);
     uint ext_count = subgroupBallotBitCount(ext_lanes);
     uint shadow_total = subgroupAdd(wf_shadow_count);

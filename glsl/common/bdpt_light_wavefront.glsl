@@ -104,15 +104,16 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
 // the hit and the direction alone (surface_at) and makes the next segment's origin itself. The
 // random numbers' sample index is rng_init's (`rng_init_index`), the status follows from the
 // vertex count, and the join's film pixel waits with its contribution (BIND_WF_CONTRIB's w).
-const bool LIGHT_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
-const uint LIGHT_STATE_WORDS = LIGHT_STATE_SIGMA_SEED ? 5u : 4u;
+const uint LIGHT_STATE_WORDS = WF_STATE_SIGMA_SEED ? 5u : 4u;
 
-// Path p's state and its queued rays: segment, join's shadow ray, their count.
+// Path p's state and its queued rays: segment, join's shadow ray, their count. Of a path that
+// ended in the launch after the pass's first (which stores its counts' and queue words alone),
+// the other words are another pass's: unused, as the status says it is done.
 BdptLightState light_state_load(uint p, out uvec3 queued) {
     uint w = p * LIGHT_STATE_WORDS;
     uvec4 beta0_counts = state_words[w + 2u];
     uvec4 rng_queue = state_words[w + 3u];
-    uvec4 sigma_seed = LIGHT_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
+    uvec4 sigma_seed = WF_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
     queued = wf_queued(rng_queue.zw);
     uint status = beta0_counts.y == WF_PATH_DONE ? PT_DONE : PT_SUSPENDED;
     return BdptLightState(vec4(vec3(0.0), uintBitsToFloat(beta0_counts.x)), uintBitsToFloat(state_words[w]),
@@ -126,21 +127,25 @@ void light_state_store(uint p, BdptLightState st, uvec2 queue) {
     state_words[w + 1u] = floatBitsToUint(st.beta_dvc);
     state_words[w + 2u] = uvec4(floatBitsToUint(st.o_beta0.w), st.counts.xyz);
     state_words[w + 3u] = uvec4(st.rng_status.x, st.rng_status.z, queue);
-    if (LIGHT_STATE_SIGMA_SEED) {
+    if (WF_STATE_SIGMA_SEED) {
         state_words[w + 4u] = uvec4(floatBitsToUint(st.sigma.xyz), st.counts.w);
     }
 }
 
-// The start of light path `path` (bdpt_light.comp: light_path): its random numbers after the
-// opacity seed's draw (blend_seed) and the emission's, and the emitted ray; false where no
-// path starts. The same numbers each time: the pass's first launch starts a path with it, the
-// next starts it again instead of reading a stored state.
-bool light_start(uint path, out Rng rng, out vec3 o, out vec3 d, out vec3 beta, out float d_vcm, out float d_vc, out bool at_infinity) {
-    rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
-    if (HAS_ALPHA != 0u) {
-        blend_seed = rng_next_uint(rng); // BLEND's stochastic opacity
-    }
-    return light_path_start(rng, o, d, beta, d_vcm, d_vc, at_infinity);
+// The start of light path `path` (bdpt_light.comp: light_path) as a path state of `status`:
+// its random numbers after the opacity seed's and the emission's draws, the emitted ray (its
+// origin in o_beta0.xyz) and throughput, one vertex; `started` false where no path starts. The
+// same values each time: the pass's first launch starts a path with it, the next starts it
+// again (PT_SUSPENDED) instead of reading a stored state.
+BdptLightState light_start(uint path, uint status, out bool started) {
+    Rng rng = rng_init(path, pc.sample_base, pc.seed ^ 0x6c8e9cf5u);
+    uint seed = HAS_ALPHA != 0u ? rng_next_uint(rng) : 0u; // BLEND's stochastic opacity
+    vec3 o, d, beta;
+    float d_vcm, d_vc;
+    bool at_infinity;
+    started = light_path_start(rng, o, d, beta, d_vcm, d_vc, at_infinity);
+    return BdptLightState(vec4(o, max3(beta)), vec4(d, d_vcm), vec4(beta, d_vc), vec4(0.0),
+        uvec4(1u, 0u, at_infinity ? 0x80000000u : 0u, seed), uvec4(rng.state, rng.index, rng.dim, status));
 }
 
 // One launch's work for this invocation's slot, if it has one.
@@ -154,18 +159,13 @@ void run_slot() {
     // and takes up the segment's hit there (wf_first_hits); later launches read the state.
     bool fresh = (pc.launch & WF_ALL_SLOTS) != 0u;
     uint launch = wf_launch(pc.launch);
-    BdptLightState st = BdptLightState(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), uvec4(0u), uvec4(0u, 0u, 0u, PT_FRESH));
-    uvec3 queued = uvec3(0u); // where the last launch queued its rays: segment, join, their count
-    if (wf_first_hits(pc.launch)) {
-        Rng rng0;
-        vec3 o0, d0, beta_0;
-        float d_vcm0, d_vc0;
-        bool infinity0;
-        light_start(path, rng0, o0, d0, beta_0, d_vcm0, d_vc0, infinity0); // listed: it started
-        st = BdptLightState(vec4(o0, max3(beta_0)), vec4(d0, d_vcm0), vec4(beta_0, d_vc0), vec4(0.0),
-            uvec4(1u, 0u, infinity0 ? 0x80000000u : 0u, blend_seed), uvec4(rng0.state, rng0.index, rng0.dim, PT_SUSPENDED));
+    BdptLightState st;
+    uvec3 queued; // where the last launch queued its rays: segment, join, their count
+    bool started = true;
+    if (fresh || wf_first_hits(pc.launch)) {
+        st = light_start(path, fresh ? PT_FRESH : PT_SUSPENDED, started); // (listed after the first: started)
         queued = uvec3(path, 0u, 0u);
-    } else if (!fresh) {
+    } else {
         st = light_state_load(path, queued);
     }
     uint status = st.rng_status.w;
@@ -175,9 +175,9 @@ void run_slot() {
 
     // The last launch's join, splatted if its shadow ray is clear. The contributions alternate
     // between the buffer's halves from launch to launch (batches have even lengths).
-    uint half_len = uint(wf_contrib.length()) / 2u;
-    uint read_half = (launch & 1u) == 0u ? half_len : 0u;
-    uint write_half = half_len - read_half;
+    uvec2 halves = wf_contrib_halves(launch, uint(wf_contrib.length()));
+    uint read_half = halves.x;
+    uint write_half = halves.y;
     if (queued.z > 0u && wf_shadow_hits[queued.y] == NO_HIT) {
         uvec4 join = wf_contrib[read_half + queued.y];
         splat_join(uintBitsToFloat(join.rgb), join.w);
@@ -231,12 +231,8 @@ void run_slot() {
         }
 #endif
     } else if (status == PT_FRESH) {
-        alive = light_start(path, rng, o, d, beta, d_vcm, d_vc, at_infinity);
-        beta0 = max3(beta);
-        sigma_near = vec3(0.0);
-        depth = 1u;
-        seen = 0u;
-        stored = 0u;
+        o = st.o_beta0.xyz; // the emitted segment, queued below
+        alive = started;
     }
 
     // The rays, packed at the front of the queues (a subgroup's together, in lane order); in

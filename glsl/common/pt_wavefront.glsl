@@ -13,13 +13,17 @@
 // shadow ray for them. The host runs launch, closest-hit trace, any-hit trace, launch, ...
 // until a launch leaves no ray (src/render/pt_wavefront.rs). The rays are packed at the front
 // of their queues (counted in BIND_WF_COUNTS, where the trace kernels read how many there are),
-// so the launches that finish the longest paths trace only those. Sums go to the pixel (or its
-// slice) as they arise; a NaN or Inf sample or light contribution is dropped and counted.
+// so the launches that finish the longest paths trace only those. A sample's sum goes to the
+// pixel (or its slice) when the sample ends; a light sample found clear is added to the radiance
+// of the path that goes on in the slot (the ended sample's last one joins the next sample's),
+// or to the pixel at once where none does. A NaN or Inf sample or light contribution is dropped
+// and counted (so a light sample carried into a NaN sample is dropped with it, where the
+// megakernel would keep it: a difference only where a sample is dropped).
 //
 // With PT_WF_FINISH (a pass's finishing launch, src/render/pt_wavefront.rs): each slot runs the
 // rest of its samples in this launch, tracing its shadow rays and segments itself (trace_ray over
-// the BVH the trace kernels traverse, as the megakernel does), each light contribution kept apart
-// as the next launch would add it; it queues no ray.
+// the BVH the trace kernels traverse, as the megakernel does), each clear light contribution
+// added to the pixel's sums on its own; it queues no ray.
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -75,8 +79,9 @@ bool wf_shadow_pending = false;
 // its surface from the hit and the direction and makes the next origin itself. The random
 // numbers' sample index is rng_init's (`rng_init_index`). A fill with zeros makes every slot
 // PT_FRESH with nothing pending.
-const bool PT_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
-const uint PT_STATE_WORDS = PT_STATE_SIGMA_SEED ? 5u : 4u;
+const uint PT_STATE_WORDS = WF_STATE_SIGMA_SEED ? 5u : 4u;
+// (A queue of 32-byte rays within one binding's range, under 4 GiB, has fewer than 2^27
+// places: device buffers are held to maxStorageBufferRange, src/vk/memory.rs.)
 const uint PT_PLACE_MASK = (1u << 28) - 1u;
 
 uint pt_queue_word(uint shadow_place, bool pending, uint status) {
@@ -106,9 +111,9 @@ void main() {
         return;
     }
     uvec2 queued = uvec2(rng_queue.z, rng_queue.w & PT_PLACE_MASK); // where the last launch queued its rays
-    uint half_len = uint(wf_contrib.length()) / 2u;
-    uint read_half = (wpc.launch & 1u) == 0u ? half_len : 0u;
-    uint write_half = half_len - read_half;
+    uvec2 halves = wf_contrib_halves(wpc.launch, uint(wf_contrib.length()));
+    uint read_half = halves.x;
+    uint write_half = halves.y;
     uint pixel = wp.y * pc.camera.window_size.x + wp.x;
     uvec2 px = uvec2(pc.camera.window_x, pc.camera.window_y) + wp;
     uint image_pixel = px.y * pc.camera.size.x + px.x;
@@ -141,7 +146,7 @@ void main() {
         uvec4 d_pdf = state_words[w];
         uvec4 beta_depth = state_words[w + 1u];
         uvec4 radiance_sample = state_words[w + 2u];
-        uvec4 sigma_seed = PT_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
+        uvec4 sigma_seed = WF_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
         rng = Rng(rng_queue.x, rng_init_index(pc.sample_base + s), rng_queue.y);
         // The origin is path_scatter's to make (it reads only the hit and the direction).
         path = PathState(vec3(0.0), uintBitsToFloat(d_pdf.xyz), uintBitsToFloat(beta_depth.xyz), uintBitsToFloat(radiance_sample.xyz),
@@ -217,7 +222,7 @@ void main() {
         state_words[w + 1u] = uvec4(floatBitsToUint(path.throughput), path.depth | (path.specular ? 1u << 31 : 0u));
         state_words[w + 2u] = uvec4(floatBitsToUint(path.radiance), s);
         state_words[w + 3u] = uvec4(rng.state, rng.dim, queued.x, pt_queue_word(queued.y, wf_shadow_pending, PT_SUSPENDED));
-        if (PT_STATE_SIGMA_SEED) {
+        if (WF_STATE_SIGMA_SEED) {
             state_words[w + 4u] = uvec4(floatBitsToUint(path.sigma_near), blend_seed);
         }
         wf_rays[queued.x] = wavefront_ray(path.o, path.d, 3.0e38, blend_seed);

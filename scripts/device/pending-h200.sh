@@ -123,6 +123,30 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s45i)
+  # Session 45's review (.device/bidir-rv.gz: one start helper per pass for both of its first
+  # launches, the path tracer's contributions no longer cleared each pass) against 11be3fd
+  # (.device/bidir-fk.gz): wavefront images against megakernels (also at 100 x 77, no multiple
+  # of the tiles), one round of timings; on an H200 then issue #16's table and #17's figures.
+  unpack fk rv
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for sc in "cornell|--width 64 --height 64" "odd|--width 100 --height 77" "helmet|$HB" "caustic|$CAU"; do
+    for i in bdpt pt-nee; do
+      echo "== rv ${sc%%|*} $i wavefront vs megakernel: $(wf_vs_mega "$PWD/.device/bidir-rv" ${sc#*|} --integrator $i --sample-slices 16)"
+    done
+  done
+  for n in fk rv; do
+    F=$PWD/.device/bidir-$n
+    echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    echo "== $n helmet pt-nee: $(timeout -k 5 60 "$F" bench render $HB --integrator pt-nee --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    echo "== $n caustic pt-nee: $(timeout -k 5 60 "$F" bench render $CAU --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  done
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then
+    SPONZA=1 B=$PWD/.device/bidir-rv bash "$0" s44d
+  fi
+  ;;
 s45h)
   # Session 45, a measurement build (.device/bidir-st.gz: the queues' any-hit and closest-hit
   # traces configurable, BIDIR_EXP_SHADOW_TRACE / BIDIR_EXP_EXT_TRACE = lockstep | plain |

@@ -397,8 +397,9 @@ gpu_consts! {
     /// (`TraceOptions::any_hit_words`).
     pub const SPEC_HIT_WORDS: u32 = 64;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
-    /// per slot of a wavefront form, its path between launches (`PtSuspended`, or BDPT's camera
-    /// and light passes: `BdptCameraState`, `BdptLightState`).
+    /// per slot of a wavefront form, its path between launches in 16-byte words (the path
+    /// tracer's: pt_wavefront.glsl, `PT_STATE_WORDS`; BDPT's camera and light passes:
+    /// `BdptCameraState`, `BdptLightState`).
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
     /// buffer: its first sample is next), has a path suspended, or starts sample
@@ -423,7 +424,7 @@ gpu_consts! {
     /// the host stops when a launch queues none.
     pub const BIND_WF_COUNTS: u32 = 46;
     // 47 was BIND_WF_INDEX (each wavefront slot's places in the queues), kept in the paths'
-    // state since session 44.
+    // state since session 44 (BDPT's passes) and 45 (the path tracer).
     /// Trace kernels with SPEC_RAY_COUNT_BUFFER: ray counts, `TracePush::count_index` selects.
     pub const BIND_RAY_COUNTS: u32 = 48;
     /// A wavefront slot's status (pt_wavefront.glsl's queue word; BDPT's passes: their vertex
@@ -1030,7 +1031,8 @@ gpu_structs! {
     }
 
     /// Push constants of `bdpt_camera_wavefront.comp` and `bdpt_light_wavefront.comp`:
-    /// BdptPush's, with the launch of the submission (its counters in BIND_WF_COUNTS) in the
+    /// BdptPush's, with the launch of the submission (its counters in BIND_WF_COUNTS; with
+    /// WF_ALL_SLOTS for a pass's first launch, WF_FIRST_HITS for the one after it) in the
     /// join's place (the wavefront camera pass joins through the light vertex cache only).
     pub struct BdptWavefrontPush (128 bytes) {
         pub camera: GpuCamera,

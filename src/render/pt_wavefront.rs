@@ -178,9 +178,9 @@ impl IntegratorKernels for WavefrontPathTracer {
             };
             ctx.submit("wavefront path tracing", |rec| {
                 if done == 0 {
-                    // Every slot starts its pass fresh with nothing pending; slices sum from 0.
+                    // Every slot starts its pass fresh with nothing pending (the state's queue word:
+                    // no contribution is read unless it says one is pending); slices sum from 0.
                     rec.fill_buffer(&self.state, 0);
-                    rec.fill_buffer(&self.contrib, 0);
                     if slices > 1 {
                         rec.fill_buffer(film.slices_buffer(), 0);
                     }
