@@ -169,8 +169,11 @@ vec3 connect_resampled(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3
     float p_hat_sum = 0.0;
     float p_hat_s = 0.0;
     uvec2 chosen = uvec2(0u);
-    // The keep decisions' numbers: a hash chain from one draw.
-    uint keep = rng_next_uint(rng);
+    // The keep decisions' numbers: a hash chain from one draw, its seed moved off the sampler's
+    // own chain (past the Sobol' dimensions each draw is pcg_hash of the last, rng.glsl: from the
+    // draw itself this chain would repeat the numbers the path draws next, for its BSDF sample
+    // and Russian roulette).
+    uint keep = rng_next_uint(rng) ^ 0x2545f491u;
     for (uint i = 0u; i < LVC_CANDIDATES; i++) {
         uvec4 w0;
         uvec4 w1;

@@ -123,6 +123,46 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s45k)
+  # Session 45's last device time (b616e89, .device/bidir-hd.gz), the most wanted first: the
+  # Cornell box's pt-nee and bdpt (issue #16's ratio), #17's Sponza figures (one round), then
+  # the rest of #16's table, then s45j's sampler comparison.
+  unpack hd
+  F=$PWD/.device/bidir-hd
+  for i in pt-nee bdpt; do
+    echo "== cornell $i 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
+    echo "== cornell $i 1 s: $(at_time "$F" 1 $CB --integrator $i)"
+  done
+  sponza_rounds 1 "$F"
+  for i in pt-nee bdpt; do
+    echo "== cornell $i 0.1 s: $(at_time "$F" 0.1 $CB --integrator $i)"
+    echo "== caustic $i 1 s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" 1 $CAU --integrator $i)"
+  done
+  echo "== cornell pt 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator pt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  echo "== cornell bdpt:full 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt:full --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  echo "== hidden bdpt: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  for smp in sobol independent; do
+    echo "== $smp cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --sampler $smp --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    echo "== $smp cornell bdpt 1 s: $(at_time "$F" 1 $CB --integrator bdpt --sampler $smp)"
+  done
+  ;;
+s45j)
+  # Session 45: what the sampler's Sobol' numbers cost BDPT on the Cornell box and what they
+  # buy at equal time (b616e89's build, .device/bidir-rv.gz's code with the review's shared
+  # helpers: .device/bidir-hd.gz): `--sampler independent` against the default.
+  unpack hd
+  F=$PWD/.device/bidir-hd
+  for r in 1 2; do
+    for smp in sobol independent; do
+      echo "== $smp cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --sampler $smp --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+' | tr '\n' ' ')"
+      echo "== $smp cornell bdpt 1 s: $(at_time "$F" 1 $CB --integrator bdpt --sampler $smp)"
+    done
+  done
+  echo "== pt-nee cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  if nvidia-smi --query-gpu=name --format=csv,noheader | grep -q H200; then
+    SPONZA=1 B=$F bash "$0" s44d
+  fi
+  ;;
 s45i)
   # Session 45's review (.device/bidir-rv.gz: one start helper per pass for both of its first
   # launches, the path tracer's contributions no longer cleared each pass) against 11be3fd
