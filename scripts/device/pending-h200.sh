@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Prepared in session 45 for the next: s45k (.device/bidir-hd.gz, a build of e7624e5; on an H200 the most wanted figures first: issue #16's ratio, #17's Sponza round, the rest of #16's table, the sampler's worth), or s45j with SPONZA rounds (both run what they can on an H100 too).
+# Prepared in session 45 for the next: s46a (the light vertex cache's listing with an invocation per slot, scripts/device/s46a-lvc-compact.patch, .device/bidir-lc.gz, against .device/bidir-hd.gz); s45k (.device/bidir-hd.gz, a build of e7624e5; on an H200 the most wanted figures first: issue #16's ratio, #17's Sponza round, the rest of #16's table, the sampler's worth), or s45j with SPONZA rounds (both run what they can on an H100 too).
 # Prepared in session 44 for the next: s45a (the wavefront path tracer's film sums carried in its paths, scripts/device/s45a-pt-film.patch as .device/bidir-ptf.gz, and its state in 64 bytes, scripts/device/s45b-pt-state.patch as .device/bidir-pts.gz, against 1dc2453 as .device/bidir-head44.gz; then issue #16's table, and #17's figures on an H200). Its bundles of earlier parts (bidir-carry, bidir-l64, bidir-s44l, bidir-xfilm, ...) are in /work/device-spare or .device.
 # Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes), s44g (a measurement build: what the camera kernel's film sums and contributions and the light kernel's splats cost; on an H200 then s44d), s44h (the camera kernel's film sums added in place: slower), s44i (the camera state carries the sample's sum to the film once), s44j (issue #16's table with it; #17's figures on an H200), s44k (the light state in 64 bytes).
 # Prepared in session 43 for the next (run in session 44, on an H100): s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
@@ -124,6 +124,26 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s46a)
+  # Prepared in session 45, not run: the light vertex cache's listing with an invocation per
+  # slot of the store (scripts/device/s46a-lvc-compact.patch on e7624e5, .device/bidir-lc.gz),
+  # against e7624e5 (.device/bidir-hd.gz). On lavapipe it lists the same entries (the images
+  # are bit-equal) but is slower (128², 64 spp: lvc_compact 50-52 ms against 31), so a GPU win
+  # would be kept for GPUs only. Two rounds; lvc_compact's ms in each line.
+  unpack hd lc
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  echo "== lc cornell bdpt wavefront vs megakernel: $(wf_vs_mega "$PWD/.device/bidir-lc" --width 64 --height 64 --integrator bdpt --sample-slices 16)"
+  k='GPU [0-9.]+ ms|lvc_compact +[0-9.]+'
+  for r in 1 2; do
+    for n in hd lc; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+    done
+  done
+  ;;
 s45k)
   # Session 45's last device time (run on an H100 with b616e89; .device/bidir-hd.gz is now a
   # build of e7624e5, the keep decisions' seed off the sampler's chain), the most wanted first: the
