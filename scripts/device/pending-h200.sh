@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Prepared in session 45 for the next: s46a (the light vertex cache's listing with an invocation per slot, scripts/device/s46a-lvc-compact.patch, .device/bidir-lc.gz, against .device/bidir-hd.gz); s45k (.device/bidir-hd.gz, a build of e7624e5; on an H200 the most wanted figures first: issue #16's ratio, #17's Sponza round, the rest of #16's table, the sampler's worth), or s45j with SPONZA rounds (both run what they can on an H100 too).
+# Prepared in session 45 for the next: s46b (a measurement build: what the camera kernel's light sample and connections cost, scripts/device/s46b-exp-camera.patch, .device/bidir-xc.gz); s46a (the light vertex cache's listing with an invocation per slot, scripts/device/s46a-lvc-compact.patch, .device/bidir-lc.gz, against .device/bidir-hd.gz); s45k (.device/bidir-hd.gz, a build of e7624e5; on an H200 the most wanted figures first: issue #16's ratio, #17's Sponza round, the rest of #16's table, the sampler's worth), or s45j with SPONZA rounds (both run what they can on an H100 too).
 # Prepared in session 44 for the next: s45a (the wavefront path tracer's film sums carried in its paths, scripts/device/s45a-pt-film.patch as .device/bidir-ptf.gz, and its state in 64 bytes, scripts/device/s45b-pt-state.patch as .device/bidir-pts.gz, against 1dc2453 as .device/bidir-head44.gz; then issue #16's table, and #17's figures on an H200). Its bundles of earlier parts (bidir-carry, bidir-l64, bidir-s44l, bidir-xfilm, ...) are in /work/device-spare or .device.
 # Session 44: s44b (the light pass's state in 80 bytes; bench render's warm-up), s44c (a cold pipeline build before a benchmark; on an H200 s44d), s44d (issue #16's table and #17's figures with B), s44e (s44c's slow processes: their passes and clocks), s44f (s44c with more processes), s44g (a measurement build: what the camera kernel's film sums and contributions and the light kernel's splats cost; on an H200 then s44d), s44h (the camera kernel's film sums added in place: slower), s44i (the camera state carries the sample's sum to the film once), s44j (issue #16's table with it; #17's figures on an H200), s44k (the light state in 64 bytes).
 # Prepared in session 43 for the next (run in session 44, on an H100): s44a (scripts/device/s44a.patch and s44b.patch, the passes' queue places in their states; .device/bidir-s44a.gz and bidir-s44ab.gz against .device/bidir-wrd2.gz; and the wavefront path tracer's scaled finishing threshold, .device/bidir-head43.gz), then s43g (it needs .device/bidir-s43.gz, kept in /work/device-spare).
@@ -124,6 +124,24 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s46b)
+  # Prepared in session 45, not run: where the wavefront camera kernel's time goes now, by a
+  # measurement build (scripts/device/s46b-exp-camera.patch on e7624e5, .device/bidir-xc.gz:
+  # BIDIR_EXP_CAMERA bit 0 leaves out the camera step's light sample, bit 1 its connections;
+  # the images change), beside one candidate per connection (an option). Kernel tables' camera
+  # and trace ms, two rounds.
+  unpack xc
+  F=$PWD/.device/bidir-xc
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  k='GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+|trace_[a-z0-9]+ +[0-9.]+'
+  for r in 1 2; do
+    for e in 0 1 2 3 c1; do
+      if [ "$e" = c1 ]; then x=0; o="--connection-candidates 1"; else x=$e; o=""; fi
+      echo "== exp $e cornell: $(BIDIR_EXP_CAMERA=$x timeout -k 5 60 "$F" bench render $CB --integrator bdpt $o --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== exp $e helmet: $(BIDIR_EXP_CAMERA=$x timeout -k 5 60 "$F" bench render $HB --integrator bdpt $o --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+    done
+  done
+  ;;
 s46a)
   # Prepared in session 45, not run: the light vertex cache's listing with an invocation per
   # slot of the store (scripts/device/s46a-lvc-compact.patch on e7624e5, .device/bidir-lc.gz),
