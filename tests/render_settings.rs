@@ -313,7 +313,7 @@ fn wavefront_gives_the_megakernels_image() {
     (medium.materials[short].refractivity, medium.materials[short].ior) = (1.0, 1.5);
     medium.materials[short].absorption = glam::Vec3::new(0.002, 0.006, 0.012);
     // And with no surface that alpha or blending can skip (the slots' paths then take one
-    // 16-byte word less: pt_wavefront.glsl, PT_STATE_WORDS).
+    // 16-byte word less: wf_ray.glsl, WF_STATE_STRIDE).
     let mut opaque = scene.clone();
     opaque.materials[tall].blend = None;
     let cases = [

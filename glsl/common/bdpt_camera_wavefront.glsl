@@ -12,9 +12,10 @@
 // its segment's hit (one step of the megakernel's loop), which leaves the next segment and up to
 // BDPT_WF_SHADOW_RAYS shadow rays; or, in the first launch of a pass, the start of the slot's
 // camera sample, whose segment it queues at the slot's own place and whose state it does not
-// store: the launch after it (WF_FIRST_HITS) starts the path again (`camera_start`). The host runs launch, closest-hit trace, any-hit trace, launch, ... until a
-// launch queues no ray (src/render/bdpt_wavefront.rs); each launch after a pass's first runs
-// only the slots that queued a ray in the launch before (wf_active.glsl). The rays are packed at the front of
+// store: the launch after it (WF_FIRST_HITS) starts the path again (`camera_start`). The host
+// runs launch, closest-hit trace, any-hit trace, launch, ... until a launch queues no ray
+// (src/render/bdpt_wavefront.rs); each launch after a pass's first runs only the slots that
+// queued a ray in the launch before (wf_active.glsl). The rays are packed at the front of
 // their queues (counted in BIND_WF_COUNTS, where the trace kernels read how many there are);
 // a shadow ray's contribution waits in BIND_WF_CONTRIB at the ray's place (in the half of
 // the buffer of the launch's parity). A slot's contributions add up in its path's state and go
@@ -85,7 +86,7 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 #include "bdpt_camera_path.glsl"
 
 // A slot's path and where its last launch queued its rays, in 16-byte words at
-// g * CAMERA_STATE_WORDS: the sample's sum so far and the vertex count (WF_PATH_DONE once the
+// g * WF_STATE_STRIDE: the sample's sum so far and the vertex count (WF_PATH_DONE once the
 // path has ended), the direction and dVCM, the throughput and dVC, then the random-number state and dimension
 // with the segment's place in its queue and the first shadow ray's with their count from bit
 // WF_SHADOW_COUNT_SHIFT up; last, only in scenes with a medium or alpha, the medium and the
@@ -96,14 +97,13 @@ bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
 // the next segment's origin itself. The sum goes to the film once, when the sample has nothing
 // left to add (the end of `run_slot`): a read and a write of the film per launch cost the Cornell box's
 // BDPT 6 % on an H100 (session 44).
-const uint CAMERA_STATE_WORDS = WF_STATE_SIGMA_SEED ? 5u : 4u;
 
 // Slot g's path (its sample index `sample_index`) and its queued rays: segment, first shadow
 // ray, their count. Of a path that ended in the launch after the pass's first (which stores its
 // sum and queue word alone, `run_slot`), the other words are another pass's: unused, as the
 // status says it is done.
 BdptCameraState camera_state_load(uint g, uint sample_index, out uvec3 queued) {
-    uint w = g * CAMERA_STATE_WORDS;
+    uint w = g * WF_STATE_STRIDE;
     uvec4 sum_depth = state_words[w];
     uvec4 rng_queue = state_words[w + 3u];
     queued = wf_queued(rng_queue.zw);
@@ -113,7 +113,7 @@ BdptCameraState camera_state_load(uint g, uint sample_index, out uvec3 queued) {
 }
 
 void camera_state_store(uint g, BdptCameraState st, uvec2 queue) {
-    uint w = g * CAMERA_STATE_WORDS;
+    uint w = g * WF_STATE_STRIDE;
     state_words[w] = st.sum_depth;
     state_words[w + 1u] = floatBitsToUint(st.d_dvcm);
     state_words[w + 2u] = floatBitsToUint(st.beta_dvc);
@@ -284,8 +284,8 @@ void run_slot() {
         wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
     } else if (wf_shadow_count > 0u) {
         // The path ended with shadow rays pending: the next launch adds what they carry.
-        state_words[g * CAMERA_STATE_WORDS] = uvec4(floatBitsToUint(sum), WF_PATH_DONE);
-        state_words[g * CAMERA_STATE_WORDS + 3u].zw = wf_queue_word(next, wf_shadow_count);
+        state_words[g * WF_STATE_STRIDE] = uvec4(floatBitsToUint(sum), WF_PATH_DONE);
+        state_words[g * WF_STATE_STRIDE + 3u].zw = wf_queue_word(next, wf_shadow_count);
     }
     for (uint i = 0u; i < wf_shadow_count; i++) {
         wf_shadow_rays[next.y + i] = wavefront_ray(wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);

@@ -94,7 +94,7 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
 }
 
 // A light path and where its last launch queued its rays, in 16-byte words at
-// path * LIGHT_STATE_WORDS: the direction and dVCM, the throughput and dVC, then beta0 with the
+// path * WF_STATE_STRIDE: the direction and dVCM, the throughput and dVC, then beta0 with the
 // counts (the vertex count, WF_PATH_DONE once the path has ended; seen; stored with the light at
 // infinity in bit 31), then the random numbers' state and dimension with the segment's place in
 // its queue and the join's shadow ray's with their count from bit WF_SHADOW_COUNT_SHIFT up;
@@ -104,13 +104,12 @@ void connect_to_camera(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wi, Continuous c, vec3
 // the hit and the direction alone (surface_at) and makes the next segment's origin itself. The
 // random numbers' sample index is rng_init's (`rng_init_index`), the status follows from the
 // vertex count, and the join's film pixel waits with its contribution (BIND_WF_CONTRIB's w).
-const uint LIGHT_STATE_WORDS = WF_STATE_SIGMA_SEED ? 5u : 4u;
 
 // Path p's state and its queued rays: segment, join's shadow ray, their count. Of a path that
 // ended in the launch after the pass's first (which stores its counts' and queue words alone),
 // the other words are another pass's: unused, as the status says it is done.
 BdptLightState light_state_load(uint p, out uvec3 queued) {
-    uint w = p * LIGHT_STATE_WORDS;
+    uint w = p * WF_STATE_STRIDE;
     uvec4 beta0_counts = state_words[w + 2u];
     uvec4 rng_queue = state_words[w + 3u];
     uvec4 sigma_seed = WF_STATE_SIGMA_SEED ? state_words[w + 4u] : uvec4(0u);
@@ -122,7 +121,7 @@ BdptLightState light_state_load(uint p, out uvec3 queued) {
 }
 
 void light_state_store(uint p, BdptLightState st, uvec2 queue) {
-    uint w = p * LIGHT_STATE_WORDS;
+    uint w = p * WF_STATE_STRIDE;
     state_words[w] = floatBitsToUint(st.d_dvcm);
     state_words[w + 1u] = floatBitsToUint(st.beta_dvc);
     state_words[w + 2u] = uvec4(floatBitsToUint(st.o_beta0.w), st.counts.xyz);
@@ -263,10 +262,10 @@ void run_slot() {
             // The path ended: its counts for the light vertex cache.
             light_counts[path] = uvec2(stored, seen);
             lvc_offsets[path] = stored;
-            state_words[path * LIGHT_STATE_WORDS + 2u].y = WF_PATH_DONE;
+            state_words[path * WF_STATE_STRIDE + 2u].y = WF_PATH_DONE;
         }
         if (wf_join_count > 0u || queued.z > 0u) {
-            state_words[path * LIGHT_STATE_WORDS + 3u].zw = wf_queue_word(next, wf_join_count);
+            state_words[path * WF_STATE_STRIDE + 3u].zw = wf_queue_word(next, wf_join_count);
         }
     }
     if (wf_join_count > 0u) {

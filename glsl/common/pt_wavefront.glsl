@@ -49,7 +49,7 @@ const uint SHADOW_SUSPEND = 0u;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
 layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; };
 layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
-// The slots' paths (`PT_STATE_WORDS` words each, below).
+// The slots' paths (`WF_STATE_STRIDE` words each, below).
 layout(std430, binding = BIND_PT_SUSPENDED) buffer State { uvec4 state_words[]; };
 layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
@@ -70,22 +70,24 @@ bool wf_shadow_pending = false;
 
 #include "pt_path.glsl"
 
-// A slot's path between launches, in 16-byte words at g * PT_STATE_WORDS: the direction and the
+// A slot's path between launches, in 16-byte words at g * WF_STATE_STRIDE: the direction and the
 // last non-delta bounce's pdf; the throughput and the vertex count (bit 31: the last bounce was
 // a delta lobe); the estimate so far and the sample index; the random numbers' state and
-// dimension, the segment's place in its queue, and the shadow ray's place with, from bit 28,
-// whether one is pending and the slot's status (PT_FRESH, PT_SUSPENDED, PT_DONE); last, only in
+// dimension, the segment's place in its queue, and the shadow ray's place with, from bit
+// WF_SHADOW_COUNT_SHIFT, whether one is pending and the slot's status (PT_FRESH, PT_SUSPENDED, PT_DONE); last, only in
 // scenes with a medium or alpha, the medium and the opacity seed. No origin: path_scatter finds
 // its surface from the hit and the direction and makes the next origin itself. The random
 // numbers' sample index is rng_init's (`rng_init_index`). A fill with zeros makes every slot
 // PT_FRESH with nothing pending.
-const uint PT_STATE_WORDS = WF_STATE_SIGMA_SEED ? 5u : 4u;
 // (A queue of 32-byte rays within one binding's range, under 4 GiB, has fewer than 2^27
 // places: device buffers are held to maxStorageBufferRange, src/vk/memory.rs.)
-const uint PT_PLACE_MASK = (1u << 28) - 1u;
+// The pending flag is BDPT's one-ray count (wf_active.glsl, `wf_queue_word`) and the status
+// sits above it.
+const uint PT_PLACE_MASK = (1u << WF_SHADOW_COUNT_SHIFT) - 1u;
+const uint PT_STATUS_SHIFT = WF_SHADOW_COUNT_SHIFT + 1u;
 
 uint pt_queue_word(uint shadow_place, bool pending, uint status) {
-    return shadow_place | (pending ? 1u << 28 : 0u) | (status << 29);
+    return shadow_place | (pending ? 1u << WF_SHADOW_COUNT_SHIFT : 0u) | (status << PT_STATUS_SHIFT);
 }
 
 void main() {
@@ -103,10 +105,10 @@ void main() {
         return;
     }
     // A slot whose samples are done, with no light sample pending, has nothing left to do.
-    uint w = g * PT_STATE_WORDS;
+    uint w = g * WF_STATE_STRIDE;
     uvec4 rng_queue = state_words[w + 3u];
-    uint status = rng_queue.w >> 29;
-    bool pending = ((rng_queue.w >> 28) & 1u) != 0u;
+    uint status = rng_queue.w >> PT_STATUS_SHIFT;
+    bool pending = ((rng_queue.w >> WF_SHADOW_COUNT_SHIFT) & 1u) != 0u;
     if (status == PT_DONE && !pending) {
         return;
     }

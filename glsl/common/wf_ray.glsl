@@ -13,6 +13,8 @@ GpuRay wavefront_ray(vec3 o, vec3 d, float tmax, uint seed) {
 // opacity seed (pt_wavefront.glsl, bdpt_camera_wavefront.glsl, bdpt_light_wavefront.glsl): only
 // in scenes with either.
 const bool WF_STATE_SIGMA_SEED = HAS_VOLUME != 0u || HAS_ALPHA != 0u;
+// The words a slot's path takes, so its stride in BIND_PT_SUSPENDED's 16-byte words.
+const uint WF_STATE_STRIDE = WF_STATE_SIGMA_SEED ? WF_STATE_WORDS : WF_STATE_WORDS - 1u;
 
 // The halves of a contribution buffer of `len` entries that launch `launch` reads (what the
 // launch before it wrote) and writes, by its parity, so that no slot overwrites a contribution

@@ -397,9 +397,10 @@ gpu_consts! {
     /// (`TraceOptions::any_hit_words`).
     pub const SPEC_HIT_WORDS: u32 = 64;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
-    /// per slot of a wavefront form, its path between launches in 16-byte words (the path
-    /// tracer's: pt_wavefront.glsl, `PT_STATE_WORDS`; BDPT's camera and light passes:
-    /// `BdptCameraState`, `BdptLightState`).
+    /// per slot of a wavefront form, its path between launches in up to WF_STATE_WORDS 16-byte
+    /// words (the path tracer's: pt_wavefront.glsl; BDPT's camera and light passes:
+    /// `BdptCameraState`, `BdptLightState`, with the queue places in the random numbers' word and
+    /// no origin).
     pub const BIND_PT_SUSPENDED: u32 = 38;
     /// `PtSuspended::rng_status.w`: the invocation has not started this pass (a cleared
     /// buffer: its first sample is next), has a path suspended, or starts sample
@@ -439,6 +440,10 @@ gpu_consts! {
     /// (at most BDPT_WF_SHADOW_RAYS) in the bits from this one up. A shadow queue's 32-byte rays
     /// within one binding's 4 GiB are fewer than 2^27, so the place fits below.
     pub const WF_SHADOW_COUNT_SHIFT: u32 = 28;
+    /// Most 16-byte words a slot's path takes between launches in the wavefront forms (the path
+    /// tracer's and BDPT's two passes, BIND_PT_SUSPENDED): four, and a fifth for the medium and
+    /// the opacity seed in scenes with either (wf_ray.glsl, `WF_STATE_STRIDE`).
+    pub const WF_STATE_WORDS: u32 = 5;
     /// Most launches of `pt_wavefront.comp` one submission records (half BIND_WF_COUNTS's length).
     pub const WF_MAX_BATCH: u32 = 256;
     /// BDPT's wavefront passes (bdpt_light_wavefront.comp, bdpt_camera_wavefront.comp): which

@@ -19,7 +19,7 @@
 use std::cell::Cell;
 
 use super::bdpt::Join;
-use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues, LIVE_SLOT_BYTES};
+use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues, LIVE_SLOT_BYTES, STATE_BYTES};
 use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::BdptWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Recorder, Result, Spec};
@@ -36,13 +36,6 @@ pub fn shadow_rays_per_slot(join: Join) -> Option<u32> {
 
 // The camera pass's state keeps a slot's shadow-ray count above WF_SHADOW_COUNT_SHIFT.
 const _: () = assert!(abi::BDPT_WF_SHADOW_RAYS < 1 << (32 - abi::WF_SHADOW_COUNT_SHIFT));
-
-/// Bytes of a slot's path: the most 16-byte words a camera or light path's stored form takes
-/// (bdpt_camera_wavefront.glsl's CAMERA_STATE_WORDS, bdpt_light_wavefront.glsl's
-/// LIGHT_STATE_WORDS: four, and a fifth in scenes with a medium or alpha), each with its queue's
-/// places in its random numbers' word and without the light path's origin that
-/// `BdptLightState` names (no launch reads it back).
-const STATE_BYTES: u64 = 5 * 16;
 
 /// Bytes per slot with `shadow` shadow rays: the path, its rays and hits (and its places in the
 /// lists of live slots) and the shadow rays' contributions (twice: launches of alternate

@@ -10,15 +10,10 @@
 use std::cell::Cell;
 
 use super::integrator::{IntegratorKernels, PassInputs};
-use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues};
+use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues, STATE_BYTES};
 use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::PtPush, abi::PtWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Spec};
-
-/// Bytes of a slot's path as pt_wavefront.glsl stores it (`PT_STATE_WORDS`: four 16-byte words,
-/// a fifth in scenes with a medium or alpha; no origin, the queue places beside the random
-/// numbers).
-const STATE_BYTES: u64 = 5 * 16;
 
 /// Bytes per slot: the path, two rays, two hits, and the pending light sample's contribution
 /// (twice: launches of alternate parity).

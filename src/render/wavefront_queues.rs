@@ -65,6 +65,11 @@ pub const fn queue_bytes(shadow: u32) -> u64 {
     32 + 16 + shadow as u64 * (32 + 4)
 }
 
+/// Bytes of a slot's path between launches (the path tracer's and BDPT's passes): the most
+/// 16-byte words its stored form takes (WF_STATE_WORDS; one fewer in scenes without a medium or
+/// alpha, where the kernels use a shorter stride).
+pub const STATE_BYTES: u64 = abi::WF_STATE_WORDS as u64 * 16;
+
 /// Bytes per slot of the lists of live slots (`Queues::new` with `live`): its places in both.
 pub const LIVE_SLOT_BYTES: u64 = 2 * 4;
 
