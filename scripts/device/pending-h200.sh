@@ -142,6 +142,16 @@ s46b)
     done
   done
   ;;
+s46c)
+  # Session 46's first call: on an H200, s45k with a build of 76b4312 (.device/bidir-hh.gz,
+  # HEAD then); on any other card, the prepared s46a and s46b.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  case "$g" in
+    *H200*) HB_NAME=hh bash "$0" s45k ;;
+    *) bash "$0" s46a; bash "$0" s46b ;;
+  esac
+  ;;
 s46a)
   # Prepared in session 45, not run: the light vertex cache's listing with an invocation per
   # slot of the store (scripts/device/s46a-lvc-compact.patch on e7624e5, .device/bidir-lc.gz),
@@ -167,8 +177,8 @@ s45k)
   # build of e7624e5, the keep decisions' seed off the sampler's chain), the most wanted first: the
   # Cornell box's pt-nee and bdpt (issue #16's ratio), #17's Sponza figures (one round), then
   # the rest of #16's table, then s45j's sampler comparison.
-  unpack hd
-  F=$PWD/.device/bidir-hd
+  unpack ${HB_NAME:-hd}
+  F=$PWD/.device/bidir-${HB_NAME:-hd}
   for i in pt-nee bdpt; do
     echo "== cornell $i 1024 spp: $(timeout -k 5 60 "$F" bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE '(GPU|wall) [0-9.]+ ms' | tr '\n' ' ')"
     echo "== cornell $i 1 s: $(at_time "$F" 1 $CB --integrator $i)"
