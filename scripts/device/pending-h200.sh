@@ -144,12 +144,12 @@ s46b)
   ;;
 s46c)
   # Session 46's first call: on an H200, s45k with a build of 76b4312 (.device/bidir-hh.gz,
-  # HEAD then), then s46a; on any other card, the prepared s46a and s46b.
+  # HEAD then), then s46a; on any other card s46b and s46a.
   g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
   echo "== device: $g"
   case "$g" in
-    *H200*) HB_NAME=hh timeout -k 5 330 bash "$0" s45k; bash "$0" s46a ;;
-    *) bash "$0" s46a; bash "$0" s46b ;;
+    *H200*) HB_NAME=hh timeout -k 5 300 bash "$0" s45k; bash "$0" s46a ;;
+    *) bash "$0" s46b; bash "$0" s46a ;;
   esac
   ;;
 s46a)
