@@ -431,6 +431,29 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
             );
         }
     }
+    // The light vertex cache listed with an invocation per slot of the store (the GPUs' form
+    // with resampled connections) and per light path (lavapipe's): the same listing, so the same
+    // image (up to the order of the light pass's float splats, as above), with resampled and
+    // uniform entries, over sample slices, with fewer light paths than pixels and more.
+    for (candidates, slices, ratio) in [(8, 3, 0.5), (1, 1, 1.0), (3, 3, 2.0)] {
+        let image = |per_slot: bool| {
+            let mut settings = RenderSettings::new(Integrator::Bdpt(Join::Lvc(1)));
+            settings.wavefront = Some(true);
+            settings.sample_slices = slices;
+            settings.light_path_ratio = Some(ratio);
+            settings.connection_candidates = Some(candidates);
+            settings.lvc_listing_per_slot = Some(per_slot);
+            render_values(&ctx, &scene, &camera, settings, 6)
+        };
+        let (per_path, per_slot) = (image(false), image(true));
+        let differ = values_differing(&per_slot, &per_path, 1e-5);
+        assert_eq!(
+            differ,
+            0,
+            "{candidates} candidates, {slices} slices, {ratio} light paths per pixel: the listing per slot changes {differ} of {} values",
+            per_path.len()
+        );
+    }
     // An image whose size is no multiple of the 8 x 8 tiles (TILE_SIZE): the camera pass's first
     // launch queues a ray without a segment for each slot past the window's pixels, so that
     // every slot has its place in the queue (bdpt_camera_wavefront.glsl).

@@ -152,6 +152,34 @@ s46c)
     *) bash "$0" s46b; bash "$0" s46a ;;
   esac
   ;;
+s46e)
+  # Session 46's last call: the light vertex cache's listing per slot on GPUs with resampled
+  # entries as committed (.device/bidir-ls.gz) against 76b4312 (.device/bidir-hh.gz). On an
+  # H200 first s45k with it (issue #16's ratio, #17's Sponza round), then one round of the
+  # comparison; on any other card two rounds and the Cornell box at 1 s.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  unpack hh ls
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  k='GPU [0-9.]+ ms|lvc_compact +[0-9.]+'
+  rounds=2
+  case "$g" in *H200*) HB_NAME=ls timeout -k 5 250 bash "$0" s45k; rounds=1 ;; esac
+  echo "== ls cornell wavefront vs megakernel: $(wf_vs_mega "$PWD/.device/bidir-ls" --width 64 --height 64 --integrator bdpt --sample-slices 16)"
+  for r in $(seq $rounds); do
+    for n in hh ls; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n helmet: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+    done
+  done
+  case "$g" in *H200*) ;; *)
+    F=$PWD/.device/bidir-ls
+    echo "== ls cornell pt-nee: $(timeout -k 5 60 "$F" bench render $CB --integrator pt-nee --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    for i in pt-nee bdpt; do echo "== ls cornell $i 1 s: $(at_time "$F" 1 $CB --integrator $i)"; done ;;
+  esac
+  ;;
 s46a)
   # Prepared in session 45, not run: the light vertex cache's listing with an invocation per
   # slot of the store (scripts/device/s46a-lvc-compact.patch on e7624e5, .device/bidir-lc.gz),

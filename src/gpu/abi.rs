@@ -396,6 +396,10 @@ gpu_consts! {
     /// of a whole `GpuHit`; the wavefront passes' shadow rays, which read nothing else
     /// (`TraceOptions::any_hit_words`).
     pub const SPEC_HIT_WORDS: u32 = 64;
+    /// The light vertex cache's listing (lvc_compact.comp): 1 runs an invocation per slot of the
+    /// store, 0 one per light path looping over its stored slots
+    /// (`render::default_lvc_listing_per_slot`).
+    pub const SPEC_LVC_LIST_PER_SLOT: u32 = 65;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
     /// per slot of a wavefront form, its path between launches in up to WF_STATE_WORDS 16-byte
     /// words (the path tracer's: pt_wavefront.glsl; BDPT's camera and light passes:

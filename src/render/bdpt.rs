@@ -87,6 +87,9 @@ struct Lvc {
     scan: crate::compute::Scan,
     plan: crate::compute::ScanPlan,
     compact: Kernel,
+    /// `compact` runs an invocation per slot of the store, not per light path
+    /// ([`super::default_lvc_listing_per_slot`]).
+    per_slot: bool,
     index: Buffer,
     total: Buffer,
 }
@@ -241,11 +244,17 @@ impl Bdpt {
             }
             e => e.into(),
         })?;
+        let per_slot =
+            settings.lvc_listing_per_slot.unwrap_or_else(|| super::default_lvc_listing_per_slot(super::defaults::on_cpu(ctx), candidates));
         let lvc = match join {
             Join::Lvc(_) => Some(Lvc {
                 scan: crate::compute::Scan::new(ctx)?,
                 plan: crate::compute::ScanPlan::new(ctx, paths)?,
-                compact: ctx.create_kernel(&kernels::LVC_COMPACT, &specs)?,
+                compact: ctx.create_kernel(
+                    &kernels::LVC_COMPACT,
+                    &[specs.as_slice(), &[Spec { id: abi::SPEC_LVC_LIST_PER_SLOT, value: per_slot as u32 }]].concat(),
+                )?,
+                per_slot,
                 index: ctx.create_buffer(
                     "bdpt.lvc_index",
                     paths as u64 * light_path_len as u64 * lvc_entry_bytes(candidates),
@@ -357,7 +366,14 @@ impl Bdpt {
         let total = push.light_path_total;
         if let Some(lvc) = &self.lvc {
             lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;
-            rec.dispatch(&lvc.compact, binds, bytemuck::bytes_of(push), [lvc.compact.groups_for(total), 1, 1])?;
+            let groups = if lvc.per_slot {
+                // At most the 65,535 workgroups every device takes (4 M invocations fill any GPU;
+                // the kernel's grid-stride loop covers the rest).
+                lvc.compact.groups_for(total.saturating_mul(push.light_path_len)).min(65_535)
+            } else {
+                lvc.compact.groups_for(total)
+            };
+            rec.dispatch(&lvc.compact, binds, bytemuck::bytes_of(push), [groups, 1, 1])?;
         }
         if let Some(grid) = &self.grid {
             grid.record(rec, binds, push)?;

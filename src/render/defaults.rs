@@ -208,6 +208,20 @@ pub fn default_mis(integrator: Integrator, features: &SceneFeatures) -> Mis {
     }
 }
 
+/// Whether the light vertex cache's listing (lvc_compact.comp) runs an invocation per slot of
+/// the store rather than one per light path: on GPUs where the entries carry a preview of the
+/// vertex (resampled connections, `connection_candidates` > 1), which the listing reads whole.
+/// There a subgroup's lanes read neighbouring slots instead of one path's slots each. NVIDIA
+/// H100, `bench render --spp 1024` (docs/results.md, "The light vertex cache's listing per slot"):
+/// the Cornell box 111.61-111.68 against 112.48-112.51 ms (the listing 2.86 against 3.69), the
+/// box whose light hides above a panel 123.16-123.26 against 125.23-125.25, Sponza with 8
+/// candidates 166.08-166.12 against 166.34-166.47; with uniform entries (DamagedHelmet, one
+/// candidate) the listing took 0.83 against 0.44 ms, and on lavapipe 50-52 against 31 ms
+/// (Cornell box 128², 64 spp): there an invocation per path stays.
+pub fn default_lvc_listing_per_slot(on_cpu: bool, connection_candidates: u32) -> bool {
+    !on_cpu && connection_candidates > 1
+}
+
 /// Light paths per pixel for BDPT's default join (the light vertex cache, one connection) where
 /// `--light-paths` does not say: half a light path per pixel in scenes with only diffuse
 /// surfaces, where its connections take [`default_connection_candidates`]' eight candidates;

@@ -35,8 +35,9 @@ mod wavefront_queues;
 pub use bdpt::{Bdpt, Join};
 use defaults::{auto_bvh_layout, on_cpu, resolve_shadow_queue, wavefront};
 pub use defaults::{
-    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_connection_candidates, default_light_path_ratio, default_mis,
-    default_one_trace, default_path_regeneration, default_shadow_queue, default_wavefront, wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
+    default_bvh_build, default_bvh_layout, default_camera_pass_queue, default_connection_candidates, default_light_path_ratio,
+    default_lvc_listing_per_slot, default_mis, default_one_trace, default_path_regeneration, default_shadow_queue, default_wavefront,
+    wavefront_bvh_layout, QUALITY_4_MAX_TRIANGLES,
 };
 pub use film::Film;
 pub use gpu_scene::GpuScene;

@@ -320,6 +320,12 @@ pub struct RenderSettings {
     /// (at multiples of the slice count) make the whole render's choices. The other joins
     /// ignore it.
     pub connection_candidates: Option<u32>,
+    /// BDPT and VCM with the light vertex cache: list the cache with an invocation per slot of
+    /// the store (`Some(true)`) or per light path (`Some(false)`); `None` takes
+    /// [`default_lvc_listing_per_slot`](super::default_lvc_listing_per_slot) for the device.
+    /// The listing, and so the image, is the same either way: a knob for the tests, which run
+    /// on a CPU device, where the default is per path.
+    pub lvc_listing_per_slot: Option<bool>,
     /// pt and pt-nee: the wavefront path tracer (`--wavefront`; pt_wavefront.rs), whose
     /// segments and shadow rays are traced by the trace kernels between its launches, instead
     /// of the megakernel; bdpt with the light vertex cache's fixed joins: its light and camera
@@ -400,6 +406,7 @@ impl RenderSettings {
             direct_light_tracing: false,
             mis: None,
             connection_candidates: None,
+            lvc_listing_per_slot: None,
             wavefront: None,
             wavefront_finish: WavefrontFinish::Auto,
             count_traversal: false,
