@@ -152,6 +152,13 @@ s46c)
     *) bash "$0" s46b; bash "$0" s46a ;;
   esac
   ;;
+s46f)
+  # Session 46's last device time (about 260 s): only on an H200, issue #16's ratio with
+  # 6422f5a (.device/bidir-ls.gz), then #17's Sponza round; on any other card nothing.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  case "$g" in *H200*) HB_NAME=ls bash "$0" s45k ;; esac
+  ;;
 s46e)
   # Session 46's last call: the light vertex cache's listing per slot on GPUs with resampled
   # entries as committed (.device/bidir-ls.gz) against 76b4312 (.device/bidir-hh.gz). On an
