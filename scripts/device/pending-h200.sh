@@ -152,6 +152,27 @@ s46c)
     *) bash "$0" s46b; bash "$0" s46a ;;
   esac
   ;;
+s47a)
+  # Prepared in session 46, not run: resampled cache entries that carry the whole compact vertex
+  # (scripts/device/s47a-full-entries.patch on 7a3b284, .device/bidir-fe.gz), so that the kept
+  # candidate's exact estimate reads its entry from L1 instead of its vertex from memory, against
+  # 6422f5a (.device/bidir-ls.gz; the code of 7a3b284). Two rounds, the builds' order alternating
+  # (session 46's s46e always ran its base first); the camera kernel's and the listing's ms.
+  # lavapipe: the reference tests pass, a build that halved the entry's pick fails four of them.
+  unpack ls fe
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  k='GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+|lvc_compact +[0-9.]+'
+  echo "== fe cornell wavefront vs megakernel: $(wf_vs_mega "$PWD/.device/bidir-fe" --width 64 --height 64 --integrator bdpt --sample-slices 16)"
+  for order in "ls fe" "fe ls"; do
+    for n in $order; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n helmet 8: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --connection-candidates 8 --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== $n cornell 1 s: $(at_time "$F" 1 $CB --integrator bdpt)"
+    done
+  done
+  ;;
 s46f)
   # Session 46's last device time (about 260 s): only on an H200, issue #16's ratio with
   # 6422f5a (.device/bidir-ls.gz), then #17's Sponza round; on any other card nothing.
