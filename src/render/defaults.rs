@@ -212,7 +212,8 @@ pub fn default_mis(integrator: Integrator, features: &SceneFeatures) -> Mis {
 /// the store rather than one per light path: on GPUs where the entries carry a preview of the
 /// vertex (resampled connections, `connection_candidates` > 1), which the listing reads whole.
 /// There a subgroup's lanes read neighbouring slots instead of one path's slots each. NVIDIA
-/// H100, `bench render --spp 1024` (docs/results.md, "The light vertex cache's listing per slot"):
+/// H100, `bench render --spp 1024` (docs/results.md, "Where the camera kernel's time goes; the
+/// light vertex cache listed per slot"):
 /// the Cornell box 111.61-111.68 against 112.48-112.51 ms (the listing 2.86 against 3.69), the
 /// box whose light hides above a panel 123.16-123.26 against 125.23-125.25, Sponza with 8
 /// candidates 166.08-166.12 against 166.34-166.47; with uniform entries (DamagedHelmet, one
@@ -432,6 +433,15 @@ mod default_tests {
         // The joins without the cache ignore candidates set by hand.
         settings.integrator = Integrator::Bdpt(Join::Full);
         assert_eq!(settings.connection_candidates_for(&diffuse), 1);
+    }
+
+    /// The cache listed per slot only on GPUs and only where its entries carry a preview.
+    #[test]
+    fn the_cache_is_listed_per_slot_on_gpus_with_resampled_entries() {
+        assert!(default_lvc_listing_per_slot(false, 8));
+        assert!(default_lvc_listing_per_slot(false, 2));
+        assert!(!default_lvc_listing_per_slot(false, 1));
+        assert!(!default_lvc_listing_per_slot(true, 8));
     }
 
     /// Quality 4 up to the bound for the binary and compressed wide BVHs, 2 past it; the 4-wide
