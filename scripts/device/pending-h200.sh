@@ -163,6 +163,15 @@ s46c)
     *) bash "$0" s46b; bash "$0" s46a ;;
   esac
   ;;
+s47b)
+  # Session 47's first call: on an H200 first s46f (issue #16's ratio, #17's Sponza round and
+  # #16's table with 6422f5a's code, .device/bidir-ls.gz), then s47a on any card. The bundle:
+  # `bash scripts/device/make-bundle.sh ls fe=s47a-full-entries.patch`.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
+  bash "$0" s47a
+  ;;
 s47a)
   # Prepared in session 46, not run: resampled cache entries that carry the whole compact vertex
   # (scripts/device/s47a-full-entries.patch on 7a3b284, .device/bidir-fe.gz), so that the kept
