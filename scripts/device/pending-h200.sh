@@ -136,6 +136,115 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s48c)
+  # Session 48: megakernel launches of 2^20 invocations (render::TARGET_INVOCATIONS, and up to
+  # 256 slices for small images) as built from this commit's working tree (.device/bidir-mi.gz)
+  # against 2^18 (.device/bidir-ls.gz, c1c12e7), each at its defaults, two rounds in alternating
+  # order; then equal time. On an H200 first issue #16's ratio, #17's Sponza round and #16's
+  # table with the new build (s45k).
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  unpack ls mi
+  case "$g" in *H200*) HB_NAME=mi timeout -k 5 330 bash "$0" s45k ;; esac
+  gpu() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'; }
+  SPG=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  CAU64="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 64 --height 64"
+  for order in "ls mi" "mi ls"; do
+    for n in $order; do
+      F=$PWD/.device/bidir-$n
+      echo "== $n cornell pt-nee: $(gpu "$F" $CB --integrator pt-nee --spp 1024)"
+      echo "== $n cornell pt: $(gpu "$F" $CB --integrator pt --spp 1024)"
+      echo "== $n cornell bdpt: $(gpu "$F" $CB --integrator bdpt --spp 1024)"
+      echo "== $n cornell bdpt:full: $(gpu "$F" $CB --integrator bdpt:full --spp 256)"
+      echo "== $n cornell vcm: $(gpu "$F" $CB --integrator vcm --spp 256)"
+      echo "== $n hidden pt-nee: $(gpu "$F" $HID --integrator pt-nee --spp 1024)"
+      echo "== $n caustic pt-nee: $(gpu "$F" $CAU --integrator pt-nee --spp 1024)"
+      echo "== $n caustic64 pt-nee: $(gpu "$F" $CAU64 --integrator pt-nee --spp 1024)"
+      echo "== $n sponza-geometry pt-nee: $(gpu "$F" $SPG --integrator pt-nee --spp 64)"
+    done
+  done
+  for n in ls mi; do
+    F=$PWD/.device/bidir-$n
+    for t in 0.1 1; do
+      echo "== $n cornell pt-nee $t s: $(at_time "$F" $t $CB --integrator pt-nee)"
+    done
+    echo "== $n cornell bdpt:full 1 s: $(at_time "$F" 1 $CB --integrator bdpt:full)"
+    echo "== $n caustic pt-nee 1 s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" 1 $CAU --integrator pt-nee)"
+  done
+  ;;
+s48b)
+  # Session 48: s48a found the megakernel pt-nee on the Cornell box faster with more sample
+  # slices than its default 4 (2^18 invocations a pass, `render::TARGET_INVOCATIONS`, set in
+  # session 1): 46.90 ms per 1024 spp at 16 against 53.1 at 4. The megakernels' slices swept
+  # (GPU ms; two rounds where marked), then equal time at the best against the default. On an
+  # H200 first s46f, as s48a.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
+  unpack ls
+  F=$PWD/.device/bidir-ls
+  gpu() { timeout -k 5 60 "$F" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'; }
+  SPG=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+  for r in 1 2; do
+    for n in 4 8 12 16 24 32; do
+      echo "== r$r slices $n cornell pt-nee: $(gpu $CB --integrator pt-nee --sample-slices $n --spp 1024)"
+    done
+    for n in 16 32 64 128; do
+      echo "== r$r slices $n caustic pt-nee: $(gpu $CAU --integrator pt-nee --sample-slices $n --spp 1024)"
+    done
+  done
+  for n in 4 16 32; do
+    echo "== slices $n cornell pt: $(gpu $CB --integrator pt --sample-slices $n --spp 1024)"
+    echo "== slices $n hidden pt-nee: $(gpu $HID --integrator pt-nee --sample-slices $n --spp 1024)"
+    echo "== slices $n cornell bdpt:full: $(gpu $CB --integrator bdpt:full --sample-slices $n --spp 256)"
+    echo "== slices $n cornell vcm: $(gpu $CB --integrator vcm --sample-slices $n --spp 256)"
+  done
+  for qs in 64/16 96/24 128/32 192/48; do
+    echo "== slices 16 queue $qs cornell pt-nee: $(gpu $CB --integrator pt-nee --sample-slices 16 --shadow-queue $qs --spp 1024)"
+  done
+  for n in 2 4 8; do
+    echo "== slices $n sponza-geometry pt-nee: $(gpu $SPG --integrator pt-nee --sample-slices $n --spp 64)"
+  done
+  for n in 4 16; do
+    for t in 0.1 1; do
+      echo "== slices $n cornell pt-nee $t s: $(at_time "$F" $t $CB --integrator pt-nee --sample-slices $n)"
+    done
+  done
+  echo "== default cornell pt-nee 0.1 s: $(at_time "$F" 0.1 $CB --integrator pt-nee)"
+  ;;
+s48a)
+  # Session 48: on an H200 first s46f (issue #16's ratio, #17's Sponza round and #16's table
+  # with .device/bidir-ls.gz, c1c12e7's code = HEAD's kernels); then, on any card, BDPT's and
+  # pt-nee's cost by sample slices (slots = pixels x slices; the default aims at 8 M, chosen in
+  # session 22 when a slot's state was twice today's): fewer slices bring the light vertex store
+  # (the Cornell box's: 33.6 M slots at its 128 slices), the listing and the film's slices
+  # nearer the L2's 50 MB, at more launches of fewer paths.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
+  unpack ls
+  F=$PWD/.device/bidir-ls
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  k='GPU [0-9.]+ ms|bdpt_[a-z_]+ +[0-9.]+|lvc_compact +[0-9.]+|trace_[a-z0-9_]+ +[0-9.]+'
+  for r in 1 2; do
+    for n in 128 64 32 16 8; do
+      echo "== slices $n cornell bdpt: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --sample-slices $n --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== slices $n hidden bdpt: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --sample-slices $n --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  for n in 128 64 32 16; do
+    echo "== slices $n cornell pt-nee: $(timeout -k 5 60 "$F" bench render $CB --integrator pt-nee --sample-slices $n --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  done
+  for n in 57 32 16; do
+    echo "== slices $n helmet bdpt: $(timeout -k 5 60 "$F" bench render $HB --integrator bdpt --sample-slices $n --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  done
+  for n in 24 16 8; do
+    echo "== slices $n sponza bdpt: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --sample-slices $n --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+  done
+  for n in 128 32 16; do
+    echo "== slices $n cornell bdpt 1 s: $(at_time "$F" 1 $CB --integrator bdpt --sample-slices $n)"
+  done
+  ;;
 s46b)
   # Prepared in session 45, not run: where the wavefront camera kernel's time goes now, by a
   # measurement build (scripts/device/s46b-exp-camera.patch on e7624e5, .device/bidir-xc.gz:

@@ -95,18 +95,25 @@ pub struct Renderer {
     first_hit: Option<first_hit::FirstHitPass>,
 }
 
-/// Invocations that keep a large GPU busy (132 SMs x 2,048 resident threads on an H100).
-const TARGET_INVOCATIONS: u64 = 1 << 18;
+/// Invocations of a megakernel launch that keep a large GPU busy: about four times the
+/// 270,336 threads an H100 keeps resident (132 SMs x 2,048), so that a launch's tail of slow
+/// paths is short beside it. Session 1 chose 2^18; in session 48 an H100 (`bench render --spp
+/// 1024`, GPU ms, two rounds; docs/results.md, "Megakernel launches of a million invocations")
+/// rendered the Cornell box 256² with pt-nee in 53.08 ms at 4 slices (2^18), 48.7 at 8, 47.1 at
+/// 12, 46.9 at 16 (2^20), 49.6 at 24, 50.7 at 32; the caustic scene 128² in 28.9 at 16 slices
+/// (2^18), 19.6 at 64 (2^20), 18.0 at 128; Sponza's geometry 640 x 360 in 125.0 at 2 slices,
+/// 110.2 at 4, 103.3 at 8; pt, bdpt:full, vcm and the hidden light's box gained 9-21 % at 2^20.
+const TARGET_INVOCATIONS: u64 = 1 << 20;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
 const SLICED_STORE_BYTES: u64 = 1 << 30;
-/// Most automatic sample slices of a megakernel (a 64 x 64 image and smaller: 2^18 invocations).
-const MAX_SLICES: u64 = 64;
+/// Most automatic sample slices of a megakernel (a 64 x 64 image and smaller: 2^20 invocations).
+const MAX_SLICES: u64 = 256;
 /// Most automatic sample slices of a wavefront form: enough for 4 million slots in a 64 x 64
-/// image (TARGET_SLOTS is 8 million). Capped at MAX_SLICES they left small images a quarter of
-/// the slots or less, and the launches' fixed costs over too few rays: NVIDIA H200, bdpt, ms
-/// per 512 spp, at 4 million slots then (session 22,
-/// docs/results.md, "Slots for small images"): caustic scene 128² 48.8 at 64 slices, 26.6 at
-/// 256 (megakernels 33.3); DamagedHelmet 128² 90.3 against 40.6 (megakernels 94.4).
+/// image (TARGET_SLOTS is 8 million). Capped at 64 (the megakernels' cap then) they left small
+/// images a quarter of the slots or less, and the launches' fixed costs over too few rays:
+/// NVIDIA H200, bdpt, ms per 512 spp, at 4 million slots then (session 22, docs/results.md,
+/// "Slots for small images"): caustic scene 128² 48.8 at 64 slices, 26.6 at 256 (megakernels
+/// 33.3); DamagedHelmet 128² 90.3 against 40.6 (megakernels 94.4).
 const MAX_WAVEFRONT_SLICES: u64 = 1024;
 
 /// The integrator kernels are built for the binary BVH of 64-byte nodes, the compressed

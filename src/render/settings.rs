@@ -251,7 +251,7 @@ pub struct RenderSettings {
     /// measure what specialisation buys).
     pub all_material_code: bool,
     /// Samples of a pixel a pass renders at once, each by its own invocation (0: as many as
-    /// it takes to give the GPU about 2^18 invocations, or a wavefront form about 2^23 slots,
+    /// it takes to give the GPU about 2^20 invocations, or a wavefront form about 2^23 slots,
     /// within their memory; 1 on CPU devices, which are full anyway). Small images otherwise
     /// leave a large GPU mostly idle.
     pub sample_slices: u32,
