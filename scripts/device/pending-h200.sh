@@ -171,6 +171,11 @@ s48c)
     echo "== $n cornell bdpt:full 1 s: $(at_time "$F" 1 $CB --integrator bdpt:full)"
     echo "== $n caustic pt-nee 1 s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" 1 $CAU --integrator pt-nee)"
   done
+  # BDPT's wavefront passes past their 128 slices on the box (s48a: fewer were slower).
+  for n in 128 192 240; do
+    echo "== mi slices $n cornell bdpt: $(gpu "$PWD/.device/bidir-mi" $CB --integrator bdpt --sample-slices $n --spp 1920)"
+    echo "== mi slices $n hidden bdpt: $(gpu "$PWD/.device/bidir-mi" $HID --integrator bdpt --sample-slices $n --spp 1920)"
+  done
   ;;
 s48b)
   # Session 48: s48a found the megakernel pt-nee on the Cornell box faster with more sample
