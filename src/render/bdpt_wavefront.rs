@@ -24,6 +24,15 @@ use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::BdptWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Recorder, Result, Spec};
 
+/// Slots BDPT's passes aim at (within the memory budget of `render::sample_slices`, which the
+/// light-vertex store also caps): twice the path tracer's `pt_wavefront::TARGET_SLOTS`. An
+/// NVIDIA H100 (session 48, `bench render --spp 1920`, GPU ms; docs/results.md, "Megakernel
+/// launches of a million invocations; BDPT's passes at 16 M slots"): the Cornell box 256²
+/// 208.2 at 128 slices (8 M slots), 203.8 at 192, 201.3 at 240; the box whose light hides
+/// above a panel 230.0, 226.1, 223.8. Session 22 had found 16 M level on the H200, when a
+/// slot's state was twice today's.
+pub const TARGET_SLOTS: u64 = 1 << 24;
+
 /// Shadow rays a slot queues per launch at most for `join`: the light sample and the
 /// connections; None where the wavefront camera pass cannot run the join (it draws a fixed
 /// number of cache vertices, at most `BDPT_WF_SHADOW_RAYS - 1`).

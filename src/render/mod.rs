@@ -97,12 +97,11 @@ pub struct Renderer {
 
 /// Invocations of a megakernel launch that keep a large GPU busy: about four times the
 /// 270,336 threads an H100 keeps resident (132 SMs x 2,048), so that a launch's tail of slow
-/// paths is short beside it. Session 1 chose 2^18; in session 48 an H100 (`bench render --spp
-/// 1024`, GPU ms, two rounds; docs/results.md, "Megakernel launches of a million invocations")
-/// rendered the Cornell box 256² with pt-nee in 53.08 ms at 4 slices (2^18), 48.7 at 8, 47.1 at
-/// 12, 46.9 at 16 (2^20), 49.6 at 24, 50.7 at 32; the caustic scene 128² in 28.9 at 16 slices
-/// (2^18), 19.6 at 64 (2^20), 18.0 at 128; Sponza's geometry 640 x 360 in 125.0 at 2 slices,
-/// 110.2 at 4, 103.3 at 8; pt, bdpt:full, vcm and the hidden light's box gained 9-21 % at 2^20.
+/// paths is short beside it. Session 1 chose 2^18; in session 48 an H100 (`bench render`, GPU
+/// ms, two rounds; docs/results.md, "Megakernel launches of a million invocations") rendered
+/// the Cornell box 256² with pt-nee in 53.08 ms per 1024 spp at 4 slices (2^18), 48.7 at 8,
+/// 47.1 at 12, 46.9 at 16 (2^20), 49.6 at 24, 50.7 at 32 (the shadow-ray queue shrinking within
+/// its budget); at 2^20 pt gained 9 %, bdpt:full 21 %, vcm 11 %, the hidden light's pt-nee 12 %.
 const TARGET_INVOCATIONS: u64 = 1 << 20;
 /// Most GPU memory the automatic sample slices may give BDPT's light-vertex store.
 const SLICED_STORE_BYTES: u64 = 1 << 30;
@@ -153,15 +152,16 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
     }
     let wave = wavefront(ctx, settings, settings.integrator, &scene.features);
     let mut s = if wave {
-        let slot_bytes = match settings.integrator {
+        let (slot_bytes, target) = match settings.integrator {
             // BDPT's passes share their slots: a light path's, or a pixel's camera sample's.
             Integrator::Bdpt(join) => {
                 let bytes = bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1));
-                (bytes as f64 * settings.light_path_ratio_for(&scene.estimator_features).max(1.0) as f64).ceil() as u64
+                let ratio = settings.light_path_ratio_for(&scene.estimator_features).max(1.0) as f64;
+                ((bytes as f64 * ratio).ceil() as u64, bdpt_wavefront::TARGET_SLOTS)
             }
-            _ => pt_wavefront::SLOT_BYTES,
+            _ => (pt_wavefront::SLOT_BYTES, pt_wavefront::TARGET_SLOTS),
         };
-        wavefront_slices(pixels, slot_bytes, shadow_queue::budget(ctx))
+        wavefront_slices(pixels, slot_bytes, shadow_queue::budget(ctx), target)
     } else {
         TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, MAX_SLICES)
     };
@@ -182,10 +182,10 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
     s as u32
 }
 
-/// A wavefront form's sample slices for `pixels` pixels: about TARGET_SLOTS slots of
+/// A wavefront form's sample slices for `pixels` pixels: about `target` slots of
 /// `slot_bytes`, as many as fit in `budget` bytes, at most MAX_WAVEFRONT_SLICES.
-fn wavefront_slices(pixels: u32, slot_bytes: u64, budget: u64) -> u64 {
-    let slots = pt_wavefront::TARGET_SLOTS.min(budget / slot_bytes.max(1));
+fn wavefront_slices(pixels: u32, slot_bytes: u64, budget: u64, target: u64) -> u64 {
+    let slots = target.min(budget / slot_bytes.max(1));
     slots.div_ceil(pixels.max(1) as u64).clamp(1, MAX_WAVEFRONT_SLICES)
 }
 
@@ -199,14 +199,17 @@ mod slice_tests {
     fn wavefront_slices_fill_the_target_slots_in_small_images() {
         let (bytes, ample) = (200, 1 << 40);
         assert_eq!(pt_wavefront::TARGET_SLOTS, 1 << 23);
-        assert_eq!(wavefront_slices(128 * 128, bytes, ample), 512);
-        assert_eq!(wavefront_slices(192 * 192, bytes, ample), 228);
-        assert_eq!(wavefront_slices(640 * 360, bytes, ample), 37);
-        assert_eq!(wavefront_slices(64 * 64, bytes, ample), MAX_WAVEFRONT_SLICES, "capped");
-        assert_eq!(wavefront_slices(1920 * 1080, bytes, ample), 5);
+        assert_eq!(wavefront_slices(128 * 128, bytes, ample, pt_wavefront::TARGET_SLOTS), 512);
+        assert_eq!(wavefront_slices(192 * 192, bytes, ample, pt_wavefront::TARGET_SLOTS), 228);
+        assert_eq!(wavefront_slices(640 * 360, bytes, ample, pt_wavefront::TARGET_SLOTS), 37);
+        assert_eq!(wavefront_slices(64 * 64, bytes, ample, pt_wavefront::TARGET_SLOTS), MAX_WAVEFRONT_SLICES, "capped");
+        assert_eq!(wavefront_slices(1920 * 1080, bytes, ample, pt_wavefront::TARGET_SLOTS), 5);
         // A budget of a million slots: an eighth of the target.
-        assert_eq!(wavefront_slices(128 * 128, bytes, bytes << 20), 64);
-        assert_eq!(wavefront_slices(1 << 24, bytes, 0), 1);
+        assert_eq!(wavefront_slices(128 * 128, bytes, bytes << 20, pt_wavefront::TARGET_SLOTS), 64);
+        assert_eq!(wavefront_slices(1 << 24, bytes, 0, pt_wavefront::TARGET_SLOTS), 1);
+        // BDPT's passes aim at twice the slots.
+        assert_eq!(bdpt_wavefront::TARGET_SLOTS, 2 * pt_wavefront::TARGET_SLOTS);
+        assert_eq!(wavefront_slices(256 * 256, bytes, ample, bdpt_wavefront::TARGET_SLOTS), 256);
     }
 }
 
