@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Session 48 (H100s only; .device/bidir-mi.gz a build of 4d76448, bidir-bs.gz of the 16 M-slot commit after it, bidir-ls.gz and bidir-fe.gz moved to /work/device-spare): s48a (BDPT's slices, and pt-nee's, on an H100), s48b (the megakernels' slices), s48c (4d76448 against c1c12e7), s48d (BDPT's passes at 16 M slots against 4d76448); docs/results.md, "Megakernel launches of a million invocations; BDPT's passes at 16 M slots". Issue #16's ratio and #17's figures still wait for an H200: s48d runs s45k there first.
+# Session 48 (H100s only; .device/bidir-mi.gz a build of f7ed307, bidir-bs.gz of the 16 M-slot commit after it, bidir-ls.gz and bidir-fe.gz moved to /work/device-spare): s48a (BDPT's slices, and pt-nee's, on an H100), s48b (the megakernels' slices), s48c (f7ed307 against c1c12e7), s48d (BDPT's passes at 16 M slots against f7ed307); docs/results.md, "Megakernel launches of a million invocations; BDPT's passes at 16 M slots". Issue #16's ratio and #17's figures still wait for an H200: s48d runs s45k there first.
 # Session 47 (a new checkout: `bash scripts/device/make-bundle.sh ls fe=s47a-full-entries.patch` rebuilt .device/ with bidir-ls.gz, a build of c1c12e7, and bidir-fe.gz): s47b ran s47a on an H100 (docs/results.md, "Cache entries that carry the whole kept vertex": not kept); s46f (on an H200 only) still waits for an H200.
 # Prepared in session 46 for the next: s46f (on an H200 only: issue #16's ratio and #17's Sponza round with 6422f5a, .device/bidir-ls.gz); s47a (resampled cache entries that carry the whole compact vertex, scripts/device/s47a-full-entries.patch as .device/bidir-fe.gz, against .device/bidir-ls.gz, the builds' order alternating). Session 46 ran s46b, s46a (both on an H100; docs/results.md, "Where the camera kernel's time goes; the light vertex cache listed per slot"), s46e twice and s45k with HB_NAME=ls (H100s); s46c's light-tracing comparison was dropped after lavapipe's measurement ("BDPT without light tracing"). .device/bidir-hh.gz is a build of 76b4312.
 # Prepared in session 45 for the next: s46b (a measurement build: what the camera kernel's light sample and connections cost, scripts/device/s46b-exp-camera.patch, .device/bidir-xc.gz); s46a (the light vertex cache's listing with an invocation per slot, scripts/device/s46a-lvc-compact.patch, .device/bidir-lc.gz, against .device/bidir-hd.gz); s45k (.device/bidir-hd.gz, a build of e7624e5; on an H200 the most wanted figures first: issue #16's ratio, #17's Sponza round, the rest of #16's table, the sampler's worth), or s45j with SPONZA rounds (both run what they can on an H100 too).
@@ -140,7 +140,7 @@ case "${1:-speed}" in
 s48d)
   # Session 48: BDPT's wavefront passes aiming at 16 M slots (bdpt_wavefront::TARGET_SLOTS; the
   # Cornell box then takes 241 slices, the memory budget's cap) as built from the working tree
-  # (.device/bidir-bs.gz) against 8 M (.device/bidir-mi.gz, 4d76448), two rounds in alternating
+  # (.device/bidir-bs.gz) against 8 M (.device/bidir-mi.gz, f7ed307), two rounds in alternating
   # order, then equal time; on an H200 first s45k with the new build.
   g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
   echo "== device: $g"
