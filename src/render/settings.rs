@@ -251,9 +251,9 @@ pub struct RenderSettings {
     /// measure what specialisation buys).
     pub all_material_code: bool,
     /// Samples of a pixel a pass renders at once, each by its own invocation (0: as many as
-    /// it takes to give the GPU about 2^20 invocations, or a wavefront form about 2^23 slots,
-    /// within their memory; 1 on CPU devices, which are full anyway). Small images otherwise
-    /// leave a large GPU mostly idle.
+    /// it takes to give the GPU about 2^20 invocations, or a wavefront form about 2^23 slots
+    /// (BDPT's 2^24), within their memory; 1 on CPU devices, which are full anyway). Small
+    /// images otherwise leave a large GPU mostly idle.
     pub sample_slices: u32,
     /// GPU time one submission should take (passes are sized to it; keeps lavapipe
     /// responsive and far from the GPU timeout).
