@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Prepared in session 48 for the next: s49a (on an H200 issue #16's ratio and #17's figures with .device/bidir-bs.gz, then the wavefront path tracer's slots on any card).
 # Session 48 (H100s only; .device/bidir-mi.gz a build of f7ed307, bidir-bs.gz of the 16 M-slot commit after it, bidir-ls.gz and bidir-fe.gz moved to /work/device-spare): s48a (BDPT's slices, and pt-nee's, on an H100), s48b (the megakernels' slices), s48c (f7ed307 against c1c12e7), s48d (BDPT's passes at 16 M slots against f7ed307); docs/results.md, "Megakernel launches of a million invocations; BDPT's passes at 16 M slots". Issue #16's ratio and #17's figures still wait for an H200: s48d runs s45k there first.
 # Session 47 (a new checkout: `bash scripts/device/make-bundle.sh ls fe=s47a-full-entries.patch` rebuilt .device/ with bidir-ls.gz, a build of c1c12e7, and bidir-fe.gz): s47b ran s47a on an H100 (docs/results.md, "Cache entries that carry the whole kept vertex": not kept); s46f (on an H200 only) still waits for an H200.
 # Prepared in session 46 for the next: s46f (on an H200 only: issue #16's ratio and #17's Sponza round with 6422f5a, .device/bidir-ls.gz); s47a (resampled cache entries that carry the whole compact vertex, scripts/device/s47a-full-entries.patch as .device/bidir-fe.gz, against .device/bidir-ls.gz, the builds' order alternating). Session 46 ran s46b, s46a (both on an H100; docs/results.md, "Where the camera kernel's time goes; the light vertex cache listed per slot"), s46e twice and s45k with HB_NAME=ls (H100s); s46c's light-tracing comparison was dropped after lavapipe's measurement ("BDPT without light tracing"). .device/bidir-hh.gz is a build of 76b4312.
@@ -137,6 +138,34 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s49a)
+  # Prepared in session 48 for the next (.device/bidir-bs.gz, a build of edc0213 or later: `bash
+  # scripts/device/make-bundle.sh bs` in a new checkout): on an H200 first s45k with it (issue
+  # #16's ratio, #17's Sponza round, #16's table); then, on any card, the wavefront path
+  # tracer's slots by sample slices (s48b's forced slices gave the caustic scene 18.03 ms at 128
+  # slices, 2 M slots, against 18.4 at its default 511, 8 M): pt-nee where it runs wavefronts.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  unpack bs
+  case "$g" in *H200*) HB_NAME=bs timeout -k 5 330 bash "$0" s45k ;; esac
+  F=$PWD/.device/bidir-bs
+  gpu() { timeout -k 5 60 "$F" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'; }
+  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
+  for r in 1 2; do
+    for n in 0 64 128 256; do
+      o=""; [ "$n" != 0 ] && o="--sample-slices $n"
+      echo "== r$r slices $n caustic pt-nee: $(gpu $CAU --integrator pt-nee $o --spp 1024)"
+    done
+    for n in 0 14 28; do
+      o=""; [ "$n" != 0 ] && o="--sample-slices $n"
+      echo "== r$r slices $n helmet pt-nee: $(gpu $HB --integrator pt-nee $o --spp 1008)"
+    done
+    for n in 0 9 18; do
+      o=""; [ "$n" != 0 ] && o="--sample-slices $n"
+      echo "== r$r slices $n sponza pt-nee: $(gpu $SP --integrator pt-nee $o --spp 72)"
+    done
+  done
+  ;;
 s48d)
   # Session 48: BDPT's wavefront passes aiming at 16 M slots (bdpt_wavefront::TARGET_SLOTS; the
   # Cornell box then takes 241 slices, the memory budget's cap) as built from the working tree
