@@ -163,7 +163,7 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
         };
         wavefront_slices(pixels, slot_bytes, shadow_queue::budget(ctx), target)
     } else {
-        TARGET_INVOCATIONS.div_ceil(pixels.max(1) as u64).clamp(1, MAX_SLICES)
+        megakernel_slices(pixels, shadow_queue::budget(ctx))
     };
     if settings.integrator.stores_light_vertices() {
         let per_sample = (pixels as f64 * settings.light_path_ratio_for(&scene.estimator_features).max(0.0) as f64).max(1.0) as u64;
@@ -182,6 +182,19 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
     s as u32
 }
 
+/// A megakernel's sample slices for `pixels` pixels: about TARGET_INVOCATIONS invocations a
+/// launch, fewer (down to session 1's 2^18) where the shadow-ray queue's `budget` would then
+/// leave an invocation fewer than 64 slots (a small GPU: the queue's budget is a sixteenth of
+/// its memory). The H100's 2^20 invocations kept 85 slots and lost nothing to the queue's
+/// size (64 slots: 47.03 ms, 192: 49.99), but a queue too small to hold a launch's shadow rays
+/// sends them to the in-kernel traversal.
+fn megakernel_slices(pixels: u32, budget: u64) -> u64 {
+    const MIN_SLOTS: u64 = 64;
+    let per_invocation = MIN_SLOTS * std::mem::size_of::<crate::gpu::abi::QueuedShadow>() as u64 + 4 + pt::PAUSED_PATH_BYTES;
+    let invocations = (budget / per_invocation).clamp(1 << 18, TARGET_INVOCATIONS);
+    invocations.div_ceil(pixels.max(1) as u64).clamp(1, MAX_SLICES)
+}
+
 /// A wavefront form's sample slices for `pixels` pixels: about `target` slots of
 /// `slot_bytes`, as many as fit in `budget` bytes, at most MAX_WAVEFRONT_SLICES.
 fn wavefront_slices(pixels: u32, slot_bytes: u64, budget: u64, target: u64) -> u64 {
@@ -192,6 +205,22 @@ fn wavefront_slices(pixels: u32, slot_bytes: u64, budget: u64, target: u64) -> u
 #[cfg(test)]
 mod slice_tests {
     use super::*;
+
+    /// Megakernels get 2^20 invocations a launch where the shadow-ray queue's budget keeps 64
+    /// slots each (the H100's and H200's 4 GiB), down to 2^18 on small GPUs.
+    #[test]
+    fn megakernel_slices_follow_the_queue_budget() {
+        let large = 4095u64 << 20;
+        assert_eq!(megakernel_slices(256 * 256, large), 16);
+        assert_eq!(megakernel_slices(128 * 128, large), 64);
+        assert_eq!(megakernel_slices(64 * 64, large), MAX_SLICES);
+        assert_eq!(megakernel_slices(32 * 32, large), MAX_SLICES, "capped");
+        assert_eq!(megakernel_slices(1920 * 1080, large), 1);
+        // A 16 GiB GPU's 1 GiB budget: 64 slots for about 338,000 invocations.
+        assert_eq!(megakernel_slices(256 * 256, 1 << 30), 6);
+        // A 4 GiB GPU's 256 MiB: session 1's 2^18.
+        assert_eq!(megakernel_slices(256 * 256, 1 << 28), 4);
+    }
 
     /// Small images get the slots a large one gets (down to 91 x 91; 4 million at 64 x 64),
     /// within the memory budget.
