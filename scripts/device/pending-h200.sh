@@ -56,6 +56,9 @@ CB="--width 256 --height 256"
 HID=".device/scenes/hidden/hidden.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
 CAU="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 128 --height 128"
 SP=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
+# Session 48's: the caustic scene at 64², DamagedHelmet under an environment and a sun.
+CAU64="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 64 --height 64"
+HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
 RC="assets/scenes/rough-cornell/rough-cornell.obj --eye 278,273,-800 --target 278,273,-799 --up 0,1,0 --fov 39.3077 --width 256 --height 256"
 # Sponza's CameraMain at build quality 5 through the 4-wide BVH (issue #17's setting) with the
 # binary $1 and any further options: the primary, shadow and diffuse lines of its report.
@@ -82,6 +85,11 @@ sponza_rounds() {
 at_time() {
   local b=$1 t=$2; shift 2
   echo "$(timeout -k 5 60 "$b" render "$@" --time "$t" -o /tmp/at_time.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$b" diff /tmp/at_time.exr "${REFERENCE:-$REF}" 2>&1 | grep -E '^RMSE ')"
+}
+# `bench render` with the binary $1 and the further options, warmed up, three runs: its GPU ms.
+gpu_ms() {
+  local b=$1; shift
+  timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'
 }
 # One round's BDPT `bench render` lines of the binary $1, named $2: its GPU ms and the kernel
 # lines that match $3, on the Cornell box and the hidden light (1024 spp), on $HB (DamagedHelmet
@@ -149,20 +157,18 @@ s49a)
   unpack bs
   case "$g" in *H200*) HB_NAME=bs timeout -k 5 330 bash "$0" s45k ;; esac
   F=$PWD/.device/bidir-bs
-  gpu() { timeout -k 5 60 "$F" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'; }
-  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
   for r in 1 2; do
     for n in 0 64 128 256; do
       o=""; [ "$n" != 0 ] && o="--sample-slices $n"
-      echo "== r$r slices $n caustic pt-nee: $(gpu $CAU --integrator pt-nee $o --spp 1024)"
+      echo "== r$r slices $n caustic pt-nee: $(gpu_ms "$F" $CAU --integrator pt-nee $o --spp 1024)"
     done
     for n in 0 14 28; do
       o=""; [ "$n" != 0 ] && o="--sample-slices $n"
-      echo "== r$r slices $n helmet pt-nee: $(gpu $HB --integrator pt-nee $o --spp 1008)"
+      echo "== r$r slices $n helmet pt-nee: $(gpu_ms "$F" $HB --integrator pt-nee $o --spp 1008)"
     done
     for n in 0 9 18; do
       o=""; [ "$n" != 0 ] && o="--sample-slices $n"
-      echo "== r$r slices $n sponza pt-nee: $(gpu $SP --integrator pt-nee $o --spp 72)"
+      echo "== r$r slices $n sponza pt-nee: $(gpu_ms "$F" $SP --integrator pt-nee $o --spp 72)"
     done
   done
   ;;
@@ -175,15 +181,13 @@ s48d)
   echo "== device: $g"
   unpack mi bs
   case "$g" in *H200*) HB_NAME=bs timeout -k 5 150 bash "$0" s45k ;; esac
-  gpu() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'; }
-  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
   for order in "mi bs" "bs mi"; do
     for n in $order; do
       F=$PWD/.device/bidir-$n
-      echo "== $n cornell bdpt: $(gpu "$F" $CB --integrator bdpt --spp 1024)"
-      echo "== $n hidden bdpt: $(gpu "$F" $HID --integrator bdpt --spp 1024)"
-      echo "== $n helmet bdpt: $(gpu "$F" $HB --integrator bdpt --spp 256)"
-      echo "== $n cornell pt-nee: $(gpu "$F" $CB --integrator pt-nee --spp 1024)"
+      echo "== $n cornell bdpt: $(gpu_ms "$F" $CB --integrator bdpt --spp 1024)"
+      echo "== $n hidden bdpt: $(gpu_ms "$F" $HID --integrator bdpt --spp 1024)"
+      echo "== $n helmet bdpt: $(gpu_ms "$F" $HB --integrator bdpt --spp 256)"
+      echo "== $n cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --spp 1024)"
     done
   done
   for n in mi bs; do
@@ -201,21 +205,18 @@ s48c)
   echo "== device: $g"
   unpack ls mi
   case "$g" in *H200*) HB_NAME=mi timeout -k 5 330 bash "$0" s45k ;; esac
-  gpu() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'; }
-  SPG=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
-  CAU64="assets/scenes/caustic/caustic.obj --eye 0,1.0,-2.0 --target 0,0.15,-0.2 --up 0,1,0 --fov 35 --width 64 --height 64"
   for order in "ls mi" "mi ls"; do
     for n in $order; do
       F=$PWD/.device/bidir-$n
-      echo "== $n cornell pt-nee: $(gpu "$F" $CB --integrator pt-nee --spp 1024)"
-      echo "== $n cornell pt: $(gpu "$F" $CB --integrator pt --spp 1024)"
-      echo "== $n cornell bdpt: $(gpu "$F" $CB --integrator bdpt --spp 1024)"
-      echo "== $n cornell bdpt:full: $(gpu "$F" $CB --integrator bdpt:full --spp 256)"
-      echo "== $n cornell vcm: $(gpu "$F" $CB --integrator vcm --spp 256)"
-      echo "== $n hidden pt-nee: $(gpu "$F" $HID --integrator pt-nee --spp 1024)"
-      echo "== $n caustic pt-nee: $(gpu "$F" $CAU --integrator pt-nee --spp 1024)"
-      echo "== $n caustic64 pt-nee: $(gpu "$F" $CAU64 --integrator pt-nee --spp 1024)"
-      echo "== $n sponza-geometry pt-nee: $(gpu "$F" $SPG --integrator pt-nee --spp 64)"
+      echo "== $n cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --spp 1024)"
+      echo "== $n cornell pt: $(gpu_ms "$F" $CB --integrator pt --spp 1024)"
+      echo "== $n cornell bdpt: $(gpu_ms "$F" $CB --integrator bdpt --spp 1024)"
+      echo "== $n cornell bdpt:full: $(gpu_ms "$F" $CB --integrator bdpt:full --spp 256)"
+      echo "== $n cornell vcm: $(gpu_ms "$F" $CB --integrator vcm --spp 256)"
+      echo "== $n hidden pt-nee: $(gpu_ms "$F" $HID --integrator pt-nee --spp 1024)"
+      echo "== $n caustic pt-nee: $(gpu_ms "$F" $CAU --integrator pt-nee --spp 1024)"
+      echo "== $n caustic64 pt-nee: $(gpu_ms "$F" $CAU64 --integrator pt-nee --spp 1024)"
+      echo "== $n sponza-geometry pt-nee: $(gpu_ms "$F" $SP --integrator pt-nee --spp 64)"
     done
   done
   for n in ls mi; do
@@ -228,8 +229,8 @@ s48c)
   done
   # BDPT's wavefront passes past their 128 slices on the box (s48a: fewer were slower).
   for n in 128 192 240; do
-    echo "== mi slices $n cornell bdpt: $(gpu "$PWD/.device/bidir-mi" $CB --integrator bdpt --sample-slices $n --spp 1920)"
-    echo "== mi slices $n hidden bdpt: $(gpu "$PWD/.device/bidir-mi" $HID --integrator bdpt --sample-slices $n --spp 1920)"
+    echo "== mi slices $n cornell bdpt: $(gpu_ms "$PWD/.device/bidir-mi" $CB --integrator bdpt --sample-slices $n --spp 1920)"
+    echo "== mi slices $n hidden bdpt: $(gpu_ms "$PWD/.device/bidir-mi" $HID --integrator bdpt --sample-slices $n --spp 1920)"
   done
   ;;
 s48b)
@@ -243,27 +244,25 @@ s48b)
   case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
   unpack ls
   F=$PWD/.device/bidir-ls
-  gpu() { timeout -k 5 60 "$F" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'; }
-  SPG=".device/scenes/sponza/Sponza.gltf --sponza-sun-sky --camera CameraMain --width 640 --height 360"
   for r in 1 2; do
     for n in 4 8 12 16 24 32; do
-      echo "== r$r slices $n cornell pt-nee: $(gpu $CB --integrator pt-nee --sample-slices $n --spp 1024)"
+      echo "== r$r slices $n cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --sample-slices $n --spp 1024)"
     done
     for n in 16 32 64 128; do
-      echo "== r$r slices $n caustic pt-nee: $(gpu $CAU --integrator pt-nee --sample-slices $n --spp 1024)"
+      echo "== r$r slices $n caustic pt-nee: $(gpu_ms "$F" $CAU --integrator pt-nee --sample-slices $n --spp 1024)"
     done
   done
   for n in 4 16 32; do
-    echo "== slices $n cornell pt: $(gpu $CB --integrator pt --sample-slices $n --spp 1024)"
-    echo "== slices $n hidden pt-nee: $(gpu $HID --integrator pt-nee --sample-slices $n --spp 1024)"
-    echo "== slices $n cornell bdpt:full: $(gpu $CB --integrator bdpt:full --sample-slices $n --spp 256)"
-    echo "== slices $n cornell vcm: $(gpu $CB --integrator vcm --sample-slices $n --spp 256)"
+    echo "== slices $n cornell pt: $(gpu_ms "$F" $CB --integrator pt --sample-slices $n --spp 1024)"
+    echo "== slices $n hidden pt-nee: $(gpu_ms "$F" $HID --integrator pt-nee --sample-slices $n --spp 1024)"
+    echo "== slices $n cornell bdpt:full: $(gpu_ms "$F" $CB --integrator bdpt:full --sample-slices $n --spp 256)"
+    echo "== slices $n cornell vcm: $(gpu_ms "$F" $CB --integrator vcm --sample-slices $n --spp 256)"
   done
   for qs in 64/16 96/24 128/32 192/48; do
-    echo "== slices 16 queue $qs cornell pt-nee: $(gpu $CB --integrator pt-nee --sample-slices 16 --shadow-queue $qs --spp 1024)"
+    echo "== slices 16 queue $qs cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --sample-slices 16 --shadow-queue $qs --spp 1024)"
   done
   for n in 2 4 8; do
-    echo "== slices $n sponza-geometry pt-nee: $(gpu $SPG --integrator pt-nee --sample-slices $n --spp 64)"
+    echo "== slices $n sponza-geometry pt-nee: $(gpu_ms "$F" $SP --integrator pt-nee --sample-slices $n --spp 64)"
   done
   for n in 4 16; do
     for t in 0.1 1; do
@@ -284,7 +283,6 @@ s48a)
   case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
   unpack ls
   F=$PWD/.device/bidir-ls
-  HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
   k='GPU [0-9.]+ ms|bdpt_[a-z_]+ +[0-9.]+|lvc_compact +[0-9.]+|trace_[a-z0-9_]+ +[0-9.]+'
   for r in 1 2; do
     for n in 128 64 32 16 8; do

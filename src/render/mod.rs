@@ -140,9 +140,10 @@ pub fn kernel_form(settings: &RenderSettings) -> String {
 }
 
 /// Sample slices for a film of `pixels` pixels (see `RenderSettings::sample_slices`) of
-/// `scene`. The wavefront forms take more: their trace kernels need many rays
-/// per launch (`pt_wavefront::TARGET_SLOTS`), within the memory their slots (and BDPT's
-/// light-vertex store) may take.
+/// `scene`: a megakernel's by `megakernel_slices`; the wavefront forms take more, as their
+/// trace kernels need many rays per launch (`pt_wavefront::TARGET_SLOTS`,
+/// `bdpt_wavefront::TARGET_SLOTS`), within the memory their slots (and BDPT's light-vertex
+/// store) may take.
 fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pixels: u32) -> u32 {
     if settings.sample_slices > 0 {
         return settings.sample_slices;
@@ -185,12 +186,12 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
 /// A megakernel's sample slices for `pixels` pixels: about TARGET_INVOCATIONS invocations a
 /// launch, fewer (down to session 1's 2^18) where the shadow-ray queue's `budget` would then
 /// leave an invocation fewer than 64 slots (a small GPU: the queue's budget is a sixteenth of
-/// its memory). The H100's 2^20 invocations kept 85 slots and lost nothing to the queue's
-/// size (64 slots: 47.03 ms, 192: 49.99), but a queue too small to hold a launch's shadow rays
-/// sends them to the in-kernel traversal.
+/// its memory; pt-nee's paused path counted, the most an invocation adds). The H100's 2^20
+/// invocations kept 85 slots and lost nothing to the queue's size (64 slots: 47.03 ms, 192:
+/// 49.99), but a queue too small to hold a launch's shadow rays sends them to the in-kernel
+/// traversal.
 fn megakernel_slices(pixels: u32, budget: u64) -> u64 {
-    const MIN_SLOTS: u64 = 64;
-    let per_invocation = MIN_SLOTS * std::mem::size_of::<crate::gpu::abi::QueuedShadow>() as u64 + 4 + pt::PAUSED_PATH_BYTES;
+    let per_invocation = shadow_queue::invocation_bytes(64, pt::PAUSED_PATH_BYTES);
     let invocations = (budget / per_invocation).clamp(1 << 18, TARGET_INVOCATIONS);
     invocations.div_ceil(pixels.max(1) as u64).clamp(1, MAX_SLICES)
 }
@@ -226,16 +227,16 @@ mod slice_tests {
     /// within the memory budget.
     #[test]
     fn wavefront_slices_fill_the_target_slots_in_small_images() {
-        let (bytes, ample) = (200, 1 << 40);
-        assert_eq!(pt_wavefront::TARGET_SLOTS, 1 << 23);
-        assert_eq!(wavefront_slices(128 * 128, bytes, ample, pt_wavefront::TARGET_SLOTS), 512);
-        assert_eq!(wavefront_slices(192 * 192, bytes, ample, pt_wavefront::TARGET_SLOTS), 228);
-        assert_eq!(wavefront_slices(640 * 360, bytes, ample, pt_wavefront::TARGET_SLOTS), 37);
-        assert_eq!(wavefront_slices(64 * 64, bytes, ample, pt_wavefront::TARGET_SLOTS), MAX_WAVEFRONT_SLICES, "capped");
-        assert_eq!(wavefront_slices(1920 * 1080, bytes, ample, pt_wavefront::TARGET_SLOTS), 5);
+        let (bytes, ample, pt) = (200, 1 << 40, pt_wavefront::TARGET_SLOTS);
+        assert_eq!(pt, 1 << 23);
+        assert_eq!(wavefront_slices(128 * 128, bytes, ample, pt), 512);
+        assert_eq!(wavefront_slices(192 * 192, bytes, ample, pt), 228);
+        assert_eq!(wavefront_slices(640 * 360, bytes, ample, pt), 37);
+        assert_eq!(wavefront_slices(64 * 64, bytes, ample, pt), MAX_WAVEFRONT_SLICES, "capped");
+        assert_eq!(wavefront_slices(1920 * 1080, bytes, ample, pt), 5);
         // A budget of a million slots: an eighth of the target.
-        assert_eq!(wavefront_slices(128 * 128, bytes, bytes << 20, pt_wavefront::TARGET_SLOTS), 64);
-        assert_eq!(wavefront_slices(1 << 24, bytes, 0, pt_wavefront::TARGET_SLOTS), 1);
+        assert_eq!(wavefront_slices(128 * 128, bytes, bytes << 20, pt), 64);
+        assert_eq!(wavefront_slices(1 << 24, bytes, 0, pt), 1);
         // BDPT's passes aim at twice the slots.
         assert_eq!(bdpt_wavefront::TARGET_SLOTS, 2 * pt_wavefront::TARGET_SLOTS);
         assert_eq!(wavefront_slices(256 * 256, bytes, ample, bdpt_wavefront::TARGET_SLOTS), 256);

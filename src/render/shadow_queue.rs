@@ -34,6 +34,13 @@ impl std::fmt::Display for ShadowQueue {
 
 /// Bytes of a queue slot.
 const SLOT_BYTES: u64 = std::mem::size_of::<abi::QueuedShadow>() as u64;
+/// Bytes of an invocation's count of queued rays (`ShadowQueueTracer`'s counts).
+const COUNT_BYTES: u64 = 4;
+
+/// Queue memory an invocation with `slots` slots takes, with `fixed` more bytes of its own.
+pub fn invocation_bytes(slots: u64, fixed: u64) -> u64 {
+    slots * SLOT_BYTES + COUNT_BYTES + fixed
+}
 
 impl ShadowQueue {
     /// The queue for `invocations` megakernel invocations that need `fixed` more bytes each,
@@ -41,7 +48,7 @@ impl ShadowQueue {
     /// than `MIN_SLOTS` would.
     pub fn fit(self, invocations: u64, fixed: u64, budget: u64) -> Option<ShadowQueue> {
         const MIN_SLOTS: u32 = 4;
-        let fit = (budget / invocations.max(1)).saturating_sub(fixed + 4) / SLOT_BYTES;
+        let fit = (budget / invocations.max(1)).saturating_sub(invocation_bytes(0, fixed)) / SLOT_BYTES;
         let slots = self.slots.min(fit.min(u32::MAX as u64) as u32);
         (slots >= MIN_SLOTS).then_some(ShadowQueue { slots, ..self })
     }
@@ -101,7 +108,7 @@ impl ShadowQueueTracer {
             splat: if splats { Some(ctx.create_kernel(scene.bvh.kernel(&kernels::SHADOW_QUEUE_SPLAT_FORMS), &specs)?) } else { None },
             slots,
             queue: ctx.create_buffer("shadow_queue.rays", bytes, Memory::Device).map_err(mem)?,
-            counts: ctx.create_buffer("shadow_queue.counts", invocations * 4, Memory::Device).map_err(mem)?,
+            counts: ctx.create_buffer("shadow_queue.counts", invocations * COUNT_BYTES, Memory::Device).map_err(mem)?,
         })
     }
 
