@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Session 49 (an H100, then an H200; .device/bidir-ls.gz copied back from /work/device-spare beside bidir-mi.gz and bidir-bs.gz): s49b (BDPT's megakernels at 2^20 invocations against its wavefront passes, then s49a: an H100), s45k with HB_NAME=bs and s49c (the path tracers' megakernels against their wavefront form: the H200), then by hand on the H200 light paths per pixel and candidates (docs/results.md, "Issues #16 and #17 on the H200 again"). Prepared for the next and not run: s49d (the caustic scene's bdpt at 1 s, 23,518 spp on the H200 against 28,638 in session 43: c1c12e7, f7ed307 and HEAD's build in turn).
 # Prepared in session 48 for the next: s49a (on an H200 issue #16's ratio and #17's figures with .device/bidir-bs.gz, then the wavefront path tracer's slots on any card).
 # Session 48 (H100s only; .device/bidir-mi.gz a build of f7ed307, bidir-bs.gz of the 16 M-slot commit after it, bidir-ls.gz and bidir-fe.gz moved to /work/device-spare): s48a (BDPT's slices, and pt-nee's, on an H100), s48b (the megakernels' slices), s48c (f7ed307 against c1c12e7), s48d (BDPT's passes at 16 M slots against f7ed307); docs/results.md, "Megakernel launches of a million invocations; BDPT's passes at 16 M slots". Issue #16's ratio and #17's figures still wait for an H200: s48d runs s45k there first.
 # Session 47 (a new checkout: `bash scripts/device/make-bundle.sh ls fe=s47a-full-entries.patch` rebuilt .device/ with bidir-ls.gz, a build of c1c12e7, and bidir-fe.gz): s47b ran s47a on an H100 (docs/results.md, "Cache entries that carry the whole kept vertex": not kept); s46f (on an H200 only) still waits for an H200.
@@ -146,6 +147,68 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s49d)
+  # Session 49: the caustic scene's bdpt took 23,518 spp in 1 s on the H200 with HEAD's build
+  # (.device/bidir-bs.gz), where session 43's H200 took 28,638 and session 46's H100 30,811:
+  # c1c12e7 (.device/bidir-ls.gz), f7ed307 (bidir-mi.gz) and HEAD's build in turn, `bench
+  # render` (256 spp, kernel lines) and 1 s with the passes' log (their slices).
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  unpack ls mi bs
+  for r in 1 2; do
+    for n in ls mi bs; do
+      F=$PWD/.device/bidir-$n
+      echo "== r$r $n caustic bdpt 256: $(timeout -k 5 60 "$F" bench render $CAU --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|(bdpt|lvc|trace)_[a-z0-9_]+ +[0-9.]+' | tr '\n' ' ')"
+      echo "== r$r $n caustic bdpt 1 s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" 1 $CAU --integrator bdpt)"
+    done
+  done
+  BIDIR_PASS_LOG=1 timeout -k 5 60 $PWD/.device/bidir-bs render $CAU --integrator bdpt --time 1 -o /tmp/c.exr 2>&1 | head -8
+  BIDIR_PASS_LOG=1 timeout -k 5 60 $PWD/.device/bidir-ls render $CAU --integrator bdpt --time 1 -o /tmp/c.exr 2>&1 | head -8
+  ;;
+s49c)
+  # Session 49: the path tracers' megakernels (`--wavefront off`, 2^20 invocations a launch
+  # since f7ed307) against their wavefront form where it is the default (glass, glossy and
+  # textured scenes; measured when the megakernels took 2^18), HEAD's build (.device/bidir-bs.gz),
+  # two rounds.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  unpack bs
+  F=$PWD/.device/bidir-bs
+  for r in 1 2; do
+    for sc in "caustic|$CAU|1024" "helmet|$HB|256" "sponza|$SP|64" "rough|$RC|1024"; do
+      IFS='|' read -r name args spp <<< "$sc"
+      for i in pt-nee pt; do
+        for w in on off; do
+          echo "== r$r $name $i wavefront $w: $(gpu_ms "$F" $args --integrator $i --wavefront $w --spp $spp)"
+        done
+      done
+    done
+  done
+  ;;
+s49b)
+  # Session 49: BDPT's default join in its megakernels (`--wavefront off`) now that megakernel
+  # launches take 2^20 invocations (f7ed307; bdpt:full's megakernels gained 21 %), against its
+  # wavefront passes (the default since session 27, 164.0 against 175.1 ms then), HEAD's build
+  # (.device/bidir-bs.gz); two rounds, then each at 1 s; on an H200 first s45k. Then s49a's
+  # sweep.
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+  unpack bs
+  F=$PWD/.device/bidir-bs
+  case "$g" in *H200*) HB_NAME=bs timeout -k 5 330 bash "$0" s45k ;; esac
+  k='GPU [0-9.]+ ms|bdpt_[a-z_]+ +[0-9.]+'
+  for r in 1 2; do
+    for o in "--wavefront on" "--wavefront off" "--wavefront off --sample-slices 32" "--wavefront off --sample-slices 8"; do
+      echo "== r$r cornell bdpt $o: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt $o --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== r$r hidden bdpt $o: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt $o --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms')"
+    done
+  done
+  for o in "--wavefront on" "--wavefront off"; do
+    echo "== cornell bdpt $o 1 s: $(at_time "$F" 1 $CB --integrator bdpt $o)"
+  done
+  echo "== cornell pt-nee 1 s: $(at_time "$F" 1 $CB --integrator pt-nee)"
+  SKIP45K=1 timeout -k 5 200 bash "$0" s49a
+  ;;
 s49a)
   # Prepared in session 48 for the next (.device/bidir-bs.gz, a build of edc0213 or later: `bash
   # scripts/device/make-bundle.sh bs` in a new checkout): on an H200 first s45k with it (issue
@@ -155,7 +218,7 @@ s49a)
   g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
   echo "== device: $g"
   unpack bs
-  case "$g" in *H200*) HB_NAME=bs timeout -k 5 330 bash "$0" s45k ;; esac
+  case "$g" in *H200*) [ -z "${SKIP45K:-}" ] && HB_NAME=bs timeout -k 5 330 bash "$0" s45k ;; esac
   F=$PWD/.device/bidir-bs
   for r in 1 2; do
     for n in 0 64 128 256; do
