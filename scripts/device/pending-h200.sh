@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Session 49 (an H100, then an H200; .device/bidir-ls.gz copied back from /work/device-spare beside bidir-mi.gz and bidir-bs.gz): s49b (BDPT's megakernels at 2^20 invocations against its wavefront passes, then s49a: an H100), s45k with HB_NAME=bs and s49c (the path tracers' megakernels against their wavefront form: the H200), then by hand on the H200 light paths per pixel and candidates (docs/results.md, "Issues #16 and #17 on the H200 again"). Prepared for the next and not run: s49d (the caustic scene's bdpt at 1 s, 23,518 spp on the H200 against 28,638 in session 43: c1c12e7, f7ed307 and HEAD's build in turn).
+# Session 49 (an H100, then an H200; .device/bidir-ls.gz copied back from /work/device-spare beside bidir-mi.gz and bidir-bs.gz): s49b (BDPT's megakernels at 2^20 invocations against its wavefront passes, then s49a: an H100), s45k with HB_NAME=bs and s49c (the path tracers' megakernels against their wavefront form: the H200), then by hand on the H200 light paths per pixel and candidates (docs/results.md, "Issues #16 and #17 on the H200 again"). Prepared for the next and not run: s50a (first s49d, the caustic scene's bdpt at 1 s, 23,518 spp on the H200 against 28,638 in session 43: c1c12e7, f7ed307 and HEAD's build in turn; then BDPT's candidates and light paths per pixel with more seeds on the Cornell box and where the light hides).
 # Prepared in session 48 for the next: s49a (on an H200 issue #16's ratio and #17's figures with .device/bidir-bs.gz, then the wavefront path tracer's slots on any card).
 # Session 48 (H100s only; .device/bidir-mi.gz a build of f7ed307, bidir-bs.gz of the 16 M-slot commit after it, bidir-ls.gz and bidir-fe.gz moved to /work/device-spare): s48a (BDPT's slices, and pt-nee's, on an H100), s48b (the megakernels' slices), s48c (f7ed307 against c1c12e7), s48d (BDPT's passes at 16 M slots against f7ed307); docs/results.md, "Megakernel launches of a million invocations; BDPT's passes at 16 M slots". Issue #16's ratio and #17's figures still wait for an H200: s48d runs s45k there first.
 # Session 47 (a new checkout: `bash scripts/device/make-bundle.sh ls fe=s47a-full-entries.patch` rebuilt .device/ with bidir-ls.gz, a build of c1c12e7, and bidir-fe.gz): s47b ran s47a on an H100 (docs/results.md, "Cache entries that carry the whole kept vertex": not kept); s46f (on an H200 only) still waits for an H200.
@@ -147,6 +147,32 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s50a)
+  # Prepared in session 49 for the next: first s49d (the caustic scene's bdpt on the H200), then
+  # the trade session 49 measured on the H200 in one round (docs/results.md, "Issues #16 and #17
+  # on the H200 again"), with more seeds: 4 candidates were level with 8 on the Cornell box at
+  # 4 % less time, 0.375 light paths per pixel 6 % better there and 11 % worse where the light
+  # hides. HEAD's build (.device/bidir-bs.gz): `bench render` ms, the Cornell box at 1 s (seeds
+  # 1, 2, against .device/ref.exr, every pixel and below 1), the hidden light's seed pairs 1-2
+  # and 3-4 at 1 s (RMSE between them, every pixel and below 1).
+  timeout -k 5 200 bash "$0" s49d
+  unpack bs
+  F=$PWD/.device/bidir-bs
+  for o in "" "--connection-candidates 4" "--light-paths 0.4" "--light-paths 0.4 --connection-candidates 4"; do
+    echo "== cornell bdpt [$o]: $(gpu_ms "$F" $CB --integrator bdpt $o --spp 1024)"
+    for sd in 1 2; do
+      echo "== cornell bdpt [$o] seed $sd 1 s: $(timeout -k 5 60 "$F" render $CB --integrator bdpt $o --seed $sd --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+    for p in "1 2" "3 4"; do
+      set -- $p
+      for sd in $1 $2; do
+        echo "== hidden [$o] seed $sd: $(timeout -k 5 60 "$F" render $HID --integrator bdpt $o --time 1 --seed $sd -o /tmp/h$sd.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+      done
+      echo "== hidden [$o] seeds $1-$2: $("$F" diff /tmp/h$1.exr /tmp/h$2.exr --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+    done
+  done
+  echo "== cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --spp 1024)"
+  ;;
 s49d)
   # Session 49: the caustic scene's bdpt took 23,518 spp in 1 s on the H200 with HEAD's build
   # (.device/bidir-bs.gz), where session 43's H200 took 28,638 and session 46's H100 30,811:
