@@ -172,6 +172,11 @@ s50a)
     done
   done
   echo "== cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --spp 1024)"
+  # BDPT's slots on this card in whole iterations (session 49's H200: 205 slices 98.33 ms per
+  # 1024 spp, five whole iterations, against 100.5 at the default 241, 4.25 iterations).
+  for sl in 160 192 240; do
+    echo "== cornell bdpt 1920 spp, $sl slices: $(gpu_ms "$F" $CB --integrator bdpt --sample-slices $sl --spp 1920)"
+  done
   ;;
 s49d)
   # Session 49: the caustic scene's bdpt took 23,518 spp in 1 s on the H200 with HEAD's build
