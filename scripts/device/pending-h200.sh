@@ -110,6 +110,11 @@ wf_vs_mega() {
   timeout -k 5 60 "$b" render "$@" --wavefront on --spp 16 --seed 3 -o /tmp/w.exr > /dev/null 2>&1
   "$b" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE'
 }
+# Sets g to the GPU's name and prints it as the part's first line.
+device_line() {
+  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  echo "== device: $g"
+}
 unpack() {
   for n in "$@"; do gunzip -kf ".device/bidir-$n.gz"; chmod +x ".device/bidir-$n"; done
 }
@@ -183,8 +188,7 @@ s49d)
   # (.device/bidir-bs.gz), where session 43's H200 took 28,638 and session 46's H100 30,811:
   # c1c12e7 (.device/bidir-ls.gz), f7ed307 (bidir-mi.gz) and HEAD's build in turn, `bench
   # render` (256 spp, kernel lines) and 1 s with the passes' log (their slices).
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   unpack ls mi bs
   for r in 1 2; do
     for n in ls mi bs; do
@@ -201,8 +205,7 @@ s49c)
   # since f7ed307) against their wavefront form where it is the default (glass, glossy and
   # textured scenes; measured when the megakernels took 2^18), HEAD's build (.device/bidir-bs.gz),
   # two rounds.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   unpack bs
   F=$PWD/.device/bidir-bs
   for r in 1 2; do
@@ -222,8 +225,7 @@ s49b)
   # wavefront passes (the default since session 27, 164.0 against 175.1 ms then), HEAD's build
   # (.device/bidir-bs.gz); two rounds, then each at 1 s; on an H200 first s45k. Then s49a's
   # sweep.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   unpack bs
   F=$PWD/.device/bidir-bs
   case "$g" in *H200*) HB_NAME=bs timeout -k 5 330 bash "$0" s45k ;; esac
@@ -246,8 +248,7 @@ s49a)
   # #16's ratio, #17's Sponza round, #16's table); then, on any card, the wavefront path
   # tracer's slots by sample slices (s48b's forced slices gave the caustic scene 18.03 ms at 128
   # slices, 2 M slots, against 18.4 at its default 511, 8 M): pt-nee where it runs wavefronts.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   unpack bs
   case "$g" in *H200*) [ -z "${SKIP45K:-}" ] && HB_NAME=bs timeout -k 5 330 bash "$0" s45k ;; esac
   F=$PWD/.device/bidir-bs
@@ -271,8 +272,7 @@ s48d)
   # Cornell box then takes 241 slices, the memory budget's cap) as built from the working tree
   # (.device/bidir-bs.gz) against 8 M (.device/bidir-mi.gz, f7ed307), two rounds in alternating
   # order, then equal time; on an H200 first s45k with the new build.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   unpack mi bs
   case "$g" in *H200*) HB_NAME=bs timeout -k 5 150 bash "$0" s45k ;; esac
   for order in "mi bs" "bs mi"; do
@@ -295,8 +295,7 @@ s48c)
   # against 2^18 (.device/bidir-ls.gz, c1c12e7), each at its defaults, two rounds in alternating
   # order; then equal time. On an H200 first issue #16's ratio, #17's Sponza round and #16's
   # table with the new build (s45k).
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   unpack ls mi
   case "$g" in *H200*) HB_NAME=mi timeout -k 5 330 bash "$0" s45k ;; esac
   for order in "ls mi" "mi ls"; do
@@ -333,8 +332,7 @@ s48b)
   # session 1): 46.90 ms per 1024 spp at 16 against 53.1 at 4. The megakernels' slices swept
   # (GPU ms; two rounds where marked), then equal time at the best against the default. On an
   # H200 first s46f, as s48a.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
   unpack ls
   F=$PWD/.device/bidir-ls
@@ -372,8 +370,7 @@ s48a)
   # session 22 when a slot's state was twice today's): fewer slices bring the light vertex store
   # (the Cornell box's: 33.6 M slots at its 128 slices), the listing and the film's slices
   # nearer the L2's 50 MB, at more launches of fewer paths.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
   unpack ls
   F=$PWD/.device/bidir-ls
@@ -418,8 +415,7 @@ s46b)
 s46c)
   # Session 46's first call: on an H200, s45k with a build of 76b4312 (.device/bidir-hh.gz,
   # HEAD then), then s46a; on any other card s46b and s46a.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   case "$g" in
     *H200*) HB_NAME=hh timeout -k 5 300 bash "$0" s45k; bash "$0" s46a ;;
     *) bash "$0" s46b; bash "$0" s46a ;;
@@ -429,8 +425,7 @@ s47b)
   # Session 47's first call: on an H200 first s46f (issue #16's ratio, #17's Sponza round and
   # #16's table with 6422f5a's code, .device/bidir-ls.gz), then s47a on any card. The bundle:
   # `bash scripts/device/make-bundle.sh ls fe=s47a-full-entries.patch`.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   case "$g" in *H200*) HB_NAME=ls timeout -k 5 330 bash "$0" s45k ;; esac
   bash "$0" s47a
   ;;
@@ -458,8 +453,7 @@ s47a)
 s46f)
   # Session 46's last device time (about 260 s): only on an H200, issue #16's ratio with
   # 6422f5a (.device/bidir-ls.gz), then #17's Sponza round; on any other card nothing.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   case "$g" in *H200*) HB_NAME=ls bash "$0" s45k ;; esac
   ;;
 s46e)
@@ -467,8 +461,7 @@ s46e)
   # entries as committed (.device/bidir-ls.gz) against 76b4312 (.device/bidir-hh.gz). On an
   # H200 first s45k with it (issue #16's ratio, #17's Sponza round; as far as 140 s take it),
   # then one round of the comparison; on any other card the round and the Cornell box at 1 s.
-  g=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
-  echo "== device: $g"
+  device_line
   unpack hh ls
   HB="$PWD/.device/scenes/gltf/DamagedHelmet/DamagedHelmet.glb --width 384 --height 384 --env 0.6,0.6,0.6 --sun 0.4,1,0.7;2.5,2.5,2.5;2"
   k='GPU [0-9.]+ ms|lvc_compact +[0-9.]+'
