@@ -179,7 +179,7 @@ fn paired(
     let mut s = RenderSettings::new(Integrator::Bdpt(Join::DEFAULT));
     settings(&mut s);
     // VCM's light paths per pixel and connection candidates where `settings` does not say (BDPT
-    // takes half a light path and 8 candidates by default in diffuse scenes): the pairing
+    // takes 0.4 light paths and 8 candidates by default in diffuse scenes): the pairing
     // needs both integrators to draw the same paths.
     s.light_path_ratio.get_or_insert(1.0);
     s.connection_candidates.get_or_insert(1);

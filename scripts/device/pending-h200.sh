@@ -152,6 +152,63 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s50c)
+  # Session 50: the new default (0.4 light paths per pixel in scenes with only diffuse
+  # surfaces, 8 candidates; .device/bidir-nd.gz) against session 49's HEAD (.device/bidir-bs.gz,
+  # 0.5), and the new build with 4 candidates, two rounds in alternating order: issue #16's
+  # ratio by `bench render` and by the 1 s counts, the Cornell box's RMSE at 1 s (seeds 1, 2),
+  # the hidden light's seed pair at 1 s; then the rest of #16's table with the new build, and
+  # on an H200 #17's Sponza figures.
+  device_line
+  unpack nd bs
+  confs=("bs|" "nd|" "nd|--connection-candidates 4")
+  for r in 1 2; do
+    for i in 0 1 2; do
+      [ $r = 2 ] && i=$((2 - i))
+      IFS='|' read -r n o <<< "${confs[$i]}"
+      F=$PWD/.device/bidir-$n
+      echo "== r$r $n [$o] cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$F" $CB --integrator bdpt $o --spp 1024) hidden bdpt: $(gpu_ms "$F" $HID --integrator bdpt $o --spp 1024)"
+    done
+  done
+  for c in "${confs[@]}"; do
+    IFS='|' read -r n o <<< "$c"
+    F=$PWD/.device/bidir-$n
+    for i in pt-nee bdpt; do
+      [ $i = pt-nee ] && [ -n "$o" ] && continue
+      for sd in 1 2; do
+        echo "== $n [$o] cornell $i seed $sd 1 s: $(timeout -k 5 60 "$F" render $CB --integrator $i $o --seed $sd --time 1 -o /tmp/q.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s') $("$F" diff /tmp/q.exr "$REF" --below 1 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+      done
+    done
+    for sd in 1 2; do
+      echo "== $n [$o] hidden bdpt seed $sd: $(timeout -k 5 60 "$F" render $HID --integrator bdpt $o --time 1 --seed $sd -o /tmp/h$sd.exr 2>&1 | grep -oE '[0-9]+ spp in [0-9.]+ s')"
+    done
+    echo "== $n [$o] hidden bdpt seeds 1-2: $("$F" diff /tmp/h1.exr /tmp/h2.exr --below 1 2>&1 | grep -E '^(RMSE|relMSE)' | tr '\n' ' ')"
+  done
+  F=$PWD/.device/bidir-nd
+  for i in pt-nee bdpt; do
+    echo "== nd cornell $i 0.1 s: $(at_time "$F" 0.1 $CB --integrator $i)"
+    echo "== nd caustic $i 1 s: $(REFERENCE=assets/scenes/caustic/reference.exr at_time "$F" 1 $CAU --integrator $i)"
+  done
+  echo "== nd cornell pt 1024 spp: $(gpu_ms "$F" $CB --integrator pt --spp 1024)"
+  echo "== nd cornell bdpt:full 1024 spp: $(gpu_ms "$F" $CB --integrator bdpt:full --spp 1024)"
+  case "$g" in *H200*) sponza_rounds 1 "$F" ;; esac
+  ;;
+s50b)
+  # Session 50: what each light-paths / candidates trade costs a BDPT sample on this card
+  # (HEAD's build, .device/bidir-bs.gz), `bench render` ms per 1024 spp, two rounds, the
+  # Cornell box and the hidden light's box; their variance per sample was measured on lavapipe
+  # (64², 2048 spp, 16 slices, three seed pairs), so these times give the equal-time MSE.
+  device_line
+  unpack bs
+  F=$PWD/.device/bidir-bs
+  for r in 1 2; do
+    echo "== r$r cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --spp 1024)"
+    for cfg in "0.5 8" "0.4 8" "0.5 4" "0.4 4" "0.375 8" "0.375 4"; do
+      set -- $cfg
+      echo "== r$r lp $1 cand $2 cornell: $(gpu_ms "$F" $CB --integrator bdpt --light-paths $1 --connection-candidates $2 --spp 1024) hidden: $(gpu_ms "$F" $HID --integrator bdpt --light-paths $1 --connection-candidates $2 --spp 1024)"
+    done
+  done
+  ;;
 s50a)
   # Prepared in session 49 for the next: first s49d (the caustic scene's bdpt on the H200), then
   # the trade session 49 measured on the H200 in one round (docs/results.md, "Issues #16 and #17

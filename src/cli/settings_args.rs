@@ -66,9 +66,9 @@ pub struct SettingsArgs {
     pub light_path_len: u32,
     /// BDPT with the light vertex cache: light paths per iteration as a multiple of the pixel
     /// count (more help caustics and light tracing, fewer save time where light paths
-    /// rarely matter). The other joins pair one light path with each pixel. Default: 0.5 for
+    /// rarely matter). The other joins pair one light path with each pixel. Default: 0.4 for
     /// bdpt in scenes with only diffuse surfaces (with its 8 connection candidates), 1
-    /// otherwise (docs/results.md, "Candidates shared within the subgroup")
+    /// otherwise (docs/results.md, "0.4 light paths per pixel")
     #[arg(long, value_name = "RATIO")]
     pub light_paths: Option<f32>,
     /// Samples of a pixel rendered at once, each by its own GPU thread (0: enough to fill

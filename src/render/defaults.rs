@@ -224,27 +224,27 @@ pub fn default_lvc_listing_per_slot(on_cpu: bool, connection_candidates: u32) ->
 }
 
 /// Light paths per pixel for BDPT's default join (the light vertex cache, one connection) where
-/// `--light-paths` does not say: half a light path per pixel in scenes with only diffuse
-/// surfaces, where its connections take [`default_connection_candidates`]' eight candidates;
-/// one otherwise, and for every other integrator and join. With the connections resampled,
-/// fewer light paths lose less than their time buys: NVIDIA H200, the Cornell box 256² at 1 s
-/// against the sharper reference, RMSE 0.000358-0.000364 with one light path per pixel and
-/// uniform connections, 0.000337-0.000344 with 8 candidates, 0.000308-0.000310 with 8
-/// candidates and half a light path per pixel (pt-nee: 0.000306); at 0.1 s 0.00142, 0.00125-0.00142
-/// and 0.00123-0.00124; an H100 1.74-1.77x, 1.45x and 1.11-1.14x pt-nee's MSE at 1 s (0.75 light
-/// paths: 1.30x). Where light paths carry more, the box whose light hides above a panel, half a
-/// light path costs 10 % in MSE over the whole image against the uniform draw with one (H100;
-/// 22 % less off the bright region around the light), 18 % against 8 candidates with one
-/// (docs/results.md, "Candidates shared within the subgroup").
+/// `--light-paths` does not say: 0.4 in scenes with only diffuse surfaces, where its
+/// connections are resampled from [`default_connection_candidates`]' eight candidates; one
+/// otherwise, and for every other integrator and join. With the connections resampled, fewer
+/// light paths lose less than their time buys (docs/results.md, "Candidates shared within the
+/// subgroup": on the H200 the Cornell box's RMSE at 1 s went from 0.000358-0.000364 with one
+/// light path and the uniform draw to 0.000308-0.000310 with half a light path and 8
+/// candidates). 0.4 rather than session 38's 0.5 since session 50 (docs/results.md, "0.4 light
+/// paths per pixel"): an NVIDIA H100's BDPT sample took 101.4 against 110.0 ms per 1024 spp
+/// (pt-nee 46.9), and at equal time (lavapipe's variance per sample, three seed pairs, times
+/// the H100's ms) the Cornell box's MSE fell 5-7 % and the box whose light hides above a panel's
+/// 4 % away from its bright region (2 % of the pixels, within 2 of one above 1), where light
+/// paths carry most and it rose 11 %; its relative MSE over the whole image fell 1 %.
 pub fn default_light_path_ratio(integrator: Integrator, features: &SceneFeatures) -> f32 {
     if resampled_diffuse_bdpt(integrator, features) {
-        0.5
+        0.4
     } else {
         1.0
     }
 }
 
-/// Where BDPT takes its resampled connections and half a light path per pixel by default:
+/// Where BDPT takes its resampled connections and fewer light paths than pixels by default:
 /// its default join in scenes with only diffuse surfaces. One predicate for both defaults,
 /// which were measured together and only pay together.
 fn resampled_diffuse_bdpt(integrator: Integrator, features: &SceneFeatures) -> bool {
@@ -409,7 +409,7 @@ mod default_tests {
         assert_eq!(default_mis(Integrator::Vcm(vcm::VcmMode::FULL), &diffuse), Mis::Power);
     }
 
-    /// Eight shared candidates and half a light path per pixel for BDPT's default join where
+    /// Eight shared candidates and 0.4 light paths per pixel for BDPT's default join where
     /// every surface is diffuse; the uniform draw and one light path per pixel in glossy or
     /// specular scenes, for the other joins (the megakernel joins need one light path per
     /// pixel) and for VCM.
@@ -419,7 +419,7 @@ mod default_tests {
         let glossy = SceneFeatures { glossy: true, ..diffuse };
         let glass = SceneFeatures { glass: true, ..diffuse };
         let bdpt = Integrator::Bdpt(Join::DEFAULT);
-        assert_eq!((default_connection_candidates(bdpt, &diffuse), default_light_path_ratio(bdpt, &diffuse)), (8, 0.5));
+        assert_eq!((default_connection_candidates(bdpt, &diffuse), default_light_path_ratio(bdpt, &diffuse)), (8, 0.4));
         for features in [&glossy, &glass] {
             assert_eq!((default_connection_candidates(bdpt, features), default_light_path_ratio(bdpt, features)), (1, 1.0));
         }
@@ -427,7 +427,7 @@ mod default_tests {
             assert_eq!((default_connection_candidates(other, &diffuse), default_light_path_ratio(other, &diffuse)), (1, 1.0));
         }
         let mut settings = RenderSettings::new(bdpt);
-        assert_eq!((settings.connection_candidates_for(&diffuse), settings.light_path_ratio_for(&diffuse)), (8, 0.5));
+        assert_eq!((settings.connection_candidates_for(&diffuse), settings.light_path_ratio_for(&diffuse)), (8, 0.4));
         (settings.connection_candidates, settings.light_path_ratio) = (Some(2), Some(3.0));
         assert_eq!((settings.connection_candidates_for(&diffuse), settings.light_path_ratio_for(&diffuse)), (2, 3.0));
         // The joins without the cache ignore candidates set by hand.
