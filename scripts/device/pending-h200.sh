@@ -152,6 +152,22 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s50d)
+  # Session 50, short of device time: s50c's first round only (the ratio by `bench render`,
+  # .device/bidir-bs.gz's 0.5 light paths against .device/bidir-nd.gz's 0.4), then the 1 s
+  # counts of the new build.
+  device_line
+  unpack nd bs
+  for c in "bs|" "nd|" "nd|--connection-candidates 4"; do
+    IFS='|' read -r n o <<< "$c"
+    F=$PWD/.device/bidir-$n
+    echo "== $n [$o] cornell pt-nee: $(gpu_ms "$F" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$F" $CB --integrator bdpt $o --spp 1024) hidden bdpt: $(gpu_ms "$F" $HID --integrator bdpt $o --spp 1024)"
+  done
+  F=$PWD/.device/bidir-nd
+  for i in pt-nee bdpt; do
+    echo "== nd cornell $i 1 s: $(at_time "$F" 1 $CB --integrator $i)"
+  done
+  ;;
 s50c)
   # Session 50: the new default (0.4 light paths per pixel in scenes with only diffuse
   # surfaces, 8 candidates; .device/bidir-nd.gz) against session 49's HEAD (.device/bidir-bs.gz,
