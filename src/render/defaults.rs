@@ -232,10 +232,10 @@ pub fn default_lvc_listing_per_slot(on_cpu: bool, connection_candidates: u32) ->
 /// light path and the uniform draw to 0.000308-0.000310 with half a light path and 8
 /// candidates). 0.4 rather than session 38's 0.5 since session 50 (docs/results.md, "0.4 light
 /// paths per pixel"): an NVIDIA H100's BDPT sample took 101.4 against 110.0 ms per 1024 spp
-/// (pt-nee 46.9), and at equal time (lavapipe's variance per sample, three seed pairs, times
-/// the H100's ms) the Cornell box's MSE fell 5-7 % and the box whose light hides above a panel's
-/// 4 % away from its bright region (2 % of the pixels, within 2 of one above 1, where light
-/// paths carry most); over its whole image, which that region dominates, it rose 11 %, and its
+/// (pt-nee 46.9). At equal time (lavapipe's variance per sample, three seed pairs, times the
+/// H100's ms) the Cornell box's MSE fell 5-7 %. On the box whose light hides above a panel it
+/// fell 4 % away from the bright region the light shines on (2 % of the pixels, where light
+/// paths carry most) and rose 11 % over the whole image, which that region dominates; its
 /// relative MSE fell 1 %.
 pub fn default_light_path_ratio(integrator: Integrator, features: &SceneFeatures) -> f32 {
     if resampled_diffuse_bdpt(integrator, features) {
