@@ -153,6 +153,69 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s51b)
+  # Session 51: BDPT's wavefront launches reading the hit, the trace words and the
+  # contributions at once (.device/bidir-er.gz), and with the connection's candidates asked
+  # for early too (.device/bidir-pf.gz), against 0e1ada9 (.device/bidir-nd.gz): two rounds in
+  # alternating order, GPU ms and the path kernels' lines; the wavefront path tracer's pt-nee
+  # (the caustic scene, DamagedHelmet) with er's early reads; each build's image against nd's.
+  device_line
+  unpack nd er pf
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for r in 1 2; do
+    order="nd er pf"; [ $r = 2 ] && order="pf er nd"
+    for n in $order; do
+      F=$PWD/.device/bidir-$n
+      echo "== r$r $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+    done
+  done
+  for r in 1 2; do
+    order="nd er"; [ $r = 2 ] && order="er nd"
+    for n in $order; do
+      F=$PWD/.device/bidir-$n
+      echo "== r$r $n pt-nee caustic 1024 spp: $(gpu_ms "$F" $CAU --integrator pt-nee --spp 1024) helmet 256 spp: $(gpu_ms "$F" $HB --integrator pt-nee --spp 256)"
+    done
+  done
+  for n in nd er pf; do
+    timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt --spp 64 --seed 3 -o /tmp/i-$n.exr > /dev/null 2>&1
+  done
+  for n in nd er; do
+    timeout -k 5 60 .device/bidir-$n render $CAU --integrator pt-nee --spp 64 --seed 3 -o /tmp/c-$n.exr > /dev/null 2>&1
+  done
+  echo "== caustic pt-nee images er/nd: $(.device/bidir-nd diff /tmp/c-er.exr /tmp/c-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+  echo "== images er/nd: $(.device/bidir-nd diff /tmp/i-er.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ') pf/nd: $(.device/bidir-nd diff /tmp/i-pf.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+  for n in nd er pf; do
+    echo "== $n registers: $(timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1|pt-nee) ' | grep -oE '/ [a-z_0-9]+|Register Count [0-9]+' | tr '\n' ' ')"
+  done
+  F=$PWD/.device/bidir-er
+  echo "== er cornell bdpt 1 s: $(at_time "$F" 1 $CB --integrator bdpt)"
+  # The light-vertex store's cap computed with its 64-byte vertices: 241 slices, not 213.
+  echo "== er cornell bdpt 241 slices 1 s: $(at_time "$F" 1 $CB --integrator bdpt --sample-slices 241) 1024 spp: $(gpu_ms "$F" $CB --integrator bdpt --sample-slices 241 --spp 1024)"
+  ;;
+s51)
+  # Session 51's start, whatever card comes: on an H200 first s50c (issue #16's ratio with the
+  # 0.4 default, #17's Sponza round), then s51b; on another card s51b alone.
+  device_line
+  case "$g" in *H200*) timeout -k 5 330 bash "$0" s50c ;; esac
+  timeout -k 5 200 bash "$0" s51b
+  ;;
+s51a)
+  # Session 51: where a BDPT sample's time goes now (0.4 light paths, 8 candidates;
+  # .device/bidir-nd.gz): `bench render`'s kernel tables for bdpt and pt-nee on the Cornell box,
+  # bdpt at 256 slices (4 whole iterations of 1024 spp), and the driver's kernel statistics.
+  device_line
+  unpack nd
+  F=$PWD/.device/bidir-nd
+  for o in "--integrator bdpt" "--integrator pt-nee" "--integrator bdpt --sample-slices 256" "--integrator bdpt --sample-slices 205"; do
+    echo "== cornell $o"; timeout -k 5 60 "$F" bench render $CB $o --spp 1024 --warmup 1 --runs 3 2>&1 | tail -n 30
+  done
+  echo "== hidden bdpt"; timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | tail -n 30
+  echo "== pass log: $(BIDIR_PASS_LOG=1 timeout -k 5 60 "$F" render $CB --integrator bdpt --spp 1024 -o /tmp/p.exr 2>&1 | grep -m1 'slices')"
+  for sl in "" "--sample-slices 256" "--sample-slices 320"; do
+    echo "== cornell bdpt 1920 spp [$sl]: $(gpu_ms "$F" $CB --integrator bdpt $sl --spp 1920)"
+  done
+  timeout -k 5 120 "$F" info $CB --kernels 2>&1 | head -n 120
+  ;;
 s50d)
   # Session 50, short of device time: s50c's first round only (the ratio by `bench render`,
   # .device/bidir-bs.gz's 0.5 light paths against .device/bidir-nd.gz's 0.4), then the 1 s

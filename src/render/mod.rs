@@ -168,7 +168,10 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
     };
     if settings.integrator.stores_light_vertices() {
         let per_sample = (pixels as f64 * settings.light_path_ratio_for(&scene.estimator_features).max(0.0) as f64).max(1.0) as u64;
-        let store = per_sample * settings.light_path_len.max(1) as u64 * std::mem::size_of::<crate::gpu::abi::LightVertex>() as u64;
+        // The store's vertices as `Bdpt::new` sizes them: 64 bytes in scenes without glossy
+        // surfaces or media where nothing merges, else a whole LightVertex (96).
+        let merges = matches!(settings.integrator, Integrator::Vcm(m) if m.merge);
+        let vertex_bytes = bdpt::light_vertex_words(&scene.features, merges) as u64 * 16;
         // BDPT's wavefront passes want millions of slots, so their iterations may take more
         // light paths: the store may grow to the shadow queue's budget (a sixteenth of the
         // device's memory, within one buffer's range). NVIDIA H200, textured Sponza 640 x 360
@@ -178,9 +181,16 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
         // "BDPT's light pass as a wavefront").
         let budget = if wave { SLICED_STORE_BYTES.max(shadow_queue::budget(ctx)) } else { SLICED_STORE_BYTES };
         let limit = budget.min(ctx.info().max_storage_buffer_range as u64);
-        s = s.min((limit / store.max(1)).max(1));
+        s = s.min(store_slices(per_sample, settings.light_path_len, vertex_bytes, limit));
     }
     s as u32
+}
+
+/// Sample slices whose light paths' store (`per_sample` light paths a slice, `light_path_len`
+/// vertices of `vertex_bytes` each) fits in `limit` bytes; at least 1.
+fn store_slices(per_sample: u64, light_path_len: u32, vertex_bytes: u64, limit: u64) -> u64 {
+    let store = per_sample * light_path_len.max(1) as u64 * vertex_bytes;
+    (limit / store.max(1)).max(1)
 }
 
 /// A megakernel's sample slices for `pixels` pixels: about TARGET_INVOCATIONS invocations a
@@ -221,6 +231,19 @@ mod slice_tests {
         assert_eq!(megakernel_slices(256 * 256, 1 << 30), 6);
         // A 4 GiB GPU's 256 MiB: session 1's 2^18.
         assert_eq!(megakernel_slices(256 * 256, 1 << 28), 4);
+    }
+
+    /// The light-vertex store caps the slices by the vertices it holds: the Cornell box 256² at
+    /// 0.4 light paths per pixel within a 4 GiB buffer takes 320 slices of 64-byte vertices
+    /// (diffuse scenes), 213 of whole 96-byte ones (which capped diffuse scenes too before
+    /// session 51).
+    #[test]
+    fn the_store_caps_the_slices_by_its_vertex_size() {
+        let limit = u32::MAX as u64;
+        let per_sample = (256.0 * 256.0 * 0.4f64) as u64;
+        assert_eq!(store_slices(per_sample, 8, 64, limit), 320);
+        assert_eq!(store_slices(per_sample, 8, 96, limit), 213);
+        assert_eq!(store_slices(per_sample, 8, 64, 1), 1, "at least one");
     }
 
     /// Small images get the slots a large one gets (down to 91 x 91; 4 million at 64 x 64),
