@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Session 51 (one H100 start of eight tries, no H200; .device/bidir-nd.gz still 0e1ada9's build): s51a (the kernel table at 0.4 light paths, 213 slices against 256 and 320, the driver's register counts; docs/results.md, "Where a BDPT sample's time goes at 0.4 light paths"). Prepared for the next: s51 (on an H200 s50d and #17's Sponza round, then s51b; elsewhere s51b) and s51b (scripts/device/s51b-early-reads.patch: builds as its comment says).
 # Session 50 (one H100 start of ten tries; .device/bidir-nd.gz a build of 0e1ada9, 0.4 light paths per pixel, beside bidir-bs.gz; bidir-ls.gz and bidir-mi.gz moved to /work/device-spare): s50b (what the light-paths / candidates trades cost a BDPT sample), s50a (s49d's caustic question: the three builds level; the trades at 1 s with seeds); docs/results.md, "0.4 light paths per pixel". Prepared for the next: s50c (0e1ada9's default against bd6fa14's on the card it gets, issue #16's table, on an H200 #17's Sponza round; needs .device/bidir-nd.gz: `gzip -c` of a release build of 0e1ada9 or later) and s50d (its first round only, for short device time).
 # Session 49 (an H100, then an H200; .device/bidir-ls.gz copied back from /work/device-spare beside bidir-mi.gz and bidir-bs.gz): s49b (BDPT's megakernels at 2^20 invocations against its wavefront passes, then s49a: an H100), s45k with HB_NAME=bs and s49c (the path tracers' megakernels against their wavefront form: the H200), then by hand on the H200 light paths per pixel and candidates (docs/results.md, "Issues #16 and #17 on the H200 again"). Prepared for the next and not run: s50a (first s49d, the caustic scene's bdpt at 1 s, 23,518 spp on the H200 against 28,638 in session 43: c1c12e7, f7ed307 and HEAD's build in turn; then BDPT's candidates and light paths per pixel with more seeds on the Cornell box and where the light hides).
 # Prepared in session 48 for the next: s49a (on an H200 issue #16's ratio and #17's figures with .device/bidir-bs.gz, then the wavefront path tracer's slots on any card).
@@ -154,11 +155,14 @@ shader_cache() {
 }
 case "${1:-speed}" in
 s51b)
-  # Session 51: BDPT's wavefront launches reading the hit, the trace words and the
-  # contributions at once (.device/bidir-er.gz), and with the connection's candidates asked
-  # for early too (.device/bidir-pf.gz), against 0e1ada9 (.device/bidir-nd.gz): two rounds in
-  # alternating order, GPU ms and the path kernels' lines; the wavefront path tracer's pt-nee
-  # (the caustic scene, DamagedHelmet) with er's early reads; each build's image against nd's.
+  # Session 51 (prepared; no start ran it): BDPT's wavefront launches reading the hit, the
+  # trace words and the contributions at once, and the wavefront path tracer's likewise
+  # (.device/bidir-er.gz: a release build with `git apply scripts/device/s51b-early-reads.patch`),
+  # and with the connection's candidates asked for early too (.device/bidir-pf.gz: the same with
+  # WF_LVC_PREFETCH = true in glsl/common/wf_ray.glsl), against a build of the same commit without
+  # the patch (.device/bidir-nd.gz): two rounds in alternating order, GPU ms and the path
+  # kernels' lines; pt-nee over the wavefront path tracer (the caustic scene, DamagedHelmet);
+  # each build's image against nd's (the patch moves reads, not terms: RMSE 0).
   device_line
   unpack nd er pf
   k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
@@ -189,14 +193,14 @@ s51b)
   done
   F=$PWD/.device/bidir-er
   echo "== er cornell bdpt 1 s: $(at_time "$F" 1 $CB --integrator bdpt)"
-  # The light-vertex store's cap computed with its 64-byte vertices: 241 slices, not 213.
+  # 241 slices by hand (HEAD's default since c2075a7; a build of 0e1ada9 as nd took 213).
   echo "== er cornell bdpt 241 slices 1 s: $(at_time "$F" 1 $CB --integrator bdpt --sample-slices 241) 1024 spp: $(gpu_ms "$F" $CB --integrator bdpt --sample-slices 241 --spp 1024)"
   ;;
 s51)
-  # Session 51's start, whatever card comes: on an H200 first s50c (issue #16's ratio with the
-  # 0.4 default, #17's Sponza round), then s51b; on another card s51b alone.
+  # Session 51's start, whatever card comes: on an H200 first s50d (issue #16's ratio with the
+  # 0.4 default) and #17's Sponza round, then s51b; on another card s51b alone.
   device_line
-  case "$g" in *H200*) timeout -k 5 330 bash "$0" s50c ;; esac
+  case "$g" in *H200*) timeout -k 5 100 bash "$0" s50d; unpack nd; timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-nd" ;; esac
   timeout -k 5 200 bash "$0" s51b
   ;;
 s51a)
