@@ -54,7 +54,7 @@ impl std::str::FromStr for Join {
 }
 
 /// Light paths per camera sample for a film of `pixels` pixels (`--light-paths RATIO`).
-fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
+pub(super) fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
     ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32
 }
 

@@ -167,7 +167,9 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
         megakernel_slices(pixels, shadow_queue::budget(ctx))
     };
     if settings.integrator.stores_light_vertices() {
-        let per_sample = (pixels as f64 * settings.light_path_ratio_for(&scene.estimator_features).max(0.0) as f64).max(1.0) as u64;
+        // The light paths a slice takes, as `Bdpt::new` counts them (rounded), so that the store
+        // it allocates for these slices fits in the limit below.
+        let per_sample = bdpt::light_paths_per_sample(pixels, settings.light_path_ratio_for(&scene.estimator_features).max(0.0)) as u64;
         // The store's vertices as `Bdpt::new` sizes them: 64 bytes in scenes without glossy
         // surfaces or media where nothing merges, else a whole LightVertex (96).
         let merges = matches!(settings.integrator, Integrator::Vcm(m) if m.merge);
@@ -244,6 +246,14 @@ mod slice_tests {
         assert_eq!(store_slices(per_sample, 8, 64, limit), 320);
         assert_eq!(store_slices(per_sample, 8, 96, limit), 213);
         assert_eq!(store_slices(per_sample, 8, 64, 1), 1, "at least one");
+        // Counted as `Bdpt::new` counts a slice's light paths (rounded: 101² x 0.5 is 5,101),
+        // the slices' store fits; counted truncated (5,100) it would not.
+        let paths = bdpt::light_paths_per_sample(101 * 101, 0.5) as u64;
+        assert_eq!(paths, 5101);
+        let limit = 5100 * 8 * 64 * 3 + 1000;
+        let fit = store_slices(paths, 8, 64, limit);
+        assert!(fit * paths * 8 * 64 <= limit, "{fit} slices of {paths} paths overflow {limit} bytes");
+        assert!(store_slices(5100, 8, 64, limit) * paths * 8 * 64 > limit, "truncated, the count overflows");
     }
 
     /// Small images get the slots a large one gets (down to 91 x 91; 4 million at 64 x 64),
