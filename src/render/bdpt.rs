@@ -54,8 +54,22 @@ impl std::str::FromStr for Join {
 }
 
 /// Light paths per camera sample for a film of `pixels` pixels (`--light-paths RATIO`).
-pub(super) fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
+fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
     ((pixels as f64 * ratio as f64).round() as u64).clamp(1, u32::MAX as u64 / 2) as u32
+}
+
+/// Bytes of the light-vertex store per camera sample of a film of `pixels` pixels: its light
+/// paths times `light_path_len` vertices of `light_vertex_words` words. The one count behind
+/// the store `Bdpt::new` allocates and the sample slices `render::sample_slices` fits to a
+/// buffer's range (which counted 96-byte vertices and truncated paths until session 51).
+pub(super) fn store_bytes_per_sample(
+    pixels: u32,
+    ratio: f32,
+    light_path_len: u32,
+    features: &crate::gpu_data::SceneFeatures,
+    merges: bool,
+) -> u64 {
+    light_paths_per_sample(pixels, ratio) as u64 * light_path_len.max(1) as u64 * light_vertex_words(features, merges) as u64 * 16
 }
 
 /// Invocations of a light pass of `paths` light paths (whole workgroups).
@@ -194,9 +208,10 @@ impl Bdpt {
             )));
         }
         let light_path_len = light_path_len.max(1);
-        let words = light_vertex_words(&scene.features, vcm.is_some_and(|v| v.mode.merge));
+        let merges = vcm.is_some_and(|v| v.mode.merge);
+        let words = light_vertex_words(&scene.features, merges);
         let vertex_size = words as u64 * 16;
-        let bytes = paths as u64 * light_path_len as u64 * vertex_size;
+        let bytes = store_bytes_per_sample(pixels, ratio, light_path_len, &scene.features, merges) * camera_samples as u64;
         if bytes > info.max_storage_buffer_range as u64 {
             return Err(RenderError::Memory(format!(
                 "BDPT light vertices need {:.1} MiB ({paths} paths x {light_path_len} vertices x {} bytes), over the device's {} MiB storage-buffer limit: lower --light-path-len, --light-paths, --sample-slices or the resolution",

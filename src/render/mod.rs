@@ -167,13 +167,10 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
         megakernel_slices(pixels, shadow_queue::budget(ctx))
     };
     if settings.integrator.stores_light_vertices() {
-        // The light paths a slice takes, as `Bdpt::new` counts them (rounded), so that the store
-        // it allocates for these slices fits in the limit below.
-        let per_sample = bdpt::light_paths_per_sample(pixels, settings.light_path_ratio_for(&scene.estimator_features).max(0.0)) as u64;
-        // The store's vertices as `Bdpt::new` sizes them: 64 bytes in scenes without glossy
-        // surfaces or media where nothing merges, else a whole LightVertex (96).
+        // A slice's store as `Bdpt::new` allocates it, so that the slices' store fits the limit.
         let merges = matches!(settings.integrator, Integrator::Vcm(m) if m.merge);
-        let vertex_bytes = bdpt::light_vertex_words(&scene.features, merges) as u64 * 16;
+        let ratio = settings.light_path_ratio_for(&scene.estimator_features);
+        let per_sample = bdpt::store_bytes_per_sample(pixels, ratio, settings.light_path_len, &scene.features, merges);
         // BDPT's wavefront passes want millions of slots, so their iterations may take more
         // light paths: the store may grow to the shadow queue's budget (a sixteenth of the
         // device's memory, within one buffer's range). NVIDIA H200, textured Sponza 640 x 360
@@ -183,16 +180,15 @@ fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &GpuScene, pix
         // "BDPT's light pass as a wavefront").
         let budget = if wave { SLICED_STORE_BYTES.max(shadow_queue::budget(ctx)) } else { SLICED_STORE_BYTES };
         let limit = budget.min(ctx.info().max_storage_buffer_range as u64);
-        s = s.min(store_slices(per_sample, settings.light_path_len, vertex_bytes, limit));
+        s = s.min(store_slices(per_sample, limit));
     }
     s as u32
 }
 
-/// Sample slices whose light paths' store (`per_sample` light paths a slice, `light_path_len`
-/// vertices of `vertex_bytes` each) fits in `limit` bytes; at least 1.
-fn store_slices(per_sample: u64, light_path_len: u32, vertex_bytes: u64, limit: u64) -> u64 {
-    let store = per_sample * light_path_len.max(1) as u64 * vertex_bytes;
-    (limit / store.max(1)).max(1)
+/// Sample slices whose light-vertex store (`per_sample` bytes a slice) fits in `limit` bytes;
+/// at least 1.
+fn store_slices(per_sample: u64, limit: u64) -> u64 {
+    (limit / per_sample.max(1)).max(1)
 }
 
 /// A megakernel's sample slices for `pixels` pixels: about TARGET_INVOCATIONS invocations a
@@ -237,23 +233,26 @@ mod slice_tests {
 
     /// The light-vertex store caps the slices by the vertices it holds: the Cornell box 256² at
     /// 0.4 light paths per pixel within a 4 GiB buffer takes 320 slices of 64-byte vertices
-    /// (diffuse scenes), 213 of whole 96-byte ones (which capped diffuse scenes too before
-    /// session 51).
+    /// (diffuse scenes), 213 of whole 96-byte ones (glossy scenes, VCM's merging; diffuse scenes
+    /// too before session 51); the slices' store fits the limit with the light paths counted
+    /// as `Bdpt::new` counts them (rounded: 101² x 0.5 is 5,101; truncated, 5,100 overflowed).
     #[test]
     fn the_store_caps_the_slices_by_its_vertex_size() {
         let limit = u32::MAX as u64;
-        let per_sample = (256.0 * 256.0 * 0.4f64) as u64;
-        assert_eq!(store_slices(per_sample, 8, 64, limit), 320);
-        assert_eq!(store_slices(per_sample, 8, 96, limit), 213);
-        assert_eq!(store_slices(per_sample, 8, 64, 1), 1, "at least one");
-        // Counted as `Bdpt::new` counts a slice's light paths (rounded: 101² x 0.5 is 5,101),
-        // the slices' store fits; counted truncated (5,100) it would not.
-        let paths = bdpt::light_paths_per_sample(101 * 101, 0.5) as u64;
-        assert_eq!(paths, 5101);
+        let diffuse = SceneFeatures::default();
+        let glossy = SceneFeatures { glossy: true, ..diffuse };
+        let cornell = |features: &SceneFeatures, merges| bdpt::store_bytes_per_sample(256 * 256, 0.4, 8, features, merges);
+        assert_eq!(cornell(&diffuse, false), 26_214 * 8 * 64);
+        assert_eq!(store_slices(cornell(&diffuse, false), limit), 320);
+        assert_eq!(store_slices(cornell(&glossy, false), limit), 213);
+        assert_eq!(store_slices(cornell(&diffuse, true), limit), 213);
+        assert_eq!(store_slices(cornell(&diffuse, false), 1), 1, "at least one");
+        let per_sample = bdpt::store_bytes_per_sample(101 * 101, 0.5, 8, &diffuse, false);
+        assert_eq!(per_sample, 5101 * 8 * 64);
         let limit = 5100 * 8 * 64 * 3 + 1000;
-        let fit = store_slices(paths, 8, 64, limit);
-        assert!(fit * paths * 8 * 64 <= limit, "{fit} slices of {paths} paths overflow {limit} bytes");
-        assert!(store_slices(5100, 8, 64, limit) * paths * 8 * 64 > limit, "truncated, the count overflows");
+        let fit = store_slices(per_sample, limit);
+        assert!(fit * per_sample <= limit, "{fit} slices of {per_sample} bytes overflow {limit} bytes");
+        assert!(store_slices(5100 * 8 * 64, limit) * per_sample > limit, "truncated, the count overflows");
     }
 
     /// Small images get the slots a large one gets (down to 91 x 91; 4 million at 64 x 64),
