@@ -60,7 +60,7 @@ fn light_paths_per_sample(pixels: u32, ratio: f32) -> u32 {
 
 /// Bytes of the light-vertex store per camera sample of a film of `pixels` pixels: its light
 /// paths times `light_path_len` vertices of `light_vertex_words` words. The one count behind
-/// the store `Bdpt::new` allocates and the sample slices `render::sample_slices` fits to a
+/// the store `Bdpt::new` allocates and the sample slices `render::slices::sample_slices` fits to a
 /// buffer's range (which counted 96-byte vertices and truncated paths until session 51).
 pub(super) fn store_bytes_per_sample(
     pixels: u32,

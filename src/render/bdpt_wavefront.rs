@@ -24,7 +24,7 @@ use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::BdptWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Recorder, Result, Spec};
 
-/// Slots BDPT's passes aim at (within the memory budget of `render::sample_slices`, which the
+/// Slots BDPT's passes aim at (within the memory budget of `render::slices::sample_slices`, which the
 /// light-vertex store also caps): twice the path tracer's `pt_wavefront::TARGET_SLOTS`. An
 /// NVIDIA H100 (session 48, `bench render --spp 1920`, GPU ms; docs/results.md, "Megakernel
 /// launches of a million invocations; BDPT's passes at 16 M slots"): the Cornell box 256²

@@ -149,7 +149,7 @@ pub(super) fn resolve_shadow_queue(
 /// megakernels led, 174.9 against 185.4), the box whose light hides above a panel 182.0-182.5
 /// against 187.7; with more connections the megakernels stay (lvc=3: 230.3 against 224.2 and
 /// 243.0 against 227.0; lvc=2 on the hidden light 215.9 against 208.3). Small images
-/// need their slots from more sample slices (`MAX_WAVEFRONT_SLICES`): with them the caustic
+/// need their slots from more sample slices (`slices::MAX_WAVEFRONT_SLICES`): with them the caustic
 /// scene at 64² takes 12.7 against 16.5 ms per 1024 spp, DamagedHelmet 19.2 against 47.5
 /// (session 22, "Slots for small images").
 pub fn default_wavefront(on_cpu: bool, integrator: Integrator, features: &SceneFeatures) -> bool {
