@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Session 52 (no start of about eight tries, H200 or H100, gave a machine): s52 prepared (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory).
 # Session 51 (one H100 start of eight tries, no H200; .device/bidir-nd.gz still 0e1ada9's build): s51a (the kernel table at 0.4 light paths, 213 slices against 256 and 320, the driver's register counts; docs/results.md, "Where a BDPT sample's time goes at 0.4 light paths"). Prepared for the next: s51q (short: on an H200 #16's ratio with c2075a7's 241 slices, .device/bidir-sf.gz, a build of c2075a7 or later, beside nd), s51 (on an H200 s50d and #17's Sponza round, then s51b; elsewhere s51b) and s51b (scripts/device/s51b-early-reads.patch: builds as its comment says).
 # Session 50 (one H100 start of ten tries; .device/bidir-nd.gz a build of 0e1ada9, 0.4 light paths per pixel, beside bidir-bs.gz; bidir-ls.gz and bidir-mi.gz moved to /work/device-spare): s50b (what the light-paths / candidates trades cost a BDPT sample), s50a (s49d's caustic question: the three builds level; the trades at 1 s with seeds); docs/results.md, "0.4 light paths per pixel". Prepared for the next: s50c (0e1ada9's default against bd6fa14's on the card it gets, issue #16's table, on an H200 #17's Sponza round; needs .device/bidir-nd.gz: `gzip -c` of a release build of 0e1ada9 or later) and s50d (its first round only, for short device time).
 # Session 49 (an H100, then an H200; .device/bidir-ls.gz copied back from /work/device-spare beside bidir-mi.gz and bidir-bs.gz): s49b (BDPT's megakernels at 2^20 invocations against its wavefront passes, then s49a: an H100), s45k with HB_NAME=bs and s49c (the path tracers' megakernels against their wavefront form: the H200), then by hand on the H200 light paths per pixel and candidates (docs/results.md, "Issues #16 and #17 on the H200 again"). Prepared for the next and not run: s50a (first s49d, the caustic scene's bdpt at 1 s, 23,518 spp on the H200 against 28,638 in session 43: c1c12e7, f7ed307 and HEAD's build in turn; then BDPT's candidates and light paths per pixel with more seeds on the Cornell box and where the light hides).
@@ -154,6 +155,20 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s52)
+  # Session 52's start, whatever card comes: on an H200 s51q (issue #16's ratio with HEAD's
+  # slices, .device/bidir-sf.gz) and #17's Sponza round with sf; then s51b; on another card
+  # then sf's pt-nee and s51q's BDPT of sf (241 slices) against nd (213).
+  device_line
+  case "$g" in *H200*) timeout -k 5 90 bash "$0" s51q; unpack sf; timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-sf" ;; esac
+  timeout -k 5 240 bash "$0" s51b
+  case "$g" in
+    *H200*) ;;
+    *) unpack sf; echo "== sf cornell pt-nee: $(gpu_ms .device/bidir-sf $CB --integrator pt-nee --spp 1024)"; timeout -k 5 90 bash "$0" s51q ;;
+  esac
+  # The camera kernel's and pt-nee's whole statistics (local memory: the shadow rays' arrays).
+  timeout -k 5 60 .device/bidir-sf info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_camera_wavefront|pt-nee / pt_queue)'
+  ;;
 s51q)
   # Session 51's last seconds of device time: on an H200 issue #16's ratio with 0.4 light paths
   # (.device/bidir-sf.gz, c2075a7: 241 slices; then .device/bidir-nd.gz, 0e1ada9: 213), else the
