@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Session 52 (no start of about eight tries, H200 or H100, gave a machine): s52 prepared (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory).
+# Session 52 (no machine: seven starts failed between 01:47 and 03:09, the last call was refused with 419 s of device time left): prepared s52 (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory), and the same cut for short device time: s52s (about 250 s) and s52t (about 120 s).
 # Session 51 (one H100 start of eight tries, no H200; .device/bidir-nd.gz still 0e1ada9's build): s51a (the kernel table at 0.4 light paths, 213 slices against 256 and 320, the driver's register counts; docs/results.md, "Where a BDPT sample's time goes at 0.4 light paths"). Prepared for the next: s51q (short: on an H200 #16's ratio with c2075a7's 241 slices, .device/bidir-sf.gz, a build of c2075a7 or later, beside nd), s51 (on an H200 s50d and #17's Sponza round, then s51b; elsewhere s51b) and s51b (scripts/device/s51b-early-reads.patch: builds as its comment says).
 # Session 50 (one H100 start of ten tries; .device/bidir-nd.gz a build of 0e1ada9, 0.4 light paths per pixel, beside bidir-bs.gz; bidir-ls.gz and bidir-mi.gz moved to /work/device-spare): s50b (what the light-paths / candidates trades cost a BDPT sample), s50a (s49d's caustic question: the three builds level; the trades at 1 s with seeds); docs/results.md, "0.4 light paths per pixel". Prepared for the next: s50c (0e1ada9's default against bd6fa14's on the card it gets, issue #16's table, on an H200 #17's Sponza round; needs .device/bidir-nd.gz: `gzip -c` of a release build of 0e1ada9 or later) and s50d (its first round only, for short device time).
 # Session 49 (an H100, then an H200; .device/bidir-ls.gz copied back from /work/device-spare beside bidir-mi.gz and bidir-bs.gz): s49b (BDPT's megakernels at 2^20 invocations against its wavefront passes, then s49a: an H100), s45k with HB_NAME=bs and s49c (the path tracers' megakernels against their wavefront form: the H200), then by hand on the H200 light paths per pixel and candidates (docs/results.md, "Issues #16 and #17 on the H200 again"). Prepared for the next and not run: s50a (first s49d, the caustic scene's bdpt at 1 s, 23,518 spp on the H200 against 28,638 in session 43: c1c12e7, f7ed307 and HEAD's build in turn; then BDPT's candidates and light paths per pixel with more seeds on the Cornell box and where the light hides).
@@ -155,6 +155,41 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s52t)
+  # s52 cut for about 120 s of device time: on an H200 s51q; elsewhere the early reads' one
+  # round on the Cornell box (nd, er, pf) and sf's pt-nee against its BDPT.
+  device_line
+  case "$g" in
+    *H200*) timeout -k 5 100 bash "$0" s51q ;;
+    *) unpack nd er pf sf
+      for n in nd er pf; do
+        echo "== $n cornell bdpt: $(timeout -k 5 40 .device/bidir-$n bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+' | tr '\n' ' ')"
+      done
+      echo "== sf cornell pt-nee: $(gpu_ms .device/bidir-sf $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms .device/bidir-sf $CB --integrator bdpt --spp 1024)" ;;
+  esac
+  ;;
+s52s)
+  # s52 cut for about 250 s of device time: on an H200 s51q and #17's Sponza round first; then
+  # s51b's first round (BDPT's GPU ms with nd, er and pf), its images, pt-nee's round once, and
+  # the camera kernel's whole statistics.
+  device_line
+  case "$g" in *H200*) timeout -k 5 90 bash "$0" s51q; unpack sf; timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-sf" ;; esac
+  unpack nd er pf sf
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for n in nd er pf; do
+    F=$PWD/.device/bidir-$n
+    echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+  done
+  for n in nd er pf; do
+    timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt --spp 64 --seed 3 -o /tmp/i-$n.exr > /dev/null 2>&1
+  done
+  echo "== images er/nd: $(.device/bidir-nd diff /tmp/i-er.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ') pf/nd: $(.device/bidir-nd diff /tmp/i-pf.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+  for n in nd er; do
+    echo "== $n pt-nee cornell: $(gpu_ms .device/bidir-$n $CB --integrator pt-nee --spp 1024) caustic: $(gpu_ms .device/bidir-$n $CAU --integrator pt-nee --spp 1024)"
+  done
+  echo "== sf cornell pt-nee: $(gpu_ms .device/bidir-sf $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms .device/bidir-sf $CB --integrator bdpt --spp 1024)"
+  timeout -k 5 60 .device/bidir-sf info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_camera_wavefront|pt-nee / pt_queue)'
+  ;;
 s52)
   # Session 52's start, whatever card comes: on an H200 s51q (issue #16's ratio with HEAD's
   # slices, .device/bidir-sf.gz) and #17's Sponza round with sf; then s51b; on another card
