@@ -121,6 +121,12 @@ device_line() {
 unpack() {
   for n in "$@"; do gunzip -kf ".device/bidir-$n.gz"; chmod +x ".device/bidir-$n"; done
 }
+# Session 52's parts: on an H200 (device_line's $g) first issue #16's ratio with HEAD's slices
+# (s51q, .device/bidir-sf.gz) and #17's Sponza round with the same build; elsewhere nothing.
+# $1: this script.
+h200_first() {
+  case "$g" in *H200*) timeout -k 5 90 bash "$1" s51q; unpack sf; timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-sf" ;; esac
+}
 # One round of BDPT's cost with the binary $1: `bench render` GPU ms and the camera kernel's
 # share on the Cornell box and the hidden light's box (1024 spp), with `sponza` as $2 also
 # Sponza's geometry under sun and sky with 8 candidates (64 spp), and with `time` as $2 or $3
@@ -173,7 +179,7 @@ s52s)
   # s51b's first round (BDPT's GPU ms with nd, er and pf), its images, pt-nee's round once, and
   # the camera kernel's whole statistics.
   device_line
-  case "$g" in *H200*) timeout -k 5 90 bash "$0" s51q; unpack sf; timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-sf" ;; esac
+  h200_first "$0"
   unpack nd er pf sf
   k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
   for n in nd er pf; do
@@ -193,9 +199,10 @@ s52s)
 s52)
   # Session 52's start, whatever card comes: on an H200 s51q (issue #16's ratio with HEAD's
   # slices, .device/bidir-sf.gz) and #17's Sponza round with sf; then s51b; on another card
-  # then sf's pt-nee and s51q's BDPT of sf (241 slices) against nd (213).
+  # then sf's pt-nee and s51q's BDPT of sf (241 slices) against nd (213); on every card last
+  # the camera kernel's and pt-nee's whole driver statistics.
   device_line
-  case "$g" in *H200*) timeout -k 5 90 bash "$0" s51q; unpack sf; timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-sf" ;; esac
+  h200_first "$0"
   timeout -k 5 240 bash "$0" s51b
   case "$g" in
     *H200*) ;;
