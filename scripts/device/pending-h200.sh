@@ -168,18 +168,21 @@ s53)
   # array indexed at run time is left in bdpt_camera_wavefront's SPIR-V; .device/bidir-ci.gz)
   # against .device/bidir-sf.gz (c2075a7, which behaves like HEAD): two rounds in alternating
   # order, GPU ms and the camera kernel's ms on the Cornell box (bdpt and bdpt:lvc=3, whose
-  # four rays fill the arrays), where the light hides and Sponza; the images (RMSE 0 on
+  # four rays fill the arrays), where the light hides and Sponza, beside .device/bidir-ci2.gz (the
+  # same with BDPT_WF_SHADOW_RAYS = 2: the default join's two rays only, so fewer registers; its
+  # lvc=3 is not the wavefront's and is left out); the images (RMSE 0 on
   # lavapipe); both builds' whole statistics of the camera kernel (Local Memory Size); the
   # Cornell box at 1 s against .device/ref.exr; then pt-nee for the ratio and s51b.
   device_line
   h200_first "$0"
-  unpack sf ci
+  unpack sf ci ci2
   k='GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+'
   for r in 1 2; do
-    order="sf ci"; [ $r = 2 ] && order="ci sf"
+    order="sf ci ci2"; [ $r = 2 ] && order="ci2 ci sf"
     for n in $order; do
       F=$PWD/.device/bidir-$n
-      echo "== r$r $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') lvc=3: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt:lvc=3 --spp 512 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      l3=""; [ $n != ci2 ] && l3="lvc=3: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt:lvc=3 --spp 512 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== r$r $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') $l3"
       echo "== r$r $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
     done
   done
@@ -188,7 +191,7 @@ s53)
     timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt:lvc=3 --spp 64 --seed 3 -o /tmp/j-$n.exr > /dev/null 2>&1
   done
   echo "== images ci/sf: $(.device/bidir-sf diff /tmp/i-ci.exr /tmp/i-sf.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ') lvc=3: $(.device/bidir-sf diff /tmp/j-ci.exr /tmp/j-sf.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
-  for n in sf ci; do
+  for n in sf ci ci2; do
     echo "== $n statistics:"; timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_camera_(wavefront|finish)|pt-nee / pt_queue)'
   done
   for n in ci sf; do
