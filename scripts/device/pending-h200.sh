@@ -274,10 +274,12 @@ s51b)
   # kernels' lines; pt-nee over the wavefront path tracer (the caustic scene, DamagedHelmet);
   # each build's image against nd's (the patch moves reads, not terms: RMSE 0).
   device_line
-  unpack nd er pf
+  # pf only where it was carried (it stays in /work/device-spare while the carry is full).
+  abc="nd er"; [ -f .device/bidir-pf.gz ] && abc="nd er pf"
+  unpack $abc
   k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
   for r in 1 2; do
-    order="nd er pf"; [ $r = 2 ] && order="pf er nd"
+    order="$abc"; [ $r = 2 ] && order=$(echo $abc | tr ' ' '\n' | tac | tr '\n' ' ')
     for n in $order; do
       F=$PWD/.device/bidir-$n
       echo "== r$r $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
@@ -290,7 +292,7 @@ s51b)
       echo "== r$r $n pt-nee caustic 1024 spp: $(gpu_ms "$F" $CAU --integrator pt-nee --spp 1024) helmet 256 spp: $(gpu_ms "$F" $HB --integrator pt-nee --spp 256)"
     done
   done
-  for n in nd er pf; do
+  for n in $abc; do
     timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt --spp 64 --seed 3 -o /tmp/i-$n.exr > /dev/null 2>&1
   done
   for n in nd er; do
@@ -298,7 +300,7 @@ s51b)
   done
   echo "== caustic pt-nee images er/nd: $(.device/bidir-nd diff /tmp/c-er.exr /tmp/c-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
   echo "== images er/nd: $(.device/bidir-nd diff /tmp/i-er.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ') pf/nd: $(.device/bidir-nd diff /tmp/i-pf.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
-  for n in nd er pf; do
+  for n in $abc; do
     echo "== $n registers: $(timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1|pt-nee) ' | grep -oE '/ [a-z_0-9]+|Register Count [0-9]+' | tr '\n' ' ')"
   done
   F=$PWD/.device/bidir-er
