@@ -163,10 +163,13 @@ shader_cache() {
 case "${1:-speed}" in
 s53)
   # Session 53's start, whatever card comes: on an H200 first s51q and #17's Sponza round
-  # (h200_first); then the camera kernel's pending shadow rays written and read at constant
-  # indices (scripts/device/s53-const-index.patch: the loops unrolled, so that no Function
-  # array indexed at run time is left in bdpt_camera_wavefront's SPIR-V; .device/bidir-ci.gz)
-  # against .device/bidir-sf.gz (c2075a7, which behaves like HEAD): two rounds in alternating
+  # (h200_first); then .device/bidir-cs.gz, two changes to two kernels: the camera kernel's
+  # pending shadow rays written and read at constant indices (scripts/device/s53-const-index.patch:
+  # the loops unrolled, so that no Function array indexed at run time is left in
+  # bdpt_camera_wavefront's SPIR-V), and the BDPT light kernels optimised by spirv-opt (shaderc's
+  # SPIRV-Tools 2023.1 skips its passes on modules that declare SPV_EXT_shader_atomic_float_add,
+  # so they reach the driver as glslang wrote them: scripts/device/s53-spirv-opt.patch, a
+  # measurement hack that hides the extension from spirv-opt -O), against .device/bidir-sf.gz (c2075a7, which behaves like HEAD): two rounds in alternating
   # order, GPU ms and the camera kernel's ms on the Cornell box (bdpt and bdpt:lvc=3, whose
   # four rays fill the arrays), where the light hides and Sponza, beside .device/bidir-ci2.gz (the
   # same with BDPT_WF_SHADOW_RAYS = 2: the default join's two rays only, so fewer registers; its
@@ -175,10 +178,10 @@ s53)
   # Cornell box at 1 s against .device/ref.exr; then pt-nee for the ratio and s51b.
   device_line
   h200_first "$0"
-  unpack sf ci ci2
-  k='GPU [0-9.]+ ms|bdpt_camera_wavefront +[0-9.]+'
+  unpack sf cs ci2
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
   for r in 1 2; do
-    order="sf ci ci2"; [ $r = 2 ] && order="ci2 ci sf"
+    order="sf cs ci2"; [ $r = 2 ] && order="ci2 cs sf"
     for n in $order; do
       F=$PWD/.device/bidir-$n
       l3=""; [ $n != ci2 ] && l3="lvc=3: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt:lvc=3 --spp 512 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
@@ -186,15 +189,15 @@ s53)
       echo "== r$r $n hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
     done
   done
-  for n in sf ci; do
+  for n in sf cs; do
     timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt --spp 64 --seed 3 -o /tmp/i-$n.exr > /dev/null 2>&1
     timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt:lvc=3 --spp 64 --seed 3 -o /tmp/j-$n.exr > /dev/null 2>&1
   done
-  echo "== images ci/sf: $(.device/bidir-sf diff /tmp/i-ci.exr /tmp/i-sf.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ') lvc=3: $(.device/bidir-sf diff /tmp/j-ci.exr /tmp/j-sf.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
-  for n in sf ci ci2; do
-    echo "== $n statistics:"; timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_camera_(wavefront|finish)|pt-nee / pt_queue)'
+  echo "== images cs/sf: $(.device/bidir-sf diff /tmp/i-cs.exr /tmp/i-sf.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ') lvc=3: $(.device/bidir-sf diff /tmp/j-cs.exr /tmp/j-sf.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
+  for n in sf cs ci2; do
+    echo "== $n statistics:"; timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_(camera|light)_(wavefront|finish)|pt-nee / pt_queue)'
   done
-  for n in ci sf; do
+  for n in cs sf; do
     echo "== $n cornell bdpt 1 s: $(at_time .device/bidir-$n 1 $CB --integrator bdpt)"
   done
   echo "== sf cornell pt-nee: $(gpu_ms .device/bidir-sf $CB --integrator pt-nee --spp 1024) 1 s: $(at_time .device/bidir-sf 1 $CB --integrator pt-nee)"
