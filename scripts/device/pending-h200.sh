@@ -161,6 +161,21 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s53s)
+  # s53 cut for about 250 s of device time: on an H200 s51q first; then one round of sf, cs and
+  # ci2 on the Cornell box and Sponza, and their kernels' statistics.
+  device_line
+  case "$g" in *H200*) timeout -k 5 90 bash "$0" s51q ;; esac
+  unpack sf cs ci2
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  for n in sf cs ci2; do
+    F=$PWD/.device/bidir-$n
+    echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+  done
+  for n in sf cs ci2; do
+    echo "== $n statistics:"; timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_(camera|light)_(wavefront|finish)|pt-nee / pt_queue)'
+  done
+  ;;
 s53)
   # Session 53's start, whatever card comes: on an H200 first s51q and #17's Sponza round
   # (h200_first); then .device/bidir-cs.gz, two changes to two kernels: the camera kernel's
