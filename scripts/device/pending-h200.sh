@@ -161,6 +161,28 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s53b)
+  # Session 53's second start: .device/bidir-new.gz (HEAD with the BDPT kernels' early reads,
+  # s51b's er without its pt part) against .device/bidir-sf.gz (c2075a7: HEAD's behaviour) and
+  # .device/bidir-nd.gz (0e1ada9). On an H200 first issue #16's ratio with new (pt-nee and bdpt,
+  # 1024 spp and 1 s) and #17's Sponza round; then two rounds of BDPT on the Cornell box and
+  # where the light hides, the order alternating; last the ratio at 1 s on any card.
+  device_line
+  unpack new sf nd
+  N=$PWD/.device/bidir-new
+  case "$g" in
+    *H200*) echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$N" $CB --integrator bdpt --spp 1024)"
+      echo "== new 1 s pt-nee: $(at_time "$N" 1 $CB --integrator pt-nee) bdpt: $(at_time "$N" 1 $CB --integrator bdpt)"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $N" ;;
+  esac
+  for r in 1 2; do
+    order="nd new sf"; [ $r = 2 ] && order="sf new nd"
+    for n in $order; do
+      echo "== r$r $n cornell bdpt: $(gpu_ms .device/bidir-$n $CB --integrator bdpt --spp 1024) hidden: $(gpu_ms .device/bidir-$n $HID --integrator bdpt --spp 1024)"
+    done
+  done
+  echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) 1 s pt-nee: $(at_time "$N" 1 $CB --integrator pt-nee) bdpt: $(at_time "$N" 1 $CB --integrator bdpt)"
+  ;;
 s53s)
   # s53 cut for about 250 s of device time: on an H200 s51q first; then one round of sf, cs and
   # ci2 on the Cornell box and Sponza, and their kernels' statistics.
