@@ -162,13 +162,17 @@ shader_cache() {
 }
 case "${1:-speed}" in
 s53b)
-  # Session 53's second start: .device/bidir-new.gz (HEAD with the BDPT kernels' early reads,
-  # s51b's er without its pt part) against .device/bidir-sf.gz (c2075a7: HEAD's behaviour) and
+  # Session 53's second start: .device/bidir-new.gz (095bca5: the BDPT kernels' early reads,
+  # s51b's er without its pt part, and the light kernels through spirv-opt) and
+  # .device/bidir-ns.gz (the same without spirv-opt: in s53 the light kernel of cs, which had
+  # it, took about 6 % longer than sf's though the driver reported the same registers and
+  # binary size) against .device/bidir-sf.gz (c2075a7: HEAD's behaviour before) and
   # .device/bidir-nd.gz (0e1ada9). On an H200 first issue #16's ratio with new (pt-nee and bdpt,
   # 1024 spp and 1 s) and #17's Sponza round; then two rounds of BDPT on the Cornell box and
   # where the light hides, the order alternating; last the ratio at 1 s on any card.
   device_line
-  unpack new sf nd
+  unpack new ns sf nd
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
   N=$PWD/.device/bidir-new
   case "$g" in
     *H200*) echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$N" $CB --integrator bdpt --spp 1024)"
@@ -176,10 +180,14 @@ s53b)
       timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $N" ;;
   esac
   for r in 1 2; do
-    order="nd new sf"; [ $r = 2 ] && order="sf new nd"
+    order="nd new ns sf"; [ $r = 2 ] && order="sf ns new nd"
     for n in $order; do
-      echo "== r$r $n cornell bdpt: $(gpu_ms .device/bidir-$n $CB --integrator bdpt --spp 1024) hidden: $(gpu_ms .device/bidir-$n $HID --integrator bdpt --spp 1024)"
+      F=$PWD/.device/bidir-$n
+      echo "== r$r $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
     done
+  done
+  for n in new ns; do
+    echo "== $n: $(timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^bdpt:lvc=1 / bdpt_light_wavefront')"
   done
   echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) 1 s pt-nee: $(at_time "$N" 1 $CB --integrator pt-nee) bdpt: $(at_time "$N" 1 $CB --integrator bdpt)"
   ;;
