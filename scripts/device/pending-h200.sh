@@ -161,6 +161,27 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
+s53c)
+  # s53b cut for about 150 s: on an H200 first issue #16's ratio with new; then new, ns and sf
+  # on the Cornell box (bdpt, the kernels' shares), two rounds, and new's and ns's light kernel
+  # statistics.
+  device_line
+  unpack new ns sf
+  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
+  N=$PWD/.device/bidir-new
+  case "$g" in
+    *H200*) echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$N" $CB --integrator bdpt --spp 1024) 1 s bdpt: $(at_time "$N" 1 $CB --integrator bdpt)" ;;
+  esac
+  for r in 1 2; do
+    order="new ns sf"; [ $r = 2 ] && order="sf ns new"
+    for n in $order; do
+      echo "== r$r $n cornell: $(timeout -k 5 60 .device/bidir-$n bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+    done
+  done
+  for n in new ns; do
+    echo "== $n: $(timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^bdpt:lvc=1 / bdpt_light_wavefront')"
+  done
+  ;;
 s53b)
   # Session 53's second start: .device/bidir-new.gz (095bca5: the BDPT kernels' early reads,
   # s51b's er without its pt part, and the light kernels through spirv-opt) and
