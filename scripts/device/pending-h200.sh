@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Session 53 (one H100 start of eight; no H200): s53 (the camera kernel's shadow rays at constant indices, cs and ci2: not kept; s51b's early reads: kept in 095bca5; cs's light kernel 5-7 % slower with the spirv-opt step, which was reverted in 6cd16b4; docs/results.md, "The camera kernel's pending shadow rays; early reads; the light kernels' SPIR-V"). Prepared: s53b (on an H200 issue #16's ratio and #17's Sponza round with .device/bidir-new.gz, then new against ns, sf and nd) and its cut s53c: new (095bca5 with the spirv-opt step) against ns (095bca5 without it: HEAD's kernels since 6cd16b4). bidir-cs.gz, bidir-ci2.gz, bidir-pf.gz and bidir-bs.gz are in /work/device-spare.
 # Session 52 (no machine: eight starts failed between 01:47 and 03:09, the last call was refused with 419 s of device time left): prepared s52 (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory), and the same cut for short device time: s52s (about 250 s) and s52t (about 120 s).
 # Session 51 (one H100 start of eight tries, no H200; .device/bidir-nd.gz still 0e1ada9's build): s51a (the kernel table at 0.4 light paths, 213 slices against 256 and 320, the driver's register counts; docs/results.md, "Where a BDPT sample's time goes at 0.4 light paths"). Prepared for the next: s51q (short: on an H200 #16's ratio with c2075a7's 241 slices, .device/bidir-sf.gz, a build of c2075a7 or later, beside nd), s51 (on an H200 s50d and #17's Sponza round, then s51b; elsewhere s51b) and s51b (scripts/device/s51b-early-reads.patch: builds as its comment says).
 # Session 50 (one H100 start of ten tries; .device/bidir-nd.gz a build of 0e1ada9, 0.4 light paths per pixel, beside bidir-bs.gz; bidir-ls.gz and bidir-mi.gz moved to /work/device-spare): s50b (what the light-paths / candidates trades cost a BDPT sample), s50a (s49d's caustic question: the three builds level; the trades at 1 s with seeds); docs/results.md, "0.4 light paths per pixel". Prepared for the next: s50c (0e1ada9's default against bd6fa14's on the card it gets, issue #16's table, on an H200 #17's Sponza round; needs .device/bidir-nd.gz: `gzip -c` of a release build of 0e1ada9 or later) and s50d (its first round only, for short device time).
@@ -185,7 +186,7 @@ s53c)
 s53b)
   # Session 53's second start: .device/bidir-new.gz (095bca5: the BDPT kernels' early reads,
   # s51b's er without its pt part, and the light kernels through spirv-opt) and
-  # .device/bidir-ns.gz (the same without spirv-opt: in s53 the light kernel of cs, which had
+  # .device/bidir-ns.gz (the same without spirv-opt, HEAD's kernels since 6cd16b4: in s53 the light kernel of cs, which had
   # it, took about 6 % longer than sf's though the driver reported the same registers and
   # binary size) against .device/bidir-sf.gz (c2075a7: HEAD's behaviour before) and
   # .device/bidir-nd.gz (0e1ada9). On an H200 first issue #16's ratio with new (pt-nee and bdpt,
