@@ -16,6 +16,9 @@ mod abi;
 #[path = "src/gpu/sobol.rs"]
 mod sobol;
 
+#[path = "src/gpu/spirv_post.rs"]
+mod spirv_post;
+
 /// Kernels compiled without optimisation so their SPIR-V keeps member names for reflection
 /// (the ABI layout test).
 const UNOPTIMISED: &[&str] = &["abi_layout"];
@@ -223,15 +226,15 @@ fn compile_cached(
 }
 
 /// Bumped when what a cached module depends on changes outside its key (the compiler's
-/// options in `options`).
-const CACHE_FORMAT: u32 = 1;
+/// options in `options`; 2: the `reoptimise` step).
+const CACHE_FORMAT: u32 = 2;
 
 /// Which shaderc compiles: the library `SHADERC_LIB_DIR` points at (scripts/setup.sh merges
 /// Debian's archives there), by size and time of change, so a new one misses the cache; else
-/// the crate's own build of it.
+/// the crate's own build of it; and which spirv-opt `reoptimise` finds.
 fn compiler_identity() -> String {
     println!("cargo:rerun-if-env-changed=SHADERC_LIB_DIR");
-    match env::var_os("SHADERC_LIB_DIR") {
+    let shaderc = match env::var_os("SHADERC_LIB_DIR") {
         Some(dir) => {
             let lib = Path::new(&dir).join("libshaderc_combined.a");
             let meta = fs::metadata(&lib).ok();
@@ -239,7 +242,13 @@ fn compiler_identity() -> String {
             format!("{}:{:?}:{:?}", lib.display(), meta.map(|m| m.len()), changed)
         }
         None => "shaderc built from source".into(),
-    }
+    };
+    // `reoptimise`'s spirv-opt, by place, size and time of change (or its absence).
+    let opt = env::var_os("PATH")
+        .and_then(|p| env::split_paths(&p).map(|d| d.join("spirv-opt")).find(|f| f.is_file()))
+        .and_then(|f| fs::metadata(&f).ok().map(|m| (f, m)))
+        .map(|(f, m)| format!("{}:{}:{:?}", f.display(), m.len(), m.modified().ok()));
+    format!("{shaderc}|spirv-opt {opt:?}")
 }
 
 /// A 128-bit hex key of `parts` (two SipHash passes under different prefixes).
@@ -308,6 +317,16 @@ fn compile(compiler: &shaderc::Compiler, root: &Path, gen_dir: &Path, job: &Job)
                     println!("cargo:warning={line}");
                 }
             }
+            let words = art.as_binary();
+            if job.optimise && spirv_post::needs_reoptimising(words) {
+                match reoptimise(words, &job.stem) {
+                    Ok(w) => return Some(w.iter().flat_map(|x| x.to_le_bytes()).collect()),
+                    Err(e) => println!(
+                        "cargo:warning={rel}: not optimised ({e}); its kernel `{}` goes to the driver as glslang wrote it",
+                        job.stem
+                    ),
+                }
+            }
             Some(art.as_binary_u8().to_vec())
         }
         Err(e) => {
@@ -315,6 +334,40 @@ fn compile(compiler: &shaderc::Compiler, root: &Path, gen_dir: &Path, job: &Job)
             None
         }
     }
+}
+
+/// `spirv-opt -O` over a module that shaderc's SPIRV-Tools left unoptimised because it
+/// declares the float atomics' extension (src/gpu/spirv_post.rs says why): the extension
+/// hidden while it runs, then checked with `spirv-val` where that is installed. Both come with
+/// the SPIRV-Tools package that scripts/setup.sh links (Debian's `spirv-tools`). Err says why
+/// it could not be done.
+fn reoptimise(words: &[u32], stem: &str) -> Result<Vec<u32>, String> {
+    use std::process::Command;
+    let dir = PathBuf::from(env::var("OUT_DIR").unwrap()).join("spirv-opt");
+    fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let (input, output) = (dir.join(format!("{stem}.in.spv")), dir.join(format!("{stem}.spv")));
+    let as_bytes = |w: &[u32]| w.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    let (hidden, caps) = spirv_post::hide_extension(words);
+    fs::write(&input, as_bytes(&hidden)).map_err(|e| format!("{}: {e}", input.display()))?;
+    let run = |cmd: &mut Command, what: &str| match cmd.output() {
+        Ok(o) if o.status.success() => Ok(()),
+        Ok(o) => Err(format!("{what} failed: {}", String::from_utf8_lossy(&o.stderr).trim())),
+        Err(e) => Err(format!("{what} did not run: {e}")),
+    };
+    // --skip-validation: without the extension the float atomics do not validate.
+    run(
+        Command::new("spirv-opt").args(["-O", "--skip-validation", "--target-env=vulkan1.2"]).arg(&input).arg("-o").arg(&output),
+        "spirv-opt",
+    )?;
+    let bytes = fs::read(&output).map_err(|e| format!("{}: {e}", output.display()))?;
+    let optimised: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
+    let restored = spirv_post::restore_extension(&optimised, &caps);
+    fs::write(&output, as_bytes(&restored)).map_err(|e| format!("{}: {e}", output.display()))?;
+    if Command::new("spirv-val").arg("--version").output().is_ok() {
+        run(Command::new("spirv-val").args(["--target-env", "vulkan1.2"]).arg(&output), "spirv-val")?;
+    }
+    let _ = fs::remove_file(&input);
+    Ok(restored)
 }
 
 /// Writes `spirv` as `<stem>.spv` and returns its `KernelSource` constant.

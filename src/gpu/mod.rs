@@ -3,5 +3,8 @@
 pub mod abi;
 pub mod kernels;
 pub mod sobol;
+// build.rs's step for SPIR-V that shaderc's optimiser skipped; here only for its tests.
+#[cfg(test)]
+mod spirv_post;
 
 pub use abi::{FieldLayout, GpuStruct};
