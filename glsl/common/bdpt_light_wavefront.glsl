@@ -177,19 +177,9 @@ void run_slot() {
     uvec2 halves = wf_contrib_halves(launch, uint(wf_contrib.length()));
     uint read_half = halves.x;
     uint write_half = halves.y;
-    // The segment's hit, the join's trace word and its contribution are asked for together,
-    // before any is used: one round trip of dependent reads instead of two or three (the kernel
-    // is bound by them; 0.5-0.9 % of BDPT's time on an H100, session 53).
-    GpuHit gh = GpuHit(0.0, NO_HIT, 0.0, 0.0);
-    if (status == PT_SUSPENDED) {
-        gh = wf_hits[queued.x];
-    }
-    if (queued.z > 0u) {
-        uint word = wf_shadow_hits[queued.y];
+    if (queued.z > 0u && wf_shadow_hits[queued.y] == NO_HIT) {
         uvec4 join = wf_contrib[read_half + queued.y];
-        if (word == NO_HIT) {
-            splat_join(uintBitsToFloat(join.rgb), join.w);
-        }
+        splat_join(uintBitsToFloat(join.rgb), join.w);
     }
 
     // The light subpath: one step at what its segment found (the megakernel's loop body,
@@ -214,6 +204,7 @@ void run_slot() {
     uvec2 stats = uvec2(0u);
     bool alive = false;
     if (status == PT_SUSPENDED) {
+        GpuHit gh = wf_hits[queued.x];
         TraceHit h = TraceHit(gh.t, gh.tri, vec2(gh.u, gh.v));
 #ifdef BDPT_WF_FINISH
         for (;;) {
