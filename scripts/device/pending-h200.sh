@@ -7,8 +7,8 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Session 53 (one H100 start of eight; no H200): s53 (the camera kernel's shadow rays at constant indices, cs and ci2: not kept; s51b's early reads: kept in 095bca5; cs's light kernel 5-7 % slower with the spirv-opt step, which was reverted in 6cd16b4; docs/results.md, "The camera kernel's pending shadow rays; early reads; the light kernels' SPIR-V"). Prepared: s53b (on an H200 issue #16's ratio and #17's Sponza round with .device/bidir-new.gz, then new against ns, sf and nd) and its cut s53c: new (095bca5 with the spirv-opt step) against ns (095bca5 without it: HEAD's kernels since 6cd16b4). bidir-cs.gz, bidir-ci2.gz, bidir-pf.gz and bidir-bs.gz are in /work/device-spare.
-# Session 52 (no machine: eight starts failed between 01:47 and 03:09, the last call was refused with 419 s of device time left): prepared s52 (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory), and the same cut for short device time: s52s (about 250 s) and s52t (about 120 s).
+# Session 53 (one H100 start of eight; no H200): s53 (the camera kernel's shadow rays at constant indices, builds cs and ci2: not kept; s51b's early reads: kept for the camera kernel, 8aeb81a; the light kernels through spirv-opt as fast as without, fe42f3d; docs/results.md, "The camera kernel's pending shadow rays; early reads; the light kernels' SPIR-V"). Prepared: s53b (on an H200 issue #16's ratio and #17's Sponza round with .device/bidir-hd.gz, a build of 8aeb81a; then hd against sf and nd on any card) and its cut s53c. s52's cuts s52s and s52t (never run) and s53s were dropped; bidir-er, -pf, -cs, -ci2, -new, -ns and -bs are in /work/device-spare.
+# Session 52 (no machine: eight starts failed between 01:47 and 03:09, the last call was refused with 419 s of device time left): prepared s52 (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory); its cuts s52s and s52t were dropped in session 53.
 # Session 51 (one H100 start of eight tries, no H200; .device/bidir-nd.gz still 0e1ada9's build): s51a (the kernel table at 0.4 light paths, 213 slices against 256 and 320, the driver's register counts; docs/results.md, "Where a BDPT sample's time goes at 0.4 light paths"). Prepared for the next: s51q (short: on an H200 #16's ratio with c2075a7's 241 slices, .device/bidir-sf.gz, a build of c2075a7 or later, beside nd), s51 (on an H200 s50d and #17's Sponza round, then s51b; elsewhere s51b) and s51b (scripts/device/s51b-early-reads.patch: builds as its comment says).
 # Session 50 (one H100 start of ten tries; .device/bidir-nd.gz a build of 0e1ada9, 0.4 light paths per pixel, beside bidir-bs.gz; bidir-ls.gz and bidir-mi.gz moved to /work/device-spare): s50b (what the light-paths / candidates trades cost a BDPT sample), s50a (s49d's caustic question: the three builds level; the trades at 1 s with seeds); docs/results.md, "0.4 light paths per pixel". Prepared for the next: s50c (0e1ada9's default against bd6fa14's on the card it gets, issue #16's table, on an H200 #17's Sponza round; needs .device/bidir-nd.gz: `gzip -c` of a release build of 0e1ada9 or later) and s50d (its first round only, for short device time).
 # Session 49 (an H100, then an H200; .device/bidir-ls.gz copied back from /work/device-spare beside bidir-mi.gz and bidir-bs.gz): s49b (BDPT's megakernels at 2^20 invocations against its wavefront passes, then s49a: an H100), s45k with HB_NAME=bs and s49c (the path tracers' megakernels against their wavefront form: the H200), then by hand on the H200 light paths per pixel and candidates (docs/results.md, "Issues #16 and #17 on the H200 again"). Prepared for the next and not run: s50a (first s49d, the caustic scene's bdpt at 1 s, 23,518 spp on the H200 against 28,638 in session 43: c1c12e7, f7ed307 and HEAD's build in turn; then BDPT's candidates and light paths per pixel with more seeds on the Cornell box and where the light hides).
@@ -96,6 +96,13 @@ gpu_ms() {
   local b=$1; shift
   timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms'
 }
+# `bench render` with the binary $1 and the further options, warmed up, three runs: its GPU ms
+# and the ms per run of BDPT's wavefront path kernels (the table's column; not the build times
+# of their pipelines printed before it, which have one decimal).
+kernel_ms() {
+  local b=$1; shift
+  timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront {2,}[0-9]+\.[0-9]{3}' | tr -s ' ' | tr '\n' ' '
+}
 # One round's BDPT `bench render` lines of the binary $1, named $2: its GPU ms and the kernel
 # lines that match $3, on the Cornell box and the hidden light (1024 spp), on $HB (DamagedHelmet
 # as the calling part sets it; 256 spp) and on Sponza with 8 candidates (64 spp).
@@ -162,73 +169,45 @@ shader_cache() {
   tar czf "$OUT/$2" -C "$d" .
 }
 case "${1:-speed}" in
-s53c)
-  # s53b cut for about 150 s: on an H200 first issue #16's ratio with new; then new, ns and sf
-  # on the Cornell box (bdpt, the kernels' shares), two rounds, and new's and ns's light kernel
-  # statistics.
-  device_line
-  unpack new ns sf
-  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
-  N=$PWD/.device/bidir-new
-  case "$g" in
-    *H200*) echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$N" $CB --integrator bdpt --spp 1024) 1 s bdpt: $(at_time "$N" 1 $CB --integrator bdpt)" ;;
-  esac
-  for r in 1 2; do
-    order="new ns sf"; [ $r = 2 ] && order="sf ns new"
-    for n in $order; do
-      echo "== r$r $n cornell: $(timeout -k 5 60 .device/bidir-$n bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
-    done
-  done
-  for n in new ns; do
-    echo "== $n: $(timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^bdpt:lvc=1 / bdpt_light_wavefront')"
-  done
-  ;;
 s53b)
-  # Session 53's second start: .device/bidir-new.gz (095bca5: the BDPT kernels' early reads,
-  # s51b's er without its pt part, and the light kernels through spirv-opt) and
-  # .device/bidir-ns.gz (the same without spirv-opt, HEAD's kernels since 6cd16b4: in s53 the light kernel of cs, which had
-  # it, took about 6 % longer than sf's though the driver reported the same registers and
-  # binary size) against .device/bidir-sf.gz (c2075a7: HEAD's behaviour before) and
-  # .device/bidir-nd.gz (0e1ada9). On an H200 first issue #16's ratio with new (pt-nee and bdpt,
-  # 1024 spp and 1 s) and #17's Sponza round; then two rounds of BDPT on the Cornell box and
-  # where the light hides, the order alternating; last the ratio at 1 s on any card.
+  # Session 53's prepared start: .device/bidir-hd.gz (HEAD: the camera kernel's early reads, the
+  # light kernels through spirv-opt) against .device/bidir-sf.gz (c2075a7, before both) and
+  # .device/bidir-nd.gz (0e1ada9, 213 slices). On an H200 first issue #16's ratio with hd (pt-nee
+  # and bdpt, 1024 spp and 1 s) and #17's Sponza round; then on any card two rounds of BDPT on
+  # the Cornell box and where the light hides, the order alternating, the path kernels' ms;
+  # last hd's kernel statistics and its ratio at 1 s.
   device_line
-  unpack new ns sf nd
-  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
-  N=$PWD/.device/bidir-new
+  unpack hd sf nd
+  H=$PWD/.device/bidir-hd
   case "$g" in
-    *H200*) echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$N" $CB --integrator bdpt --spp 1024)"
-      echo "== new 1 s pt-nee: $(at_time "$N" 1 $CB --integrator pt-nee) bdpt: $(at_time "$N" 1 $CB --integrator bdpt)"
-      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $N" ;;
+    *H200*) echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$H" $CB --integrator bdpt --spp 1024)"
+      echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee) bdpt: $(at_time "$H" 1 $CB --integrator bdpt)"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $H" ;;
   esac
   for r in 1 2; do
-    order="nd new ns sf"; [ $r = 2 ] && order="sf ns new nd"
+    order="nd hd sf"; [ $r = 2 ] && order="sf hd nd"
     for n in $order; do
-      F=$PWD/.device/bidir-$n
-      echo "== r$r $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
+      echo "== r$r $n cornell: $(kernel_ms .device/bidir-$n $CB --integrator bdpt --spp 1024) hidden: $(kernel_ms .device/bidir-$n $HID --integrator bdpt --spp 1024)"
     done
   done
-  for n in new ns; do
-    echo "== $n: $(timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^bdpt:lvc=1 / bdpt_light_wavefront')"
-  done
-  echo "== new cornell pt-nee: $(gpu_ms "$N" $CB --integrator pt-nee --spp 1024) 1 s pt-nee: $(at_time "$N" 1 $CB --integrator pt-nee) bdpt: $(at_time "$N" 1 $CB --integrator bdpt)"
+  timeout -k 5 60 "$H" info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_(camera|light)_(wavefront|finish)|pt-nee / pt_queue)'
+  echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee) bdpt: $(at_time "$H" 1 $CB --integrator bdpt)"
   ;;
-s53s)
-  # s53 cut for about 250 s of device time: on an H200 s51q first; then one round of sf, cs and
-  # ci2 on the Cornell box and Sponza, and their kernels' statistics.
+s53c)
+  # s53b cut for about 150 s: on an H200 issue #16's ratio with hd first; then one round of hd
+  # and sf on the Cornell box.
   device_line
-  case "$g" in *H200*) timeout -k 5 90 bash "$0" s51q ;; esac
-  unpack sf cs ci2
-  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
-  for n in sf cs ci2; do
-    F=$PWD/.device/bidir-$n
-    echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') sponza 8: $(timeout -k 5 60 "$F" bench render $SP --integrator bdpt --connection-candidates 8 --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
-  done
-  for n in sf cs ci2; do
-    echo "== $n statistics:"; timeout -k 5 60 .device/bidir-$n info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_(camera|light)_(wavefront|finish)|pt-nee / pt_queue)'
+  unpack hd sf
+  H=$PWD/.device/bidir-hd
+  case "$g" in
+    *H200*) echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$H" $CB --integrator bdpt --spp 1024) 1 s bdpt: $(at_time "$H" 1 $CB --integrator bdpt)" ;;
+  esac
+  for n in hd sf; do
+    echo "== $n cornell: $(kernel_ms .device/bidir-$n $CB --integrator bdpt --spp 1024)"
   done
   ;;
 s53)
+  # Ran in session 53 (an H100); its cs and ci2 builds are in /work/device-spare now.
   # Session 53's start, whatever card comes: on an H200 first s51q and #17's Sponza round
   # (h200_first); then .device/bidir-cs.gz, two changes to two kernels: the camera kernel's
   # pending shadow rays written and read at constant indices (scripts/device/s53-const-index.patch:
@@ -269,41 +248,6 @@ s53)
   done
   echo "== sf cornell pt-nee: $(gpu_ms .device/bidir-sf $CB --integrator pt-nee --spp 1024) 1 s: $(at_time .device/bidir-sf 1 $CB --integrator pt-nee)"
   timeout -k 5 200 bash "$0" s51b
-  ;;
-s52t)
-  # s52 cut for about 120 s of device time: on an H200 s51q; elsewhere the early reads' one
-  # round on the Cornell box (nd, er, pf) and sf's pt-nee against its BDPT.
-  device_line
-  case "$g" in
-    *H200*) timeout -k 5 100 bash "$0" s51q ;;
-    *) unpack nd er pf sf
-      for n in nd er pf; do
-        echo "== $n cornell bdpt: $(timeout -k 5 40 .device/bidir-$n bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE 'GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+' | tr '\n' ' ')"
-      done
-      echo "== sf cornell pt-nee: $(gpu_ms .device/bidir-sf $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms .device/bidir-sf $CB --integrator bdpt --spp 1024)" ;;
-  esac
-  ;;
-s52s)
-  # s52 cut for about 250 s of device time: on an H200 s51q and #17's Sponza round first; then
-  # s51b's first round (BDPT's GPU ms with nd, er and pf), its images, pt-nee's round once, and
-  # the camera kernel's whole statistics.
-  device_line
-  h200_first "$0"
-  unpack nd er pf sf
-  k='GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9.]+'
-  for n in nd er pf; do
-    F=$PWD/.device/bidir-$n
-    echo "== $n cornell: $(timeout -k 5 60 "$F" bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ') hidden: $(timeout -k 5 60 "$F" bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr '\n' ' ')"
-  done
-  for n in nd er pf; do
-    timeout -k 5 60 .device/bidir-$n render $CB --integrator bdpt --spp 64 --seed 3 -o /tmp/i-$n.exr > /dev/null 2>&1
-  done
-  echo "== images er/nd: $(.device/bidir-nd diff /tmp/i-er.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ') pf/nd: $(.device/bidir-nd diff /tmp/i-pf.exr /tmp/i-nd.exr 2>&1 | grep -E '^RMSE' | tr '\n' ' ')"
-  for n in nd er; do
-    echo "== $n pt-nee cornell: $(gpu_ms .device/bidir-$n $CB --integrator pt-nee --spp 1024) caustic: $(gpu_ms .device/bidir-$n $CAU --integrator pt-nee --spp 1024)"
-  done
-  echo "== sf cornell pt-nee: $(gpu_ms .device/bidir-sf $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms .device/bidir-sf $CB --integrator bdpt --spp 1024)"
-  timeout -k 5 60 .device/bidir-sf info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_camera_wavefront|pt-nee / pt_queue)'
   ;;
 s52)
   # Session 52's start, whatever card comes: on an H200 s51q (issue #16's ratio with HEAD's
