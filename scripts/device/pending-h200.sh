@@ -214,8 +214,8 @@ s53)
   # the loops unrolled, so that no Function array indexed at run time is left in
   # bdpt_camera_wavefront's SPIR-V), and the BDPT light kernels optimised by spirv-opt (shaderc's
   # SPIRV-Tools 2023.1 skips its passes on modules that declare SPV_EXT_shader_atomic_float_add,
-  # so they reach the driver as glslang wrote them: scripts/device/s53-spirv-opt.patch, a
-  # measurement hack that hides the extension from spirv-opt -O), against .device/bidir-sf.gz (c2075a7, which behaves like HEAD): two rounds in alternating
+  # so they reach the driver as glslang wrote them: a measurement hack then, built into
+  # build.rs since fe42f3d, that hides the extension from spirv-opt -O), against .device/bidir-sf.gz (c2075a7, which behaves like HEAD): two rounds in alternating
   # order, GPU ms and the camera kernel's ms on the Cornell box (bdpt and bdpt:lvc=3, whose
   # four rays fill the arrays), where the light hides and Sponza, beside .device/bidir-ci2.gz (the
   # same with BDPT_WF_SHADOW_RAYS = 2: the default join's two rays only, so fewer registers; its
