@@ -745,6 +745,92 @@ fn ballot_cursor_takes_the_lanes_from_a_start_in_order() {
     finish(ctx);
 }
 
+/// The 8-byte form in which BDPT's wavefront camera pass keeps a shadow ray's contribution
+/// (glsl/common/packed_contrib.glsl): each channel the nearest float with 13 (red, green) or
+/// 14 (blue) bits of mantissa, so within 2^-14 (2^-15) of the value and as often above as below
+/// it; a rounded value rounds to itself; zero stays zero; a negative, NaN or infinite channel
+/// unpacks as a NaN, which the pass counts as a bad contribution. Over channels from 1e-30 to
+/// 1e30.
+#[test]
+fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
+    let ctx = gpu();
+    {
+        let s = SamplingKernel::new(&ctx);
+        let mut pcg = common::Pcg::new(37);
+        let mut input: Vec<Vec4> = Vec::new();
+        for _ in 0..8192 {
+            let mut v = [0.0f32; 3];
+            for x in v.iter_mut() {
+                let e = pcg.below(60) as i32 - 30;
+                *x = (1.0 + pcg.below(1 << 23) as f32 / (1 << 23) as f32) * 10f32.powi(e);
+            }
+            input.push(Vec4::new(v[0], v[1], v[2], 0.0));
+        }
+        input.push(Vec4::ZERO);
+        // Values already on the grid, halfway between two of its points, and at its ends.
+        input.push(Vec4::new(f32::from_bits(0x3f80_0400), f32::from_bits(0x3f80_0200), f32::from_bits(0x3f80_0100), 0.0));
+        input.push(Vec4::new(f32::from_bits(0x3f80_01ff), f32::from_bits(0x3f80_05ff), f32::from_bits(0x3f80_00ff), 0.0));
+        input.push(Vec4::new(f32::MIN_POSITIVE, 1.0e-45, f32::MAX / 2.0, 0.0));
+        let good = input.len();
+        for bad in [Vec4::new(-1.0, 1.0, 1.0, 0.0), Vec4::new(1.0, f32::NAN, 1.0, 0.0), Vec4::new(1.0, 1.0, f32::INFINITY, 0.0)] {
+            input.push(bad);
+        }
+        let buffer = ctx.upload_buffer("sampling.contribs", &input).unwrap();
+        let push = abi::SamplingTestPush { mode: abi::SAMPLING_CONTRIB_PACK, count: input.len() as u32, seed: 1, ..Default::default() };
+        let out = s.run(push, 2, Some(&buffer));
+        // The nearest float with `keep` bits of mantissa (ties away from zero), by the bits.
+        let nearest = |x: f32, keep: u32| {
+            let drop = 23 - keep;
+            f32::from_bits(((x.to_bits() + (1 << (drop - 1))) >> drop) << drop)
+        };
+        let (mut up, mut down, mut sum) = (0u32, 0u32, 0.0f64);
+        for (i, c) in input[..good].iter().enumerate() {
+            let (r, words) = (out[2 * i], out[2 * i + 1]);
+            for (k, keep) in [13u32, 13, 14].into_iter().enumerate() {
+                let (x, y) = (c[k], r[k]);
+                assert_eq!(
+                    y.to_bits(),
+                    nearest(x, keep).to_bits(),
+                    "{c:?} channel {k}: rounded to {y:e}, the nearest with {keep} bits is {:e}",
+                    nearest(x, keep)
+                );
+                if x > 0.0 {
+                    let rel = (y as f64 - x as f64) / x as f64;
+                    assert!(
+                        rel.abs() <= 0.5f64.powi(keep as i32 + 1) * (1.0 + 1e-6) || x < f32::MIN_POSITIVE,
+                        "{c:?} channel {k}: relative error {rel:e}"
+                    );
+                    if x >= f32::MIN_POSITIVE && y != x {
+                        sum += rel;
+                        if y > x {
+                            up += 1
+                        } else {
+                            down += 1
+                        }
+                    }
+                }
+            }
+            assert_eq!([words.z.to_bits(), words.w.to_bits()], [r.x.to_bits(), r.y.to_bits()], "{c:?}: a rounded value rounds to itself");
+        }
+        assert_eq!(out[2 * (good - 4)].truncate(), Vec3::ZERO, "zero packs as zero");
+        let n = up + down;
+        eprintln!("{n} channels rounded: {up} up, {down} down, mean relative error {:e}", sum / n as f64);
+        // As often up as down (binomial, p = 1/2: 5 standard deviations), and no drift in the
+        // mean beyond 5 standard errors of a uniform error of half a unit (2^-14 / sqrt(3)).
+        assert!((up as f64 - n as f64 / 2.0).abs() < 5.0 * (n as f64 / 4.0).sqrt(), "{up} rounded up, {down} down");
+        assert!(
+            (sum / n as f64).abs() < 5.0 * 0.5f64.powi(14) / 3f64.sqrt() / (n as f64).sqrt(),
+            "mean relative error {:e}",
+            sum / n as f64
+        );
+        for (i, c) in input.iter().enumerate().skip(good) {
+            let r = out[2 * i];
+            assert!(r.x.is_nan(), "{c:?} unpacks as {r:?}, not as a NaN (a bad contribution)");
+        }
+    }
+    finish(ctx);
+}
+
 /// The arithmetic the watertight triangle test's CPU twin (src/bvh/intersect.rs) assumes of the
 /// device: under `precise`, every fma() rounds one way, once or twice (`device_fma`, which the
 /// hit-for-hit tests in tests/traversal.rs ask), and a b + c is never contracted into one.

@@ -3,8 +3,9 @@
 // which both include the step of a path, bdpt_camera_step.glsl, in their loops.
 // The includer declares `pc` (BdptPush's fields), BDPT_JOIN (the join: pc.join, or JOIN_LVC in
 // the wavefront pass), the light vertex cache's buffers, and
-// `bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats)`: whether `contrib`
-// counts now (the ray was traced and is clear) rather than later (queued) or never (blocked).
+// `bool camera_shadow_clear(ShadowRay r, inout vec3 contrib, inout uvec2 stats)`: whether
+// `contrib` counts now (the ray was traced and is clear) rather than later (queued) or never
+// (blocked); it rounds `contrib` to what counts (packed_contrib.glsl).
 #ifndef BIDIR_BDPT_CAMERA_PATH_GLSL
 #define BIDIR_BDPT_CAMERA_PATH_GLSL
 
@@ -58,10 +59,11 @@ vec3 connection_unshadowed(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, 
 // now; 0 where the shadow ray is blocked or queued (shadow_queue.glsl).
 vec3 connect(vec3 p, vec3 ns_f, vec3 ng_f, vec3 wo, Continuous c, vec3 sigma, float d_vcm, float d_vc, float vm_camera, float vm_light, LightVertex y, vec3 scale, inout uvec2 stats) {
     vec3 contrib = connection_unshadowed(p, ns_f, ng_f, wo, c, sigma, d_vcm, d_vc, vm_camera, vm_light, y);
-    if (max3(contrib) <= 0.0 || !camera_shadow_clear(shadow_ray_between(p, ng_f, y.pos, y.ng), scale * contrib, stats)) {
+    vec3 scaled = scale * contrib;
+    if (max3(contrib) <= 0.0 || !camera_shadow_clear(shadow_ray_between(p, ng_f, y.pos, y.ng), scaled, stats)) {
         return vec3(0.0);
     }
-    return scale * contrib;
+    return scaled;
 }
 
 // One connection of the light vertex cache, its vertex resampled (Talbot et al. 2005,

@@ -47,6 +47,7 @@
 #include "bdpt.glsl"
 #include "vcm.glsl"
 #include "wf_active.glsl"
+#include "packed_contrib.glsl"
 
 layout(local_size_x = WF_WG_SIZE) in;
 layout(std430, binding = BIND_ACCUM) buffer Accum { vec4 accum[]; };
@@ -62,7 +63,7 @@ layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; 
 layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
-layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { vec4 wf_contrib[]; };
+layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { uvec2 wf_contrib[]; }; // contrib_pack
 layout(push_constant) uniform Push { BdptWavefrontPush pc; };
 #define BDPT_JOIN JOIN_LVC
 
@@ -72,8 +73,10 @@ vec3 wf_shadow_contrib[BDPT_WF_SHADOW_RAYS];
 uint wf_shadow_count = 0u;
 
 // A shadow ray for the any-hit trace kernel that runs after this launch; one too short to
-// hold an occluder counts as clear now, as shadow_ray_clear has it.
-bool camera_shadow_clear(ShadowRay r, vec3 contrib, inout uvec2 stats) {
+// hold an occluder counts as clear now, as shadow_ray_clear has it. `contrib` is rounded as
+// BIND_WF_CONTRIB keeps it (packed_contrib.glsl), whether the ray is queued or not.
+bool camera_shadow_clear(ShadowRay r, inout vec3 contrib, inout uvec2 stats) {
+    contrib = contrib_round(contrib);
     if (!(r.tmax > 0.0)) {
         return true;
     }
@@ -212,7 +215,7 @@ void run_slot() {
     for (uint i = 0u; i < BDPT_WF_SHADOW_RAYS; i++) {
         if (i < queued.z) {
             words[i] = wf_shadow_hits[queued.y + i];
-            contribs[i] = wf_contrib[read_half + queued.y + i].rgb;
+            contribs[i] = contrib_unpack(wf_contrib[read_half + queued.y + i]);
         }
     }
     for (uint i = 0u; i < BDPT_WF_SHADOW_RAYS; i++) {
@@ -304,7 +307,7 @@ void run_slot() {
     }
     for (uint i = 0u; i < wf_shadow_count; i++) {
         wf_shadow_rays[next.y + i] = wavefront_ray(wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);
-        wf_contrib[write_half + next.y + i] = vec4(wf_shadow_contrib[i], 0.0);
+        wf_contrib[write_half + next.y + i] = contrib_pack(wf_shadow_contrib[i]);
     }
     wf_list_next(pc.launch, g, alive || wf_shadow_count > 0u);
 

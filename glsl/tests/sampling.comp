@@ -23,6 +23,8 @@
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
+// - SAMPLING_CONTRIB_PACK: packed_contrib.glsl on in[i].xyz: out[2i] = (contrib_round, 0),
+//   out[2i + 1] = (contrib_pack's words as bits, contrib_round of the rounded x and y).
 // Uniform numbers come from rng.glsl (the independent sampler unless the kernel is created
 // with another), as in the integrators.
 #include "bidir_abi.glsl"
@@ -38,6 +40,7 @@ layout(constant_id = SPEC_HAS_ROUGH_GLASS) const uint HAS_ROUGH_GLASS = 1u;
 #include "lights.glsl"
 #include "env.glsl"
 #include "ballot.glsl"
+#include "packed_contrib.glsl"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = SAMPLING_BIND_OUT) writeonly buffer Out { vec4 result[]; };
@@ -172,5 +175,10 @@ void main() {
             took.w = took.w * 31u + lane + 1u;
         }
         result[i] = uintBitsToFloat(took);
+    } else if (pc.mode == SAMPLING_CONTRIB_PACK) {
+        vec3 c = input_dirs[i].xyz;
+        vec3 r = contrib_round(c);
+        result[2u * i] = vec4(r, 0.0);
+        result[2u * i + 1u] = vec4(uintBitsToFloat(contrib_pack(c)), contrib_round(r).xy);
     }
 }

@@ -1,0 +1,40 @@
+// A shadow ray's contribution in 8 bytes: BDPT's wavefront camera pass keeps each queued shadow
+// ray's contribution between its launches in this form (BIND_WF_CONTRIB as uvec2), half the
+// 16 bytes of a vec4. Each channel's float is rounded to the nearest with 13 (red, green) or 14
+// (blue) bits of mantissa and no sign bit: 21 + 21 + 22 bits, a relative error of at most 2^-14
+// per channel, as likely up as down (tests/sampling.rs). With the light vertex cache's join both
+// forms of the camera pass round their shadow rays' contributions so (camera_shadow_clear), so
+// that the wavefront form's image stays the megakernels' value for value. On an H100 the 8
+// bytes took the camera kernel from 47.7 to 45.8 ms per 1024 spp on the Cornell box 256², BDPT
+// 2 % (12 bytes, exact: 0.3 %; docs/results.md, "Shadow-ray contributions in 8 bytes").
+// A negative or non-finite channel packs as a NaN, which the reader counts as a bad
+// contribution (contributions are never negative).
+#ifndef BIDIR_PACKED_CONTRIB_GLSL
+#define BIDIR_PACKED_CONTRIB_GLSL
+
+uvec2 contrib_pack(vec3 c) {
+    uvec3 b = floatBitsToUint(c);
+    // Adding half of the dropped bits' unit rounds to the nearest (a carry moves into the
+    // exponent, as it should).
+    uint r = (b.x + 0x200u) >> 10u;
+    uint g = (b.y + 0x200u) >> 10u;
+    uint bl = (b.z + 0x100u) >> 9u;
+    if (any(isnan(c)) || any(isinf(c)) || any(lessThan(c, vec3(0.0)))) {
+        r = 0x1fffffu; // all exponent bits and a mantissa: NaN
+    }
+    return uvec2(r | (g << 21u), (g >> 11u) | (bl << 10u));
+}
+
+vec3 contrib_unpack(uvec2 w) {
+    uint r = w.x & 0x1fffffu;
+    uint g = (w.x >> 21u) | ((w.y & 0x3ffu) << 11u);
+    uint bl = w.y >> 10u;
+    return uintBitsToFloat(uvec3(r << 10u, g << 10u, bl << 9u));
+}
+
+// `c` as the packed form holds it (exact where c is already so rounded).
+vec3 contrib_round(vec3 c) {
+    return contrib_unpack(contrib_pack(c));
+}
+
+#endif
