@@ -748,9 +748,10 @@ fn ballot_cursor_takes_the_lanes_from_a_start_in_order() {
 /// The 8-byte form in which BDPT's wavefront camera pass keeps a shadow ray's contribution
 /// (glsl/common/packed_contrib.glsl): each channel the nearest float with 13 (red, green) or
 /// 14 (blue) bits of mantissa, so within 2^-14 (2^-15) of the value and as often above as below
-/// it; a rounded value rounds to itself; zero stays zero; a negative, NaN or infinite channel
-/// unpacks as a NaN, which the pass counts as a bad contribution. Over channels from 1e-30 to
-/// 1e30.
+/// it; a rounded value rounds to itself; the packed form holds the rounded value exactly; zero
+/// stays zero; a negative, NaN or infinite channel unpacks as a NaN, which the pass counts as a
+/// bad contribution, and the megakernels' rounding (contrib_round) keeps its sign, NaN or
+/// infinity. Over channels from 1e-30 to 1e30.
 #[test]
 fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
     let ctx = gpu();
@@ -772,12 +773,18 @@ fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
         input.push(Vec4::new(f32::from_bits(0x3f80_01ff), f32::from_bits(0x3f80_05ff), f32::from_bits(0x3f80_00ff), 0.0));
         input.push(Vec4::new(f32::MIN_POSITIVE, 1.0e-45, f32::MAX / 2.0, 0.0));
         let good = input.len();
-        for bad in [Vec4::new(-1.0, 1.0, 1.0, 0.0), Vec4::new(1.0, f32::NAN, 1.0, 0.0), Vec4::new(1.0, 1.0, f32::INFINITY, 0.0)] {
+        // (A NaN whose mantissa is all ones would round up into the next exponent: kept.)
+        for bad in [
+            Vec4::new(-1.5, 1.0, 1.0, 0.0),
+            Vec4::new(1.0, f32::NAN, 1.0, 0.0),
+            Vec4::new(1.0, 1.0, f32::INFINITY, 0.0),
+            Vec4::new(f32::from_bits(u32::MAX), 1.0, 1.0, 0.0),
+        ] {
             input.push(bad);
         }
         let buffer = ctx.upload_buffer("sampling.contribs", &input).unwrap();
         let push = abi::SamplingTestPush { mode: abi::SAMPLING_CONTRIB_PACK, count: input.len() as u32, seed: 1, ..Default::default() };
-        let out = s.run(push, 2, Some(&buffer));
+        let out = s.run(push, 3, Some(&buffer));
         // The nearest float with `keep` bits of mantissa (ties away from zero), by the bits.
         let nearest = |x: f32, keep: u32| {
             let drop = 23 - keep;
@@ -785,7 +792,16 @@ fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
         };
         let (mut up, mut down, mut sum) = (0u32, 0u32, 0.0f64);
         for (i, c) in input[..good].iter().enumerate() {
-            let (r, words) = (out[2 * i], out[2 * i + 1]);
+            let (r, unpacked, words) = (out[3 * i], out[3 * i + 1], out[3 * i + 2]);
+            for k in 0..3 {
+                assert_eq!(
+                    unpacked[k].to_bits(),
+                    r[k].to_bits(),
+                    "{c:?} channel {k}: the packed form holds {}, rounding gives {}",
+                    unpacked[k],
+                    r[k]
+                );
+            }
             for (k, keep) in [13u32, 13, 14].into_iter().enumerate() {
                 let (x, y) = (c[k], r[k]);
                 assert_eq!(
@@ -812,7 +828,7 @@ fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
             }
             assert_eq!([words.z.to_bits(), words.w.to_bits()], [r.x.to_bits(), r.y.to_bits()], "{c:?}: a rounded value rounds to itself");
         }
-        assert_eq!(out[2 * (good - 4)].truncate(), Vec3::ZERO, "zero packs as zero");
+        assert_eq!(out[3 * (good - 4) + 1].truncate(), Vec3::ZERO, "zero packs as zero");
         let n = up + down;
         eprintln!("{n} channels rounded: {up} up, {down} down, mean relative error {:e}", sum / n as f64);
         // As often up as down (binomial, p = 1/2: 5 standard deviations), and no drift in the
@@ -824,8 +840,12 @@ fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
             sum / n as f64
         );
         for (i, c) in input.iter().enumerate().skip(good) {
-            let r = out[2 * i];
-            assert!(r.x.is_nan(), "{c:?} unpacks as {r:?}, not as a NaN (a bad contribution)");
+            let (r, unpacked) = (out[3 * i], out[3 * i + 1]);
+            assert!(unpacked.x.is_nan(), "{c:?} unpacks as {unpacked:?}, not as a NaN (a bad contribution)");
+            for k in 0..3 {
+                let keeps = if c[k].is_nan() { r[k].is_nan() } else { r[k].to_bits() == c[k].to_bits() || (c[k] < 0.0 && r[k] == c[k]) };
+                assert!(keeps, "{c:?} channel {k}: contrib_round gives {}", r[k]);
+            }
         }
     }
     finish(ctx);

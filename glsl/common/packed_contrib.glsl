@@ -8,7 +8,7 @@
 // bytes took the camera kernel from 47.7 to 45.8 ms per 1024 spp on the Cornell box 256², BDPT
 // 2 % (12 bytes, exact: 0.3 %; docs/results.md, "Shadow-ray contributions in 8 bytes").
 // A negative or non-finite channel packs as a NaN, which the reader counts as a bad
-// contribution (contributions are never negative).
+// contribution (contributions are never negative; contrib_round leaves such a channel as it is).
 #ifndef BIDIR_PACKED_CONTRIB_GLSL
 #define BIDIR_PACKED_CONTRIB_GLSL
 
@@ -32,9 +32,17 @@ vec3 contrib_unpack(uvec2 w) {
     return uintBitsToFloat(uvec3(r << 10u, g << 10u, bl << 9u));
 }
 
-// `c` as the packed form holds it (exact where c is already so rounded).
+// `c` as the packed form holds it: each channel's magnitude rounded as contrib_pack rounds it,
+// the sign kept, an infinite or NaN channel left as it is (rounding could carry a NaN's
+// mantissa away). Branch-free integer steps, which the megakernels run where the wavefront
+// form packs; a negative or non-finite channel, which the packed form counts as bad, stays what
+// it is here.
 vec3 contrib_round(vec3 c) {
-    return contrib_unpack(contrib_pack(c));
+    uvec3 b = floatBitsToUint(c);
+    uvec3 m = b & 0x7fffffffu;
+    uvec3 r = (m + uvec3(0x200u, 0x200u, 0x100u)) & ~uvec3(0x3ffu, 0x3ffu, 0x1ffu);
+    r = mix(r, m, greaterThanEqual(m, uvec3(0x7f800000u)));
+    return uintBitsToFloat(r | (b & 0x80000000u));
 }
 
 #endif

@@ -48,10 +48,11 @@ bool g_queued = false;
 
 // The megakernel's shadow rays: queued for shadow_queue.comp where the queue has room, else
 // traced here. With the light vertex cache's join, which has a wavefront form, `contrib` is
-// rounded as that form keeps it (packed_contrib.glsl); the other joins and VCM, which have
-// none, keep every bit (rounding cost bdpt:full 3 % and vcm 1.4 % on an H100, session 54).
+// rounded as that form keeps it (packed_contrib.glsl), in VCM too (tests/vcm.rs:
+// vcm:no-merge gives bdpt's image); the other joins, which have none, keep every bit (a first
+// rounding through the packed form cost bdpt:full 3 % and vcm 1.4 % on an H100, session 54).
 bool camera_shadow_clear(ShadowRay r, inout vec3 contrib, inout uvec2 stats) {
-    if (VCM == 0u && BDPT_JOIN == JOIN_LVC) {
+    if (BDPT_JOIN == JOIN_LVC) {
         contrib = contrib_round(contrib);
     }
     return shadow_clear_now(r, contrib, stats);

@@ -23,8 +23,9 @@
 // - SAMPLING_RNG: rng.glsl's numbers themselves, with groups of Sobol' dimensions started
 //   among them, for tests/sampling.rs's bit-for-bit comparison with its CPU twin (the kernel
 //   created with the sampler to test).
-// - SAMPLING_CONTRIB_PACK: packed_contrib.glsl on in[i].xyz: out[2i] = (contrib_round, 0),
-//   out[2i + 1] = (contrib_pack's words as bits, contrib_round of the rounded x and y).
+// - SAMPLING_CONTRIB_PACK: packed_contrib.glsl on in[i].xyz: out[3i] = (contrib_round, 0),
+//   out[3i + 1] = (contrib_unpack of contrib_pack, 0), out[3i + 2] = (contrib_pack's words as
+//   bits, contrib_round of the rounded x and y).
 // Uniform numbers come from rng.glsl (the independent sampler unless the kernel is created
 // with another), as in the integrators.
 #include "bidir_abi.glsl"
@@ -178,7 +179,8 @@ void main() {
     } else if (pc.mode == SAMPLING_CONTRIB_PACK) {
         vec3 c = input_dirs[i].xyz;
         vec3 r = contrib_round(c);
-        result[2u * i] = vec4(r, 0.0);
-        result[2u * i + 1u] = vec4(uintBitsToFloat(contrib_pack(c)), contrib_round(r).xy);
+        result[3u * i] = vec4(r, 0.0);
+        result[3u * i + 1u] = vec4(contrib_unpack(contrib_pack(c)), 0.0);
+        result[3u * i + 2u] = vec4(uintBitsToFloat(contrib_pack(c)), contrib_round(r).xy);
     }
 }

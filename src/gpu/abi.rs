@@ -258,9 +258,9 @@ gpu_consts! {
     /// = (the first and second lanes taken, or 128, the lanes taken, their order folded as h 31
     /// + lane + 1), as bits.
     pub const SAMPLING_BALLOT_CURSOR: u32 = 12;
-    /// glsl/common/packed_contrib.glsl on `in[i].xyz`: `out[2i]` = (contrib_round, 0), `out[2i
-    /// + 1]` = (the two packed words as bits, contrib_round of the rounded value's first two
-    /// channels).
+    /// glsl/common/packed_contrib.glsl on `in[i].xyz`: `out[3i]` = (contrib_round, 0),
+    /// `out[3i + 1]` = (contrib_unpack of contrib_pack, 0), `out[3i + 2]` = (the two packed
+    /// words as bits, contrib_round of the rounded value's first two channels).
     pub const SAMPLING_CONTRIB_PACK: u32 = 13;
     /// The numbers of SAMPLING_RNG before which a group starts: the 3rd, 6th, 7th and 12th
     /// (under Sobol' everywhere dimension 2 to 4, 7 to 8, 9 to 12 and 17 to 20; with ten
