@@ -7,7 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
-# Session 54 (one H100 start of thirteen; no H200): s54 and four calls by hand (the camera pass's shadow-ray contributions in 8 bytes, pk: kept; in 12, c12, scripts/device/s54-contrib-12.patch: 0.3 %, not kept; docs/results.md, "Shadow-ray contributions in 8 bytes"). Ran in session 54 (s54; its hd is now .device/bidir-h53.gz). Prepared: s55 (issue #16's ratio with a build of HEAD as .device/bidir-hd.gz; on an H200 #17's Sponza round). bidir-sf and bidir-nd are in /work/device-spare.
+# Session 54 (one H100 start of thirteen; no H200): s54 and four calls by hand (the camera pass's shadow-ray contributions in 8 bytes, pk: kept; in 12, c12, scripts/device/s54-contrib-12.patch: 0.3 %, not kept; docs/results.md, "Shadow-ray contributions in 8 bytes"). Ran in session 54 (s54; its hd is now .device/bidir-h53.gz). s53b and s53c (never run, superseded by s55) were dropped. Prepared: s55 (issue #16's ratio with a build of HEAD as .device/bidir-hd.gz; on an H200 #17's Sponza round). bidir-sf and bidir-nd are in /work/device-spare.
 # Session 53 (one H100 start of eight; no H200): s53 (the camera kernel's shadow rays at constant indices, builds cs and ci2: not kept; s51b's early reads: kept for the camera kernel, 8aeb81a; the light kernels through spirv-opt as fast as without, fe42f3d; docs/results.md, "The camera kernel's pending shadow rays; early reads; the light kernels' SPIR-V"). Prepared: s53b (on an H200 issue #16's ratio and #17's Sponza round with .device/bidir-hd.gz, a build of 8aeb81a; then hd against sf and nd on any card) and its cut s53c. s52's cuts s52s and s52t (never run) and s53s were dropped; bidir-er, -pf, -cs, -ci2, -new, -ns and -bs are in /work/device-spare.
 # Session 52 (no machine: eight starts failed between 01:47 and 03:09, the last call was refused with 419 s of device time left): prepared s52 (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory); its cuts s52s and s52t were dropped in session 53.
 # Session 51 (one H100 start of eight tries, no H200; .device/bidir-nd.gz still 0e1ada9's build): s51a (the kernel table at 0.4 light paths, 213 slices against 256 and 320, the driver's register counts; docs/results.md, "Where a BDPT sample's time goes at 0.4 light paths"). Prepared for the next: s51q (short: on an H200 #16's ratio with c2075a7's 241 slices, .device/bidir-sf.gz, a build of c2075a7 or later, beside nd), s51 (on an H200 s50d and #17's Sponza round, then s51b; elsewhere s51b) and s51b (scripts/device/s51b-early-reads.patch: builds as its comment says).
@@ -169,6 +169,12 @@ shader_cache() {
   __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$1" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
   tar czf "$OUT/$2" -C "$d" .
 }
+# Issue #16's ratio with the binary $1 on the Cornell box: pt-nee's GPU ms and bdpt's with its
+# path kernels' ms (1024 spp), then both at 1 s against $REF.
+ratio_lines() {
+  echo "== $(basename "$1") cornell pt-nee: $(gpu_ms "$1" $CB --integrator pt-nee --spp 1024) bdpt: $(kernel_ms "$1" $CB --integrator bdpt --spp 1024)"
+  echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
+}
 case "${1:-speed}" in
 s54)
   # Session 54's start: on an H200 first issue #16's ratio with .device/bidir-hd.gz (8aeb81a,
@@ -182,8 +188,7 @@ s54)
   unpack hd pk c12
   H=$PWD/.device/bidir-hd
   case "$g" in
-    *H200*) echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$H" $CB --integrator bdpt --spp 1024)"
-      echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee) bdpt: $(at_time "$H" 1 $CB --integrator bdpt)"
+    *H200*) ratio_lines "$H"
       timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $H" ;;
   esac
   for r in 1 2; do
@@ -205,51 +210,13 @@ s55)
   device_line
   unpack hd h53
   H=$PWD/.device/bidir-hd
-  echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) bdpt: $(kernel_ms "$H" $CB --integrator bdpt --spp 1024)"
-  echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee) bdpt: $(at_time "$H" 1 $CB --integrator bdpt)"
+  ratio_lines "$H"
   case "$g" in
     *H200*) timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $H"
       echo "== hd again pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$H" $CB --integrator bdpt --spp 1024)" ;;
   esac
   for n in hd h53 h53 hd; do
     echo "== $n vcm: $(gpu_ms .device/bidir-$n $CB --integrator vcm --spp 256) bdpt:full: $(gpu_ms .device/bidir-$n $CB --integrator bdpt:full --spp 256) bdpt megakernels: $(gpu_ms .device/bidir-$n $CB --integrator bdpt --wavefront off --spp 256)"
-  done
-  ;;
-s53b)
-  # Session 53's prepared start: .device/bidir-hd.gz (HEAD: the camera kernel's early reads, the
-  # light kernels through spirv-opt) against .device/bidir-sf.gz (c2075a7, before both) and
-  # .device/bidir-nd.gz (0e1ada9, 213 slices). On an H200 first issue #16's ratio with hd (pt-nee
-  # and bdpt, 1024 spp and 1 s) and #17's Sponza round; then on any card two rounds of BDPT on
-  # the Cornell box and where the light hides, the order alternating, the path kernels' ms;
-  # last hd's kernel statistics and its ratio at 1 s.
-  device_line
-  unpack hd sf nd
-  H=$PWD/.device/bidir-hd
-  case "$g" in
-    *H200*) echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$H" $CB --integrator bdpt --spp 1024)"
-      echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee) bdpt: $(at_time "$H" 1 $CB --integrator bdpt)"
-      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $H" ;;
-  esac
-  for r in 1 2; do
-    order="nd hd sf"; [ $r = 2 ] && order="sf hd nd"
-    for n in $order; do
-      echo "== r$r $n cornell: $(kernel_ms .device/bidir-$n $CB --integrator bdpt --spp 1024) hidden: $(kernel_ms .device/bidir-$n $HID --integrator bdpt --spp 1024)"
-    done
-  done
-  timeout -k 5 60 "$H" info $CB --kernels 2>&1 | grep -E '^(bdpt:lvc=1 / bdpt_(camera|light)_(wavefront|finish)|pt-nee / pt_queue)'
-  echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee) bdpt: $(at_time "$H" 1 $CB --integrator bdpt)"
-  ;;
-s53c)
-  # s53b cut for about 150 s: on an H200 issue #16's ratio with hd first; then one round of hd
-  # and sf on the Cornell box.
-  device_line
-  unpack hd sf
-  H=$PWD/.device/bidir-hd
-  case "$g" in
-    *H200*) echo "== hd cornell pt-nee: $(gpu_ms "$H" $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms "$H" $CB --integrator bdpt --spp 1024) 1 s bdpt: $(at_time "$H" 1 $CB --integrator bdpt)" ;;
-  esac
-  for n in hd sf; do
-    echo "== $n cornell: $(kernel_ms .device/bidir-$n $CB --integrator bdpt --spp 1024)"
   done
   ;;
 s53)
