@@ -320,7 +320,7 @@ fn compile(compiler: &shaderc::Compiler, root: &Path, gen_dir: &Path, job: &Job)
             let words = art.as_binary();
             if job.optimise && spirv_post::needs_reoptimising(words) {
                 match reoptimise(words, &job.stem) {
-                    Ok(w) => return Some(w.iter().flat_map(|x| x.to_le_bytes()).collect()),
+                    Ok(bytes) => return Some(bytes),
                     Err(e) => println!(
                         "cargo:warning={rel}: not optimised ({e}); its kernel `{}` goes to the driver as glslang wrote it",
                         job.stem
@@ -339,9 +339,9 @@ fn compile(compiler: &shaderc::Compiler, root: &Path, gen_dir: &Path, job: &Job)
 /// `spirv-opt -O` over a module that shaderc's SPIRV-Tools left unoptimised because it
 /// declares the float atomics' extension (src/gpu/spirv_post.rs says why): the extension
 /// hidden while it runs, then checked with `spirv-val` where that is installed. Both come with
-/// the SPIRV-Tools package that scripts/setup.sh links (Debian's `spirv-tools`). Err says why
-/// it could not be done.
-fn reoptimise(words: &[u32], stem: &str) -> Result<Vec<u32>, String> {
+/// the SPIRV-Tools package that scripts/setup.sh links (Debian's `spirv-tools`). Ok: the
+/// module's bytes; Err says why it could not be done.
+fn reoptimise(words: &[u32], stem: &str) -> Result<Vec<u8>, String> {
     use std::process::Command;
     let dir = PathBuf::from(env::var("OUT_DIR").unwrap()).join("spirv-opt");
     fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
@@ -361,8 +361,8 @@ fn reoptimise(words: &[u32], stem: &str) -> Result<Vec<u32>, String> {
     )?;
     let bytes = fs::read(&output).map_err(|e| format!("{}: {e}", output.display()))?;
     let optimised: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
-    let restored = spirv_post::restore_extension(&optimised, &caps);
-    fs::write(&output, as_bytes(&restored)).map_err(|e| format!("{}: {e}", output.display()))?;
+    let restored = as_bytes(&spirv_post::restore_extension(&optimised, &caps));
+    fs::write(&output, &restored).map_err(|e| format!("{}: {e}", output.display()))?;
     if Command::new("spirv-val").arg("--version").output().is_ok() {
         run(Command::new("spirv-val").args(["--target-env", "vulkan1.2"]).arg(&output), "spirv-val")?;
     }

@@ -749,7 +749,7 @@ fn ballot_cursor_takes_the_lanes_from_a_start_in_order() {
 /// (glsl/common/packed_contrib.glsl): each channel the nearest float with 13 (red, green) or
 /// 14 (blue) bits of mantissa, so within 2^-14 (2^-15) of the value and as often above as below
 /// it; a rounded value rounds to itself; the packed form holds the rounded value exactly; zero
-/// stays zero; a negative, NaN or infinite channel unpacks as a NaN, which the pass counts as a
+/// stays zero, a negative zero unpacks as zero; a negative, NaN or infinite channel unpacks as a NaN, which the pass counts as a
 /// bad contribution, and the megakernels' rounding (contrib_round) keeps its sign, NaN or
 /// infinity. Over channels from 1e-30 to 1e30.
 #[test]
@@ -773,6 +773,11 @@ fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
         input.push(Vec4::new(f32::from_bits(0x3f80_01ff), f32::from_bits(0x3f80_05ff), f32::from_bits(0x3f80_00ff), 0.0));
         input.push(Vec4::new(f32::MIN_POSITIVE, 1.0e-45, f32::MAX / 2.0, 0.0));
         let good = input.len();
+        // Negative zeros: +0 packed (the sign bit is not packed and must not spill into the
+        // next channel).
+        input.push(Vec4::new(-0.0, 1.0, -0.0, 0.0));
+        input.push(Vec4::new(1.0, -0.0, 3.0, 0.0));
+        let zeros = input.len();
         // (A NaN whose mantissa is all ones would round up into the next exponent: kept.)
         for bad in [
             Vec4::new(-1.5, 1.0, 1.0, 0.0),
@@ -839,7 +844,16 @@ fn shadow_contributions_pack_to_the_nearest_with_14_bits() {
             "mean relative error {:e}",
             sum / n as f64
         );
-        for (i, c) in input.iter().enumerate().skip(good) {
+        for (i, c) in input.iter().enumerate().take(zeros).skip(good) {
+            let (r, unpacked) = (out[3 * i], out[3 * i + 1]);
+            assert_eq!(r.truncate().to_array().map(f32::to_bits), c.truncate().to_array().map(f32::to_bits), "{c:?}: rounding keeps it");
+            assert_eq!(
+                unpacked.truncate().to_array().map(f32::to_bits),
+                c.truncate().abs().to_array().map(f32::to_bits),
+                "{c:?} unpacks as {unpacked:?}"
+            );
+        }
+        for (i, c) in input.iter().enumerate().skip(zeros) {
             let (r, unpacked) = (out[3 * i], out[3 * i + 1]);
             assert!(unpacked.x.is_nan(), "{c:?} unpacks as {unpacked:?}, not as a NaN (a bad contribution)");
             for k in 0..3 {

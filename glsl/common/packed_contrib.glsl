@@ -12,14 +12,30 @@
 #ifndef BIDIR_PACKED_CONTRIB_GLSL
 #define BIDIR_PACKED_CONTRIB_GLSL
 
-uvec2 contrib_pack(vec3 c) {
+// `c` as the packed form holds it: each channel's magnitude rounded to the nearest float with
+// 13, 13 and 14 bits of mantissa (adding half of the dropped bits' unit; a carry moves into the
+// exponent, as it should), the sign kept, an infinite or NaN channel left as it is (rounding
+// could carry a NaN's mantissa away). Branch-free integer steps, which the megakernels run
+// where the wavefront form packs; a negative or non-finite channel, which the packed form
+// counts as bad, stays what it is here.
+vec3 contrib_round(vec3 c) {
     uvec3 b = floatBitsToUint(c);
-    // Adding half of the dropped bits' unit rounds to the nearest (a carry moves into the
-    // exponent, as it should).
-    uint r = (b.x + 0x200u) >> 10u;
-    uint g = (b.y + 0x200u) >> 10u;
-    uint bl = (b.z + 0x100u) >> 9u;
-    if (any(isnan(c)) || any(isinf(c)) || any(lessThan(c, vec3(0.0)))) {
+    uvec3 m = b & 0x7fffffffu;
+    uvec3 r = (m + uvec3(0x200u, 0x200u, 0x100u)) & ~uvec3(0x3ffu, 0x3ffu, 0x1ffu);
+    r = mix(r, m, greaterThanEqual(m, uvec3(0x7f800000u)));
+    return uintBitsToFloat(r | (b & 0x80000000u));
+}
+
+// contrib_round's value in two words: the rounded magnitudes' bits without the dropped ones
+// (a zero of either sign packs as +0). A negative, infinite or NaN channel (or one that
+// rounds up to infinity) packs as a NaN.
+uvec2 contrib_pack(vec3 c) {
+    uvec3 b = floatBitsToUint(contrib_round(c));
+    uvec3 m = b & 0x7fffffffu;
+    uint r = m.x >> 10u;
+    uint g = m.y >> 10u;
+    uint bl = m.z >> 9u;
+    if (any(greaterThanEqual(m, uvec3(0x7f800000u))) || any(greaterThan(b, uvec3(0x80000000u)))) {
         r = 0x1fffffu; // all exponent bits and a mantissa: NaN
     }
     return uvec2(r | (g << 21u), (g >> 11u) | (bl << 10u));
@@ -30,19 +46,6 @@ vec3 contrib_unpack(uvec2 w) {
     uint g = (w.x >> 21u) | ((w.y & 0x3ffu) << 11u);
     uint bl = w.y >> 10u;
     return uintBitsToFloat(uvec3(r << 10u, g << 10u, bl << 9u));
-}
-
-// `c` as the packed form holds it: each channel's magnitude rounded as contrib_pack rounds it,
-// the sign kept, an infinite or NaN channel left as it is (rounding could carry a NaN's
-// mantissa away). Branch-free integer steps, which the megakernels run where the wavefront
-// form packs; a negative or non-finite channel, which the packed form counts as bad, stays what
-// it is here.
-vec3 contrib_round(vec3 c) {
-    uvec3 b = floatBitsToUint(c);
-    uvec3 m = b & 0x7fffffffu;
-    uvec3 r = (m + uvec3(0x200u, 0x200u, 0x100u)) & ~uvec3(0x3ffu, 0x3ffu, 0x1ffu);
-    r = mix(r, m, greaterThanEqual(m, uvec3(0x7f800000u)));
-    return uintBitsToFloat(r | (b & 0x80000000u));
 }
 
 #endif
