@@ -4,13 +4,13 @@
 mod common;
 
 use bidir::bvh::{intersect::TriHit, BuildOptions, Bvh, BvhLayout, Collapse, CpuTracer, TriTest};
-use bidir::gpu::abi::{GpuHit, GpuRay, NO_HIT};
+use bidir::gpu::abi::{self, GpuHit, GpuRay, NO_HIT};
 use bidir::gpu_data::GpuBvh;
 use bidir::trace::sort::{direction_cell, sort_key, sort_push};
 use bidir::trace::{RaySorter, TraceOptions, Tracer};
 use bidir::vk::Context;
 use common::{finish, geometry, gpu, Pcg};
-use glam::Vec3;
+use glam::{Vec3, Vec4};
 use std::sync::OnceLock;
 
 /// How the device rounds the watertight test's fma() (asked once; see `bidir::bvh::intersect::Fma`),
@@ -809,6 +809,72 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
         }
     }
     drop((gbvh, plain, counts, ray_buf, hits, stats, dispatch));
+    finish(ctx);
+}
+
+/// The wavefront passes' compact ray forms (`TraceOptions::ray_words`; glsl/common/ray_words.glsl,
+/// `bidir::trace::ray_forms`): segments in 24 bytes, closest hit, and shadow rays in 28, any hit,
+/// each traced to the hit its `GpuRay` gets, bit for bit, in every loop the queued traces run
+/// (per ray, dynamic fetch); a segment's zero direction is no segment. Forms the kernels do not
+/// read are refused.
+#[test]
+fn compact_ray_forms_trace_as_their_gpu_rays() {
+    use bidir::trace::ray_forms;
+    use bidir::vk::{Bind, Memory};
+    let ctx = gpu();
+    let scene = bidir::scene::Scene::builtin_cornell_box();
+    let mut rng = Pcg::new(37);
+    let (lo, hi) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(556.0, 548.8, 559.2));
+    let mixed = mixed_rays(&mut rng, lo, hi, 3_000);
+    // Segments: unbounded, every 101st absent (tmax < 0, a zero direction); shadow rays as drawn.
+    let segments: Vec<GpuRay> = mixed
+        .iter()
+        .map(|r| match r.dir.w < 0.0 {
+            true => GpuRay { origin: Vec4::ZERO, dir: Vec4::new(0.0, 0.0, 0.0, -1.0) },
+            false => GpuRay { dir: r.dir.truncate().extend(ray_forms::SEGMENT_TMAX), ..*r },
+        })
+        .collect();
+    let opts = BuildOptions { layout: BvhLayout::Bvh4, ..Default::default() };
+    let bvh = Bvh::build(&scene.positions, &scene.triangles, &opts).unwrap();
+    let gbvh = GpuBvh::upload(&ctx, &bvh).unwrap();
+    let base = TraceOptions { layout: BvhLayout::Bvh4, count_buffer: true, ..TraceOptions::new(opts.tri_test) };
+    let compact = [abi::RAY_WORDS_SEGMENT, abi::RAY_WORDS_BOUNDED];
+    for bad in [[abi::RAY_WORDS_BOUNDED, abi::RAY_WORDS_BOUNDED], [abi::RAY_WORDS_SEGMENT, abi::RAY_WORDS_SEGMENT], [5, 8]] {
+        assert!(Tracer::with_options(&ctx, &TraceOptions { ray_words: bad, ..base }).is_err(), "{bad:?}");
+    }
+    let seeded = TraceOptions { ray_words: compact, ray_seed: true, alpha: Some(bidir::gpu_data::SceneFeatures::default()), ..base };
+    assert!(Tracer::with_options(&ctx, &seeded).is_err(), "compact rays with an opacity seed");
+    let plain = Tracer::with_options(&ctx, &TraceOptions { count_buffer: false, ..base }).unwrap();
+    let counts = ctx.upload_buffer("test.counts", &[mixed.len() as u32]).unwrap();
+    let hits = ctx.create_buffer("test.hits", mixed.len() as u64 * 16, Memory::Device).unwrap();
+    let stats = ctx.create_buffer("test.stats", 8, Memory::Device).unwrap();
+    for (loop_kind, o) in [("per ray", base), ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base })] {
+        let tracer = Tracer::with_options(&ctx, &TraceOptions { ray_words: compact, ..o }).unwrap();
+        for (any_hit, rays) in [(false, &segments), (true, &mixed)] {
+            let want: Vec<GpuHit> = plain.trace(&ctx, &gbvh, rays, any_hit).unwrap();
+            let form = compact[any_hit as usize];
+            let queue = ray_forms::pack(rays, form).unwrap();
+            let ray_buf = ctx.upload_buffer("test.compact_rays", &queue).unwrap();
+            ctx.submit("compact trace", |rec| {
+                let geometry: Vec<Bind> = gbvh.binds();
+                tracer.record_trace_queued(rec, &geometry, &ray_buf, &hits, &stats, rays.len() as u32, Some((&counts, 0)), any_hit, None)
+            })
+            .unwrap();
+            let got: Vec<GpuHit> = ctx.read_buffer(&hits).unwrap();
+            let hit_count = want.iter().filter(|h| h.tri != NO_HIT).count();
+            assert!(hit_count * 4 > rays.len(), "{loop_kind}, any hit {any_hit}: only {hit_count} rays hit");
+            for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                assert_eq!(
+                    (g.tri, g.t.to_bits(), g.u.to_bits(), g.v.to_bits()),
+                    (w.tri, w.t.to_bits(), w.u.to_bits(), w.v.to_bits()),
+                    "{loop_kind}, any hit {any_hit}, form {form}: ray {i} ({:?})",
+                    rays[i]
+                );
+            }
+            drop(ray_buf);
+        }
+    }
+    drop((gbvh, plain, counts, hits, stats));
     finish(ctx);
 }
 

@@ -58,9 +58,7 @@ layout(std430, binding = BIND_LVC_INDEX) readonly buffer LvcIndex { uvec4 lvc_in
 layout(std430, binding = BIND_LVC_TOTAL) readonly buffer LvcTotal { uint lvc_total; };
 // The slots' paths (`camera_state_load`).
 layout(std430, binding = BIND_PT_SUSPENDED) buffer State { uvec4 state_words[]; };
-layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
-layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 layout(std430, binding = BIND_WF_CONTRIB) buffer Contrib { uvec2 wf_contrib[]; }; // contrib_pack
@@ -171,7 +169,7 @@ void run_slot() {
     if (!valid) {
         if (fresh) {
             // A slot past the window's pixels (tiled_pixel) still has its place in the queue.
-            wf_rays[g] = WF_NO_SEGMENT;
+            wf_queue_no_segment(g);
             atomicAdd(wf_counts[2u * launch], 1u);
         }
         return;
@@ -294,19 +292,19 @@ void run_slot() {
     queue_base = subgroupBroadcastFirst(queue_base);
     uvec2 next = uvec2(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupExclusiveAdd(wf_shadow_count));
     if (fresh) {
-        wf_rays[g] = wavefront_ray(o, d, 3.0e38, blend_seed); // every path is live: no state yet
+        wf_queue_segment(g, o, d, blend_seed); // every path is live: no state yet
     } else if (alive) {
         camera_state_store(g, BdptCameraState(uvec4(floatBitsToUint(sum), depth), vec4(d, d_vcm), vec4(beta, d_vc),
             uvec4(floatBitsToUint(sigma_near), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
             wf_queue_word(next, wf_shadow_count));
-        wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
+        wf_queue_segment(next.x, o, d, blend_seed);
     } else if (wf_shadow_count > 0u) {
         // The path ended with shadow rays pending: the next launch adds what they carry.
         state_words[g * WF_STATE_STRIDE] = uvec4(floatBitsToUint(sum), WF_PATH_DONE);
         state_words[g * WF_STATE_STRIDE + 3u].zw = wf_queue_word(next, wf_shadow_count);
     }
     for (uint i = 0u; i < wf_shadow_count; i++) {
-        wf_shadow_rays[next.y + i] = wavefront_ray(wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);
+        wf_queue_shadow(next.y + i, wf_shadow[i].o, wf_shadow[i].d, wf_shadow[i].tmax, blend_seed);
         wf_contrib[write_half + next.y + i] = contrib_pack(wf_shadow_contrib[i]);
     }
     wf_list_next(pc.launch, g, alive || wf_shadow_count > 0u);

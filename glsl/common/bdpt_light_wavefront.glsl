@@ -45,9 +45,7 @@ layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; 
 layout(std430, binding = BIND_LVC_OFFSETS) writeonly buffer LvcOffsets { uint lvc_offsets[]; };
 // The light paths (`light_state_load`).
 layout(std430, binding = BIND_PT_SUSPENDED) buffer State { uvec4 state_words[]; };
-layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
-layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 // A join's contribution (rgb, a float's bits) and its film pixel (w), at its shadow ray's place.
@@ -248,14 +246,18 @@ void run_slot() {
     queue_base = subgroupBroadcastFirst(queue_base);
     uvec2 next = uvec2(queue_base.x + subgroupBallotExclusiveBitCount(ext_lanes), queue_base.y + subgroupBallotExclusiveBitCount(join_lanes));
     if (fresh) {
-        wf_rays[path] = alive ? wavefront_ray(o, d, 3.0e38, blend_seed) : WF_NO_SEGMENT;
+        if (alive) {
+            wf_queue_segment(path, o, d, blend_seed);
+        } else {
+            wf_queue_no_segment(path);
+        }
     }
     if (alive) {
         if (!fresh) { // (the first launch stores no state)
             light_state_store(path, BdptLightState(vec4(o, beta0), vec4(d, d_vcm), vec4(beta, d_vc), vec4(sigma_near, 0.0),
                 uvec4(depth, seen, stored | (at_infinity ? 0x80000000u : 0u), blend_seed), uvec4(rng.state, rng.index, rng.dim, PT_SUSPENDED)),
                 wf_queue_word(next, wf_join_count));
-            wf_rays[next.x] = wavefront_ray(o, d, 3.0e38, blend_seed);
+            wf_queue_segment(next.x, o, d, blend_seed);
         }
     } else {
         if (status != PT_DONE) {
@@ -269,7 +271,7 @@ void run_slot() {
         }
     }
     if (wf_join_count > 0u) {
-        wf_shadow_rays[next.y] = wavefront_ray(wf_join.o, wf_join.d, wf_join.tmax, blend_seed);
+        wf_queue_shadow(next.y, wf_join.o, wf_join.d, wf_join.tmax, blend_seed);
         wf_contrib[write_half + next.y] = uvec4(floatBitsToUint(wf_join_contrib), wf_join_pixel);
     }
     wf_list_next(pc.launch, path, alive || wf_join_count > 0u);

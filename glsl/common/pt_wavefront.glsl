@@ -51,9 +51,7 @@ layout(std430, binding = BIND_RENDER_STATS) buffer Stats { uint render_stats[]; 
 layout(std430, binding = BIND_SLICES) buffer Slices { vec4 slices_out[]; };
 // The slots' paths (`WF_STATE_STRIDE` words each, below).
 layout(std430, binding = BIND_PT_SUSPENDED) buffer State { uvec4 state_words[]; };
-layout(std430, binding = BIND_WF_RAYS) writeonly buffer Rays { GpuRay wf_rays[]; };
 layout(std430, binding = BIND_WF_HITS) readonly buffer Hits { GpuHit wf_hits[]; };
-layout(std430, binding = BIND_WF_SHADOW_RAYS) writeonly buffer ShadowRays { GpuRay wf_shadow_rays[]; };
 // Per shadow ray its any-hit trace's word (SPEC_HIT_WORDS): NO_HIT where it is clear.
 layout(std430, binding = BIND_WF_SHADOW_HITS) readonly buffer ShadowHits { uint wf_shadow_hits[]; };
 // A light sample's contribution at its shadow ray's place, in the half of the buffer of the
@@ -227,13 +225,13 @@ void main() {
         if (WF_STATE_SIGMA_SEED) {
             state_words[w + 4u] = uvec4(floatBitsToUint(path.sigma_near), blend_seed);
         }
-        wf_rays[queued.x] = wavefront_ray(path.o, path.d, 3.0e38, blend_seed);
+        wf_queue_segment(queued.x, path.o, path.d, blend_seed);
     } else if (status != PT_DONE || pending || wf_shadow_pending) {
         // Done (its samples all ended): what the next launch still has to add, if anything.
         state_words[w + 3u].w = pt_queue_word(queued.y, wf_shadow_pending, PT_DONE);
     }
     if (wf_shadow_pending) {
-        wf_shadow_rays[queued.y] = wavefront_ray(wf_shadow.o, wf_shadow.d, wf_shadow.tmax, shadow_seed);
+        wf_queue_shadow(queued.y, wf_shadow.o, wf_shadow.d, wf_shadow.tmax, shadow_seed);
         wf_contrib[write_half + queued.y] = vec4(wf_shadow_contrib, 0.0);
     }
 

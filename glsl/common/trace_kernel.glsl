@@ -6,6 +6,8 @@
 #ifndef BIDIR_TRACE_KERNEL_GLSL
 #define BIDIR_TRACE_KERNEL_GLSL
 
+#include "ray_words.glsl"
+
 // A kernel may pick another workgroup size (trace_wg*.comp: `bench traversal
 // --workgroup-size`) by defining TRACE_KERNEL_WG_SIZE first.
 #ifndef TRACE_KERNEL_WG_SIZE
@@ -16,6 +18,22 @@ layout(constant_id = SPEC_ANY_HIT) const uint ANY_HIT = 0u;
 layout(constant_id = SPEC_PERSISTENT) const uint PERSISTENT = 0u;
 layout(constant_id = SPEC_RAYS_PER_INVOCATION) const uint RAYS_PER_INVOCATION = 1u;
 layout(std430, binding = BIND_RAYS) readonly buffer Rays { GpuRay rays[]; };
+// The same rays in a compact form (SPEC_RAY_WORDS; ray_words.glsl), viewed as 16-, 8- and
+// 4-byte words.
+layout(constant_id = SPEC_RAY_WORDS) const uint RAY_WORDS = RAY_WORDS_FULL;
+layout(std430, binding = BIND_RAYS) readonly buffer RayQuads { uvec4 ray_quads[]; };
+layout(std430, binding = BIND_RAYS) readonly buffer RayPairs { uvec2 ray_pairs[]; };
+layout(std430, binding = BIND_RAYS) readonly buffer RayWords { uint ray_words[]; };
+
+// Ray i of the queue, in whichever form it was queued.
+GpuRay load_ray(uint i) {
+    if (RAY_WORDS == RAY_WORDS_FULL) {
+        return rays[i];
+    }
+    uint cap = uint(ray_quads.length()) / 2u; // the queue's 32-byte places
+    uint word = RAY_WORDS == RAY_WORDS_BOUNDED ? ray_words[ray_word_index(i, cap)] : 0u;
+    return ray_from_parts(RAY_WORDS, ray_quads[i], ray_pairs[ray_pair_index(i, cap)], word);
+}
 // Per ray its GpuHit's four words (t, tri, u, v); with SPEC_HIT_WORDS (any-hit kernels) one
 // word per ray instead, the hit's `tri` (NO_HIT: clear), the buffer read as words.
 layout(std430, binding = BIND_HITS) writeonly buffer Hits { uvec4 hits[]; };
@@ -56,7 +74,7 @@ float ray_tmin(GpuRay r) {
 }
 
 void trace_one(uint i, inout uvec2 stats) {
-    GpuRay r = rays[i];
+    GpuRay r = load_ray(i);
     TraceHit h = TraceHit(r.dir.w, NO_HIT, vec2(0.0));
     // Lockstep loops (SPEC_LOCKSTEP) take every lane, a ray without a segment too (it is
     // done at once): the call then sits in no branch.
@@ -116,7 +134,7 @@ void trace_dynamic(inout uvec2 stats) {
                 exhausted = base + idle_count >= ray_total || refills >= pc.max_batches;
                 uint i = base + subgroupBallotExclusiveBitCount(idle_lanes);
                 if (idle && i < ray_total) {
-                    GpuRay r = rays[i];
+                    GpuRay r = load_ray(i);
                     ray = i;
                     tmin = ray_tmin(r);
                     pr = prepare_ray(r.origin.xyz, r.dir.xyz, tmin);

@@ -201,6 +201,25 @@ s54)
   for n in hd pk c12; do echo "== $n 1 s bdpt: $(at_time .device/bidir-$n 1 $CB --integrator bdpt)"; done
   case "$g" in *H200*) ;; *) echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee)" ;; esac
   ;;
+s55b)
+  # Session 55: the wavefront passes' rays in compact forms (rw: segments in 24 bytes, shadow
+  # rays in 28, glsl/common/ray_words.glsl) against HEAD before them (hd): two rounds, the order
+  # reversed in the second, BDPT on the Cornell box, where the light hides and on DamagedHelmet,
+  # pt-nee on Sponza under sun and sky (the wavefront path tracer); rw's wavefront images against
+  # its megakernels'; issue #16's ratio with rw.
+  device_line
+  unpack hd rw
+  for r in 1 2; do
+    order="hd rw"; [ $r = 2 ] && order="rw hd"
+    for n in $order; do
+      F=.device/bidir-$n
+      echo "== r$r $n cornell: $(kernel_ms $F $CB --integrator bdpt --spp 1024) hidden: $(kernel_ms $F $HID --integrator bdpt --spp 1024)"
+      echo "== r$r $n helmet: $(kernel_ms $F $HB --integrator bdpt --spp 256) sponza pt-nee: $(gpu_ms $F $SP --integrator pt-nee --spp 64)"
+    done
+  done
+  echo "== rw wf-vs-mega cornell bdpt: $(wf_vs_mega .device/bidir-rw $CB --integrator bdpt) sponza pt-nee: $(wf_vs_mega .device/bidir-rw $SP --integrator pt-nee)"
+  ratio_lines "$PWD/.device/bidir-rw"
+  ;;
 s55)
   # The next start: .device/bidir-hd.gz is a build of HEAD (session 54's packed contributions).
   # On an H200 issue #16's ratio (pt-nee and bdpt, 1024 spp and 1 s) and #17's Sponza round;

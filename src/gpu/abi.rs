@@ -404,6 +404,19 @@ gpu_consts! {
     /// store, 0 one per light path looping over its stored slots
     /// (`render::default_lvc_listing_per_slot`).
     pub const SPEC_LVC_LIST_PER_SLOT: u32 = 65;
+    /// Trace kernels: the form of the rays in BIND_RAYS (glsl/common/ray_words.glsl), as
+    /// 32-bit words per ray: RAY_WORDS_FULL (`GpuRay`s, the default), RAY_WORDS_SEGMENT
+    /// (closest-hit rays from 0 to unbounded) or RAY_WORDS_BOUNDED (any-hit rays from 0 to their
+    /// tmax) in the compact structure-of-arrays forms the wavefront passes queue where rays carry
+    /// no opacity seed (`TraceOptions::ray_words`).
+    pub const SPEC_RAY_WORDS: u32 = 66;
+    /// Wavefront path kernels: the forms (RAY_WORDS_*) of the segments and of the shadow rays
+    /// they queue for the trace kernels (glsl/common/wf_ray.glsl; `wavefront_queues::ray_words`).
+    pub const SPEC_WF_SEGMENT_WORDS: u32 = 67;
+    pub const SPEC_WF_SHADOW_WORDS: u32 = 68;
+    pub const RAY_WORDS_FULL: u32 = 8;
+    pub const RAY_WORDS_SEGMENT: u32 = 6;
+    pub const RAY_WORDS_BOUNDED: u32 = 7;
     /// Per invocation of the megakernel, its path between the launches of a pass (`PtSuspended`);
     /// per slot of a wavefront form, its path between launches in up to WF_STATE_WORDS 16-byte
     /// words (the path tracer's: pt_wavefront.glsl; BDPT's camera and light passes:

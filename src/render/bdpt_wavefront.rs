@@ -141,7 +141,7 @@ impl WavefrontPasses {
         let what = ("BDPT's wavefront passes", "bdpt_wavefront");
         let bytes = slot_bytes(shadow);
         let queues = Queues::new(ctx, scene, what, slots, shadow, bytes, true)?;
-        let specs = [specs, &[queues.trace_groups_spec()]].concat();
+        let specs = [specs, &[queues.trace_groups_spec()], &queues.ray_specs()].concat();
         let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, &specs)?;
         let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, &specs)?;
         let finish = settings.wavefront_finish;

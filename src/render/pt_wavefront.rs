@@ -65,17 +65,19 @@ impl WavefrontPathTracer {
         specs.push(Spec { id: abi::SPEC_TRI_TEST, value: scene.bvh.tri_test.spec_value() });
         specs.push(Spec { id: abi::SPEC_NEE, value: nee as u32 });
         specs.push(settings.sampler.spec());
+        let what = ("the wavefront path tracer", "pt_wavefront");
+        let queues = Queues::new(ctx, scene, what, slots, 1, SLOT_BYTES, false)?;
+        specs.extend(queues.ray_specs());
         let kernel = ctx.create_kernel(&kernels::PT_WAVEFRONT, &specs)?;
         let finish = settings.wavefront_finish;
         let finisher = match finish {
             WavefrontFinish::Off => None,
             _ => Some(ctx.create_kernel(scene.bvh.kernel(&kernels::PT_FINISH_FORMS), &specs)?),
         };
-        let what = ("the wavefront path tracer", "pt_wavefront");
         let buffer = |name: &str, bytes: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, bytes, SLOT_BYTES);
         Ok(WavefrontPathTracer {
             kernel,
-            queues: Queues::new(ctx, scene, what, slots, 1, SLOT_BYTES, false)?,
+            queues,
             state: buffer("state", STATE_BYTES)?,
             // Two halves, written by launches of alternate parity (pt_wavefront.glsl).
             contrib: buffer("contrib", 2 * 16)?,

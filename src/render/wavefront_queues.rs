@@ -32,11 +32,24 @@ pub fn trace_options(scene: &GpuScene, on_cpu: bool, subgroup_size: u32, alpha: 
     opts.ray_seed = alpha;
     opts.count_buffer = true;
     opts.any_hit_words = true;
+    opts.ray_words = ray_words(alpha);
     if scene.bvh.layout == crate::bvh::BvhLayout::Bvh4 && !on_cpu && subgroup_size >= 32 {
         opts.persistent = Some(0);
         opts.refill_lanes = REFILL_LANES;
     }
     opts
+}
+
+/// The forms of the segments and of the shadow rays the wavefront passes queue (the path
+/// kernels' SPEC_WF_SEGMENT_WORDS and SPEC_WF_SHADOW_WORDS, the trace kernels'
+/// `TraceOptions::ray_words`): whole `GpuRay`s where the scene has alpha (each ray carries its
+/// path's opacity seed), else the compact forms of glsl/common/ray_words.glsl, 24 and 28 bytes
+/// of memory traffic a ray instead of 32.
+pub fn ray_words(alpha: bool) -> [u32; 2] {
+    match alpha {
+        true => [abi::RAY_WORDS_FULL; 2],
+        false => [abi::RAY_WORDS_SEGMENT, abi::RAY_WORDS_BOUNDED],
+    }
 }
 
 /// The queues of a wavefront pass of up to `slots` slots, each queueing one segment and up to
@@ -179,6 +192,13 @@ impl Queues {
         let t = &self.tracer;
         let most = t.queued_groups(self.slots).max(t.queued_groups(self.slots.saturating_mul(self.shadow)));
         Spec { id: abi::SPEC_WF_TRACE_GROUPS, value: most }
+    }
+
+    /// The path kernel's specialisation constants for the forms of the rays it queues (as the
+    /// trace kernels read them: `ray_words`).
+    pub fn ray_specs(&self) -> [Spec; 2] {
+        let [segment, shadow] = self.tracer.options().ray_words;
+        [Spec { id: abi::SPEC_WF_SEGMENT_WORDS, value: segment }, Spec { id: abi::SPEC_WF_SHADOW_WORDS, value: shadow }]
     }
 
     /// The queues' bindings for the path kernel.

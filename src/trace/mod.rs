@@ -3,6 +3,7 @@
 //! integrators call the same GLSL traversal inline; this module serves the tests, the
 //! benchmark and the wavefront path tracer (`render::pt_wavefront`).
 
+pub mod ray_forms;
 pub mod sort;
 pub use sort::RaySorter;
 
@@ -84,6 +85,11 @@ pub struct TraceOptions {
     /// The any-hit kernel writes one word per ray, NO_HIT where the segment is clear
     /// (SPEC_HIT_WORDS), instead of a `GpuHit`: a quarter of the bytes, for the wavefront passes.
     pub any_hit_words: bool,
+    /// The form of the rays the closest-hit and the any-hit kernel read (SPEC_RAY_WORDS):
+    /// `abi::RAY_WORDS_FULL` (`GpuRay`s) for both by default; the wavefront passes' compact
+    /// forms (`abi::RAY_WORDS_SEGMENT`, `abi::RAY_WORDS_BOUNDED`; glsl/common/ray_words.glsl) where
+    /// their rays carry no opacity seed (`render::wavefront_queues::ray_words`).
+    pub ray_words: [u32; 2],
 }
 
 impl TraceOptions {
@@ -107,6 +113,7 @@ impl TraceOptions {
             ray_seed: false,
             count_buffer: false,
             any_hit_words: false,
+            ray_words: [abi::RAY_WORDS_FULL; 2],
         }
     }
 }
@@ -291,17 +298,31 @@ impl Tracer {
             }
             (None, BvhLayout::Bvh4) => &kernels::TRACE_BVH4,
         };
-        let with = |id, value| {
+        let [closest_words, any_words] = opts.ray_words;
+        let compact = [closest_words, any_words] != [abi::RAY_WORDS_FULL; 2];
+        let forms_ok = matches!(closest_words, abi::RAY_WORDS_FULL | abi::RAY_WORDS_SEGMENT)
+            && matches!(any_words, abi::RAY_WORDS_FULL | abi::RAY_WORDS_BOUNDED);
+        if !forms_ok || (compact && opts.ray_seed) {
+            let msg = format!(
+                "rays of {closest_words} and {any_words} words: closest-hit rays take {} or {}, any-hit rays {} or {}, and rays that carry an opacity seed take {}",
+                abi::RAY_WORDS_FULL,
+                abi::RAY_WORDS_SEGMENT,
+                abi::RAY_WORDS_FULL,
+                abi::RAY_WORDS_BOUNDED,
+                abi::RAY_WORDS_FULL
+            );
+            return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
+        }
+        let with = |any_hit: bool, extra: &[Spec]| {
             let mut s = trace_specs.clone();
-            s.push(Spec { id, value });
+            s.push(Spec { id: abi::SPEC_ANY_HIT, value: any_hit as u32 });
+            s.push(Spec { id: abi::SPEC_RAY_WORDS, value: opts.ray_words[any_hit as usize] });
+            s.extend_from_slice(extra);
             s
         };
         Ok(Tracer {
-            closest: ctx.create_kernel(source, &with(abi::SPEC_ANY_HIT, 0))?,
-            any: ctx.create_kernel(
-                source,
-                &[with(abi::SPEC_ANY_HIT, 1), vec![Spec { id: abi::SPEC_HIT_WORDS, value: opts.any_hit_words as u32 }]].concat(),
-            )?,
+            closest: ctx.create_kernel(source, &with(false, &[]))?,
+            any: ctx.create_kernel(source, &with(true, &[Spec { id: abi::SPEC_HIT_WORDS, value: opts.any_hit_words as u32 }]))?,
             gen_primary: ctx.create_kernel(&kernels::GEN_PRIMARY, &[])?,
             gen_shadow: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 0 }])?,
             gen_diffuse: ctx.create_kernel(&kernels::GEN_SECONDARY, &[base[0], Spec { id: abi::SPEC_SECONDARY_KIND, value: 1 }])?,

@@ -167,8 +167,10 @@ impl Module {
         self.local_size
     }
 
-    /// Descriptor bindings of set 0, sorted by binding; `Err` for a set other than 0 or a
-    /// resource type bidir does not bind.
+    /// Descriptor bindings of set 0, sorted by binding, each once (a kernel may view one buffer
+    /// as arrays of several types, each a variable of its own at the same binding); `Err` for a
+    /// set other than 0, a resource type bidir does not bind, or variables of one binding whose
+    /// descriptors differ.
     pub fn bindings(&self) -> Result<Vec<ReflectedBinding>, String> {
         let mut out = Vec::new();
         for &(ptr, id, storage) in &self.variables {
@@ -197,6 +199,10 @@ impl Module {
             out.push(ReflectedBinding { binding, descriptor_type, count });
         }
         out.sort_by_key(|b| b.binding);
+        if let Some(w) = out.windows(2).find(|w| w[0].binding == w[1].binding && w[0] != w[1]) {
+            return Err(format!("binding {} is declared as two kinds of descriptor: {:?} and {:?}", w[0].binding, w[0], w[1]));
+        }
+        out.dedup();
         Ok(out)
     }
 
