@@ -7,6 +7,7 @@
 # with), .device/ref.exr (../shared/references/cornell-box/reference-bidir-h200.exr) and,
 # for some parts, .device/bidir-prev / .device/bidir-pre.
 #
+# Session 55 (H100s only): s55 (issue #16's ratio with HEAD, 2.11; the megakernels' rounding costs vcm 0.5 %), s55b (the wavefront passes' rays in compact forms, rw: BDPT 1 % faster, kept), s55c (session 51's early candidate reads, pf, against er: 4 % slower, not kept); docs/results.md, "Rays in 24 and 28 bytes". bidir-h53.gz went back to /work/device-spare; bidir-er.gz and bidir-pf.gz are in .device.
 # Session 54 (one H100 start of thirteen; no H200): s54 and four calls by hand (the camera pass's shadow-ray contributions in 8 bytes, pk: kept; in 12, c12, scripts/device/s54-contrib-12.patch: 0.3 %, not kept; docs/results.md, "Shadow-ray contributions in 8 bytes"). Ran in session 54 (s54; its hd is now .device/bidir-h53.gz). s53b and s53c (never run, superseded by s55) were dropped. Prepared: s55 (issue #16's ratio with a build of HEAD as .device/bidir-hd.gz; on an H200 #17's Sponza round). bidir-sf and bidir-nd are in /work/device-spare.
 # Session 53 (one H100 start of eight; no H200): s53 (the camera kernel's shadow rays at constant indices, builds cs and ci2: not kept; s51b's early reads: kept for the camera kernel, 8aeb81a; the light kernels through spirv-opt as fast as without, fe42f3d; docs/results.md, "The camera kernel's pending shadow rays; early reads; the light kernels' SPIR-V"). Prepared: s53b (on an H200 issue #16's ratio and #17's Sponza round with .device/bidir-hd.gz, a build of 8aeb81a; then hd against sf and nd on any card) and its cut s53c. s52's cuts s52s and s52t (never run) and s53s were dropped; bidir-er, -pf, -cs, -ci2, -new, -ns and -bs are in /work/device-spare.
 # Session 52 (no machine: eight starts failed between 01:47 and 03:09, the last call was refused with 419 s of device time left): prepared s52 (on an H200 s51q and #17's Sponza round with .device/bidir-sf.gz, then s51b; elsewhere s51b, sf's pt-nee, s51q, and the camera kernel's whole statistics: its shadow rays' arrays are Function-scope arrays indexed at run time in the SPIR-V, so the driver may keep them in local memory); its cuts s52s and s52t were dropped in session 53.
@@ -200,6 +201,42 @@ s54)
   echo "== pk wavefront against megakernels: $(wf_vs_mega .device/bidir-pk $CB --integrator bdpt)"
   for n in hd pk c12; do echo "== $n 1 s bdpt: $(at_time .device/bidir-$n 1 $CB --integrator bdpt)"; done
   case "$g" in *H200*) ;; *) echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee)" ;; esac
+  ;;
+s55d)
+  # Session 55: the wavefront passes' trace loops (a measurement build of rw, tx:
+  # BIDIR_EXP_WF_TRACE = lockstep (one ray per invocation), persistent (batches, no refill) or
+  # refill=N (dynamic fetch at N lanes; the default 16)): GPU ms and the trace kernels' ms per run.
+  device_line
+  unpack tx
+  k='GPU [0-9.]+ ms|trace_[a-z0-9_]+ +[0-9]+\.[0-9]{3}'
+  for v in default lockstep persistent refill=8 refill=24 default; do
+    e=""; [ $v != default ] && e="BIDIR_EXP_WF_TRACE=$v"
+    echo "== $v cornell: $(env $e timeout -k 5 60 .device/bidir-tx bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' ')"
+    echo "== $v hidden: $(env $e timeout -k 5 60 .device/bidir-tx bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' ')"
+    echo "== $v helmet: $(env $e timeout -k 5 60 .device/bidir-tx bench render $HB --integrator bdpt --spp 256 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' ')"
+    echo "== $v sponza pt-nee: $(env $e timeout -k 5 60 .device/bidir-tx bench render $SP --integrator pt-nee --spp 64 --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' ')"
+  done
+  ;;
+s55c)
+  # Session 55: on an H200 first issue #16's ratio with hd and with rw (the compact ray forms),
+  # #17's Sponza round with rw; then on any card session 51's question left open: the camera kernel's
+  # early reads with the connection's candidates asked for early too (pf, s51b-early-reads.patch
+  # with WF_LVC_PREFETCH) against the early reads alone (er), two rounds, the order reversed in
+  # the second, with their wavefront images against their megakernels'.
+  device_line
+  unpack rw er pf
+  case "$g" in
+    *H200*) unpack hd; ratio_lines "$PWD/.device/bidir-hd"; ratio_lines "$PWD/.device/bidir-rw"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-rw" ;;
+  esac
+  for r in 1 2; do
+    order="er pf"; [ $r = 2 ] && order="pf er"
+    for n in $order; do
+      F=.device/bidir-$n
+      echo "== r$r $n cornell: $(kernel_ms $F $CB --integrator bdpt --spp 1024) hidden: $(kernel_ms $F $HID --integrator bdpt --spp 1024)"
+    done
+  done
+  echo "== pf wf-vs-mega cornell bdpt: $(wf_vs_mega .device/bidir-pf $CB --integrator bdpt)"
   ;;
 s55b)
   # Session 55: the wavefront passes' rays in compact forms (rw: segments in 24 bytes, shadow
