@@ -82,6 +82,7 @@ bdpt_scene_benches() {
 # options (a scene and the integrator), as one RMSE line.
 wf_vs_mega() {
   local b=$1; shift
+  rm -f /tmp/m.exr /tmp/w.exr # (a render that fails compares nothing, not the last call's images)
   timeout -k 5 60 "$b" render "$@" --wavefront off --spp 16 --seed 3 -o /tmp/m.exr > /dev/null 2>&1
   timeout -k 5 60 "$b" render "$@" --wavefront on --spp 16 --seed 3 -o /tmp/w.exr > /dev/null 2>&1
   "$b" diff /tmp/w.exr /tmp/m.exr 2>&1 | grep -E '^RMSE'
@@ -164,6 +165,23 @@ s54)
   echo "== pk wavefront against megakernels: $(wf_vs_mega .device/bidir-pk $CB --integrator bdpt)"
   for n in hd pk c12; do echo "== $n 1 s bdpt: $(at_time .device/bidir-$n 1 $CB --integrator bdpt)"; done
   case "$g" in *H200*) ;; *) echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee)" ;; esac
+  ;;
+s55e)
+  # Session 55's tries for an H200: there, issue #16's ratio with rw (HEAD's kernels since
+  # a7a2f8a, the compact rays) and with hd (3935d5d), then #17's Sponza round with rw; on any
+  # other card nothing (the call only tells which card came).
+  device_line
+  case "$g" in
+    *H200*) unpack rw hd
+      ratio_lines "$PWD/.device/bidir-rw"
+      ratio_lines "$PWD/.device/bidir-hd"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-rw"
+      echo "== rw again pt-nee: $(gpu_ms .device/bidir-rw $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms .device/bidir-rw $CB --integrator bdpt --spp 1024)" ;;
+    *) unpack rw
+      # Sponza's pt-nee: the wavefront image against the megakernels' over one BVH (the defaults
+      # differ by RMSE 0.018640 on an H100, the megakernel over cwbvh, the wavefront over bvh4).
+      echo "== rw wf-vs-mega sponza pt-nee, both bvh4: $(wf_vs_mega .device/bidir-rw $SP --integrator pt-nee --bvh bvh4) both cwbvh: $(wf_vs_mega .device/bidir-rw $SP --integrator pt-nee --bvh cwbvh)" ;;
+  esac
   ;;
 s55d)
   # Session 55: the wavefront passes' trace loops (a measurement build of rw, tx:
