@@ -47,7 +47,7 @@ void wf_queue_no_segment(uint i) {
     }
 }
 
-// Queues the shadow ray from `o` along `d` up to `tmax` (>= 0) at place i.
+// Queues the shadow ray from `o` along `d` up to `tmax` (the path's opacity seed `seed`) at place i.
 void wf_queue_shadow(uint i, vec3 o, vec3 d, float tmax, uint seed) {
     if (WF_SHADOW_WORDS == RAY_WORDS_BOUNDED) {
         uint cap = uint(wf_shadow_quads.length()) / 2u;
