@@ -166,6 +166,25 @@ s54)
   for n in hd pk c12; do echo "== $n 1 s bdpt: $(at_time .device/bidir-$n 1 $CB --integrator bdpt)"; done
   case "$g" in *H200*) ;; *) echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee)" ;; esac
   ;;
+s55f)
+  # Session 55: the finishing launch's threshold where the wavefront traces are not persistent
+  # (fb: what the device keeps resident, not a quarter of the queue's slots) against rw, with
+  # --wavefront-finish off beside them: BDPT on the Cornell box over cwbvh and bvh2 and over the
+  # default bvh4 (unchanged); the wavefront path tracer over cwbvh on Sponza and the Cornell box.
+  device_line
+  unpack rw fb
+  for bvh in cwbvh bvh2 bvh4; do
+    for n in rw fb; do
+      echo "== $n cornell bdpt --bvh $bvh: $(kernel_ms .device/bidir-$n $CB --integrator bdpt --spp 1024 --bvh $bvh --wavefront on)"
+    done
+  done
+  echo "== off cornell bdpt --bvh cwbvh: $(kernel_ms .device/bidir-fb $CB --integrator bdpt --spp 1024 --bvh cwbvh --wavefront on --wavefront-finish off)"
+  for n in rw fb; do
+    echo "== $n pt-nee --bvh cwbvh --wavefront on: sponza $(gpu_ms .device/bidir-$n $SP --integrator pt-nee --spp 64 --bvh cwbvh --wavefront on) cornell $(gpu_ms .device/bidir-$n $CB --integrator pt-nee --spp 1024 --bvh cwbvh --wavefront on)"
+  done
+  echo "== off pt-nee --bvh cwbvh --wavefront on: sponza $(gpu_ms .device/bidir-fb $SP --integrator pt-nee --spp 64 --bvh cwbvh --wavefront on --wavefront-finish off) cornell $(gpu_ms .device/bidir-fb $CB --integrator pt-nee --spp 1024 --bvh cwbvh --wavefront on --wavefront-finish off)"
+  echo "== fb wf-vs-mega cornell bdpt --bvh cwbvh: $(wf_vs_mega .device/bidir-fb $CB --integrator bdpt --bvh cwbvh)"
+  ;;
 s55e)
   # Session 55's tries for an H200: there, issue #16's ratio with rw (HEAD's kernels since
   # a7a2f8a, the compact rays) and with hd (3935d5d), then #17's Sponza round with rw; on any
@@ -180,7 +199,13 @@ s55e)
     *) unpack rw
       # Sponza's pt-nee: the wavefront image against the megakernels' over one BVH (the defaults
       # differ by RMSE 0.018640 on an H100, the megakernel over cwbvh, the wavefront over bvh4).
-      echo "== rw wf-vs-mega sponza pt-nee, both bvh4: $(wf_vs_mega .device/bidir-rw $SP --integrator pt-nee --bvh bvh4) both cwbvh: $(wf_vs_mega .device/bidir-rw $SP --integrator pt-nee --bvh cwbvh)" ;;
+      # BDPT's wavefront passes over layouts whose traces are not persistent (cwbvh, bvh2): the
+      # finishing launch's automatic threshold (a quarter of the queue's slots there) against none.
+      for bvh in cwbvh bvh2; do
+        for f in auto off; do
+          echo "== rw cornell bdpt --bvh $bvh --wavefront-finish $f: $(kernel_ms .device/bidir-rw $CB --integrator bdpt --spp 1024 --bvh $bvh --wavefront on --wavefront-finish $f)"
+        done
+      done ;;
   esac
   ;;
 s55d)

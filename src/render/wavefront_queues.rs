@@ -70,6 +70,9 @@ pub struct Queues {
     live: Option<LiveSlots>,
     slots: u32,
     shadow: u32,
+    /// Invocations the device runs at once (`trace::default_persistent_groups` workgroups), for
+    /// `finish_below` where the traces are not persistent; None on CPU devices.
+    device_resident: Option<u32>,
 }
 
 /// Bytes per slot of `Queues` with `shadow` shadow rays: the segment and its hit (a `GpuHit`),
@@ -177,6 +180,8 @@ impl Queues {
             },
             slots: u32::try_from(slots).map_err(|_| RenderError::Memory(format!("{what}: {slots} slots are too many")))?,
             shadow,
+            device_resident: (!super::on_cpu(ctx))
+                .then(|| crate::trace::default_persistent_groups(ctx.info()).saturating_mul(abi::TRACE_WG_SIZE)),
         })
     }
 
@@ -292,17 +297,46 @@ impl Queues {
     }
 
     /// Live paths below which a pass's tail is left to its finishing launch
-    /// (`WavefrontFinish::Auto`): a quarter of the rays the trace kernels run at once (a
-    /// persistent kernel's resident invocations, else the queues' slots).
+    /// (`WavefrontFinish::Auto`): a quarter of the rays the trace kernels run at once
+    /// (`resident_rays`).
     pub fn finish_below(&self) -> u32 {
-        let resident = self.tracer.queued_groups(self.slots).saturating_mul(abi::TRACE_WG_SIZE).min(self.slots);
-        (resident / 4).max(1)
+        let persistent = self.tracer.options().persistent.is_some();
+        let launched = self.tracer.queued_groups(self.slots).saturating_mul(abi::TRACE_WG_SIZE);
+        (resident_rays(persistent, launched, self.device_resident, self.slots) / 4).max(1)
     }
+}
+
+/// Rays the trace kernels of a pass over `slots` slots run at once: a persistent kernel's
+/// resident invocations (`launched`, the workgroups it launches); else, on a GPU, the
+/// invocations the device keeps resident (`device`), and on a CPU device the slots. The queues'
+/// slots alone made the finishing threshold a quarter of the pass on GPUs whose traces are not
+/// persistent (`--bvh cwbvh` or `bvh2`): an NVIDIA H100's Cornell box bdpt then took 153.90 ms
+/// per 1024 spp over cwbvh and 156.51 over bvh2, against 115.41 and 124.28 without a finishing
+/// launch (session 55; docs/results.md, "Rays in 24 and 28 bytes").
+pub fn resident_rays(persistent: bool, launched: u32, device: Option<u32>, slots: u32) -> u32 {
+    match (persistent, device) {
+        (true, _) => launched,
+        (false, Some(d)) => d,
+        (false, None) => slots,
+    }
+    .min(slots)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn traces_run_at_once_what_the_device_keeps_resident() {
+        // Persistent: the launched workgroups' invocations, at most the slots.
+        assert_eq!(resident_rays(true, 270_336, Some(270_336), 16 << 20), 270_336);
+        assert_eq!(resident_rays(true, 4_096, Some(270_336), 1_000), 1_000);
+        // Not persistent: on a GPU what the device keeps resident, not the slots.
+        assert_eq!(resident_rays(false, 1 << 18, Some(65_536), 16 << 20), 65_536);
+        assert_eq!(resident_rays(false, 1 << 18, Some(65_536), 1_152), 1_152);
+        // On a CPU device: the slots.
+        assert_eq!(resident_rays(false, 1 << 18, None, 16 << 20), 16 << 20);
+    }
 
     #[test]
     fn batches_are_even() {
