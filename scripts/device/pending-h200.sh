@@ -166,6 +166,32 @@ s54)
   for n in hd pk c12; do echo "== $n 1 s bdpt: $(at_time .device/bidir-$n 1 $CB --integrator bdpt)"; done
   case "$g" in *H200*) ;; *) echo "== hd 1 s pt-nee: $(at_time "$H" 1 $CB --integrator pt-nee)" ;; esac
   ;;
+s55h)
+  # Session 55: s55g's build with bit 3 (the connection's read candidates in shared memory
+  # instead of the reading lanes' registers): registers, then GPU ms, two rounds.
+  device_line
+  unpack xc
+  for e in 0 8; do
+    echo "== exp $e: $(BIDIR_EXP_CAMERA=$e timeout -k 5 60 .device/bidir-xc info --kernels 2>&1 | grep -E '^bdpt:lvc=1 / bdpt_camera_wavefront' | grep -oE '(Register Count|Local Memory Size|Shared Memory Size) [0-9]+' | tr '\n' ' ')"
+  done
+  for e in 0 8 8 0; do
+    echo "== exp $e cornell: $(export BIDIR_EXP_CAMERA=$e; kernel_ms .device/bidir-xc $CB --integrator bdpt --spp 1024) hidden: $(export BIDIR_EXP_CAMERA=$e; kernel_ms .device/bidir-xc $HID --integrator bdpt --spp 1024)"
+  done
+  ;;
+s55g)
+  # Session 55: the camera kernel's registers (a measurement build, xc:
+  # scripts/device/s55g-exp-camera.patch, BIDIR_EXP_CAMERA bit 0 leaves out the light sample,
+  # bit 1 the connections, bit 2 recomputes the film's place from the slot at the end):
+  # `info --kernels` per setting, then GPU ms and the path kernels' ms on the Cornell box.
+  device_line
+  unpack xc
+  for e in 0 1 2 3 4; do
+    echo "== exp $e: $(BIDIR_EXP_CAMERA=$e timeout -k 5 60 .device/bidir-xc info --kernels 2>&1 | grep -E '^bdpt:lvc=1 / bdpt_camera_wavefront' | grep -oE '(Register Count|Local Memory Size|Shared Memory Size|Stack Size) [0-9]+' | tr '\n' ' ')"
+  done
+  for e in 0 4 1 2 0 4; do
+    echo "== exp $e cornell: $(export BIDIR_EXP_CAMERA=$e; kernel_ms .device/bidir-xc $CB --integrator bdpt --spp 1024)"
+  done
+  ;;
 s55f)
   # Session 55: the finishing launch's threshold where the wavefront traces are not persistent
   # (fb: what the device keeps resident, not a quarter of the queue's slots) against rw, with
