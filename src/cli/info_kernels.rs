@@ -39,9 +39,14 @@ pub fn run(
         r.switch_integrator(&loaded.scene, &loaded.camera, integrator)?;
         for kernel in r.kernels() {
             let stats = kernel.statistics()?;
-            let line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
+            let mut line: Vec<String> = stats.iter().map(|s| format!("{} {}", s.name, s.value)).collect();
             let bvh = r.settings().bvh.layout.name();
             let wg = kernel.local_size()[0];
+            let registers = stats.iter().find(|s| s.name == "Register Count").and_then(|s| s.value.parse::<u32>().ok());
+            if let (Some(regs), true) = (registers, ctx.info().warps_per_sm > 0) {
+                let warps = resident_warps_by_registers(regs, wg.div_ceil(32), ctx.info().warps_per_sm);
+                line.push(format!("resident warps by registers {warps} of {}", ctx.info().warps_per_sm));
+            }
             println!(
                 "{} / {} over {bvh}, workgroups of {wg} ({} statistics): {}",
                 integrator.name(),
@@ -52,4 +57,35 @@ pub fn run(
         }
     }
     Ok(())
+}
+
+/// Warps a streaming multiprocessor keeps resident by its register file alone, for a kernel of
+/// `registers` registers a lane in workgroups of `group_warps` warps, at most `max_warps` (the
+/// device's, VK_NV_shader_sm_builtins): NVIDIA's SMs hold 65,536 32-bit registers and give
+/// each warp a multiple of 256, and a workgroup is resident whole. Shared memory may allow
+/// fewer. On a Hopper SM (64 warps) 56 registers keep 36 warps, 72 keep 28, 96 keep 20.
+fn resident_warps_by_registers(registers: u32, group_warps: u32, max_warps: u32) -> u32 {
+    const REGISTER_FILE: u32 = 65_536;
+    const WARP_UNIT: u32 = 256;
+    let per_warp = (registers.max(1) * 32).div_ceil(WARP_UNIT) * WARP_UNIT;
+    let group = group_warps.max(1);
+    (REGISTER_FILE / per_warp).min(max_warps) / group * group
+}
+
+#[cfg(test)]
+mod tests {
+    use super::resident_warps_by_registers;
+
+    #[test]
+    fn registers_bound_the_resident_warps() {
+        // Hopper, workgroups of 64 lanes (2 warps): bidir's kernels as the driver compiled them.
+        assert_eq!(resident_warps_by_registers(56, 2, 64), 36);
+        assert_eq!(resident_warps_by_registers(72, 2, 64), 28);
+        assert_eq!(resident_warps_by_registers(96, 2, 64), 20);
+        // Few registers: the SM's own limit; whole workgroups of 16 warps only.
+        assert_eq!(resident_warps_by_registers(16, 2, 64), 64);
+        assert_eq!(resident_warps_by_registers(72, 16, 64), 16);
+        // Registers rounded to the warp's unit of 256: 57 take what 64 take.
+        assert_eq!(resident_warps_by_registers(57, 1, 64), 32);
+    }
 }
