@@ -30,6 +30,17 @@ pub enum FormError {
     Words(u32),
 }
 
+/// The first of ray `i`'s two words in its 8-byte part, in a queue of `cap` rays (GLSL's
+/// `ray_pair_index`, counted in words).
+fn pair_at(i: usize, cap: usize) -> usize {
+    2 * (2 * cap + i)
+}
+
+/// Ray `i`'s 4-byte part (RAY_WORDS_BOUNDED) in a queue of `cap` rays (GLSL's `ray_word_index`).
+fn word_at(i: usize, cap: usize) -> usize {
+    6 * cap + i
+}
+
 /// `rays` as a queue's 32-bit words in the form of `words` words a ray (`abi::RAY_WORDS_*`): as
 /// many words as the `GpuRay`s take (a queue of n rays takes n 32-byte places in every form).
 /// A segment without a ray (tmax < 0) must have a zero direction in the segment form, as
@@ -58,16 +69,16 @@ pub fn pack(rays: &[GpuRay], words: u32) -> Result<Vec<u32>, FormError> {
                 for (k, v) in [ox, oy, oz, d.x].into_iter().enumerate() {
                     put(4 * i + k, v);
                 }
-                put(2 * (2 * cap + i), d.y);
-                put(2 * (2 * cap + i) + 1, d.z);
+                put(pair_at(i, cap), d.y);
+                put(pair_at(i, cap) + 1, d.z);
             }
             abi::RAY_WORDS_BOUNDED => {
                 for (k, v) in [o.x, o.y, o.z, tmax].into_iter().enumerate() {
                     put(4 * i + k, v);
                 }
-                put(2 * (2 * cap + i), d.x);
-                put(2 * (2 * cap + i) + 1, d.y);
-                put(6 * cap + i, d.z);
+                put(pair_at(i, cap), d.x);
+                put(pair_at(i, cap) + 1, d.y);
+                put(word_at(i, cap), d.z);
             }
             w => return Err(FormError::Words(w)),
         }
@@ -75,25 +86,28 @@ pub fn pack(rays: &[GpuRay], words: u32) -> Result<Vec<u32>, FormError> {
     Ok(out)
 }
 
-/// Ray `i` of a queue `words` in the form of `form` words a ray, as the trace kernels read it
-/// (`load_ray` in glsl/common/trace_kernel.glsl).
+/// Ray `i` of `queue` (its 32-bit words, `pack`'s) in the form of `form` words a ray, as the
+/// trace kernels read it (`load_ray` in glsl/common/trace_kernel.glsl). Panics on a form `pack`
+/// refuses.
 pub fn unpack(queue: &[u32], i: usize, form: u32) -> GpuRay {
     let cap = queue.len() / 8;
     let f = |at: usize| f32::from_bits(queue[at]);
+    let (pair, word) = (pair_at(i, cap), word_at(i, cap));
     match form {
+        abi::RAY_WORDS_FULL => GpuRay {
+            origin: Vec4::new(f(8 * i), f(8 * i + 1), f(8 * i + 2), f(8 * i + 3)),
+            dir: Vec4::new(f(8 * i + 4), f(8 * i + 5), f(8 * i + 6), f(8 * i + 7)),
+        },
         abi::RAY_WORDS_SEGMENT => {
-            let d = Vec3::new(f(4 * i + 3), f(2 * (2 * cap + i)), f(2 * (2 * cap + i) + 1));
+            let d = Vec3::new(f(4 * i + 3), f(pair), f(pair + 1));
             let tmax = if d == Vec3::ZERO { -1.0 } else { SEGMENT_TMAX };
             GpuRay { origin: Vec4::new(f(4 * i), f(4 * i + 1), f(4 * i + 2), 0.0), dir: d.extend(tmax) }
         }
         abi::RAY_WORDS_BOUNDED => GpuRay {
             origin: Vec4::new(f(4 * i), f(4 * i + 1), f(4 * i + 2), 0.0),
-            dir: Vec4::new(f(2 * (2 * cap + i)), f(2 * (2 * cap + i) + 1), f(6 * cap + i), f(4 * i + 3)),
+            dir: Vec4::new(f(pair), f(pair + 1), f(word), f(4 * i + 3)),
         },
-        _ => GpuRay {
-            origin: Vec4::new(f(8 * i), f(8 * i + 1), f(8 * i + 2), f(8 * i + 3)),
-            dir: Vec4::new(f(8 * i + 4), f(8 * i + 5), f(8 * i + 6), f(8 * i + 7)),
-        },
+        other => panic!("{}", FormError::Words(other)),
     }
 }
 
