@@ -2,7 +2,8 @@
 //! a timestamp before its first command and after each dispatch (each dispatch is followed by
 //! a full barrier, so consecutive timestamps bracket exactly one dispatch), and the time is
 //! added to a table by kernel name that [`Context::take_profile`] returns. Off by default:
-//! renders pay nothing for it.
+//! renders pay nothing for it. With `BIDIR_PROFILE_LOG` set, each interval is also printed to
+//! stderr as it is read back: its index in the submission, kernel, dispatches and microseconds.
 
 use super::{
     context::{Context, Shared},
@@ -86,8 +87,13 @@ impl Profiler {
         }
         .ctx(|| "read profiling timestamps".into())?;
         let (bits, period) = (shared.info.timestamp_valid_bits, shared.info.timestamp_period_ns as f64);
+        let log = std::env::var_os("BIDIR_PROFILE_LOG").is_some();
         for (i, (name, commands)) in rec.names.into_iter().enumerate() {
             let dt = super::commands::ticks_between(ticks[i], ticks[i + 1], bits);
+            if log {
+                // One line per timed interval, in submission order (what a pass's launches cost one by one).
+                eprintln!("profile {i} {name} x{commands} {:.1} us", dt as f64 * period / 1000.0);
+            }
             let e = self.totals.entry(name).or_insert((0.0, 0));
             e.0 += dt as f64 * period;
             e.1 += commands;
