@@ -168,9 +168,9 @@ void run_slot() {
     uint launch = wf_launch(pc.launch);
     if (!valid) {
         if (fresh) {
-            // A slot past the window's pixels (tiled_pixel) still has its place in the queue.
+            // A slot past the window's pixels (tiled_pixel) still has its place in the queue
+            // (counted with every slot's: wf_end_launch).
             wf_queue_no_segment(g);
-            atomicAdd(wf_counts[2u * launch], 1u);
         }
         return;
     }
@@ -285,7 +285,7 @@ void run_slot() {
     uint ext_count = subgroupBallotBitCount(ext_lanes);
     uint shadow_total = subgroupAdd(wf_shadow_count);
     uvec2 queue_base = uvec2(0u);
-    if (subgroupElect()) {
+    if (subgroupElect() && !fresh) { // (the first launch's rays are at the slots' places)
         queue_base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * launch], ext_count) : 0u;
         queue_base.y = shadow_total > 0u ? atomicAdd(wf_counts[2u * launch + 1u], shadow_total) : 0u;
     }
@@ -325,6 +325,6 @@ void run_slot() {
 void main() {
     run_slot();
 #ifndef BDPT_WF_FINISH
-    wf_end_launch(pc.launch);
+    wf_end_launch(pc.launch, tiled_count(pc.camera.window_size) * max(pc.camera_samples, 1u));
 #endif
 }

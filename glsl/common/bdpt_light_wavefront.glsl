@@ -160,7 +160,10 @@ void run_slot() {
     uvec3 queued; // where the last launch queued its rays: segment, join, their count
     bool started = true;
     if (fresh || wf_first_hits(pc.launch)) {
-        st = light_start(path, fresh ? PT_FRESH : PT_SUSPENDED, started); // (listed after the first: started)
+        st = light_start(path, fresh ? PT_FRESH : PT_SUSPENDED, started);
+        if (!fresh && !started) {
+            return; // ended in the first launch (the launch after it runs every slot: wf_slot)
+        }
         queued = uvec3(path, 0u, 0u);
     } else {
         st = light_state_load(path, queued);
@@ -239,7 +242,7 @@ void run_slot() {
     uint ext_count = subgroupBallotBitCount(ext_lanes);
     uint join_count = subgroupBallotBitCount(join_lanes);
     uvec2 queue_base = uvec2(0u);
-    if (subgroupElect()) {
+    if (subgroupElect() && !fresh) { // (the first launch's rays are at the slots' places)
         queue_base.x = ext_count > 0u ? atomicAdd(wf_counts[2u * launch], ext_count) : 0u;
         queue_base.y = join_count > 0u ? atomicAdd(wf_counts[2u * launch + 1u], join_count) : 0u;
     }
@@ -283,6 +286,6 @@ void run_slot() {
 void main() {
     run_slot();
 #ifndef BDPT_WF_FINISH
-    wf_end_launch(pc.launch);
+    wf_end_launch(pc.launch, pc.light_path_total);
 #endif
 }

@@ -247,12 +247,16 @@ impl Queues {
     ) -> Result<()> {
         assert!(slots <= self.slots, "a pass of {slots} slots on storage for {}", self.slots);
         assert!(launches <= abi::WF_MAX_BATCH && launches % 2 == 0, "a batch of {launches} launches (even_batch)");
-        rec.fill_buffer(&self.counts, 0);
-        if let Some(live) = &self.live {
-            // The launches' dispatches (entry 0 holds the first's) and their traces'.
-            rec.fill_buffer_range(&live.active, 16, launches as u64 * 16, 0);
-            rec.fill_buffer_range(&live.active, trace_dispatch_offset(0, false), 2 * launches as u64 * 16, 0);
-        }
+        // Three fills of disjoint ranges, behind one barrier.
+        rec.concurrent(|rec| {
+            rec.fill_buffer(&self.counts, 0);
+            if let Some(live) = &self.live {
+                // The launches' dispatches (entry 0 holds the first's) and their traces'.
+                rec.fill_buffer_range(&live.active, 16, launches as u64 * 16, 0);
+                rec.fill_buffer_range(&live.active, trace_dispatch_offset(0, false), 2 * launches as u64 * 16, 0);
+            }
+            Ok(())
+        })?;
         for l in 0..launches {
             launch(rec, if start && l == 0 { l | abi::WF_ALL_SLOTS } else { l })?;
             rec.concurrent(|rec| self.record_traces(rec, geometry, slots, l))?;
