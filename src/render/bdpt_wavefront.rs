@@ -232,7 +232,7 @@ impl WavefrontPasses {
         start: bool,
     ) -> Result<()> {
         let (kernel, slots) = (self.kernel(pass), batch.slots);
-        self.queues.record_batch(rec, geometry, slots, batch.launches, start, |rec, word| {
+        self.queues.record_batch(rec, geometry, slots, (batch.launches, pass as usize), start, |rec, word| {
             // The launch after the pass's first starts its paths again (WF_FIRST_HITS).
             let flags = if start && word == 1 { abi::WF_FIRST_HITS } else { 0 };
             let push = wavefront_push(push, word | flags);
@@ -252,7 +252,7 @@ impl WavefrontPasses {
     /// launch queued no ray, or the batch finished it; what it took is remembered for the
     /// next), else the next batch (a quarter of the launches so far, at least 4).
     pub fn after_batch(&self, pass: Pass, done: u32, batch: Batch) -> Result<Option<Batch>> {
-        let queued = self.queues.queued(batch.launches)?;
+        let queued = self.queues.queued(batch.launches, pass as usize)?;
         if batch.finish {
             let segments = queued.iter().map(|c| c[0]).collect();
             *self.tails[pass as usize].borrow_mut() = Tail { segments, slots: batch.slots };

@@ -183,7 +183,7 @@ impl IntegratorKernels for WavefrontPathTracer {
                     }
                 }
                 // Every launch runs every slot (the queues without lists of live slots).
-                self.queues.record_batch(rec, &geometry, slots, launches, false, |rec, launch| {
+                self.queues.record_batch(rec, &geometry, slots, (launches, 0), false, |rec, launch| {
                     let push = PtWavefrontPush { launch, ..push };
                     self.queues.dispatch_path(rec, &self.kernel, &binds, bytemuck::bytes_of(&push), slots, launch)
                 })?;
@@ -193,7 +193,7 @@ impl IntegratorKernels for WavefrontPathTracer {
                 }
                 Ok(())
             })?;
-            let queued = self.queues.queued(launches)?;
+            let queued = self.queues.queued(launches, 0)?;
             if first_below.is_none() {
                 first_below = queued.iter().position(|c| c[0] < live).map(|l| done + l as u32);
             }

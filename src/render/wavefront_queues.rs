@@ -60,10 +60,11 @@ pub struct Queues {
     hits: Buffer,
     shadow_rays: Buffer,
     shadow_hits: Buffer,
-    /// Per launch of a batch, the segments and shadow rays it queued; copied to `counts_read`
-    /// at its end.
+    /// Per launch of a batch, the segments and shadow rays it queued; copied to one of
+    /// `counts_read` at its end (the batch's `readback`: BDPT's two passes each have their own,
+    /// so that one pass may run while the host reads what the other queued).
     counts: Buffer,
-    counts_read: Buffer,
+    counts_read: [Buffer; 2],
     /// The trace kernels' node and triangle counters (unused: not counted).
     trace_stats: Buffer,
     /// Where each launch runs only the slots the launch before listed (BDPT's passes).
@@ -163,7 +164,10 @@ impl Queues {
             shadow_rays: buffer("shadow_rays", 32 * shadow as u64)?,
             shadow_hits: buffer("shadow_hits", 4 * shadow as u64)?,
             counts: ctx.create_buffer(&format!("{prefix}.counts"), batch_bytes, Memory::Device)?,
-            counts_read: ctx.create_buffer(&format!("{prefix}.counts_read"), batch_bytes, Memory::Readback)?,
+            counts_read: [
+                ctx.create_buffer(&format!("{prefix}.counts_read0"), batch_bytes, Memory::Readback)?,
+                ctx.create_buffer(&format!("{prefix}.counts_read1"), batch_bytes, Memory::Readback)?,
+            ],
             trace_stats: ctx.create_buffer(&format!("{prefix}.trace_stats"), 8, Memory::Device)?,
             live: match live {
                 true => Some(LiveSlots {
@@ -241,7 +245,7 @@ impl Queues {
         rec: &mut Recorder,
         geometry: &[Bind],
         slots: u32,
-        launches: u32,
+        (launches, readback): (u32, usize),
         start: bool,
         mut launch: impl FnMut(&mut Recorder, u32) -> Result<()>,
     ) -> Result<()> {
@@ -264,7 +268,7 @@ impl Queues {
         if let Some(live) = &self.live {
             rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);
         }
-        rec.copy_buffer(&self.counts, &self.counts_read, self.counts.size());
+        rec.copy_buffer(&self.counts, &self.counts_read[readback], self.counts.size());
         Ok(())
     }
 
@@ -282,10 +286,10 @@ impl Queues {
         t.record_trace_queued(rec, geometry, rays, hits, stats, slots * self.shadow, shadow, true, sized(true))
     }
 
-    /// After a batch of `launches`: the segments and shadow rays each launch queued. With
-    /// `BIDIR_WF_LOG` set, prints them to stderr.
-    pub fn queued(&self, launches: u32) -> Result<Vec<[u32; 2]>> {
-        let counts: Vec<u32> = self.counts_read.read()?;
+    /// After a batch of `launches` (read back into `counts_read[readback]`): the segments and
+    /// shadow rays each launch queued. With `BIDIR_WF_LOG` set, prints them to stderr.
+    pub fn queued(&self, launches: u32, readback: usize) -> Result<Vec<[u32; 2]>> {
+        let counts: Vec<u32> = self.counts_read[readback].read()?;
         let queued: Vec<[u32; 2]> = counts.chunks(2).take(launches as usize).map(|c| [c[0], c[1]]).collect();
         if std::env::var_os("BIDIR_WF_LOG").is_some() {
             let rays: Vec<String> = queued.iter().map(|c| format!("{}+{}", c[0], c[1])).collect();

@@ -46,5 +46,5 @@ pub use kernel::{Kernel, KernelSource, KernelStatistic, Spec};
 pub use memory::{Buffer, Image, Memory};
 pub use profile::KernelTime;
 pub use rt::{DriverTracer, RtShaders};
-pub use submit::Recorded;
+pub use submit::{InFlight, Recorded};
 pub use swapchain::{surface_extensions, Presented, Swapchain, Vsync, SWAPCHAIN_EXTENSION};

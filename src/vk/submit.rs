@@ -1,7 +1,8 @@
 //! Submitting recorded work: one-shot command buffers with a fence and a timeout
 //! (`Context::submit`), or recorded now and run later while the GPU runs something else
-//! (`Context::record`, `Context::run`). Finished submissions leave their fence and command
-//! buffer for the next (`Shared::spare`).
+//! (`Context::record`, `Context::run`), or submitted and waited for later, so that the next
+//! submission can queue behind it (`Context::start`, `InFlight`). Finished submissions leave
+//! their fence and command buffer for the next (`Shared::spare`).
 
 use super::commands::Recorder;
 use super::{
@@ -61,6 +62,15 @@ impl Context {
         Ok(out.expect("called before the wait"))
     }
 
+    /// Submits `recorded` and returns at once: the commands run while the host goes on, and
+    /// more may be submitted behind them (the queue runs them in order; each recorded command
+    /// ends with a full barrier, so later submissions see all their writes). [`InFlight::wait`]
+    /// waits for them; dropped unwaited, it waits too, so nothing they use is released early.
+    pub fn start<'a>(&'a self, mut recorded: Recorded<'a>) -> Result<InFlight<'a>> {
+        let inner = recorded.inner.take().expect("recorded commands run once");
+        self.launch(inner, &[], &[])
+    }
+
     /// Allocates a command buffer and records into it.
     fn record_commands<F>(&self, what: &str, record: F) -> Result<RecordedInner>
     where
@@ -113,11 +123,23 @@ impl Context {
     /// their profile.
     fn execute(
         &self,
-        mut r: RecordedInner,
+        r: RecordedInner,
         wait: &[(vk::Semaphore, vk::PipelineStageFlags)],
         signal: &[vk::Semaphore],
         meanwhile: impl FnOnce(),
     ) -> Result<()> {
+        let flight = self.launch(r, wait, signal)?;
+        meanwhile();
+        flight.wait()
+    }
+
+    /// Submits recorded commands: the GPU's until the returned `InFlight` has waited for them.
+    fn launch<'a>(
+        &'a self,
+        mut r: RecordedInner,
+        wait: &[(vk::Semaphore, vk::PipelineStageFlags)],
+        signal: &[vk::Semaphore],
+    ) -> Result<InFlight<'a>> {
         let s = &*self.shared;
         let what = r.what.clone();
         if let Some(rp) = &r.profile {
@@ -151,13 +173,33 @@ impl Context {
         s.submissions.fetch_add(1, Ordering::Relaxed);
         // From here the commands are the GPU's until the fence signals: not freed on drop.
         let cmd = std::mem::replace(&mut r.cmd, vk::CommandBuffer::null());
-        // The wait below must happen whatever `meanwhile` does (it may unwind).
-        let waited = WaitOnDrop { shared: s, fence, cmd };
-        meanwhile();
+        // The wait must happen whatever the caller does next (it may unwind).
+        let waiter = WaitOnDrop { shared: s, fence, cmd };
+        Ok(InFlight { waiter: Some(waiter), profile: r.profile.take(), untimed: r.untimed, what, _borrows: std::marker::PhantomData })
+    }
+}
+
+/// Commands submitted by [`Context::start`] that may still run on the GPU, with the resources
+/// their recording borrowed (`'a`).
+pub struct InFlight<'a> {
+    waiter: Option<WaitOnDrop<'a>>,
+    profile: Option<RecordingProfile>,
+    untimed: u64,
+    what: String,
+    _borrows: std::marker::PhantomData<&'a ()>,
+}
+
+impl InFlight<'_> {
+    /// Waits for the commands (up to the context's GPU timeout), frees them and reads their
+    /// profile.
+    pub fn wait(mut self) -> Result<()> {
+        let waiter = self.waiter.take().expect("waited once");
+        let s = waiter.shared;
         let timeout_ns = s.gpu_timeout.as_nanos().min(u64::MAX as u128) as u64;
-        match waited.wait(timeout_ns) {
-            Ok(()) => match (r.profile.take(), s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_mut()) {
-                (Some(rp), Some(p)) => p.finish(s, rp, r.untimed),
+        let what = std::mem::take(&mut self.what);
+        match waiter.wait(timeout_ns) {
+            Ok(()) => match (self.profile.take(), s.profiler.lock().unwrap_or_else(|e| e.into_inner()).as_mut()) {
+                (Some(rp), Some(p)) => p.finish(s, rp, self.untimed),
                 _ => Ok(()),
             },
             Err(vk::Result::TIMEOUT) => Err(VkError::Timeout(what, s.gpu_timeout)),
