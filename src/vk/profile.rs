@@ -14,6 +14,10 @@ use std::collections::BTreeMap;
 
 /// Timestamps one submission can hold; dispatches past it are not timed (counted apart).
 const QUERIES: u32 = 4096;
+/// Submissions whose timestamps the pool holds at once: recordings take its parts in turn, so
+/// that one submission may be queued behind another before the other's timestamps are read
+/// (`Context::start`: BDPT's passes), as long as no more than this many are in flight.
+const PARTS: u32 = 2;
 
 /// GPU time of one kernel over the submissions since profiling started.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,11 +37,15 @@ pub(crate) struct Profiler {
     totals: BTreeMap<String, (f64, u64)>,
     /// Dispatches a submission recorded beyond `QUERIES`.
     pub untimed: u64,
+    /// Recordings begun under this profiler (which part of the pool the next one takes).
+    recordings: std::sync::atomic::AtomicU32,
 }
 
 /// What a recording with profiling on writes: the pool and the name of each timestamp's dispatch.
 pub(crate) struct RecordingProfile {
     pub pool: vk::QueryPool,
+    /// Its part of the pool: queries `base..base + QUERIES`.
+    base: u32,
     /// Each timestamp's interval: what ran in it, and how many commands.
     pub names: Vec<(String, u64)>,
     /// The profiler's generation when recorded.
@@ -52,21 +60,23 @@ impl RecordingProfile {
             return None;
         }
         self.names.push((name.to_string(), commands));
-        Some(self.names.len() as u32)
+        Some(self.base + self.names.len() as u32)
     }
 }
 
 impl Profiler {
-    /// Starts a recording: resets the pool and writes timestamp 0.
+    /// Starts a recording: resets its part of the pool and writes its timestamp 0.
     pub(crate) fn begin(&self, device: &ash::Device, cmd: vk::CommandBuffer) -> RecordingProfile {
+        let base = self.recordings.fetch_add(1, std::sync::atomic::Ordering::Relaxed) % PARTS * QUERIES;
         // SAFETY: `cmd` is recording; the pool is live. The reset runs when `cmd` does, after
-        // every earlier submission has completed and had its timestamps read (each is waited
-        // for before the next is submitted), and only under this profiler (`is_current`).
+        // the submission that last used this part has completed and had its timestamps read
+        // (at most PARTS submissions are in flight: each `Context::start` is waited for before
+        // the one after the next is recorded), and only under this profiler (`is_current`).
         unsafe {
-            device.cmd_reset_query_pool(cmd, self.pool, 0, QUERIES);
-            device.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.pool, 0);
+            device.cmd_reset_query_pool(cmd, self.pool, base, QUERIES);
+            device.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.pool, base);
         }
-        RecordingProfile { pool: self.pool, names: Vec::new(), generation: self.generation }
+        RecordingProfile { pool: self.pool, base, names: Vec::new(), generation: self.generation }
     }
 
     /// Whether `rec` was recorded under this profiler (its pool still live).
@@ -83,7 +93,12 @@ impl Profiler {
         let mut ticks = vec![0u64; rec.names.len() + 1];
         // SAFETY: the submission that wrote these queries has completed (its fence was waited on).
         unsafe {
-            shared.device.get_query_pool_results(self.pool, 0, &mut ticks, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
+            shared.device.get_query_pool_results(
+                self.pool,
+                rec.base,
+                &mut ticks,
+                vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
+            )
         }
         .ctx(|| "read profiling timestamps".into())?;
         let (bits, period) = (shared.info.timestamp_valid_bits, shared.info.timestamp_period_ns as f64);
@@ -126,13 +141,13 @@ impl Context {
                 msg: format!("{} has no timestamps on its compute queue", s.info.name),
             });
         }
-        let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(QUERIES);
+        let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(PARTS * QUERIES);
         // SAFETY: live device.
         let pool = unsafe { s.device.create_query_pool(&info, None) }.ctx(|| "profiling query pool".into())?;
         s.name(pool, "bidir.profiling");
         static GENERATION: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
         let generation = GENERATION.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        *slot = Some(Profiler { pool, generation, totals: BTreeMap::new(), untimed: 0 });
+        *slot = Some(Profiler { pool, generation, totals: BTreeMap::new(), untimed: 0, recordings: Default::default() });
         Ok(())
     }
 
