@@ -315,6 +315,67 @@ fn concurrent_commands_end_in_one_barrier_and_one_profile_interval() {
     finish(ctx);
 }
 
+/// Submissions queued behind one another (`Context::start`, as BDPT's passes are): each runs
+/// after the one before (a copy in the second reads what the first summed), and each keeps its
+/// own timestamps, so the profiled GPU time of the chain is no more than the wall time it took
+/// (when the two shared the profiler's queries, the second reset the first's before they were
+/// read: lavapipe then counted 690 ms of GPU time in 480 of wall).
+#[test]
+fn submissions_queued_behind_one_another_run_in_order_and_keep_their_profiles() {
+    let ctx = gpu();
+    // Three short submissions, then a long one: were the last one's timestamps read as the third's
+    // too, the chain's GPU time would be about twice its wall time.
+    let n = 1u32 << 22;
+    let counts = [1024u32, 1024, 1024, n];
+    let values: Vec<u32> = (0..n).collect();
+    let input = ctx.upload_buffer("queued.in", &values).unwrap();
+    let sums: Vec<_> = (0..4).map(|i| ctx.create_buffer(&format!("queued.sum{i}"), 4, Memory::Device).unwrap()).collect();
+    let out = ctx.create_buffer("queued.out", 16, Memory::Device).unwrap();
+    let k = ctx.create_kernel(&kernels::REDUCE_SUM, &[]).unwrap();
+    let profiled = ctx.info().timestamp_valid_bits != 0;
+    ctx.set_profiling(profiled).unwrap();
+    // Submission i sums the input's first counts[i] values into sums[i] (four times over) and
+    // copies sums[i - 1] out.
+    let record = |i: usize| {
+        let (k, input, sums, out) = (&k, &input, &sums, &out);
+        let push = abi::ScanPush { count: counts[i], ..Default::default() };
+        ctx.record("queued sum", move |rec| {
+            if i > 0 {
+                rec.copy_buffer_range(&sums[i - 1], 0, out, 4 * (i as u64 - 1), 4);
+            }
+            rec.fill_buffer(&sums[i], 0);
+            let binds = [Bind::buffer(abi::REDUCE_BIND_INPUT, input), Bind::buffer(abi::REDUCE_BIND_OUTPUT, &sums[i])];
+            for _ in 0..4 {
+                rec.dispatch(k, &binds, bytemuck::bytes_of(&push), [k.groups_for(counts[i]), 1, 1])?;
+            }
+            Ok(())
+        })
+    };
+    let start = std::time::Instant::now();
+    let mut running = ctx.start(record(0).unwrap()).unwrap();
+    for i in 1..4 {
+        let next = ctx.start(record(i).unwrap()).unwrap();
+        running.wait().unwrap();
+        running = next;
+    }
+    running.wait().unwrap();
+    let wall_ns = start.elapsed().as_nanos() as f64;
+    let expected = values[..1024].iter().fold(0u32, |a, &v| a.wrapping_add(v)).wrapping_mul(4);
+    assert_eq!(ctx.read_buffer::<u32>(&out).unwrap()[..3], [expected; 3]);
+    if profiled {
+        let (times, untimed) = ctx.take_profile();
+        assert_eq!(untimed, 0);
+        let names: Vec<(&str, u64)> = times.iter().map(|t| (t.name.as_str(), t.dispatches)).collect();
+        // (read_buffer's copy is timed too.)
+        assert!(names.contains(&("reduce_sum", 16)) && names.contains(&("fill", 4)), "{names:?}");
+        let gpu_ns: f64 = times.iter().filter(|t| t.name != "copy").map(|t| t.ns).sum();
+        assert!(gpu_ns > 0.0 && gpu_ns <= wall_ns, "{gpu_ns} ns of GPU time in {wall_ns} ns of wall time: {times:?}");
+        ctx.set_profiling(false).unwrap();
+    }
+    drop((k, input, sums, out));
+    finish(ctx);
+}
+
 /// Commands recorded now and run later (`Context::record`, `Context::run`): the next submission
 /// recorded while the GPU runs one, both results right; commands dropped unrun are freed; and
 /// commands recorded with profiling on refuse to run once it has been switched (their
