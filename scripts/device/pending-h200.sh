@@ -141,6 +141,153 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s56f)
+  # Session 56: f2 (fr with the first launch's sizes written by its first invocation, no workgroup
+  # counting itself; the batch's three fills behind one barrier), w128 (f2 with BDPT's wavefront
+  # kernels in workgroups of 128: half the workgroups' atomics at the same occupancy) and ov (f2
+  # with each pass submitted behind the one before when that one's first batch ends it: no host
+  # round trip between passes) against h55, two rounds, the order reversed in the second, GPU and
+  # wall ms; the 1 s counts; the finishing launch's place with f2; f2's and w128's dispatches
+  # (BIDIR_PROFILE_LOG) to $OUT. On an H200 first the ratio with ov and h55, the Sponza round with ov.
+  device_line
+  unpack h55 f2 w128 ov
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-ov"; ratio_lines "$PWD/.device/bidir-h55"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-ov" ;;
+  esac
+  k='GPU [0-9.]+ ms|wall [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9]+\.[0-9]{3}'
+  km() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' '; }
+  for r in 1 2; do
+    order="h55 f2 w128 ov"; [ $r = 2 ] && order="ov w128 f2 h55"
+    for n in $order; do
+      h=""; [ $r = 1 ] && [ $n != w128 ] && [ $n != f2 ] && h="hidden: $(km .device/bidir-$n $HID --integrator bdpt --spp 1024)"
+      echo "== r$r $n cornell: $(km .device/bidir-$n $CB --integrator bdpt --spp 1024) $h"
+    done
+  done
+  for r in 1 2; do
+    echo "== r$r 1 s pt-nee: $(at_time .device/bidir-ov 1 $CB --integrator pt-nee) f2: $(at_time .device/bidir-f2 1 $CB --integrator bdpt) ov: $(at_time .device/bidir-ov 1 $CB --integrator bdpt)"
+  done
+  for f in 6 8 10 auto; do
+    echo "== f2 --wavefront-finish $f cornell: $(gpu_ms .device/bidir-f2 $CB --integrator bdpt --spp 1024 --wavefront-finish $f)"
+  done
+  BIDIR_PROFILE_LOG=1 timeout -k 5 60 .device/bidir-f2 bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 1 > "$OUT/profile-f2.txt" 2>&1
+  echo "== ov wf/mega cornell: $(wf_vs_mega .device/bidir-ov $CB --integrator bdpt)"
+  ;;
+s56e)
+  # Session 56: BDPT's passes without the first launch's atomics (fr: a build of the working tree
+  # after s56d, the first launch counting and listing nothing, the launch after it running every
+  # slot) against h55, two rounds, the order reversed in the second; fr's dispatches one by one
+  # (BIDIR_PROFILE_LOG) to $OUT; its wavefront images against its megakernels'. On an H200 first
+  # the ratio with fr and h55 and the Sponza round with fr.
+  device_line
+  unpack h55 fr
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-fr"; ratio_lines "$PWD/.device/bidir-h55"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-fr" ;;
+  esac
+  for r in 1 2; do
+    order="h55 fr"; [ $r = 2 ] && order="fr h55"
+    for n in $order; do
+      bdpt_scene_benches .device/bidir-$n "r$r $n" 'GPU [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9]+\.[0-9]{3}|trace_bvh4 +[0-9]+\.[0-9]{3}'
+    done
+  done
+  BIDIR_PROFILE_LOG=1 timeout -k 5 60 .device/bidir-fr bench render $CB --integrator bdpt --spp 1024 --warmup 1 --runs 1 > "$OUT/profile-fr.txt" 2>&1
+  echo "== fr wf/mega cornell: $(wf_vs_mega .device/bidir-fr $CB --integrator bdpt) hidden: $(wf_vs_mega .device/bidir-fr $HID --integrator bdpt)"
+  echo "== fr 1 s bdpt: $(at_time .device/bidir-fr 1 $CB --integrator bdpt) pt-nee: $(at_time .device/bidir-fr 1 $CB --integrator pt-nee)"
+  ;;
+s56d)
+  # Session 56: each dispatch's GPU time in turn (BIDIR_PROFILE_LOG, pl: a build of HEAD with it):
+  # one profiled run of BDPT's and pt-nee's Cornell box, 1024 spp, and BDPT's hidden light, each
+  # log to $OUT (the device tool's folder, else /tmp/pending). On an H200 first s56a's ratio and
+  # Sponza round with pl.
+  device_line
+  unpack pl
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-pl"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-pl" ;;
+  esac
+  for i in bdpt pt-nee; do
+    BIDIR_PROFILE_LOG=1 timeout -k 5 60 .device/bidir-pl bench render $CB --integrator $i --spp 1024 --warmup 1 --runs 1 > "$OUT/profile-$i.txt" 2>&1
+    echo "== $i: $(grep -oE 'GPU [0-9.]+ ms' "$OUT/profile-$i.txt" | head -1), $(grep -c '^profile ' "$OUT/profile-$i.txt") intervals"
+  done
+  BIDIR_PROFILE_LOG=1 timeout -k 5 60 .device/bidir-pl bench render $HID --integrator bdpt --spp 1024 --warmup 1 --runs 1 > "$OUT/profile-hidden.txt" 2>&1
+  echo "== hidden: $(grep -oE 'GPU [0-9.]+ ms' "$OUT/profile-hidden.txt" | head -1)"
+  ;;
+s56c)
+  # Session 56: the megakernels (pt_kernel.glsl's, pt-nee's pt_queue among them; bdpt_camera.comp,
+  # bdpt_light.comp) in workgroups of 1024, which holds NVIDIA's compiler to 64 registers: mg, a
+  # build of HEAD with scripts/device/s56c-mega-1024.patch (the shadow queue's kernels dispatched
+  # over as many invocations). On an H200 first s56a's ratio and Sponza round with h55. Registers,
+  # then two rounds, the order reversed in the second: GPU ms and the kernels' ms.
+  device_line
+  unpack h55 mg
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-h55"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-h55" ;;
+  esac
+  timeout -k 5 60 .device/bidir-mg info --kernels 2>&1 | grep -E "^(pt-nee|bdpt:full) " | sed "s/^/mg /" | cut -c1-70,130-
+  k='GPU [0-9.]+ ms|(pt_queue|shadow_queue|shadow_queue_splat|bdpt_camera|bdpt_light)_cwbvh +[0-9]+\.[0-9]{3}'
+  km() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' '; }
+  for r in 1 2; do
+    order="h55 mg"; [ $r = 2 ] && order="mg h55"
+    for n in $order; do
+      F=.device/bidir-$n
+      echo "== r$r $n cornell pt-nee: $(km $F $CB --integrator pt-nee --spp 1024)"
+      echo "== r$r $n cornell bdpt mega: $(km $F $CB --integrator bdpt --wavefront off --spp 1024)"
+      echo "== r$r $n hidden bdpt mega: $(km $F $HID --integrator bdpt --wavefront off --spp 1024)"
+      echo "== r$r $n helmet pt-nee: $(km $F $HB --integrator pt-nee --spp 256) sponza pt-nee: $(km $F $SP --integrator pt-nee --spp 64)"
+    done
+  done
+  for i in pt-nee bdpt; do
+    rm -f /tmp/a.exr /tmp/b.exr
+    .device/bidir-h55 render $CB --integrator $i --wavefront off --spp 16 --seed 3 -o /tmp/a.exr > /dev/null 2>&1
+    .device/bidir-mg render $CB --integrator $i --wavefront off --spp 16 --seed 3 -o /tmp/b.exr > /dev/null 2>&1
+    echo "== mg against h55 $i megakernel: $(.device/bidir-mg diff /tmp/b.exr /tmp/a.exr 2>&1 | grep -E '^RMSE')"
+  done
+  echo "== 1 s pt-nee h55: $(at_time .device/bidir-h55 1 $CB --integrator pt-nee) mg: $(at_time .device/bidir-mg 1 $CB --integrator pt-nee)"
+  echo "== 1 s bdpt mega h55: $(at_time .device/bidir-h55 1 $CB --integrator bdpt --wavefront off) mg: $(at_time .device/bidir-mg 1 $CB --integrator bdpt --wavefront off)"
+  ;;
+s56b)
+  # Session 56: the wavefront camera kernel (and its finishing launch) in workgroups of 1024,
+  # which holds NVIDIA's compiler to 64 registers (1024 x 64 = the SM's 65,536): wk, a build of
+  # HEAD with `#define WF_WG_SIZE 1024` in bdpt_camera_wavefront.glsl; pq, wk with pt_kernel.glsl's
+  # megakernels (pt-nee's pt_queue) in workgroups of 1024 too. On an H200 first s56a's ratio and
+  # Sponza round with h55. Registers (`info --kernels`), then two rounds, the order reversed in
+  # the second: bdpt on the Cornell box and the hidden light (GPU ms, path kernels' ms), pt-nee
+  # on the Cornell box; the images against their megakernels'.
+  device_line
+  unpack h55 wk pq
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-h55"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-h55" ;;
+  esac
+  for n in wk pq; do
+    timeout -k 5 60 .device/bidir-$n info --kernels 2>&1 | grep -E "bdpt_camera_(wavefront|finish_bvh4)|pt_queue_cwbvh" | sed "s/^/$n /" | cut -c1-60,120-
+  done
+  for r in 1 2; do
+    order="h55 wk pq"; [ $r = 2 ] && order="pq wk h55"
+    for n in $order; do
+      echo "== r$r $n cornell: $(kernel_ms .device/bidir-$n $CB --integrator bdpt --spp 1024) hidden: $(kernel_ms .device/bidir-$n $HID --integrator bdpt --spp 1024)"
+      echo "== r$r $n pt-nee: $(gpu_ms .device/bidir-$n $CB --integrator pt-nee --spp 1024) helmet bdpt: $(gpu_ms .device/bidir-$n $HB --integrator bdpt --spp 256)"
+    done
+  done
+  echo "== wk wf/mega cornell bdpt: $(wf_vs_mega .device/bidir-wk $CB --integrator bdpt)"
+  echo "== pq 1 s pt-nee: $(at_time .device/bidir-pq 1 $CB --integrator pt-nee) wk bdpt: $(at_time .device/bidir-wk 1 $CB --integrator bdpt)"
+  ;;
+s56a)
+  # Session 56's tries for an H200: there, issue #16's ratio with h55 (a build of e340ce5, HEAD's
+  # code) and #17's Sponza round; on any card `info --kernels` (its resident-warps line, never yet
+  # seen on a GPU) and the ratio with h55, to tie this card to session 55's figures.
+  device_line
+  unpack h55
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-h55"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-h55"
+      echo "== h55 again pt-nee: $(gpu_ms .device/bidir-h55 $CB --integrator pt-nee --spp 1024) bdpt: $(gpu_ms .device/bidir-h55 $CB --integrator bdpt --spp 1024)" ;;
+    *) timeout -k 5 60 .device/bidir-h55 info --kernels 2>&1 | tail -40
+      ratio_lines "$PWD/.device/bidir-h55" ;;
+  esac
+  ;;
 s54)
   # Session 54's start: on an H200 first issue #16's ratio with .device/bidir-hd.gz (8aeb81a,
   # HEAD's kernels: pt-nee and bdpt, 1024 spp and 1 s) and #17's Sponza round; then on any card
