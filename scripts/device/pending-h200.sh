@@ -146,11 +146,14 @@ s56f)
   # counting itself; the batch's three fills behind one barrier), w128 (f2 with BDPT's wavefront
   # kernels in workgroups of 128: half the workgroups' atomics at the same occupancy) and ov (f2
   # with each pass submitted behind the one before when that one's first batch ends it: no host
-  # round trip between passes) against h55, two rounds, the order reversed in the second, GPU and
-  # wall ms; the 1 s counts; the finishing launch's place with f2; f2's and w128's dispatches
-  # (BIDIR_PROFILE_LOG) to $OUT. On an H200 first the ratio with ov and h55, the Sponza round with ov.
+  # round trip between passes; a build of 3845f38, HEAD's code at session 56's end) and a64 (ov
+  # with scripts/device/s56g-counts64.patch: a launch's segment and shadow-ray counts in one
+  # 64-bit atomic a subgroup instead of two 32-bit ones) against h55, two rounds, the order
+  # reversed in the second, GPU and wall ms; the 1 s counts; the finishing launch's place with
+  # f2; f2's dispatches (BIDIR_PROFILE_LOG) to $OUT. On an H200 first the ratio with ov and h55,
+  # the Sponza round with ov.
   device_line
-  unpack h55 f2 w128 ov
+  unpack h55 f2 w128 ov a64
   case "$g" in
     *H200*) ratio_lines "$PWD/.device/bidir-ov"; ratio_lines "$PWD/.device/bidir-h55"
       timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-ov" ;;
@@ -158,7 +161,7 @@ s56f)
   k='GPU [0-9.]+ ms|wall [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9]+\.[0-9]{3}'
   km() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' '; }
   for r in 1 2; do
-    order="h55 f2 w128 ov"; [ $r = 2 ] && order="ov w128 f2 h55"
+    order="h55 f2 w128 ov a64"; [ $r = 2 ] && order="a64 ov w128 f2 h55"
     for n in $order; do
       h=""; [ $r = 1 ] && [ $n != w128 ] && [ $n != f2 ] && h="hidden: $(km .device/bidir-$n $HID --integrator bdpt --spp 1024)"
       echo "== r$r $n cornell: $(km .device/bidir-$n $CB --integrator bdpt --spp 1024) $h"
