@@ -370,6 +370,17 @@ fn submissions_queued_behind_one_another_run_in_order_and_keep_their_profiles() 
         assert!(names.contains(&("reduce_sum", 16)) && names.contains(&("fill", 4)), "{names:?}");
         let gpu_ns: f64 = times.iter().filter(|t| t.name != "copy").map(|t| t.ns).sum();
         assert!(gpu_ns > 0.0 && gpu_ns <= wall_ns, "{gpu_ns} ns of GPU time in {wall_ns} ns of wall time: {times:?}");
+        // Three recordings held at once: the pool holds two, so the third is not timed; its
+        // six commands (a copy, a fill, four sums) are counted apart, and its part comes back.
+        let held: Vec<_> = (1..4).map(|i| record(i).unwrap()).collect();
+        for r in held {
+            ctx.run(r, || ()).unwrap();
+        }
+        let (times, untimed) = ctx.take_profile();
+        let sums = times.iter().find(|t| t.name == "reduce_sum").map(|t| t.dispatches);
+        assert_eq!((sums, untimed), (Some(8), 6), "{times:?}");
+        ctx.run(record(1).unwrap(), || ()).unwrap();
+        assert_eq!(ctx.take_profile().1, 0, "every part is free again");
         ctx.set_profiling(false).unwrap();
     }
     drop((k, input, sums, out));

@@ -11,12 +11,18 @@ use super::{
 };
 use ash::vk;
 use std::collections::BTreeMap;
+use std::sync::{
+    atomic::{AtomicU32, Ordering},
+    Arc,
+};
 
 /// Timestamps one submission can hold; dispatches past it are not timed (counted apart).
 const QUERIES: u32 = 4096;
-/// Submissions whose timestamps the pool holds at once: recordings take its parts in turn, so
+/// Recordings whose timestamps the pool holds at once: each takes a part of it that no other
+/// recording holds (from its recording until its timestamps are read, or it is dropped), so
 /// that one submission may be queued behind another before the other's timestamps are read
-/// (`Context::start`: BDPT's passes), as long as no more than this many are in flight.
+/// (`Context::start`: BDPT's passes). A recording begun while every part is held is not timed
+/// (its dispatches are counted apart, as those past QUERIES are).
 const PARTS: u32 = 2;
 
 /// GPU time of one kernel over the submissions since profiling started.
@@ -37,15 +43,17 @@ pub(crate) struct Profiler {
     totals: BTreeMap<String, (f64, u64)>,
     /// Dispatches a submission recorded beyond `QUERIES`.
     pub untimed: u64,
-    /// Recordings begun under this profiler (which part of the pool the next one takes).
-    recordings: std::sync::atomic::AtomicU32,
+    /// The parts of the pool recordings hold, a bit each.
+    held: Arc<AtomicU32>,
 }
 
 /// What a recording with profiling on writes: the pool and the name of each timestamp's dispatch.
 pub(crate) struct RecordingProfile {
     pub pool: vk::QueryPool,
-    /// Its part of the pool: queries `base..base + QUERIES`.
-    base: u32,
+    /// Its part of the pool (queries `part * QUERIES..(part + 1) * QUERIES`), held until this is
+    /// dropped; None where every part was held (nothing is timed).
+    part: Option<u32>,
+    held: Arc<AtomicU32>,
     /// Each timestamp's interval: what ran in it, and how many commands.
     pub names: Vec<(String, u64)>,
     /// The profiler's generation when recorded.
@@ -56,27 +64,46 @@ impl RecordingProfile {
     /// The next timestamp's index for `commands` dispatches of `name`, or None when the pool is
     /// full.
     pub fn next(&mut self, name: &str, commands: u64) -> Option<u32> {
+        let part = self.part?;
         if self.names.len() as u32 + 1 >= QUERIES {
             return None;
         }
         self.names.push((name.to_string(), commands));
-        Some(self.base + self.names.len() as u32)
+        Some(part * QUERIES + self.names.len() as u32)
+    }
+}
+
+impl Drop for RecordingProfile {
+    /// Gives the part back: its timestamps have been read, or its commands never ran, or ran and
+    /// were waited for (a submission's wait comes before its profile is dropped).
+    fn drop(&mut self) {
+        if let Some(part) = self.part {
+            self.held.fetch_and(!(1 << part), Ordering::AcqRel);
+        }
     }
 }
 
 impl Profiler {
-    /// Starts a recording: resets its part of the pool and writes its timestamp 0.
+    /// Starts a recording: takes a free part of the pool, resets it and writes its timestamp 0.
     pub(crate) fn begin(&self, device: &ash::Device, cmd: vk::CommandBuffer) -> RecordingProfile {
-        let base = self.recordings.fetch_add(1, std::sync::atomic::Ordering::Relaxed) % PARTS * QUERIES;
-        // SAFETY: `cmd` is recording; the pool is live. The reset runs when `cmd` does, after
-        // the submission that last used this part has completed and had its timestamps read
-        // (at most PARTS submissions are in flight: each `Context::start` is waited for before
-        // the one after the next is recorded), and only under this profiler (`is_current`).
-        unsafe {
-            device.cmd_reset_query_pool(cmd, self.pool, base, QUERIES);
-            device.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.pool, base);
+        let mut held = self.held.load(Ordering::Acquire);
+        let part = loop {
+            let Some(free) = (0..PARTS).find(|p| held & (1 << p) == 0) else { break None };
+            match self.held.compare_exchange(held, held | (1 << free), Ordering::AcqRel, Ordering::Acquire) {
+                Ok(_) => break Some(free),
+                Err(now) => held = now,
+            }
+        };
+        if let Some(part) = part {
+            // SAFETY: `cmd` is recording; the pool is live. No other recording holds this part:
+            // the last one that did has had its timestamps read, or never ran, or ran and was
+            // waited for; and only under this profiler (`is_current`).
+            unsafe {
+                device.cmd_reset_query_pool(cmd, self.pool, part * QUERIES, QUERIES);
+                device.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.pool, part * QUERIES);
+            }
         }
-        RecordingProfile { pool: self.pool, base, names: Vec::new(), generation: self.generation }
+        RecordingProfile { pool: self.pool, part, held: self.held.clone(), names: Vec::new(), generation: self.generation }
     }
 
     /// Whether `rec` was recorded under this profiler (its pool still live).
@@ -85,17 +112,15 @@ impl Profiler {
     }
 
     /// Adds a completed submission's dispatch times to the table.
-    pub(crate) fn finish(&mut self, shared: &Shared, rec: RecordingProfile, untimed: u64) -> Result<()> {
+    pub(crate) fn finish(&mut self, shared: &Shared, mut rec: RecordingProfile, untimed: u64) -> Result<()> {
         self.untimed += untimed;
-        if rec.names.is_empty() {
-            return Ok(());
-        }
+        let Some(part) = rec.part.filter(|_| !rec.names.is_empty()) else { return Ok(()) };
         let mut ticks = vec![0u64; rec.names.len() + 1];
         // SAFETY: the submission that wrote these queries has completed (its fence was waited on).
         unsafe {
             shared.device.get_query_pool_results(
                 self.pool,
-                rec.base,
+                part * QUERIES,
                 &mut ticks,
                 vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
             )
@@ -103,7 +128,7 @@ impl Profiler {
         .ctx(|| "read profiling timestamps".into())?;
         let (bits, period) = (shared.info.timestamp_valid_bits, shared.info.timestamp_period_ns as f64);
         let log = std::env::var_os("BIDIR_PROFILE_LOG").is_some();
-        for (i, (name, commands)) in rec.names.into_iter().enumerate() {
+        for (i, (name, commands)) in std::mem::take(&mut rec.names).into_iter().enumerate() {
             let dt = super::commands::ticks_between(ticks[i], ticks[i + 1], bits);
             if log {
                 // One line per timed interval, in submission order (what a pass's launches cost one by one).
@@ -147,7 +172,7 @@ impl Context {
         s.name(pool, "bidir.profiling");
         static GENERATION: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
         let generation = GENERATION.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        *slot = Some(Profiler { pool, generation, totals: BTreeMap::new(), untimed: 0, recordings: Default::default() });
+        *slot = Some(Profiler { pool, generation, totals: BTreeMap::new(), untimed: 0, held: Default::default() });
         Ok(())
     }
 

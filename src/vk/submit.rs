@@ -182,6 +182,8 @@ impl Context {
 /// Commands submitted by [`Context::start`] that may still run on the GPU, with the resources
 /// their recording borrowed (`'a`).
 pub struct InFlight<'a> {
+    // (Fields drop in order: an unwaited submission is waited for before its profile gives its
+    // part of the timestamp pool back.)
     waiter: Option<WaitOnDrop<'a>>,
     profile: Option<RecordingProfile>,
     untimed: u64,
