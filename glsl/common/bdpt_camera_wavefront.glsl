@@ -148,13 +148,18 @@ void add_finite(inout vec3 sum, inout uint bad, vec3 c) {
     }
 }
 
+// The pass's slots: the camera window's tiled pixels times the iteration's camera samples.
+uint camera_slots() {
+    return tiled_count(pc.camera.window_size) * max(pc.camera_samples, 1u);
+}
+
 // One launch's work for this invocation's slot, if it has one.
 void run_slot() {
     // Slot -> (slice, pixel of the camera's window), as bdpt_camera.comp maps its invocations.
     uint tiles = tiled_count(pc.camera.window_size);
     uint samples = max(pc.camera_samples, 1u);
     uint g;
-    if (!wf_slot(pc.launch, tiles * samples, g)) {
+    if (!wf_slot(pc.launch, camera_slots(), g)) {
         return; // past the slots, or not listed
     }
     uint slice = g / tiles;
@@ -325,6 +330,6 @@ void run_slot() {
 void main() {
     run_slot();
 #ifndef BDPT_WF_FINISH
-    wf_end_launch(pc.launch, tiled_count(pc.camera.window_size) * max(pc.camera_samples, 1u));
+    wf_end_launch(pc.launch, camera_slots());
 #endif
 }

@@ -475,8 +475,9 @@ impl Bdpt {
         // first batch `batch`): where that batch ends the pass (its finishing launch), `ahead` is
         // submitted at once, queued behind it, and only then does the host wait for the pass and
         // read what it queued, so that the GPU does not idle through the host's wake-up, read-back
-        // and submission between the passes (2.3 ms per 1024 spp on the Cornell box on an H100,
-        // session 56); else the host waits, records the pass's further batches, then submits.
+        // and submission between the passes (on an H100's Cornell box `bench render`'s wall time
+        // ran 4.2 ms per 1024 spp above its GPU time, session 56); else the host waits, records
+        // the pass's further batches, then submits.
         let follow = |running: InFlight<'_>, pass, push: &BdptPush, batch: Batch, ahead| -> std::result::Result<_, RenderError> {
             if batch.finish {
                 let next = ctx.start(ahead)?;
