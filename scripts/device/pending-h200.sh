@@ -146,7 +146,7 @@ s56f)
   # counting itself; the batch's three fills behind one barrier), w128 (f2 with BDPT's wavefront
   # kernels in workgroups of 128: half the workgroups' atomics at the same occupancy) and ov (f2
   # with each pass submitted behind the one before when that one's first batch ends it: no host
-  # round trip between passes; a build of 3845f38, HEAD's code at session 56's end) and a64 (ov
+  # round trip between passes; a build of 7f6a412, HEAD's code at session 56's end) and a64 (ov
   # with scripts/device/s56g-counts64.patch: a launch's segment and shadow-ray counts in one
   # 64-bit atomic a subgroup instead of two 32-bit ones) against h55, two rounds, the order
   # reversed in the second, GPU and wall ms; the 1 s counts; the finishing launch's place with
