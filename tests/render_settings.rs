@@ -4,7 +4,8 @@
 mod common;
 
 use bidir::bvh::BvhLayout;
-use bidir::render::{Integrator, Join, RenderError, RenderSettings, Renderer, WavefrontFinish};
+use bidir::gpu::abi;
+use bidir::render::{Integrator, Join, RenderError, RenderSettings, Renderer, WavefrontFinish, DEFAULT_WAVEFRONT_OVERLAP};
 use bidir::scene::Scene;
 use common::{finish, gpu};
 
@@ -402,10 +403,11 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
     .into_iter()
     .enumerate()
     {
-        let image = |wavefront: bool, finish: WavefrontFinish| {
+        let image = |wavefront: bool, finish: WavefrontFinish, overlap: Option<u32>| {
             let mut settings = RenderSettings::new(Integrator::Bdpt(join));
             settings.wavefront = Some(wavefront);
             settings.wavefront_finish = finish;
+            settings.wavefront_overlap = overlap;
             settings.bvh_layout = Some(layout);
             settings.sample_slices = slices;
             settings.light_path_ratio = Some(ratio);
@@ -413,17 +415,22 @@ fn wavefront_bdpt_gives_the_megakernels_image() {
             settings.connection_candidates = Some(candidates);
             render_values(&ctx, scene, &camera, settings, 6)
         };
-        let mega = image(false, WavefrontFinish::Auto);
+        let mega = image(false, WavefrontFinish::Auto, None);
         let lit = mega.iter().filter(|&&v| v > 0.0).count();
         assert!(lit * 3 > mega.len(), "{lit} of {} values above 0", mega.len());
-        for finish in [WavefrontFinish::Auto, others[i % others.len()]] {
-            let wave = image(true, finish);
+        // By default each camera pass's last launches run beside the next light pass (two
+        // stores); also each pass alone, or side by side from the camera pass's second launch on
+        // (every launch of it beside the light pass), or only the last.
+        let (default, overlaps) = (Some(DEFAULT_WAVEFRONT_OVERLAP), [None, Some(abi::WF_MAX_BATCH - 1), Some(1)]);
+        let finishes = [(WavefrontFinish::Auto, default), (others[i % others.len()], default), (WavefrontFinish::Auto, overlaps[i % 3])];
+        for (finish, overlap) in finishes {
+            let wave = image(true, finish, overlap);
             let differ = values_differing(&wave, &mega, 1e-5);
             let glass = scene.materials[short].refractivity > 0.0;
             assert_eq!(
                 differ,
                 0,
-                "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel, {candidates} candidates, glass and mirror {glass}, finish {}: {differ} of {} values differ",
+                "bdpt:{} over {}, {slices} slices, {ratio} light paths per pixel, {candidates} candidates, glass and mirror {glass}, finish {}, overlap {overlap:?}: {differ} of {} values differ",
                 join.name(),
                 layout.name(),
                 finish.name(),

@@ -141,6 +141,40 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s57a)
+  # Session 57: sb (the passes side by side: each camera pass's last N launches beside the next
+  # light pass, its first launch and trace beside that light pass's tail, over two light-vertex
+  # stores; each pass with its own slots; --wavefront-overlap N, default 6) against the same
+  # build with --wavefront-overlap off (each pass alone) and ov (7f6a412, session 56's HEAD), two
+  # rounds, the order reversed in the second, GPU and wall ms; N = 2, 4, 8, 12; the 1 s counts;
+  # the wavefront images against the megakernels'; DamagedHelmet and Sponza with sb and off. On
+  # an H200 first the ratio with sb and the Sponza traversal round.
+  device_line
+  unpack ov sb
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-sb"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-sb" ;;
+  esac
+  k='GPU [0-9.]+ ms|wall [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9]+\.[0-9]{3}'
+  km() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' '; }
+  for r in 1 2; do
+    order="sb off ov"; [ $r = 2 ] && order="ov off sb"
+    for n in $order; do
+      b=.device/bidir-$n; o=""; [ $n = off ] && b=.device/bidir-sb && o="--wavefront-overlap off"
+      h=""; [ $r = 1 ] && h="hidden: $(km $b $HID --integrator bdpt --spp 1024 $o)"
+      echo "== r$r $n cornell: $(km $b $CB --integrator bdpt --spp 1024 $o) $h"
+    done
+  done
+  for n in 2 4 8 12; do
+    echo "== sb --wavefront-overlap $n cornell: $(gpu_ms .device/bidir-sb $CB --integrator bdpt --spp 1024 --wavefront-overlap $n | tr '\n' ' ')"
+  done
+  echo "== 1 s pt-nee: $(at_time .device/bidir-sb 1 $CB --integrator pt-nee) sb: $(at_time .device/bidir-sb 1 $CB --integrator bdpt) off: $(at_time .device/bidir-sb 1 $CB --integrator bdpt --wavefront-overlap off)"
+  echo "== sb wf/mega cornell: $(wf_vs_mega .device/bidir-sb $CB --integrator bdpt) hidden: $(wf_vs_mega .device/bidir-sb $HID --integrator bdpt)"
+  for o in 6 off; do
+    echo "== overlap $o helmet: $(km .device/bidir-sb $HB --integrator bdpt --spp 256 --wavefront-overlap $o) sponza 8: $(km .device/bidir-sb $SP --integrator bdpt --connection-candidates 8 --spp 64 --wavefront-overlap $o)"
+  done
+  echo "== 1 s pt-nee again: $(at_time .device/bidir-sb 1 $CB --integrator pt-nee)"
+  ;;
 s56f)
   # Session 56: f2 (fr with the first launch's sizes written by its first invocation, no workgroup
   # counting itself; the batch's three fills behind one barrier), w128 (f2 with BDPT's wavefront

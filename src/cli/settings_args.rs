@@ -3,6 +3,7 @@
 
 use anyhow::bail;
 use bidir::bvh::TriTest;
+use bidir::gpu::abi;
 use bidir::render::{Integrator, Join, RenderSettings, Sampler, MAX_CONNECTION_CANDIDATES};
 
 /// Which integrator, for the commands that render with one.
@@ -135,6 +136,13 @@ pub struct SettingsArgs {
     /// The image is the same up to the order of float sums.
     #[arg(long, default_value = "auto", value_name = "auto|off|N")]
     pub wavefront_finish: String,
+    /// BDPT's wavefront passes (with their finishing launch): the camera pass's last N launches
+    /// run beside the next iteration's light pass, and its first beside that light pass's tail,
+    /// so that neither pass's tail leaves the GPU idle (a second light-vertex store; off where
+    /// that does not fit); off: each pass runs alone. The image is the same up to the order of
+    /// float sums.
+    #[arg(long, default_value = "6", value_name = "off|N")]
+    pub wavefront_overlap: String,
     /// Queue the shadow rays of pt-nee's kernel and of BDPT's (or VCM's) camera and light
     /// kernels for a kernel of their own that traces them after it, SLOTS per thread; pt-nee
     /// launches its kernel once per SAMPLES samples per thread (default SLOTS / 8). A thread
@@ -231,6 +239,13 @@ impl SettingsArgs {
             other => bail!("--wavefront {other}: auto | on | off"),
         };
         s.wavefront_finish = self.wavefront_finish.parse().map_err(anyhow::Error::msg)?;
+        s.wavefront_overlap = match self.wavefront_overlap.as_str() {
+            "off" => None,
+            n => match n.parse::<u32>() {
+                Ok(n) if (1..abi::WF_MAX_BATCH).contains(&n) => Some(n),
+                _ => bail!("--wavefront-overlap {n}: off | a count of launches from 1 to {}", abi::WF_MAX_BATCH - 1),
+            },
+        };
         s.direct_light_tracing = self.direct_light_tracing;
         s.mis = match self.mis.as_str() {
             "auto" => None,

@@ -1,4 +1,4 @@
-use super::bdpt_wavefront::{Batch, Pass, WavefrontPasses};
+use super::bdpt_wavefront::{Batch, Pass, Run, WavefrontPasses};
 use super::integrator::{IntegratorKernels, PassInputs};
 use super::{film::Film, gpu_scene::GpuScene, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::LightVertex, kernels};
@@ -104,20 +104,57 @@ struct Lvc {
     /// `compact` runs an invocation per slot of the store, not per light path
     /// ([`super::default_lvc_listing_per_slot`]).
     per_slot: bool,
-    index: Buffer,
-    total: Buffer,
+}
+
+/// An iteration's light-vertex store and its cache: the stored vertices, each light path's
+/// counts, its stored count then (scanned) its first cache entry, and (`Join::Lvc`) the cache's
+/// entries and length. Two where the wavefront passes run side by side: the next iteration's
+/// light pass fills one while this one's camera pass reads the other.
+struct Store {
+    vertices: Buffer,
+    counts: Buffer,
+    lvc_offsets: Buffer,
+    /// The cache's listing and its length (only for `Join::Lvc`).
+    cache: Option<(Buffer, Buffer)>,
+}
+
+impl Store {
+    /// `i`: the store's index, in its buffers' names.
+    fn new(ctx: &Context, i: usize, bytes: u64, paths: u32, cache_bytes: Option<u64>) -> Result<Store, RenderError> {
+        let name = |n: &str| if i == 0 { format!("bdpt.{n}") } else { format!("bdpt.{n}{i}") };
+        let vertices = ctx.create_buffer(&name("light_vertices"), bytes, Memory::Device).map_err(|e| match e {
+            VkError::Alloc { bytes, .. } => {
+                RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len"))
+            }
+            e => e.into(),
+        })?;
+        Ok(Store {
+            vertices,
+            counts: ctx.create_buffer(&name("light_counts"), paths as u64 * 8, Memory::Device)?,
+            lvc_offsets: ctx.create_buffer(&name("lvc_offsets"), paths as u64 * 4, Memory::Device)?,
+            cache: match cache_bytes {
+                Some(b) => Some((
+                    ctx.create_buffer(&name("lvc_index"), b, Memory::Device)?,
+                    ctx.create_buffer(&name("lvc_total"), 16, Memory::Device)?,
+                )),
+                None => None,
+            },
+        })
+    }
 }
 
 /// BDPT: a light-subpath pass and a camera-subpath pass per iteration (with
 /// the light vertex cache, a scan and a listing pass between them).
 pub struct Bdpt {
     passes: Passes,
-    vertices: Buffer,
-    counts: Buffer,
-    /// Per light path its stored count, then (scanned) its first cache entry.
-    lvc_offsets: Buffer,
-    /// The light vertex cache's scan, list and length (only for `Join::Lvc`).
+    /// The light-vertex stores: one, or two where the wavefront passes run side by side
+    /// (`iterate_side_by_side`).
+    stores: Vec<Store>,
+    /// The light vertex cache's scan and listing (only for `Join::Lvc`).
     lvc: Option<Lvc>,
+    /// With two stores: the camera pass's launches that run beside the next light pass
+    /// (`RenderSettings::wavefront_overlap`).
+    overlap: Option<u32>,
     /// VCM's merge grid (only for `--integrator vcm` with merging).
     grid: Option<super::vcm::MergeGrid>,
     pub join: Join,
@@ -239,7 +276,7 @@ impl Bdpt {
         let wavefront = match wavefront {
             Some(_) if vcm.is_some() => return Err(RenderError::Unsupported("VCM has no wavefront form: add --wavefront off".into())),
             // A slot per light path in the light pass, per pixel and camera sample in the other.
-            Some(slots) => Some(WavefrontPasses::new(ctx, scene, &specs, settings, join, slots.max(paths as u64))?),
+            Some(slots) => Some(WavefrontPasses::new(ctx, scene, &specs, settings, join, slots, paths as u64)?),
             None => None,
         };
         let queue = if wavefront.is_some() { None } else { queue };
@@ -253,12 +290,17 @@ impl Bdpt {
             super::vcm::check_alpha(v.alpha).map_err(RenderError::Unsupported)?;
             specs.extend(super::vcm::specs(v.mode, scene.features.mixed_lobes, v.radius, v.alpha, super::vcm::grid_bits(capacity)));
         }
-        let vertices = ctx.create_buffer("bdpt.light_vertices", bytes, Memory::Device).map_err(|e| match e {
-            VkError::Alloc { bytes, .. } => {
-                RenderError::Memory(format!("BDPT light vertices: {bytes} bytes could not be allocated on the GPU; lower --light-path-len"))
+        let cache_bytes = matches!(join, Join::Lvc(_)).then(|| paths as u64 * light_path_len as u64 * lvc_entry_bytes(candidates));
+        let mut stores = vec![Store::new(ctx, 0, bytes, paths, cache_bytes)?];
+        // A second store lets the wavefront passes run side by side; where it does not fit,
+        // they run one after the other.
+        if wavefront.is_some() && settings.wavefront_overlap.is_some() && settings.wavefront_finish != super::WavefrontFinish::Off {
+            match Store::new(ctx, 1, bytes, paths, cache_bytes) {
+                Ok(second) => stores.push(second),
+                Err(RenderError::Memory(_)) => {}
+                Err(e) => return Err(e),
             }
-            e => e.into(),
-        })?;
+        }
         let per_slot =
             settings.lvc_listing_per_slot.unwrap_or_else(|| super::default_lvc_listing_per_slot(super::defaults::on_cpu(ctx), candidates));
         let lvc = match join {
@@ -270,12 +312,6 @@ impl Bdpt {
                     &[specs.as_slice(), &[Spec { id: abi::SPEC_LVC_LIST_PER_SLOT, value: per_slot as u32 }]].concat(),
                 )?,
                 per_slot,
-                index: ctx.create_buffer(
-                    "bdpt.lvc_index",
-                    paths as u64 * light_path_len as u64 * lvc_entry_bytes(candidates),
-                    Memory::Device,
-                )?,
-                total: ctx.create_buffer("bdpt.lvc_total", 16, Memory::Device)?,
             }),
             _ => None,
         };
@@ -295,7 +331,8 @@ impl Bdpt {
             }
             _ => None,
         };
-        let lvc_bytes = lvc.as_ref().map_or(0, |l| l.index.size() + 16 + paths as u64 * 4) + grid.as_ref().map_or(0, |g| g.bytes);
+        let store_bytes = bytes + paths as u64 * 12 + cache_bytes.map_or(0, |b| b + 16);
+        let vertex_bytes = store_bytes * stores.len() as u64 + grid.as_ref().map_or(0, |g| g.bytes);
         // `queue_invocations` counted the light pass's invocations too.
         assert!(queue.is_none() || invocations >= light_invocations(paths), "the shadow-ray queue is smaller than the light pass");
         let queue = queue
@@ -306,7 +343,8 @@ impl Bdpt {
             .transpose()?;
         specs.extend(queue.as_ref().map(|q| q.0.spec()));
         Ok(Bdpt {
-            lvc_offsets: ctx.create_buffer("bdpt.lvc_offsets", paths as u64 * 4, Memory::Device)?,
+            overlap: settings.wavefront_overlap.filter(|_| stores.len() == 2),
+            stores,
             lvc,
             grid,
             passes: match wavefront {
@@ -316,42 +354,45 @@ impl Bdpt {
                     camera: ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FORMS), &specs)?,
                 },
             },
-            vertices,
-            counts: ctx.create_buffer("bdpt.light_counts", paths as u64 * 8, Memory::Device)?,
             join,
             light_path_len,
             light_paths: per_sample,
             max_camera_samples: camera_samples,
-            vertex_bytes: bytes + paths as u64 * 8 + lvc_bytes,
+            vertex_bytes,
             queue,
         })
     }
 
-    /// The buffers an iteration's kernels bind.
-    fn binds<'a>(&'a self, scene: &'a GpuScene, film: &'a Film) -> Vec<Bind<'a>> {
+    /// The buffers an iteration's kernels bind: with light-vertex store `store`, and with the
+    /// wavefront passes `pass`'s slots.
+    fn binds<'a>(&'a self, scene: &'a GpuScene, film: &'a Film, store: usize, pass: Pass) -> Vec<Bind<'a>> {
+        let st = &self.stores[store];
         let mut binds = scene.binds();
-        binds.push(Bind::buffer(abi::BIND_LIGHT_VERTICES, &self.vertices));
-        binds.push(Bind::buffer(abi::BIND_LIGHT_COUNTS, &self.counts));
+        binds.push(Bind::buffer(abi::BIND_LIGHT_VERTICES, &st.vertices));
+        binds.push(Bind::buffer(abi::BIND_LIGHT_COUNTS, &st.counts));
         binds.push(Bind::buffer(abi::BIND_RENDER_STATS, &film.stats));
         binds.push(Bind::buffer(abi::BIND_SPLAT, film.splat.as_ref().expect("BDPT films have a splat buffer")));
         binds.push(Bind::buffer(abi::BIND_ACCUM, &film.accum));
-        binds.push(Bind::buffer(abi::BIND_LVC_OFFSETS, &self.lvc_offsets));
+        binds.push(Bind::buffer(abi::BIND_LVC_OFFSETS, &st.lvc_offsets));
         binds.push(Bind::buffer(abi::BIND_SLICES, film.slices_buffer()));
-        if let Some(lvc) = &self.lvc {
-            binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &lvc.index));
-            binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &lvc.total));
-        } else {
-            // The camera kernel declares the cache; the megakernel joins never read it.
-            binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &self.lvc_offsets));
-            binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &self.lvc_offsets));
+        match &st.cache {
+            Some((index, total)) => {
+                binds.push(Bind::buffer(abi::BIND_LVC_INDEX, index));
+                binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, total));
+            }
+            None => {
+                // The camera kernel declares the cache; the megakernel joins never read it.
+                binds.push(Bind::buffer(abi::BIND_LVC_INDEX, &st.lvc_offsets));
+                binds.push(Bind::buffer(abi::BIND_LVC_TOTAL, &st.lvc_offsets));
+            }
         }
         match &self.grid {
             Some(g) => binds.extend(g.binds()),
             None => {
                 // The camera kernel declares the merge grid; BDPT never reads it.
-                binds.push(Bind::buffer(abi::BIND_MERGE_CELLS, &self.lvc_offsets));
-                binds.push(Bind::buffer(abi::BIND_MERGE_ITEMS, &self.lvc_offsets));
-                binds.push(Bind::buffer(abi::BIND_MERGE_QUERIES, &self.lvc_offsets));
+                binds.push(Bind::buffer(abi::BIND_MERGE_CELLS, &st.lvc_offsets));
+                binds.push(Bind::buffer(abi::BIND_MERGE_ITEMS, &st.lvc_offsets));
+                binds.push(Bind::buffer(abi::BIND_MERGE_QUERIES, &st.lvc_offsets));
             }
         }
         match &self.queue {
@@ -359,7 +400,7 @@ impl Bdpt {
             None => binds.extend(super::shadow_queue::ShadowQueueTracer::unused_binds(film)),
         }
         if let Passes::Wavefront(w) = &self.passes {
-            binds.extend(w.binds());
+            binds.extend(w.binds(pass));
         }
         binds
     }
@@ -373,14 +414,15 @@ impl Bdpt {
         if let Some((tracer, _)) = &self.queue {
             tracer.record_splats(rec, binds, total, light.groups_for(total))?;
         }
-        self.record_cache(rec, binds, push)
+        self.record_cache(rec, binds, push, 0)
     }
 
-    /// Records the light vertex cache's listing of the stored vertices (and VCM's grid).
-    fn record_cache(&self, rec: &mut Recorder, binds: &[Bind], push: &BdptPush) -> Result<()> {
+    /// Records the light vertex cache's listing of the stored vertices (and VCM's grid) of
+    /// store `store` (whose buffers `binds` binds).
+    fn record_cache(&self, rec: &mut Recorder, binds: &[Bind], push: &BdptPush, store: usize) -> Result<()> {
         let total = push.light_path_total;
         if let Some(lvc) = &self.lvc {
-            lvc.scan.record(rec, &lvc.plan, &self.lvc_offsets, total)?;
+            lvc.scan.record(rec, &lvc.plan, &self.stores[store].lvc_offsets, total)?;
             let groups = if lvc.per_slot {
                 // At most the 65,535 workgroups every device takes (4 M invocations fill any GPU;
                 // the kernel's grid-stride loop covers the rest).
@@ -399,7 +441,7 @@ impl Bdpt {
     /// Records one iteration with the megakernels: all light subpaths, then all camera
     /// subpaths.
     fn record(&self, rec: &mut Recorder, [light, camera]: [&Kernel; 2], scene: &GpuScene, film: &Film, push: &BdptPush) -> Result<()> {
-        let binds = self.binds(scene, film);
+        let binds = self.binds(scene, film, 0, Pass::Camera);
         self.record_light(rec, light, &binds, push)?;
         let samples = push.camera_samples.max(1);
         let n = crate::gpu_data::tiled_invocations(film.width, film.height) * samples;
@@ -419,8 +461,9 @@ impl Bdpt {
     /// the submission before it (the camera pass's during the light pass; the next iteration's
     /// light pass, after this one's slices, during the camera pass): the host's recording of
     /// tens of launches then costs the GPU no idle time. Where that submission's first batch
-    /// ends its pass (the finishing launch's, the default), the next is submitted before the host
-    /// waits for it (`follow`), so the GPU does not idle between passes either.
+    /// ends its pass (the finishing launch, the default), the next is submitted before the host
+    /// waits for it (`follow`), so the GPU does not idle between passes either. With two
+    /// light-vertex stores the passes run side by side instead (`iterate_side_by_side`).
     fn iterate_wavefront(
         &self,
         ctx: &Context,
@@ -429,10 +472,19 @@ impl Bdpt {
         film: &Film,
         pushes: &[BdptPush],
     ) -> std::result::Result<(), RenderError> {
-        let binds = self.binds(scene, film);
+        if let (2, Some(overlap)) = (self.stores.len(), self.overlap) {
+            return self.iterate_side_by_side(ctx, w, scene, film, pushes, overlap);
+        }
+        let light_binds = self.binds(scene, film, 0, Pass::Light);
+        let camera_binds = self.binds(scene, film, 0, Pass::Camera);
         let geometry = scene.binds();
-        let (binds, geometry) = (&binds[..], &geometry[..]);
+        let geometry = &geometry[..];
+        let binds_of = |pass| match pass {
+            Pass::Light => &light_binds[..],
+            Pass::Camera => &camera_binds[..],
+        };
         let slots = |pass, push: &BdptPush| WavefrontPasses::slots_for(pass, push, film.width, film.height);
+        let run = |pass, push, batch, start| Run { pass, binds: binds_of(pass), push, batch, start, readback: 0 };
         // The first batch of iteration i's light pass (the slices of iteration i - 1 summed
         // first).
         let record_light = |i: usize| {
@@ -447,7 +499,7 @@ impl Bdpt {
                     // The camera pass adds into the slices as its contributions arise.
                     rec.fill_buffer(film.slices_buffer(), 0);
                 }
-                w.record_batch(rec, Pass::Light, binds, geometry, push, batch, true)
+                w.record_batch(rec, geometry, &run(Pass::Light, push, batch, true))
             });
             recorded.map(|r| (r, batch))
         };
@@ -455,19 +507,20 @@ impl Bdpt {
             let push = &pushes[i];
             let batch = w.first_batch(Pass::Camera, slots(Pass::Camera, push));
             let recorded = ctx.record("bdpt wavefront camera pass", move |rec| {
-                self.record_cache(rec, binds, push)?;
-                w.record_batch(rec, Pass::Camera, binds, geometry, push, batch, true)
+                self.record_cache(rec, binds_of(Pass::Camera), push, 0)?;
+                w.record_batch(rec, geometry, &run(Pass::Camera, push, batch, true))
             });
             recorded.map(|r| (r, batch))
         };
         // Batches after the first until the pass is over.
         let later_batches = |pass, push: &BdptPush, mut batch: Batch| -> std::result::Result<(), RenderError> {
             let mut done = 0;
-            while let Some(next) = w.after_batch(pass, done, batch)? {
+            while let Some(next) = w.after_batch(pass, done, batch, 0)? {
                 done += batch.launches;
                 batch = next;
                 let name = format!("bdpt wavefront {pass:?} pass");
-                ctx.submit(&name, |rec| w.record_batch(rec, pass, binds, geometry, push, batch, false))?;
+                let run = Run { pass, binds: binds_of(pass), push, batch, start: false, readback: 0 };
+                ctx.submit(&name, |rec| w.record_batch(rec, geometry, &run))?;
             }
             Ok(())
         };
@@ -510,6 +563,127 @@ impl Bdpt {
                 }
             }
         }
+        Ok(())
+    }
+
+    /// Iterations with the wavefront passes side by side, over two light-vertex stores
+    /// (iteration i's light pass fills store i % 2, its camera pass reads it): each submission
+    /// runs iteration i - 1's camera pass from its second launch on, iteration i's light pass
+    /// beside its last `overlap` launches, and iteration i's first camera launch and its trace
+    /// (which read no light vertex) beside that light pass's tail, then the slices' sum and the
+    /// listing of store i % 2. The passes' tails, launches over a few live paths on a mostly idle
+    /// GPU (13 % of BDPT's time on an H100's Cornell box, session 56), then run beside the other
+    /// pass's work. Every pass is one batch ending in its finishing launch. Each submission is
+    /// recorded while the one before runs and queued behind it before the host waits for that
+    /// one and reads what its passes queued (each pass reads back into its buffer of the
+    /// iteration's parity, so the one running does not overwrite it).
+    #[allow(clippy::too_many_arguments)]
+    fn iterate_side_by_side(
+        &self,
+        ctx: &Context,
+        w: &WavefrontPasses,
+        scene: &GpuScene,
+        film: &Film,
+        pushes: &[BdptPush],
+        overlap: u32,
+    ) -> std::result::Result<(), RenderError> {
+        use super::wavefront_queues::Step;
+        if pushes.is_empty() {
+            return Ok(());
+        }
+        let geometry = scene.binds();
+        let geometry = &geometry[..];
+        let binds: [[Vec<Bind>; 2]; 2] = [0, 1].map(|s| [Pass::Light, Pass::Camera].map(|p| self.binds(scene, film, s, p)));
+        let binds = &binds;
+        let slots = |pass, push: &BdptPush| WavefrontPasses::slots_for(pass, push, film.width, film.height);
+        let batch = |pass, i: usize| {
+            let b = w.first_batch(pass, slots(pass, &pushes[i]));
+            assert!(b.finish, "passes side by side end in their finishing launch");
+            b
+        };
+        // Iteration i's run of `pass`.
+        let run = |pass, i: usize, batch| Run {
+            pass,
+            binds: &binds[i % 2][pass as usize],
+            push: &pushes[i],
+            batch,
+            start: true,
+            readback: i % 2,
+        };
+        const HEAD: usize = 3; // a camera pass's fills, first launch and its trace
+                               // Submission i: iteration i - 1's camera pass after its head (`camera`: its batch), and
+                               // for i < n iteration i's light pass and camera head (`next`: their batches).
+        let record = |i: usize, camera: Option<Batch>, next: Option<(Batch, Batch)>| {
+            ctx.record("bdpt wavefront passes", move |rec| {
+                let rest = camera.map(|cb| {
+                    let steps = w.steps(cb);
+                    assert_eq!(steps[..HEAD], [Step::Fills, Step::Launch(0), Step::Traces(0)], "a camera pass's head");
+                    steps[HEAD..].to_vec()
+                });
+                // The light pass's fills beside the trace of the launch before the first of the
+                // camera pass's last `overlap` launches.
+                let light_start = camera.map_or(0, |cb| (2 * (cb.launches.saturating_sub(overlap).max(1) as usize - 1)).saturating_sub(1));
+                let light = next.map(|(lb, _)| w.steps(lb));
+                let head = next.map(|(_, nb)| w.steps(nb)[..HEAD].to_vec());
+                let mut lanes = Vec::new();
+                if let (Some(cb), Some(rest)) = (camera, &rest) {
+                    lanes.push((run(Pass::Camera, i - 1, cb), &rest[..], 0));
+                }
+                if let (Some((lb, nb)), Some(light), Some(head)) = (next, &light, &head) {
+                    assert!(
+                        pushes[i].light_path_total <= self.light_paths * self.max_camera_samples,
+                        "more light paths than the store holds"
+                    );
+                    lanes.push((run(Pass::Light, i, lb), &light[..], light_start));
+                    // The next camera pass's head after this one's end (its readback), its trace
+                    // beside the light pass's finishing launch where that is later.
+                    let finish = light.iter().position(|&s| s == Step::Finish).expect("a finishing batch");
+                    let after_camera = rest.as_ref().map_or(0, |r| r.len());
+                    let head_start = after_camera.max((light_start + finish).saturating_sub(HEAD - 1));
+                    // (It reads no light vertex: bound to the other store, which the light pass
+                    // beside it does not write.)
+                    let head_run = Run { binds: &binds[(i + 1) % 2][Pass::Camera as usize], ..run(Pass::Camera, i, nb) };
+                    lanes.push((head_run, &head[..], head_start));
+                }
+                w.record_side_by_side(rec, geometry, &lanes)?;
+                if let Some(before) = camera.and(i.checked_sub(1)).map(|b| &pushes[b]).filter(|b| b.camera_samples > 1) {
+                    film.record_add_slices(rec, before.camera_samples)?;
+                }
+                if next.is_some() {
+                    if pushes[i].camera_samples > 1 {
+                        // The camera pass adds into the slices as its contributions arise (from
+                        // its second launch on).
+                        rec.fill_buffer(film.slices_buffer(), 0);
+                    }
+                    self.record_cache(rec, &binds[i % 2][Pass::Camera as usize], &pushes[i], i % 2)?;
+                }
+                Ok(())
+            })
+        };
+        let n = pushes.len();
+        let (mut light_batch, mut camera_batch) = (batch(Pass::Light, 0), batch(Pass::Camera, 0));
+        let mut running = ctx.start(record(0, None, Some((light_batch, camera_batch)))?)?;
+        // The camera batch whose pass the running submission ends.
+        let mut ending: Option<Batch> = None;
+        for i in 1..=n {
+            let next = (i < n).then(|| (batch(Pass::Light, i), batch(Pass::Camera, i)));
+            let submitted = ctx.start(record(i, Some(camera_batch), next)?)?;
+            running.wait()?;
+            // Submission i - 1 ran iteration i - 1's light pass and (from i = 2) the rest of
+            // iteration i - 2's camera pass: what they queued, for the next passes' finishing
+            // launches.
+            w.after_batch(Pass::Light, 0, light_batch, (i - 1) % 2)?;
+            if let Some(b) = ending {
+                w.after_batch(Pass::Camera, 0, b, (i - 2) % 2)?;
+            }
+            ending = Some(camera_batch);
+            running = submitted;
+            if let Some((lb, cb)) = next {
+                (light_batch, camera_batch) = (lb, cb);
+            }
+        }
+        running.wait()?;
+        w.after_batch(Pass::Camera, 0, camera_batch, (n - 1) % 2)?;
         Ok(())
     }
 }

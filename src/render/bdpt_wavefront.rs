@@ -5,7 +5,8 @@
 //! does (pt_wavefront.rs). The light vertex cache between them is the megakernels'. Each pass is
 //! a loop of launches (path kernel, closest-hit trace of the segments, any-hit trace of the
 //! shadow rays), recorded in batches, each ending in a read of how many rays each launch
-//! queued, until a launch queues none. The two passes share their slots' storage.
+//! queued, until a launch queues none. Each pass has its slots' storage of its own, so that
+//! an iteration's camera pass may run beside the next one's light pass (`record_side_by_side`).
 //!
 //! A pass's tail is long: on the Cornell box at 256 x 256 and 128 samples a pixel, 8 M camera
 //! paths are down to 64 K after 10 launches and the last ends after 38, each launch three
@@ -19,7 +20,7 @@
 use std::cell::Cell;
 
 use super::bdpt::Join;
-use super::wavefront_queues::{even_batch, queue_bytes, slot_buffer, Queues, LIVE_SLOT_BYTES, STATE_BYTES};
+use super::wavefront_queues::{even_batch, launch_word, queue_bytes, slot_buffer, Queues, Step, LIVE_SLOT_BYTES, STATE_BYTES};
 use super::{gpu_scene::GpuScene, settings::WavefrontFinish, RenderError};
 use crate::gpu::{abi, abi::BdptPush, abi::BdptWavefrontPush, kernels};
 use crate::vk::{Bind, Buffer, Context, Kernel, Recorder, Result, Spec};
@@ -46,13 +47,22 @@ pub fn shadow_rays_per_slot(join: Join) -> Option<u32> {
 // The camera pass's state keeps a slot's shadow-ray count above WF_SHADOW_COUNT_SHIFT.
 const _: () = assert!(abi::BDPT_WF_SHADOW_RAYS < 1 << (32 - abi::WF_SHADOW_COUNT_SHIFT));
 
-/// Bytes per slot with `shadow` shadow rays: the path, its rays and hits (and its places in the
-/// lists of live slots) and the shadow rays' contributions (twice: launches of alternate
-/// parity). A path keeps where its rays went in the queues in its state. A light path queues
-/// one shadow ray a launch (its join to the eye), a camera path `shadow`.
-pub fn slot_bytes(shadow: u32) -> u64 {
-    STATE_BYTES + queue_bytes(shadow) + LIVE_SLOT_BYTES + shadow as u64 * 2 * 16
+/// Bytes per camera slot with `shadow` shadow rays: the path, its rays and hits (and its places
+/// in the lists of live slots) and the shadow rays' contributions (twice: launches of alternate
+/// parity; 8 bytes each, packed_contrib.glsl). A path keeps where its rays went in the queues in
+/// its state.
+pub fn camera_slot_bytes(shadow: u32) -> u64 {
+    STATE_BYTES + queue_bytes(shadow) + LIVE_SLOT_BYTES + shadow as u64 * 2 * CAMERA_CONTRIB_BYTES
 }
+
+/// Bytes per light slot: as a camera slot's (`camera_slot_bytes`) with one shadow ray a launch
+/// (the path's join to the eye), whose contribution takes 16 bytes (rgb and the film pixel).
+pub const LIGHT_SLOT_BYTES: u64 = STATE_BYTES + queue_bytes(1) + LIVE_SLOT_BYTES + 2 * LIGHT_CONTRIB_BYTES;
+
+/// A shadow ray's contribution in BIND_WF_CONTRIB: the camera pass's (`uvec2`, contrib_pack), the
+/// light pass's (`uvec4`, with its film pixel).
+const CAMERA_CONTRIB_BYTES: u64 = 8;
+const LIGHT_CONTRIB_BYTES: u64 = 16;
 
 /// One of BDPT's two passes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -97,8 +107,39 @@ fn finish_at(tail: &Tail, slots: u32, live: u32) -> u32 {
     ((f.max(2) + 1) & !1).min(abi::WF_MAX_BATCH - 2)
 }
 
-/// The wavefront passes' kernels and the per-slot storage they share, for iterations of up to
-/// `slots` slots (light paths, or pixels of the window times camera samples).
+/// A pass's slots: its queues, its paths' states and their shadow rays' contributions.
+struct Storage {
+    queues: Queues,
+    state: Buffer,
+    contrib: Buffer,
+    slots: u64,
+}
+
+impl Storage {
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        ctx: &Context,
+        queues: Queues,
+        what: &str,
+        prefix: &str,
+        slots: u64,
+        slot_bytes: u64,
+        contrib_bytes: u64,
+    ) -> std::result::Result<Self, RenderError> {
+        let buffer = |name: &str, b: u64| slot_buffer(ctx, what, &format!("{prefix}.{name}"), slots, b, slot_bytes);
+        Ok(Storage {
+            queues,
+            state: buffer("state", STATE_BYTES)?,
+            // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
+            contrib: buffer("contrib", 2 * contrib_bytes)?,
+            slots,
+        })
+    }
+}
+
+/// The wavefront passes' kernels and each pass's per-slot storage, for iterations of up to
+/// `slots` camera slots (pixels of the window times camera samples) and `light_slots` light
+/// paths.
 pub struct WavefrontPasses {
     light: Kernel,
     camera: Kernel,
@@ -107,13 +148,24 @@ pub struct WavefrontPasses {
     finish: WavefrontFinish,
     /// Per pass: what the last one left live, for the next one's finishing launch.
     tails: [std::cell::RefCell<Tail>; 2],
-    queues: Queues,
-    state: Buffer,
-    contrib: Buffer,
-    slots: u64,
-    shadow_per_slot: u32,
+    /// Per pass (`Pass as usize`): its slots.
+    storage: [Storage; 2],
     /// Launches the last light and camera pass took: sizes the first batch of the next.
     launches: [Cell<u32>; 2],
+}
+
+/// A pass's batch as `WavefrontPasses::record_step` records it: with the kernels' bindings
+/// `binds`, `push`'s iteration; `start`: the batch begins the pass; its ray counts read back
+/// into the pass's buffer `readback` (0 or 1: a pass may run while the host reads the last
+/// one's).
+#[derive(Clone, Copy)]
+pub struct Run<'a> {
+    pub pass: Pass,
+    pub binds: &'a [Bind<'a>],
+    pub push: &'a BdptPush,
+    pub batch: Batch,
+    pub start: bool,
+    pub readback: usize,
 }
 
 impl WavefrontPasses {
@@ -125,6 +177,7 @@ impl WavefrontPasses {
         settings: &super::RenderSettings,
         join: Join,
         slots: u64,
+        light_slots: u64,
     ) -> std::result::Result<Self, RenderError> {
         if settings.count_traversal {
             return Err(RenderError::Unsupported(
@@ -138,33 +191,33 @@ impl WavefrontPasses {
                 join.name()
             ))
         })?;
-        let what = ("BDPT's wavefront passes", "bdpt_wavefront");
-        let bytes = slot_bytes(shadow);
-        let queues = Queues::new(ctx, scene, what, slots, shadow, bytes, true)?;
-        let specs = [specs, &[queues.trace_groups_spec()], &queues.ray_specs()].concat();
-        let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, &specs)?;
-        let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, &specs)?;
+        let what = "BDPT's wavefront passes";
+        let (camera_prefix, light_prefix) = ("bdpt_wavefront.camera", "bdpt_wavefront.light");
+        let bytes = camera_slot_bytes(shadow);
+        let camera_queues = Queues::new(ctx, scene, (what, camera_prefix), slots, shadow, bytes, true)?;
+        let light_queues = camera_queues.sharing(ctx, (what, light_prefix), light_slots, 1, LIGHT_SLOT_BYTES)?;
+        // Each pass's kernels bound the traces' workgroups its own queues may ask for.
+        let specs_for = |q: &Queues| [specs, &[q.trace_groups_spec()], &q.ray_specs()].concat();
+        let (light_specs, camera_specs) = (specs_for(&light_queues), specs_for(&camera_queues));
+        let light = ctx.create_kernel(&kernels::BDPT_LIGHT_WAVEFRONT, &light_specs)?;
+        let camera = ctx.create_kernel(&kernels::BDPT_CAMERA_WAVEFRONT, &camera_specs)?;
         let finish = settings.wavefront_finish;
         let finishers = match finish {
             WavefrontFinish::Off => None,
             _ => Some([
-                ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FINISH_FORMS), &specs)?,
-                ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FINISH_FORMS), &specs)?,
+                ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_LIGHT_FINISH_FORMS), &light_specs)?,
+                ctx.create_kernel(scene.bvh.kernel(&kernels::BDPT_CAMERA_FINISH_FORMS), &camera_specs)?,
             ]),
         };
-        let buffer = |name: &str, b: u64| slot_buffer(ctx, what.0, &format!("{}.{name}", what.1), slots, b, bytes);
+        let light_storage = Storage::new(ctx, light_queues, what, light_prefix, light_slots, LIGHT_SLOT_BYTES, LIGHT_CONTRIB_BYTES)?;
+        let camera_storage = Storage::new(ctx, camera_queues, what, camera_prefix, slots, bytes, CAMERA_CONTRIB_BYTES * shadow as u64)?;
         Ok(WavefrontPasses {
             light,
             camera,
             finishers,
             finish,
             tails: Default::default(),
-            queues,
-            state: buffer("state", STATE_BYTES)?,
-            // Two halves, written by launches of alternate parity (bdpt_camera_wavefront.comp).
-            contrib: buffer("contrib", 2 * 16 * shadow as u64)?,
-            slots,
-            shadow_per_slot: shadow,
+            storage: [light_storage, camera_storage],
             launches: [Cell::new(12), Cell::new(12)],
         })
     }
@@ -172,7 +225,8 @@ impl WavefrontPasses {
     pub fn kernels(&self) -> Vec<&Kernel> {
         let mut k = vec![&self.light, &self.camera];
         k.extend(self.finishers.iter().flatten());
-        k.extend(self.queues.kernels());
+        // (The light pass's queues trace with the camera pass's kernels.)
+        k.extend(self.storage[Pass::Camera as usize].queues.kernels());
         k
     }
 
@@ -184,13 +238,15 @@ impl WavefrontPasses {
     }
 
     pub fn bytes(&self) -> u64 {
-        self.slots * slot_bytes(self.shadow_per_slot)
+        let [light, camera] = &self.storage;
+        light.slots * LIGHT_SLOT_BYTES + camera.slots * camera_slot_bytes(camera.queues.shadow())
     }
 
-    /// The slots' buffers, bound beside BDPT's own.
-    pub fn binds(&self) -> Vec<Bind<'_>> {
-        let mut b = vec![Bind::buffer(abi::BIND_PT_SUSPENDED, &self.state), Bind::buffer(abi::BIND_WF_CONTRIB, &self.contrib)];
-        b.extend(self.queues.binds());
+    /// `pass`'s slots' buffers, bound beside BDPT's own.
+    pub fn binds(&self, pass: Pass) -> Vec<Bind<'_>> {
+        let s = &self.storage[pass as usize];
+        let mut b = vec![Bind::buffer(abi::BIND_PT_SUSPENDED, &s.state), Bind::buffer(abi::BIND_WF_CONTRIB, &s.contrib)];
+        b.extend(s.queues.binds());
         b
     }
 
@@ -210,49 +266,79 @@ impl WavefrontPasses {
         let launches = match self.finish {
             WavefrontFinish::Off => return Batch { launches: even_batch(self.launches[pass as usize].get() + 2), finish: false, slots },
             WavefrontFinish::After(n) => n,
-            WavefrontFinish::Auto => finish_at(&self.tails[pass as usize].borrow(), slots, self.queues.finish_below()),
+            WavefrontFinish::Auto => {
+                finish_at(&self.tails[pass as usize].borrow(), slots, self.storage[pass as usize].queues.finish_below())
+            }
         };
         Batch { launches, finish: true, slots }
     }
 
-    /// Records `batch` of `pass` over its slots: its launches, each followed by the two
-    /// traces, then its finishing launch if it has one, and the read-back of their ray counts.
-    /// `start`: the batch begins the pass (its first launch starts every slot's path;
-    /// `first_batch`); every other launch runs the slots the launch before listed
-    /// (`Queues::record_batch`).
-    #[allow(clippy::too_many_arguments)]
-    pub fn record_batch(
-        &self,
-        rec: &mut Recorder,
-        pass: Pass,
-        binds: &[Bind],
-        geometry: &[Bind],
-        push: &BdptPush,
-        batch: Batch,
-        start: bool,
-    ) -> Result<()> {
-        let (kernel, slots) = (self.kernel(pass), batch.slots);
-        self.queues.record_batch(rec, geometry, slots, (batch.launches, pass as usize), start, |rec, word| {
-            // The launch after the pass's first starts its paths again (WF_FIRST_HITS).
-            let flags = if start && word == 1 { abi::WF_FIRST_HITS } else { 0 };
-            let push = wavefront_push(push, word | flags);
-            self.queues.dispatch_path(rec, kernel, binds, bytemuck::bytes_of(&push), slots, word)
-        })?;
-        if batch.finish {
-            let finisher = &self.finishers.as_ref().expect("a finishing batch has its kernels")[pass as usize];
-            // Launch `launches` of the batch, over the slots the last one listed.
-            let word = batch.launches;
-            let push = wavefront_push(push, word);
-            self.queues.dispatch_path(rec, finisher, binds, bytemuck::bytes_of(&push), slots, word)?;
+    /// Records `run`'s batch over its slots, each of its `steps` behind a barrier: its launches,
+    /// each followed by the two traces, then its finishing launch if it has one, and the
+    /// read-back of their ray counts. `run.start`: the batch begins the pass (its first launch
+    /// starts every slot's path; `first_batch`); every other launch runs the slots the launch
+    /// before listed (`Queues::record_batch`).
+    pub fn record_batch(&self, rec: &mut Recorder, geometry: &[Bind], run: &Run) -> Result<()> {
+        for step in self.steps(run.batch) {
+            rec.concurrent(|rec| self.record_step(rec, geometry, run, step))?;
         }
         Ok(())
     }
 
-    /// After `batch` of `pass` (with `done` launches before it): None where the pass is over (a
-    /// launch queued no ray, or the batch finished it; what it took is remembered for the
-    /// next), else the next batch (a quarter of the launches so far, at least 4).
-    pub fn after_batch(&self, pass: Pass, done: u32, batch: Batch) -> Result<Option<Batch>> {
-        let queued = self.queues.queued(batch.launches, pass as usize)?;
+    /// The steps of `batch` (`wavefront_queues::steps`).
+    pub fn steps(&self, batch: Batch) -> Vec<Step> {
+        super::wavefront_queues::steps(batch.launches, batch.finish)
+    }
+
+    /// Records the passes' `lanes` side by side, without barriers between them: each lane a
+    /// run, the steps of it to record and the group of its first; the steps of all lanes in one
+    /// group behind one barrier (`Recorder::concurrent`), the groups in turn. The lanes must
+    /// share no storage in a group (the light and the camera pass, or a camera pass's steps after
+    /// the last one's readback).
+    pub fn record_side_by_side(&self, rec: &mut Recorder, geometry: &[Bind], lanes: &[(Run, &[Step], usize)]) -> Result<()> {
+        let groups = lanes.iter().map(|(_, steps, first)| first + steps.len()).max().unwrap_or(0);
+        for g in 0..groups {
+            rec.concurrent(|rec| {
+                for (run, steps, first) in lanes {
+                    if let Some(&step) = g.checked_sub(*first).and_then(|i| steps.get(i)) {
+                        self.record_step(rec, geometry, run, step)?;
+                    }
+                }
+                Ok(())
+            })?;
+        }
+        Ok(())
+    }
+
+    /// Records `step` of `run`'s batch without a barrier (inside `Recorder::concurrent`).
+    pub fn record_step(&self, rec: &mut Recorder, geometry: &[Bind], run: &Run, step: Step) -> Result<()> {
+        let (pass, batch) = (run.pass, run.batch);
+        let queues = &self.storage[pass as usize].queues;
+        let slots = batch.slots;
+        match step {
+            Step::Launch(l) => {
+                // The launch after the pass's first starts its paths again (WF_FIRST_HITS).
+                let word = launch_word(l, run.start);
+                let flags = if run.start && word == 1 { abi::WF_FIRST_HITS } else { 0 };
+                let push = wavefront_push(run.push, word | flags);
+                queues.dispatch_path(rec, self.kernel(pass), run.binds, bytemuck::bytes_of(&push), slots, word)
+            }
+            Step::Finish => {
+                let finisher = &self.finishers.as_ref().expect("a finishing batch has its kernels")[pass as usize];
+                // Launch `launches` of the batch, over the slots the last one listed.
+                let push = wavefront_push(run.push, batch.launches);
+                queues.dispatch_path(rec, finisher, run.binds, bytemuck::bytes_of(&push), slots, batch.launches)
+            }
+            step => queues.record_step(rec, geometry, slots, (batch.launches, run.readback), step),
+        }
+    }
+
+    /// After `batch` of `pass` (with `done` launches before it), its counts read back into
+    /// `readback`: None where the pass is over (a launch queued no ray, or the batch finished
+    /// it; what it took is remembered for the next), else the next batch (a quarter of the
+    /// launches so far, at least 4).
+    pub fn after_batch(&self, pass: Pass, done: u32, batch: Batch, readback: usize) -> Result<Option<Batch>> {
+        let queued = self.storage[pass as usize].queues.queued(batch.launches, readback)?;
         if batch.finish {
             let segments = queued.iter().map(|c| c[0]).collect();
             *self.tails[pass as usize].borrow_mut() = Tail { segments, slots: batch.slots };

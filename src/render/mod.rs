@@ -45,7 +45,9 @@ pub use gpu_scene::GpuScene;
 pub use integrator::{IntegratorKernels, PassInputs};
 pub use pacing::PassModel;
 pub use pt::PathTracer;
-pub use settings::{default_rr_depth, Integrator, Mis, RenderSettings, Sampler, WavefrontFinish, MAX_CONNECTION_CANDIDATES};
+pub use settings::{
+    default_rr_depth, Integrator, Mis, RenderSettings, Sampler, WavefrontFinish, DEFAULT_WAVEFRONT_OVERLAP, MAX_CONNECTION_CANDIDATES,
+};
 pub use shadow_queue::ShadowQueue;
 use slices::{sample_slices, slice_pixels};
 pub use stop::{request_stop, stop_requested};

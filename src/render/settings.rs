@@ -191,6 +191,9 @@ mod sampler_tests {
     }
 }
 
+/// `RenderSettings::wavefront_overlap`'s default (`--wavefront-overlap`).
+pub const DEFAULT_WAVEFRONT_OVERLAP: u32 = 6;
+
 /// How the wavefront forms' passes end (`--wavefront-finish`; src/render/bdpt_wavefront.rs,
 /// src/render/pt_wavefront.rs).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -337,6 +340,11 @@ pub struct RenderSettings {
     /// each ends (`--wavefront-finish`). Every way gives the same image (up to the order of
     /// float sums and ties between equally near triangles).
     pub wavefront_finish: WavefrontFinish,
+    /// BDPT's wavefront passes with a finishing launch: the camera pass's last this many launches
+    /// run beside the next iteration's light pass, and its first beside that pass's tail
+    /// (`--wavefront-overlap`; bdpt.rs, `iterate_side_by_side`); None: each pass alone. The image
+    /// is the same up to the order of float sums.
+    pub wavefront_overlap: Option<u32>,
     /// Count the rays the integrator kernels trace, their node visits and triangle tests
     /// (`Renderer::traversal_counts`; slower kernels: for `bidir bench render --count`).
     pub count_traversal: bool,
@@ -409,6 +417,7 @@ impl RenderSettings {
             lvc_listing_per_slot: None,
             wavefront: None,
             wavefront_finish: WavefrontFinish::Auto,
+            wavefront_overlap: Some(DEFAULT_WAVEFRONT_OVERLAP),
             count_traversal: false,
         }
     }

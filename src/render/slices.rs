@@ -43,11 +43,12 @@ pub(super) fn sample_slices(ctx: &Context, settings: &RenderSettings, scene: &Gp
     let wave = wavefront(ctx, settings, settings.integrator, &scene.features);
     let mut s = if wave {
         let (slot_bytes, target) = match settings.integrator {
-            // BDPT's passes share their slots: a light path's, or a pixel's camera sample's.
+            // BDPT's passes each have their slots: a pixel's camera sample's, and `ratio` light
+            // paths'.
             Integrator::Bdpt(join) => {
-                let bytes = bdpt_wavefront::slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1));
-                let ratio = settings.light_path_ratio_for(&scene.estimator_features).max(1.0) as f64;
-                ((bytes as f64 * ratio).ceil() as u64, bdpt_wavefront::TARGET_SLOTS)
+                let camera = bdpt_wavefront::camera_slot_bytes(bdpt_wavefront::shadow_rays_per_slot(join).unwrap_or(1));
+                let ratio = settings.light_path_ratio_for(&scene.estimator_features) as f64;
+                ((camera as f64 + bdpt_wavefront::LIGHT_SLOT_BYTES as f64 * ratio).ceil() as u64, bdpt_wavefront::TARGET_SLOTS)
             }
             _ => (pt_wavefront::SLOT_BYTES, pt_wavefront::TARGET_SLOTS),
         };

@@ -6,8 +6,9 @@
 
 use super::{gpu_scene::GpuScene, RenderError};
 use crate::gpu::abi;
-use crate::trace::{TraceOptions, Tracer};
+use crate::trace::{RayCounters, TraceOptions, Tracer};
 use crate::vk::{Bind, Buffer, Context, Kernel, Memory, Recorder, Result, Spec};
+use std::rc::Rc;
 
 /// Dynamic fetch's refill (`TraceOptions::refill_lanes`) of the wavefront integrators' 4-wide
 /// trace kernels on GPUs with subgroups of 32 lanes or more. NVIDIA H200, ms per run with a
@@ -55,7 +56,10 @@ pub fn ray_words(alpha: bool) -> [u32; 2] {
 /// The queues of a wavefront pass of up to `slots` slots, each queueing one segment and up to
 /// `shadow` shadow rays a launch, and the trace kernels that trace them.
 pub struct Queues {
-    tracer: Tracer,
+    tracer: Rc<Tracer>,
+    /// Queues that share another's tracer (`sharing`) take their rays with their own
+    /// persistent counters, so that both may trace at once.
+    counters: Option<[Buffer; 2]>,
     rays: Buffer,
     hits: Buffer,
     shadow_rays: Buffer,
@@ -136,6 +140,45 @@ pub fn slot_buffer(
     })
 }
 
+/// A step of a batch of launches (`steps`): commands that may run at once, recorded behind one
+/// barrier; BDPT records two passes' steps side by side (bdpt_wavefront.rs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Step {
+    /// The fills of the launches' counts and dispatches.
+    Fills,
+    /// The path kernel's launch `l` of the batch.
+    Launch(u32),
+    /// The traces of the segments and shadow rays launch `l` queued.
+    Traces(u32),
+    /// The finishing launch (after the batch's last launch's traces).
+    Finish,
+    /// The copies after the batch: its last dispatch, its counts to the host's buffer.
+    Readback,
+}
+
+/// The steps of a batch of `launches` launches, with its finishing launch where `finish`.
+pub fn steps(launches: u32, finish: bool) -> Vec<Step> {
+    let mut s = vec![Step::Fills];
+    for l in 0..launches {
+        s.extend([Step::Launch(l), Step::Traces(l)]);
+    }
+    if finish {
+        s.push(Step::Finish);
+    }
+    s.push(Step::Readback);
+    s
+}
+
+/// The path kernel's push word for launch `l` of a batch: WF_ALL_SLOTS for a pass's first
+/// (`start`).
+pub fn launch_word(l: u32, start: bool) -> u32 {
+    if start && l == 0 {
+        l | abi::WF_ALL_SLOTS
+    } else {
+        l
+    }
+}
+
 impl Queues {
     /// `what` names the integrator in errors (as `slot_buffer`), `prefix` its buffers. `live`:
     /// each launch after a pass's first runs only the slots that queued a ray in the launch
@@ -155,10 +198,39 @@ impl Queues {
         live: bool,
     ) -> std::result::Result<Self, RenderError> {
         let opts = trace_options(scene, super::on_cpu(ctx), ctx.info().subgroup_size, scene.features.alpha);
+        let tracer = Rc::new(Tracer::with_options(ctx, &opts)?);
+        Queues::with_tracer(ctx, (tracer, None), (what, prefix), slots, shadow, slot_bytes, live)
+    }
+
+    /// Queues of their own (`new`'s) that trace with this one's kernels, taking their rays with
+    /// their own counters: the two may trace at once (BDPT's passes side by side).
+    pub fn sharing(
+        &self,
+        ctx: &Context,
+        (what, prefix): (&str, &str),
+        slots: u64,
+        shadow: u32,
+        slot_bytes: u64,
+    ) -> std::result::Result<Self, RenderError> {
+        let counters = self.tracer.create_counters(ctx, prefix)?;
+        Queues::with_tracer(ctx, (self.tracer.clone(), Some(counters)), (what, prefix), slots, shadow, slot_bytes, self.live.is_some())
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn with_tracer(
+        ctx: &Context,
+        (tracer, counters): (Rc<Tracer>, Option<[Buffer; 2]>),
+        (what, prefix): (&str, &str),
+        slots: u64,
+        shadow: u32,
+        slot_bytes: u64,
+        live: bool,
+    ) -> std::result::Result<Self, RenderError> {
         let buffer = |name: &str, bytes: u64| slot_buffer(ctx, what, &format!("{prefix}.{name}"), slots, bytes, slot_bytes);
         let batch_bytes = abi::WF_MAX_BATCH as u64 * 8;
         Ok(Queues {
-            tracer: Tracer::with_options(ctx, &opts)?,
+            tracer,
+            counters,
             rays: buffer("rays", 32)?,
             hits: buffer("hits", 16)?,
             shadow_rays: buffer("shadow_rays", 32 * shadow as u64)?,
@@ -187,6 +259,11 @@ impl Queues {
             device_resident: (!super::on_cpu(ctx))
                 .then(|| crate::trace::default_persistent_groups(ctx.info()).saturating_mul(abi::TRACE_WG_SIZE)),
         })
+    }
+
+    /// Shadow rays a slot queues a launch at most.
+    pub fn shadow(&self) -> u32 {
+        self.shadow
     }
 
     /// The kernels besides the path kernel: the trace kernels (closest hit, any hit).
@@ -239,7 +316,8 @@ impl Queues {
     /// for a pass's first where `start`; with the lists of live slots its last workgroup sizes
     /// the next launch's dispatch and its traces'), then the segments and shadow rays it queued
     /// are traced; the last launch's dispatch moves to entry 0 for the next batch, and the ray
-    /// counts are read back at the end (`first_idle_launch`).
+    /// counts are read back at the end (`first_idle_launch`). Each step of `steps` behind a
+    /// barrier.
     pub fn record_batch(
         &self,
         rec: &mut Recorder,
@@ -249,26 +327,50 @@ impl Queues {
         start: bool,
         mut launch: impl FnMut(&mut Recorder, u32) -> Result<()>,
     ) -> Result<()> {
+        for step in steps(launches, false) {
+            rec.concurrent(|rec| match step {
+                Step::Launch(l) => launch(rec, launch_word(l, start)),
+                step => self.record_step(rec, geometry, slots, (launches, readback), step),
+            })?;
+        }
+        Ok(())
+    }
+
+    /// Records `step` of a batch of `launches` over `slots` slots read back into
+    /// `counts_read[readback]` (`steps`), without a barrier (inside `Recorder::concurrent`): the
+    /// fills before it, a launch's traces, or the read-back after it. A path kernel's launch
+    /// (`Step::Launch`, `Step::Finish`) is the integrator's (`dispatch_path`).
+    pub fn record_step(
+        &self,
+        rec: &mut Recorder,
+        geometry: &[Bind],
+        slots: u32,
+        (launches, readback): (u32, usize),
+        step: Step,
+    ) -> Result<()> {
         assert!(slots <= self.slots, "a pass of {slots} slots on storage for {}", self.slots);
         assert!(launches <= abi::WF_MAX_BATCH && launches % 2 == 0, "a batch of {launches} launches (even_batch)");
-        // Three fills of disjoint ranges, behind one barrier.
-        rec.concurrent(|rec| {
-            rec.fill_buffer(&self.counts, 0);
-            if let Some(live) = &self.live {
-                // The launches' dispatches (entry 0 holds the first's) and their traces'.
-                rec.fill_buffer_range(&live.active, 16, launches as u64 * 16, 0);
-                rec.fill_buffer_range(&live.active, trace_dispatch_offset(0, false), 2 * launches as u64 * 16, 0);
+        match step {
+            // Three fills of disjoint ranges.
+            Step::Fills => {
+                rec.fill_buffer(&self.counts, 0);
+                if let Some(live) = &self.live {
+                    // The launches' dispatches (entry 0 holds the first's) and their traces'.
+                    rec.fill_buffer_range(&live.active, 16, launches as u64 * 16, 0);
+                    rec.fill_buffer_range(&live.active, trace_dispatch_offset(0, false), 2 * launches as u64 * 16, 0);
+                }
             }
-            Ok(())
-        })?;
-        for l in 0..launches {
-            launch(rec, if start && l == 0 { l | abi::WF_ALL_SLOTS } else { l })?;
-            rec.concurrent(|rec| self.record_traces(rec, geometry, slots, l))?;
+            Step::Traces(l) => self.record_traces(rec, geometry, slots, l)?,
+            Step::Readback => {
+                // Two copies of disjoint ranges: the last launch's dispatch to entry 0 (where a
+                // batch after this one starts), the counts to the host's buffer.
+                if let Some(live) = &self.live {
+                    rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);
+                }
+                rec.copy_buffer(&self.counts, &self.counts_read[readback], self.counts.size());
+            }
+            Step::Launch(_) | Step::Finish => unreachable!("a path kernel's launch is the integrator's to record"),
         }
-        if let Some(live) = &self.live {
-            rec.copy_buffer_range(&live.active, launches as u64 * 16, &live.active, 0, 16);
-        }
-        rec.copy_buffer(&self.counts, &self.counts_read[readback], self.counts.size());
         Ok(())
     }
 
@@ -281,9 +383,19 @@ impl Queues {
         let (t, stats) = (&self.tracer, &self.trace_stats);
         let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
         let sized = |any_hit| self.live.as_ref().map(|live| (&live.active, trace_dispatch_offset(l, any_hit)));
-        t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, sized(false))?;
-        let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
-        t.record_trace_queued(rec, geometry, rays, hits, stats, slots * self.shadow, shadow, true, sized(true))
+        match &self.counters {
+            Some([closest, any]) => {
+                let c = RayCounters { closest, any };
+                t.record_trace_counted(rec, geometry, (&self.rays, &self.hits, stats), slots, ext, false, sized(false), c)?;
+                let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
+                t.record_trace_counted(rec, geometry, (rays, hits, stats), slots * self.shadow, shadow, true, sized(true), c)
+            }
+            None => {
+                t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, sized(false))?;
+                let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
+                t.record_trace_queued(rec, geometry, rays, hits, stats, slots * self.shadow, shadow, true, sized(true))
+            }
+        }
     }
 
     /// After a batch of `launches` (read back into `counts_read[readback]`): the segments and

@@ -177,6 +177,14 @@ fn zeroed(ctx: &Context, name: &str) -> Result<Buffer> {
     Ok(counter)
 }
 
+/// The ray counters a persistent trace takes its rays with: the closest-hit kernel's and the
+/// any-hit kernel's (`Tracer::create_counters`).
+#[derive(Clone, Copy)]
+pub struct RayCounters<'a> {
+    pub closest: &'a Buffer,
+    pub any: &'a Buffer,
+}
+
 /// Trace and ray-generation kernels specialised for one triangle test.
 pub struct Tracer {
     closest: Kernel,
@@ -392,8 +400,33 @@ impl Tracer {
         any_hit: bool,
         indirect: Option<(&Buffer, u64)>,
     ) -> Result<()> {
+        let counters = RayCounters { closest: &self.counter, any: &self.counter_any };
+        self.record_trace_counted(rec, geometry, (rays, hits, stats), count, counts, any_hit, indirect, counters)
+    }
+
+    /// Two persistent ray counters (closest hit, any hit) beside the tracer's own, zeroed, for
+    /// `record_trace_counted`: traces that may run at once with the tracer's others (another
+    /// queue's, in the same group of `Recorder::concurrent`) each need their own.
+    pub fn create_counters(&self, ctx: &Context, prefix: &str) -> Result<[Buffer; 2]> {
+        Ok([zeroed(ctx, &format!("{prefix}.ray_counter"))?, zeroed(ctx, &format!("{prefix}.ray_counter_any"))?])
+    }
+
+    /// `record_trace_queued` with the ray counters `counters` (`create_counters`'s, or the
+    /// tracer's own).
+    #[allow(clippy::too_many_arguments)]
+    pub fn record_trace_counted(
+        &self,
+        rec: &mut Recorder,
+        geometry: &[Bind],
+        (rays, hits, stats): (&Buffer, &Buffer, &Buffer),
+        count: u32,
+        counts: Option<(&Buffer, u32)>,
+        any_hit: bool,
+        indirect: Option<(&Buffer, u64)>,
+        counters: RayCounters,
+    ) -> Result<()> {
         let k = if any_hit { &self.any } else { &self.closest };
-        let counter = if any_hit { &self.counter_any } else { &self.counter };
+        let counter = if any_hit { counters.any } else { counters.closest };
         assert_eq!(counts.is_some(), self.opts.count_buffer, "queued rays need a tracer with count_buffer, and only they");
         let mut push = TracePush { count, count_index: counts.map_or(0, |c| c.1), ..Default::default() };
         let mut binds = geometry.to_vec();
