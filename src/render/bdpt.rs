@@ -297,7 +297,7 @@ impl Bdpt {
         if wavefront.is_some() && settings.wavefront_overlap.is_some() && settings.wavefront_finish != super::WavefrontFinish::Off {
             match Store::new(ctx, 1, bytes, paths, cache_bytes) {
                 Ok(second) => stores.push(second),
-                Err(RenderError::Memory(_)) => {}
+                Err(RenderError::Memory(_) | RenderError::Vk(VkError::Alloc { .. })) => {}
                 Err(e) => return Err(e),
             }
         }
