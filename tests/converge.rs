@@ -154,6 +154,7 @@ fn time_snapshots_follow_render_time() {
         integrators: vec![Integrator::Bdpt(Join::K(2))],
         schedule: Schedule::Time { budget_s: 0.6, points: 4 },
         settings: RenderSettings::new(Integrator::Pt),
+        rr_depth: None,
         seeds: 1,
     };
     let mut heard = 0;

@@ -141,6 +141,53 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s57c)
+  # Session 57: sp (the passes side by side, N = 4 by default, the next camera pass's first
+  # launch beside the light pass's first launch after this camera pass's end and its trace beside
+  # the light pass's finishing launch) against sb with --wavefront-overlap 4 (the first launch
+  # and its trace beside the light pass's last two steps), two rounds, the order reversed in the
+  # second; pt-nee in both; the 1 s counts; sp's wavefront image against its megakernels'. On an
+  # H200 first the ratio with sp and the Sponza traversal round.
+  device_line
+  unpack sb sp
+  case "$g" in
+    *H200*) ratio_lines "$PWD/.device/bidir-sp"
+      timeout -k 5 70 bash -c "$(declare -f sponza_q5 sponza_rounds); sponza_rounds 1 $PWD/.device/bidir-sp" ;;
+  esac
+  for r in 1 2; do
+    order="sp sb"; [ $r = 2 ] && order="sb sp"
+    for n in $order; do
+      o=""; [ $n = sb ] && o="--wavefront-overlap 4"
+      echo "== r$r $n cornell: $(gpu_ms .device/bidir-$n $CB --integrator bdpt --spp 1024 $o | tr '\n' ' ') hidden: $(gpu_ms .device/bidir-$n $HID --integrator bdpt --spp 1024 $o | tr '\n' ' ')"
+    done
+    echo "== r$r pt-nee: $(gpu_ms .device/bidir-sp $CB --integrator pt-nee --spp 1024)"
+  done
+  echo "== 1 s pt-nee: $(at_time .device/bidir-sp 1 $CB --integrator pt-nee) sp: $(at_time .device/bidir-sp 1 $CB --integrator bdpt)"
+  echo "== sp wf/mega cornell: $(wf_vs_mega .device/bidir-sp $CB --integrator bdpt)"
+  ;;
+s57b)
+  # Session 57: s57a's core for short device time: on an H200 the ratio with sb; sb against the
+  # same build with --wavefront-overlap off and ov, two rounds (the order reversed in the second),
+  # GPU and wall ms on the Cornell box; N = 2 and 12; the 1 s counts; sb's wavefront image
+  # against its megakernels'.
+  device_line
+  unpack ov sb
+  case "$g" in *H200*) ratio_lines "$PWD/.device/bidir-sb" ;; esac
+  k='GPU [0-9.]+ ms|wall [0-9.]+ ms|bdpt_(camera|light)_wavefront +[0-9]+\.[0-9]{3}'
+  km() { local b=$1; shift; timeout -k 5 60 "$b" bench render "$@" --warmup 1 --runs 3 2>&1 | grep -oE "$k" | tr -s ' ' | tr '\n' ' '; }
+  for r in 1 2; do
+    order="sb off ov"; [ $r = 2 ] && order="ov off sb"
+    for n in $order; do
+      b=.device/bidir-$n; o=""; [ $n = off ] && b=.device/bidir-sb && o="--wavefront-overlap off"
+      echo "== r$r $n cornell: $(km $b $CB --integrator bdpt --spp 1024 $o)"
+    done
+  done
+  for n in 2 12; do
+    echo "== sb --wavefront-overlap $n cornell: $(gpu_ms .device/bidir-sb $CB --integrator bdpt --spp 1024 --wavefront-overlap $n | tr '\n' ' ')"
+  done
+  echo "== 1 s pt-nee: $(at_time .device/bidir-sb 1 $CB --integrator pt-nee) sb: $(at_time .device/bidir-sb 1 $CB --integrator bdpt) off: $(at_time .device/bidir-sb 1 $CB --integrator bdpt --wavefront-overlap off)"
+  echo "== sb wf/mega cornell: $(wf_vs_mega .device/bidir-sb $CB --integrator bdpt)"
+  ;;
 s57a)
   # Session 57: sb (the passes side by side: each camera pass's last N launches beside the next
   # light pass, its first launch and trace beside that light pass's tail, over two light-vertex
@@ -167,6 +214,9 @@ s57a)
   done
   for n in 2 4 8 12; do
     echo "== sb --wavefront-overlap $n cornell: $(gpu_ms .device/bidir-sb $CB --integrator bdpt --spp 1024 --wavefront-overlap $n | tr '\n' ' ')"
+  done
+  for f in 8 14; do
+    echo "== sb --wavefront-finish $f cornell: $(gpu_ms .device/bidir-sb $CB --integrator bdpt --spp 1024 --wavefront-finish $f | tr '\n' ' ')"
   done
   echo "== 1 s pt-nee: $(at_time .device/bidir-sb 1 $CB --integrator pt-nee) sb: $(at_time .device/bidir-sb 1 $CB --integrator bdpt) off: $(at_time .device/bidir-sb 1 $CB --integrator bdpt --wavefront-overlap off)"
   echo "== sb wf/mega cornell: $(wf_vs_mega .device/bidir-sb $CB --integrator bdpt) hidden: $(wf_vs_mega .device/bidir-sb $HID --integrator bdpt)"

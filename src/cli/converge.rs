@@ -77,7 +77,8 @@ pub fn run(args: &ConvergeArgs, opts: &ContextOptions) -> anyhow::Result<()> {
         None => Schedule::Time { budget_s: args.time.unwrap_or(0.0), points: args.points },
     };
     let settings = args.settings.settings(Integrator::Pt)?;
-    let options = Options { integrators: args.integrators.clone(), schedule, settings, seeds: args.seeds };
+    let rr_depth = args.settings.rr_depth;
+    let options = Options { integrators: args.integrators.clone(), schedule, settings, rr_depth, seeds: args.seeds };
     converge::check(&options, &loaded.camera, &reference)?;
 
     super::signals::on_interrupt(super::signals::FirstInterrupt::FinishPass)?;

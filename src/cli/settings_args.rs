@@ -140,8 +140,8 @@ pub struct SettingsArgs {
     /// run beside the next iteration's light pass, and its first beside that light pass's tail,
     /// so that neither pass's tail leaves the GPU idle (a second light-vertex store; off where
     /// that does not fit); off: each pass runs alone. The image is the same up to the order of
-    /// float sums.
-    #[arg(long, default_value = "6", value_name = "off|N")]
+    /// float sums. auto: 4 (the fastest of 2 to 12 on an H100's Cornell box, session 57).
+    #[arg(long, default_value = "auto", value_name = "auto|off|N")]
     pub wavefront_overlap: String,
     /// Queue the shadow rays of pt-nee's kernel and of BDPT's (or VCM's) camera and light
     /// kernels for a kernel of their own that traces them after it, SLOTS per thread; pt-nee
@@ -241,9 +241,10 @@ impl SettingsArgs {
         s.wavefront_finish = self.wavefront_finish.parse().map_err(anyhow::Error::msg)?;
         s.wavefront_overlap = match self.wavefront_overlap.as_str() {
             "off" => None,
+            "auto" => Some(bidir::render::DEFAULT_WAVEFRONT_OVERLAP),
             n => match n.parse::<u32>() {
                 Ok(n) if (1..abi::WF_MAX_BATCH).contains(&n) => Some(n),
-                _ => bail!("--wavefront-overlap {n}: off | a count of launches from 1 to {}", abi::WF_MAX_BATCH - 1),
+                _ => bail!("--wavefront-overlap {n}: auto | off | a count of launches from 1 to {}", abi::WF_MAX_BATCH - 1),
             },
         };
         s.direct_light_tracing = self.direct_light_tracing;

@@ -610,9 +610,10 @@ impl Bdpt {
             start: true,
             readback: i % 2,
         };
-        const HEAD: usize = 3; // a camera pass's fills, first launch and its trace
-                               // Submission i: iteration i - 1's camera pass after its head (`camera`: its batch), and
-                               // for i < n iteration i's light pass and camera head (`next`: their batches).
+        // A camera pass's head: its fills, first launch and that launch's trace.
+        const HEAD: usize = 3;
+        // Submission i: iteration i - 1's camera pass after its head (`camera`: its batch), and
+        // for i < n iteration i's light pass and camera head (`next`: their batches).
         let record = |i: usize, camera: Option<Batch>, next: Option<(Batch, Batch)>| {
             ctx.record("bdpt wavefront passes", move |rec| {
                 let rest = camera.map(|cb| {
@@ -635,15 +636,23 @@ impl Bdpt {
                         "more light paths than the store holds"
                     );
                     lanes.push((run(Pass::Light, i, lb), &light[..], light_start));
-                    // The next camera pass's head after this one's end (its readback), its trace
-                    // beside the light pass's finishing launch where that is later.
-                    let finish = light.iter().position(|&s| s == Step::Finish).expect("a finishing batch");
+                    // The next camera pass's head after this one's end (its readback): its fills
+                    // and first launch beside the light pass's first launch left then (in the
+                    // first submission, none: beside its last), and the launch's trace beside the
+                    // light pass's finishing launch where that is later.
+                    let finish = light_start + light.iter().position(|&s| s == Step::Finish).expect("a finishing batch");
                     let after_camera = rest.as_ref().map_or(0, |r| r.len());
-                    let head_start = after_camera.max((light_start + finish).saturating_sub(HEAD - 1));
+                    let from = if camera.is_some() { after_camera + 1 } else { finish.saturating_sub(1) };
+                    let launch_at = (from..finish).find(|&g| matches!(light[g - light_start], Step::Launch(_)));
+                    let (fills_at, trace_at) = match launch_at {
+                        Some(g) => (g - 1, finish.max(g + 1)),
+                        None => (after_camera.max(finish.saturating_sub(HEAD - 1)), after_camera.max(finish.saturating_sub(HEAD - 1)) + 2),
+                    };
                     // (It reads no light vertex: bound to the other store, which the light pass
                     // beside it does not write.)
                     let head_run = Run { binds: &binds[(i + 1) % 2][Pass::Camera as usize], ..run(Pass::Camera, i, nb) };
-                    lanes.push((head_run, &head[..], head_start));
+                    lanes.push((head_run, &head[..HEAD - 1], fills_at));
+                    lanes.push((head_run, &head[HEAD - 1..], trace_at));
                 }
                 w.record_side_by_side(rec, geometry, &lanes)?;
                 if let Some(before) = camera.and(i.checked_sub(1)).map(|b| &pushes[b]).filter(|b| b.camera_samples > 1) {

@@ -192,7 +192,7 @@ mod sampler_tests {
 }
 
 /// `RenderSettings::wavefront_overlap`'s default (`--wavefront-overlap`).
-pub const DEFAULT_WAVEFRONT_OVERLAP: u32 = 6;
+pub const DEFAULT_WAVEFRONT_OVERLAP: u32 = 4;
 
 /// How the wavefront forms' passes end (`--wavefront-finish`; src/render/bdpt_wavefront.rs,
 /// src/render/pt_wavefront.rs).
