@@ -141,6 +141,21 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s57d)
+  # Session 57: issue #16's aims as the issue measures them: `bidir converge --time 1` of pt-nee
+  # and bdpt against $REF with cv (6351338: converge's BDPT with its own Russian roulette depth,
+  # 3, where it had taken pt's 5) and with sp (the same passes, converge still at depth 5), twice
+  # each; the curves' CSVs to $OUT.
+  device_line
+  unpack cv sp
+  for r in 1 2; do
+    for n in cv sp; do
+      timeout -k 5 60 .device/bidir-$n converge --reference "$REF" --integrators pt-nee,bdpt --time 1 --points 3 --out /tmp/conv-$n-$r > /dev/null 2>&1
+      cp /tmp/conv-$n-$r/convergence.csv "$OUT/conv-$n-$r.csv"
+      echo "== r$r $n: $(tr '\n' ' ' < /tmp/conv-$n-$r/convergence.csv)"
+    done
+  done
+  ;;
 s57c)
   # Session 57: sp (the passes side by side, N = 4 by default, the next camera pass's first
   # launch beside the light pass's first launch after this camera pass's end and its trace beside
