@@ -472,7 +472,7 @@ impl Bdpt {
         film: &Film,
         pushes: &[BdptPush],
     ) -> std::result::Result<(), RenderError> {
-        if let (2, Some(overlap)) = (self.stores.len(), self.overlap) {
+        if let Some(overlap) = self.overlap {
             return self.iterate_side_by_side(ctx, w, scene, film, pushes, overlap);
         }
         let light_binds = self.binds(scene, film, 0, Pass::Light);
@@ -669,30 +669,27 @@ impl Bdpt {
                 Ok(())
             })
         };
+        // Each iteration's light and camera batches, decided when its submission is recorded.
         let n = pushes.len();
-        let (mut light_batch, mut camera_batch) = (batch(Pass::Light, 0), batch(Pass::Camera, 0));
-        let mut running = ctx.start(record(0, None, Some((light_batch, camera_batch)))?)?;
-        // The camera batch whose pass the running submission ends.
-        let mut ending: Option<Batch> = None;
+        let mut batches = vec![(batch(Pass::Light, 0), batch(Pass::Camera, 0))];
+        let mut running = ctx.start(record(0, None, Some(batches[0]))?)?;
         for i in 1..=n {
-            let next = (i < n).then(|| (batch(Pass::Light, i), batch(Pass::Camera, i)));
-            let submitted = ctx.start(record(i, Some(camera_batch), next)?)?;
+            if i < n {
+                batches.push((batch(Pass::Light, i), batch(Pass::Camera, i)));
+            }
+            let submitted = ctx.start(record(i, Some(batches[i - 1].1), batches.get(i).copied())?)?;
             running.wait()?;
             // Submission i - 1 ran iteration i - 1's light pass and (from i = 2) the rest of
             // iteration i - 2's camera pass: what they queued, for the next passes' finishing
             // launches.
-            w.after_batch(Pass::Light, 0, light_batch, (i - 1) % 2)?;
-            if let Some(b) = ending {
-                w.after_batch(Pass::Camera, 0, b, (i - 2) % 2)?;
+            w.after_batch(Pass::Light, 0, batches[i - 1].0, (i - 1) % 2)?;
+            if i >= 2 {
+                w.after_batch(Pass::Camera, 0, batches[i - 2].1, (i - 2) % 2)?;
             }
-            ending = Some(camera_batch);
             running = submitted;
-            if let Some((lb, cb)) = next {
-                (light_batch, camera_batch) = (lb, cb);
-            }
         }
         running.wait()?;
-        w.after_batch(Pass::Camera, 0, camera_batch, (n - 1) % 2)?;
+        w.after_batch(Pass::Camera, 0, batches[n - 1].1, (n - 1) % 2)?;
         Ok(())
     }
 }

@@ -383,19 +383,10 @@ impl Queues {
         let (t, stats) = (&self.tracer, &self.trace_stats);
         let (ext, shadow) = (Some((&self.counts, 2 * l)), Some((&self.counts, 2 * l + 1)));
         let sized = |any_hit| self.live.as_ref().map(|live| (&live.active, trace_dispatch_offset(l, any_hit)));
-        match &self.counters {
-            Some([closest, any]) => {
-                let c = RayCounters { closest, any };
-                t.record_trace_counted(rec, geometry, (&self.rays, &self.hits, stats), slots, ext, false, sized(false), c)?;
-                let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
-                t.record_trace_counted(rec, geometry, (rays, hits, stats), slots * self.shadow, shadow, true, sized(true), c)
-            }
-            None => {
-                t.record_trace_queued(rec, geometry, &self.rays, &self.hits, stats, slots, ext, false, sized(false))?;
-                let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
-                t.record_trace_queued(rec, geometry, rays, hits, stats, slots * self.shadow, shadow, true, sized(true))
-            }
-        }
+        let c = self.counters.as_ref().map_or_else(|| t.counters(), |[closest, any]| RayCounters { closest, any });
+        t.record_trace_counted(rec, geometry, (&self.rays, &self.hits, stats), slots, ext, false, sized(false), c)?;
+        let (rays, hits) = (&self.shadow_rays, &self.shadow_hits);
+        t.record_trace_counted(rec, geometry, (rays, hits, stats), slots * self.shadow, shadow, true, sized(true), c)
     }
 
     /// After a batch of `launches` (read back into `counts_read[readback]`): the segments and

@@ -400,8 +400,12 @@ impl Tracer {
         any_hit: bool,
         indirect: Option<(&Buffer, u64)>,
     ) -> Result<()> {
-        let counters = RayCounters { closest: &self.counter, any: &self.counter_any };
-        self.record_trace_counted(rec, geometry, (rays, hits, stats), count, counts, any_hit, indirect, counters)
+        self.record_trace_counted(rec, geometry, (rays, hits, stats), count, counts, any_hit, indirect, self.counters())
+    }
+
+    /// The tracer's own ray counters.
+    pub fn counters(&self) -> RayCounters<'_> {
+        RayCounters { closest: &self.counter, any: &self.counter_any }
     }
 
     /// Two persistent ray counters (closest hit, any hit) beside the tracer's own, zeroed, for
