@@ -141,6 +141,90 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s58d)
+  # Session 58: fewer loads a node step. s58b's diagnostic (one more 16-byte load a step, the
+  # distances unchanged) cost dynamic fetch's diffuse rays 8.5 % on an H100: the step is bound
+  # by its loads. top (scripts/device/s58d-toppred.patch): the stack's top read only where no
+  # child was hit (before: every step); tk (s58e-top-kid.patch): that, and the children's
+  # pointers read only where a child was hit. Against HEAD (base), Sponza CameraMain quality
+  # 5, lockstep and --refill 24, two rounds interleaved; tk's hit-for-hit tests
+  # (.device/test-traversal.gz, built with s58e); the integrators; the machine code.
+  device_line
+  unpack base top tk
+  sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-top" "$PWD/.device/bidir-tk"
+  gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
+  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
+  echo "== tests (tk)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
+  for b in top tk; do
+    d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
+    for m in "" "--refill 24"; do
+      __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$PWD/.device/bidir-$b" bench traversal --bvh bvh4 --leaf-size 3 $m --reps 5 --warmup 0 > /dev/null 2>&1
+    done
+    tar czf "$OUT/cache-$b.tgz" -C "$d" .
+  done
+  for b in base top tk; do
+    F=$PWD/.device/bidir-$b
+    for i in pt-nee bdpt; do
+      echo "== $b sponza $i: $(gpu_ms "$F" $SP --integrator $i --spp 64)"
+      [ -n "${SHORT:-}" ] && continue
+      echo "== $b cornell $i: $(gpu_ms "$F" $CB --integrator $i --spp 1024)"
+    done
+  done
+  ;;
+s58b)
+  # Session 58: the closest-hit leaf loop of the trace kernels' lockstep loops (dynamic fetch's
+  # diffuse rays) loading a leaf's next triangle while it tests the current one
+  # (scripts/device/s58b-pipe.patch, .device/bidir-pipe.gz) against HEAD (.device/bidir-base.gz),
+  # and extra (scripts/device/s58c-extra.patch, a diagnostic): one more 16-byte load a node step
+  # from the node's own line, the distances unchanged: what one more divergent load costs.
+  # Sponza CameraMain quality 5, lockstep and --refill 24, two rounds interleaved; the pipe
+  # patch's hit-for-hit tests (.device/test-traversal.gz, built with it); the integrators; the
+  # refill count; the dynamic-fetch kernels' machine code.
+  device_line
+  unpack base pipe extra
+  sponza_rounds 2 "$PWD/.device/bidir-base" "$PWD/.device/bidir-pipe" "$PWD/.device/bidir-extra"
+  gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
+  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
+  echo "== tests (pipe)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
+  for b in base pipe; do
+    F=$PWD/.device/bidir-$b
+    for i in pt-nee bdpt; do
+      echo "== $b sponza $i: $(gpu_ms "$F" $SP --integrator $i --spp 64)"
+      echo "== $b cornell $i: $(gpu_ms "$F" $CB --integrator $i --spp 1024)"
+    done
+  done
+  for r in 20 28; do
+    for b in base pipe; do echo "== $b --refill $r diffuse"; sponza_q5 "$PWD/.device/bidir-$b" --refill $r --rays diffuse; done
+  done
+  for b in base pipe; do
+    d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
+    __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$PWD/.device/bidir-$b" bench traversal --bvh bvh4 --leaf-size 3 --refill 24 --reps 5 --warmup 0 > /dev/null 2>&1
+    tar czf "$OUT/cache-r$b.tgz" -C "$d" .
+  done
+  ;;
+s58a)
+  # Session 58: the 4-wide node step's pushes at known places above the stack's top, each
+  # store predicated on its child being hit, the top moved once (scripts/device/s58a-push.patch,
+  # .device/bidir-push.gz) against HEAD (.device/bidir-base.gz): Sponza CameraMain quality 5,
+  # lockstep and --refill 24, three rounds interleaved; the integrators on Sponza and the
+  # Cornell box; both builds' machine code; the patch's hit-for-hit tests under the validation
+  # layers (.device/test-traversal.gz, built with the patch).
+  device_line
+  unpack base push
+  sponza_rounds 3 "$PWD/.device/bidir-base" "$PWD/.device/bidir-push"
+  for b in base push; do
+    F=$PWD/.device/bidir-$b
+    for i in pt-nee bdpt; do
+      echo "== $b sponza $i: $(gpu_ms "$F" $SP --integrator $i --spp 64)"
+      echo "== $b cornell $i: $(gpu_ms "$F" $CB --integrator $i --spp 1024)"
+    done
+  done
+  shader_cache "$PWD/.device/bidir-base" cache-base.tgz
+  shader_cache "$PWD/.device/bidir-push" cache-push.tgz
+  gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
+  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
+  echo "== tests (push)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
+  ;;
 s57d)
   # Session 57: issue #16's aims as the issue measures them: `bidir converge --time 1` of pt-nee
   # and bdpt against $REF with cv (6351338: converge's BDPT with its own Russian roulette depth,
