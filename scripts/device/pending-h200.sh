@@ -144,18 +144,25 @@ case "${1:-speed}" in
 s58d)
   # Session 58: fewer loads a node step. s58b's diagnostic (one more 16-byte load a step, the
   # distances unchanged) cost dynamic fetch's diffuse rays 8.5 % on an H100: the step is bound
-  # by its loads. top (scripts/device/s58d-toppred.patch): the stack's top read only where no
-  # child was hit (before: every step); tk (s58e-top-kid.patch): that, and the children's
-  # pointers read only where a child was hit. Against HEAD (base), Sponza CameraMain quality
-  # 5, lockstep and --refill 24, two rounds interleaved; tk's hit-for-hit tests
-  # (.device/test-traversal.gz, built with s58e); the integrators; the machine code.
+  # by its memory requests. top (scripts/device/s58d-toppred.patch): the stack's top read only
+  # where no child was hit (before: every step); tk (s58e-top-kid.patch): that, and the
+  # children's pointers read only where a child was hit; kid (s58f-kid.patch) the second
+  # alone; xu (s58g-extra-uniform.patch, a diagnostic): s58c's extra load with every lane on
+  # one word, to tell a cost per divergent line (xu cheap: cooperative node fetches could pay)
+  # from a cost per load instruction (xu as dear as s58c's 8.5 %). Against HEAD (base),
+  # Sponza CameraMain quality 5, lockstep and --refill 24, ROUNDS rounds (2) interleaved; tk's
+  # hit-for-hit tests (.device/test-traversal.gz, built with s58e); top's and tk's machine
+  # code; the integrators (SHORT=1: Sponza only). Bundles: `bash scripts/device/make-bundle.sh
+  # base top=s58d-toppred.patch tk=s58e-top-kid.patch kid=s58f-kid.patch
+  # xu=s58g-extra-uniform.patch`; the test binary: s58e applied, `cargo test --release --test
+  # traversal --no-run`, the binary it names stripped and gzipped as .device/test-traversal.gz.
   device_line
-  unpack base top tk
-  sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-top" "$PWD/.device/bidir-tk"
+  unpack base top tk kid xu
+  sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-top" "$PWD/.device/bidir-tk" "$PWD/.device/bidir-kid" "$PWD/.device/bidir-xu"
   gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
   mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
   echo "== tests (tk)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
-  for b in top tk; do
+  for b in top tk xu; do
     d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
     for m in "" "--refill 24"; do
       __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$PWD/.device/bidir-$b" bench traversal --bvh bvh4 --leaf-size 3 $m --reps 5 --warmup 0 > /dev/null 2>&1
