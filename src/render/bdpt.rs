@@ -622,8 +622,15 @@ impl Bdpt {
                     steps[HEAD..].to_vec()
                 });
                 // The light pass's fills beside the trace of the launch before the first of the
-                // camera pass's last `overlap` launches.
-                let light_start = camera.map_or(0, |cb| (2 * (cb.launches.saturating_sub(overlap).max(1) as usize - 1)).saturating_sub(1));
+                // camera pass's last `overlap` launches (beside its first step where that trace
+                // is in the head).
+                let light_start = match (camera, &rest) {
+                    (Some(cb), Some(rest)) => {
+                        let first_beside = cb.launches.saturating_sub(overlap).max(1);
+                        rest.iter().position(|&s| s == Step::Traces(first_beside - 1)).unwrap_or(0)
+                    }
+                    _ => 0,
+                };
                 let light = next.map(|(lb, _)| w.steps(lb));
                 let head = next.map(|(_, nb)| w.steps(nb)[..HEAD].to_vec());
                 let mut lanes = Vec::new();
@@ -646,7 +653,10 @@ impl Bdpt {
                     let launch_at = (from..finish).find(|&g| matches!(light[g - light_start], Step::Launch(_)));
                     let (fills_at, trace_at) = match launch_at {
                         Some(g) => (g - 1, finish.max(g + 1)),
-                        None => (after_camera.max(finish.saturating_sub(HEAD - 1)), after_camera.max(finish.saturating_sub(HEAD - 1)) + 2),
+                        None => {
+                            let at = after_camera.max(finish.saturating_sub(HEAD - 1));
+                            (at, at + 2)
+                        }
                     };
                     // (It reads no light vertex: bound to the other store, which the light pass
                     // beside it does not write.)
