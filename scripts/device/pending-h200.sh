@@ -134,6 +134,25 @@ shader_cache() {
   __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$1" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
   tar czf "$OUT/$2" -C "$d" .
 }
+# Session 58's parts: the hit-for-hit traversal tests of .device/test-traversal.gz (a test
+# binary built with the patch under test, named $1 in the output) under the validation layers,
+# Sponza's geometry where the tests look for it.
+traversal_tests() {
+  gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
+  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
+  echo "== tests ($1)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
+}
+# pt-nee's and bdpt's GPU ms with .device/bidir-NAME for each NAME given: Sponza under its sun
+# and sky (64 spp), and unless SHORT is set the Cornell box (1024 spp).
+integrator_lines() {
+  for b in "$@"; do
+    for i in pt-nee bdpt; do
+      echo "== $b sponza $i: $(gpu_ms "$PWD/.device/bidir-$b" $SP --integrator $i --spp 64)"
+      [ -n "${SHORT:-}" ] && continue
+      echo "== $b cornell $i: $(gpu_ms "$PWD/.device/bidir-$b" $CB --integrator $i --spp 1024)"
+    done
+  done
+}
 # Issue #16's ratio with the binary $1 on the Cornell box: pt-nee's GPU ms and bdpt's with its
 # path kernels' ms (1024 spp), then both at 1 s against $REF.
 ratio_lines() {
@@ -159,9 +178,7 @@ s58d)
   device_line
   unpack base top tk kid xu
   sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-top" "$PWD/.device/bidir-tk" "$PWD/.device/bidir-kid" "$PWD/.device/bidir-xu"
-  gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
-  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
-  echo "== tests (tk)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
+  traversal_tests tk
   for b in top tk xu; do
     d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
     for m in "" "--refill 24"; do
@@ -169,14 +186,7 @@ s58d)
     done
     tar czf "$OUT/cache-$b.tgz" -C "$d" .
   done
-  for b in base top tk; do
-    F=$PWD/.device/bidir-$b
-    for i in pt-nee bdpt; do
-      echo "== $b sponza $i: $(gpu_ms "$F" $SP --integrator $i --spp 64)"
-      [ -n "${SHORT:-}" ] && continue
-      echo "== $b cornell $i: $(gpu_ms "$F" $CB --integrator $i --spp 1024)"
-    done
-  done
+  integrator_lines base top tk
   ;;
 s58b)
   # Session 58: the closest-hit leaf loop of the trace kernels' lockstep loops (dynamic fetch's
@@ -190,16 +200,8 @@ s58b)
   device_line
   unpack base pipe extra
   sponza_rounds 2 "$PWD/.device/bidir-base" "$PWD/.device/bidir-pipe" "$PWD/.device/bidir-extra"
-  gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
-  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
-  echo "== tests (pipe)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
-  for b in base pipe; do
-    F=$PWD/.device/bidir-$b
-    for i in pt-nee bdpt; do
-      echo "== $b sponza $i: $(gpu_ms "$F" $SP --integrator $i --spp 64)"
-      echo "== $b cornell $i: $(gpu_ms "$F" $CB --integrator $i --spp 1024)"
-    done
-  done
+  traversal_tests pipe
+  integrator_lines base pipe
   for r in 20 28; do
     for b in base pipe; do echo "== $b --refill $r diffuse"; sponza_q5 "$PWD/.device/bidir-$b" --refill $r --rays diffuse; done
   done
@@ -219,18 +221,10 @@ s58a)
   device_line
   unpack base push
   sponza_rounds 3 "$PWD/.device/bidir-base" "$PWD/.device/bidir-push"
-  for b in base push; do
-    F=$PWD/.device/bidir-$b
-    for i in pt-nee bdpt; do
-      echo "== $b sponza $i: $(gpu_ms "$F" $SP --integrator $i --spp 64)"
-      echo "== $b cornell $i: $(gpu_ms "$F" $CB --integrator $i --spp 1024)"
-    done
-  done
+  integrator_lines base push
   shader_cache "$PWD/.device/bidir-base" cache-base.tgz
   shader_cache "$PWD/.device/bidir-push" cache-push.tgz
-  gunzip -kf .device/test-traversal.gz; chmod +x .device/test-traversal
-  mkdir -p ../shared/scenes && ln -sfn $PWD/.device/scenes/sponza ../shared/scenes/sponza
-  echo "== tests (push)"; BIDIR_VALIDATION=1 timeout -k 5 200 .device/test-traversal 2>&1 | grep -E "^test |result|panicked|VUID|sponza \[" | head -40
+  traversal_tests push
   ;;
 s57d)
   # Session 57: issue #16's aims as the issue measures them: `bidir converge --time 1` of pt-nee
