@@ -161,7 +161,9 @@ void trace_dynamic(inout uvec2 stats) {
         }
         while (true) {
             if (uint(node) < TRAVERSAL_SENTINEL) {
+#define TRAVERSAL_CHILDREN_ON_HIT
                 #include "traverse_bvh4_step.glsl"
+#undef TRAVERSAL_CHILDREN_ON_HIT
             }
             if (TRAVERSAL_DESCEND_LOCKSTEP()) {
                 break;

@@ -5,7 +5,8 @@
 # DamagedHelmet, the sharper Cornell reference as .device/ref.exr, and this checkout's release
 # build as .device/bidir-NAME.gz for each NAME given; NAME=PATCH builds with
 # scripts/device/PATCH applied (and reverted after). Run from the repository root with
-# CARGO_TARGET_DIR and SHADERC_LIB_DIR set (scripts/setup.sh).
+# CARGO_TARGET_DIR and SHADERC_LIB_DIR set (scripts/setup.sh). It empties .device/ first: a
+# part's test binary (.device/test-traversal.gz) is gzipped into it afterwards.
 #   bash scripts/device/make-bundle.sh ls fe=s47a-full-entries.patch
 set -euo pipefail
 root=$(git rev-parse --show-toplevel)

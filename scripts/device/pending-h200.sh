@@ -160,6 +160,44 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s59b)
+  # Session 59: the stack's top entry kept in registers (a push stores the old top, a pop takes
+  # the register and reloads it from local memory off the critical path), on top of kd:
+  # rt (scripts/device/s59b-top-register.patch: the reload only where a step pops) and rl
+  # (s59c-top-register-load.patch: the entry below loaded every step, taken where it pops),
+  # against HEAD (base) and kd (s59a); Sponza CameraMain quality 5, lockstep and --refill 24,
+  # ROUNDS rounds (2) interleaved; rl's hit-for-hit tests (.device/test-traversal.gz, built
+  # with s59c); rt's and rl's machine code; the integrators on Sponza (SHORT=1) and the
+  # Cornell box. Bundles: `bash scripts/device/make-bundle.sh base kd=s59a-kid-dynamic.patch
+  # rt=s59b-top-register.patch rl=s59c-top-register-load.patch`.
+  device_line
+  unpack base kd rt rl
+  sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-kd" "$PWD/.device/bidir-rt" "$PWD/.device/bidir-rl"
+  traversal_tests rl
+  for b in rt rl; do
+    d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
+    for m in "" "--refill 24"; do
+      __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$PWD/.device/bidir-$b" bench traversal --bvh bvh4 --leaf-size 3 $m --reps 5 --warmup 0 > /dev/null 2>&1
+    done
+    tar czf "$OUT/cache-$b.tgz" -C "$d" .
+  done
+  integrator_lines base kd rt rl
+  ;;
+s59a)
+  # Session 59: s58d's kid (the children's pointers read after the box tests, only where a
+  # child was hit) won diffuse rays 1 % at --refill 24 on an H100 but cost shadow rays 1.5 %
+  # and the lockstep kernel's primary rays 5 %. kd (scripts/device/s59a-kid-dynamic.patch):
+  # that read in the dynamic-fetch closest-hit step alone, against HEAD (base) and kid; Sponza
+  # CameraMain quality 5, lockstep and --refill 24, ROUNDS rounds (3) interleaved; kd's
+  # hit-for-hit tests (.device/test-traversal.gz, built with s59a); the integrators on Sponza
+  # and the Cornell box. Bundles: `bash scripts/device/make-bundle.sh base
+  # kd=s59a-kid-dynamic.patch kid=s58f-kid.patch`; the test binary as s58d's, with s59a.
+  device_line
+  unpack base kd kid
+  sponza_rounds "${ROUNDS:-3}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-kd" "$PWD/.device/bidir-kid"
+  traversal_tests kd
+  integrator_lines base kd
+  ;;
 s58d)
   # Session 58: fewer loads a node step. s58b's diagnostic (one more 16-byte load a step, the
   # distances unchanged) cost dynamic fetch's diffuse rays 8.5 % on an H100: the step is bound
