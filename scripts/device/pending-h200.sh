@@ -168,8 +168,10 @@ s59b)
   # against HEAD (base) and kd (s59a); Sponza CameraMain quality 5, lockstep and --refill 24,
   # ROUNDS rounds (2) interleaved; rl's hit-for-hit tests (.device/test-traversal.gz, built
   # with s59c); rt's and rl's machine code; the integrators on Sponza (SHORT=1) and the
-  # Cornell box. Bundles: `bash scripts/device/make-bundle.sh base kd=s59a-kid-dynamic.patch
-  # rt=s59b-top-register.patch rl=s59c-top-register-load.patch`.
+  # Cornell box. Bundles as run, on 84ae5a7: base, kd=s59a-kid-dynamic.patch; rt and rl its
+  # patches with kd's change in them. Since 163516e kd is the tree and the patches apply to it:
+  # `bash scripts/device/make-bundle.sh kd rt=s59b-top-register.patch
+  # rl=s59c-top-register-load.patch` (base then a build of 84ae5a7).
   device_line
   unpack base kd rt rl
   sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-kd" "$PWD/.device/bidir-rt" "$PWD/.device/bidir-rl"
