@@ -160,6 +160,24 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s60a)
+  # Session 59 for the next: issue #17's figures with HEAD (hd, a build of 0fbbcb7 or later,
+  # which holds kd: dynamic fetch's closest-hit step reads the children's pointers only where
+  # a child was hit). On an H200 this is the issue's measurement; on an H100 it repeats
+  # session 59's. Sponza CameraMain quality 5, lockstep and --refill 24, ROUNDS rounds (3);
+  # diffuse rays at --refill 20 and 28 (the best refill may have moved with kd); hd's
+  # hit-for-hit tests; the integrators (SHORT=1: Sponza only). Bundle: `bash
+  # scripts/device/make-bundle.sh hd`, then the test binary (`cargo test --release --test
+  # traversal --no-run`, the binary it names stripped and gzipped as .device/test-traversal.gz).
+  device_line
+  unpack hd
+  sponza_rounds "${ROUNDS:-3}" "$PWD/.device/bidir-hd"
+  for r in 20 28; do
+    echo "== hd --refill $r diffuse"; sponza_q5 "$PWD/.device/bidir-hd" --refill $r --rays diffuse
+  done
+  traversal_tests hd
+  integrator_lines hd
+  ;;
 s59b)
   # Session 59: the stack's top entry kept in registers (a push stores the old top, a pop takes
   # the register and reloads it from local memory off the critical path), on top of kd:
