@@ -134,6 +134,19 @@ shader_cache() {
   __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$1" bench traversal --bvh bvh4 --leaf-size 3 --reps 5 --warmup 0 > /dev/null 2>&1
   tar czf "$OUT/$2" -C "$d" .
 }
+# Session 59's: the driver's compiled trace kernels of .device/bidir-NAME for each NAME given
+# (bench traversal lockstep and with --refill 24, into one cache) as $OUT/cache-NAME.tgz, for
+# scripts/device/sass.py.
+trace_caches() {
+  local b d m
+  for b in "$@"; do
+    d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
+    for m in "" "--refill 24"; do
+      __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$PWD/.device/bidir-$b" bench traversal --bvh bvh4 --leaf-size 3 $m --reps 5 --warmup 0 > /dev/null 2>&1
+    done
+    tar czf "$OUT/cache-$b.tgz" -C "$d" .
+  done
+}
 # Session 58's parts: the hit-for-hit traversal tests of .device/test-traversal.gz (a test
 # binary built with the patch under test, named $1 in the output) under the validation layers,
 # Sponza's geometry where the tests look for it.
@@ -194,13 +207,7 @@ s59b)
   unpack base kd rt rl
   sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-kd" "$PWD/.device/bidir-rt" "$PWD/.device/bidir-rl"
   traversal_tests rl
-  for b in rt rl; do
-    d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
-    for m in "" "--refill 24"; do
-      __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$PWD/.device/bidir-$b" bench traversal --bvh bvh4 --leaf-size 3 $m --reps 5 --warmup 0 > /dev/null 2>&1
-    done
-    tar czf "$OUT/cache-$b.tgz" -C "$d" .
-  done
+  trace_caches rt rl
   integrator_lines base kd rt rl
   ;;
 s59a)
@@ -237,13 +244,7 @@ s58d)
   unpack base top tk kid xu
   sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-top" "$PWD/.device/bidir-tk" "$PWD/.device/bidir-kid" "$PWD/.device/bidir-xu"
   traversal_tests tk
-  for b in top tk xu; do
-    d=/tmp/nvcache-r$b; rm -rf "$d"; mkdir -p "$d"
-    for m in "" "--refill 24"; do
-      __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$d __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1 timeout -k 5 60 "$PWD/.device/bidir-$b" bench traversal --bvh bvh4 --leaf-size 3 $m --reps 5 --warmup 0 > /dev/null 2>&1
-    done
-    tar czf "$OUT/cache-$b.tgz" -C "$d" .
-  done
+  trace_caches top tk xu
   integrator_lines base top tk
   ;;
 s58b)
