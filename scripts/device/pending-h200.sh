@@ -173,6 +173,23 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s60b)
+  # Session 59 for the next, a measurement build: pk (scripts/device/s60b-packed-children.patch)
+  # packs each child pointer into the low bits of its six planes (XOR of each axis's pair:
+  # 11 + 11 + 10 bits; the planes moved outward to the nearest float with those bits), so a
+  # node step issues six 16-byte loads instead of seven, for about 24 more integer
+  # instructions and boxes grown by up to 2^-12 of their coordinates' magnitude. Against hd
+  # (HEAD). Sponza CameraMain quality 5, lockstep and --refill 24, ROUNDS rounds (2), then the
+  # integrators on Sponza. Not a candidate as it stands: the growth is 2^11 ulps, 32 units at
+  # tests/traversal.rs's scene 2^17 from the origin (6 units wide), whose persistent variants
+  # then fail on lavapipe (every box covers the scene; likely llvmpipe's loop limit, not
+  # verified); it asks what one load fewer a step is worth. Bundles: `bash
+  # scripts/device/make-bundle.sh hd pk=s60b-packed-children.patch`.
+  device_line
+  unpack hd pk
+  sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-hd" "$PWD/.device/bidir-pk"
+  SHORT=1 integrator_lines hd pk
+  ;;
 s60a)
   # Session 59 for the next: issue #17's figures with HEAD (hd, a build of 0fbbcb7 or later,
   # which holds kd: dynamic fetch's closest-hit step reads the children's pointers only where
