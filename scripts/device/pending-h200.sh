@@ -182,8 +182,9 @@ s60b)
   # (HEAD). Sponza CameraMain quality 5, lockstep and --refill 24, ROUNDS rounds (2), then the
   # integrators on Sponza. Not a candidate as it stands: the growth is 2^11 ulps, 32 units at
   # tests/traversal.rs's scene 2^17 from the origin (6 units wide), whose persistent variants
-  # then fail on lavapipe (every box covers the scene; likely llvmpipe's loop limit, not
-  # verified); it asks what one load fewer a step is worth. Bundles: `bash
+  # then fail on lavapipe (every box covers the scene, each ray visits all 2,571 nodes, and 32
+  # batches of 8 such rays overrun llvmpipe's 65,535 loop iterations: docs/traversal.md,
+  # "llvmpipe loop limiter"); it asks what one load fewer a step is worth. Bundles: `bash
   # scripts/device/make-bundle.sh hd pk=s60b-packed-children.patch`.
   device_line
   unpack hd pk
