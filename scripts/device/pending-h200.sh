@@ -184,12 +184,15 @@ s60b)
   # tests/traversal.rs's scene 2^17 from the origin (6 units wide), whose persistent variants
   # then fail on lavapipe (every box covers the scene, each ray visits all 2,571 nodes, and 32
   # batches of 8 such rays overrun llvmpipe's 65,535 loop iterations: docs/traversal.md,
-  # "llvmpipe loop limiter"); it asks what one load fewer a step is worth. Bundles: `bash
-  # scripts/device/make-bundle.sh hd pk=s60b-packed-children.patch`.
+  # "llvmpipe loop limiter"); it asks what one load fewer a step is worth. pb
+  # (s60c-packed-bytes.patch): the pointer's four bytes in the low bytes of the x and y planes,
+  # lower and upper told apart by the ray's nx and ny (more shifts a step, boxes grown by at
+  # most 256 ulps; the same lavapipe failure, its any-hit verdicts). Bundles: `bash
+  # scripts/device/make-bundle.sh hd pk=s60b-packed-children.patch pb=s60c-packed-bytes.patch`.
   device_line
-  unpack hd pk
-  sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-hd" "$PWD/.device/bidir-pk"
-  SHORT=1 integrator_lines hd pk
+  unpack hd pk pb
+  sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-hd" "$PWD/.device/bidir-pk" "$PWD/.device/bidir-pb"
+  SHORT=1 integrator_lines hd pk pb
   ;;
 s60a)
   # Session 59 for the next: issue #17's figures with HEAD (hd, a build of 0fbbcb7 or later,
