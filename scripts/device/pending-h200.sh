@@ -239,7 +239,9 @@ s59a)
   # CameraMain quality 5, lockstep and --refill 24, ROUNDS rounds (3) interleaved; kd's
   # hit-for-hit tests (.device/test-traversal.gz, built with s59a); the integrators on Sponza
   # and the Cornell box. Bundles: `bash scripts/device/make-bundle.sh base
-  # kd=s59a-kid-dynamic.patch kid=s58f-kid.patch`; the test binary as s58d's, with s59a.
+  # kd=s59a-kid-dynamic.patch kid=s58f-kid.patch` in a checkout of 84ae5a7 (both patches
+  # change the children's read that 163516e, kd itself, changed: they apply to 84ae5a7 only);
+  # the test binary as s58d's, with s59a.
   device_line
   unpack base kd kid
   sponza_rounds "${ROUNDS:-3}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-kd" "$PWD/.device/bidir-kid"
@@ -259,8 +261,10 @@ s58d)
   # hit-for-hit tests (.device/test-traversal.gz, built with s58e); top's and tk's machine
   # code; the integrators (SHORT=1: Sponza only). Bundles: `bash scripts/device/make-bundle.sh
   # base top=s58d-toppred.patch tk=s58e-top-kid.patch kid=s58f-kid.patch
-  # xu=s58g-extra-uniform.patch`; the test binary: s58e applied, `cargo test --release --test
-  # traversal --no-run`, the binary it names stripped and gzipped as .device/test-traversal.gz.
+  # xu=s58g-extra-uniform.patch` in a checkout of 84ae5a7 (s58e, s58f and s58g change the
+  # children's read that 163516e changed: they apply to 84ae5a7 only); the test binary: s58e
+  # applied, `cargo test --release --test traversal --no-run`, the binary it names stripped
+  # and gzipped as .device/test-traversal.gz after make-bundle.sh (which empties .device/).
   device_line
   unpack base top tk kid xu
   sponza_rounds "${ROUNDS:-2}" "$PWD/.device/bidir-base" "$PWD/.device/bidir-top" "$PWD/.device/bidir-tk" "$PWD/.device/bidir-kid" "$PWD/.device/bidir-xu"
@@ -273,7 +277,8 @@ s58b)
   # diffuse rays) loading a leaf's next triangle while it tests the current one
   # (scripts/device/s58b-pipe.patch, .device/bidir-pipe.gz) against HEAD (.device/bidir-base.gz),
   # and extra (scripts/device/s58c-extra.patch, a diagnostic): one more 16-byte load a node step
-  # from the node's own line, the distances unchanged: what one more divergent load costs.
+  # from the node's own line, the distances unchanged: what one more divergent load costs
+  # (s58c applies to 84ae5a7 and earlier, before 163516e changed the children's read).
   # Sponza CameraMain quality 5, lockstep and --refill 24, two rounds interleaved; the pipe
   # patch's hit-for-hit tests (.device/test-traversal.gz, built with it); the integrators; the
   # refill count; the dynamic-fetch kernels' machine code.
