@@ -174,6 +174,8 @@ ratio_lines() {
 }
 case "${1:-speed}" in
 s60b)
+  # Ran in session 60 on an H100: pk and pb 5-20 % slower than hd, not kept (docs/traversal.md,
+  # "One load fewer a node step, bought with decoding").
   # Session 59 for the next, a measurement build: pk (scripts/device/s60b-packed-children.patch)
   # packs each child pointer into the low bits of its six planes (XOR of each axis's pair:
   # 11 + 11 + 10 bits; the planes moved outward to the nearest float with those bits), so a
