@@ -70,6 +70,8 @@ fn variants(opts: &BuildOptions) -> Vec<(&'static str, TraceOptions)> {
             v.push(("origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }));
             // Leaf tests shared among the lanes (trace_bvh4_share.comp), one ray per invocation.
             v.push(("shared leaf tests", TraceOptions { share_leaves: true, ..base }));
+            // The subgroup's rays as one packet (trace_bvh4_packet.comp).
+            v.push(("packet", TraceOptions { packet: true, ..base }));
             // Dynamic fetch: lanes refilled one by one (3 groups: many refills per subgroup),
             // and three at a time with the device's default launch.
             v.push(("dynamic fetch at 1 lane, 3 groups", TraceOptions { persistent: Some(3), refill_lanes: 1, ..base }));
@@ -564,9 +566,10 @@ fn alpha_masked_triangles_are_skipped_as_the_integrators_skip_them() {
         let cpu = CpuTracer::new(&bvh, &scene.positions, &scene.triangles).with_fma(device_fma(&ctx));
         let gscene = bidir::render::GpuScene::upload(&ctx, &scene, &bvh).unwrap();
         let build = BuildOptions { tri_test, layout, ..Default::default() };
-        // The variants with an alpha-tested kernel (no short stack, other workgroup sizes or shared
-        // leaf tests).
-        let alpha_ok = |o: &TraceOptions| !o.short_stack && !o.share_leaves && o.workgroup_size == bidir::gpu::abi::TRACE_WG_SIZE;
+        // The variants with an alpha-tested kernel (no short stack, other workgroup sizes, shared
+        // leaf tests or packets).
+        let alpha_ok =
+            |o: &TraceOptions| !o.short_stack && !o.share_leaves && !o.packet && o.workgroup_size == bidir::gpu::abi::TRACE_WG_SIZE;
         for (variant, mut opts) in variants(&build).into_iter().filter(|(_, o)| alpha_ok(o)) {
             opts.alpha = Some(gscene.features);
             let tracer = Tracer::with_options(&ctx, &opts).unwrap();

@@ -85,8 +85,8 @@ void trace_one(uint i, inout uvec2 stats) {
 }
 
 // (Not in the lockstep kernel, trace_bvh4_lockstep.comp: its leaf tests read the origin that
-// trace_ray_lockstep keeps in shared memory.)
-#if defined(TRAVERSE_BVH4) && !defined(TRACE_LOCKSTEP_KERNEL)
+// trace_ray_lockstep keeps in shared memory; nor in the packet kernel, trace_bvh4_packet.comp.)
+#if defined(TRAVERSE_BVH4) && !defined(TRACE_LOCKSTEP_KERNEL) && !defined(TRACE_PACKET)
 layout(constant_id = SPEC_REFILL_LANES) const uint REFILL_LANES = 0u;
 
 // Persistent threads with dynamic fetch (Aila & Laine 2009, section 3's "dynamic fetch"):
@@ -181,7 +181,7 @@ void trace_dynamic(inout uvec2 stats) {
 void main() {
     ray_total = RAY_COUNT_BUFFER != 0u ? min(ray_counts[pc.count_index], pc.count) : pc.count;
     uvec2 stats = uvec2(0u);
-#if defined(TRAVERSE_BVH4) && !defined(TRACE_LOCKSTEP_KERNEL)
+#if defined(TRAVERSE_BVH4) && !defined(TRACE_LOCKSTEP_KERNEL) && !defined(TRACE_PACKET)
     if (PERSISTENT != 0u && REFILL_LANES != 0u) {
         trace_dynamic(stats);
     } else

@@ -55,9 +55,16 @@ Bvh4Ray bvh4_ray(vec3 o, vec3 d) {
     return Bvh4Ray(idir, ood_near, ood_far, nx, ny, nz);
 }
 
+#ifdef TRACE_PACKET
+#include "traverse_bvh4_packet.glsl"
+#endif
+
 // Closest hit in (tmin, tmax), or with `any_hit` the first hit found. `stats` counts 4-wide
 // nodes visited (x) and triangles tested (y) when TRAVERSAL_STATS is set.
 TraceHit trace_ray(vec3 o, vec3 d, float tmin, float tmax, bool any_hit, inout uvec2 stats) {
+#ifdef TRACE_PACKET
+    return trace_ray_packet(o, d, tmin, tmax, any_hit, stats);
+#endif
     if (LOCKSTEP != 0u && SPECULATIVE != 0u) {
         return trace_ray_lockstep(o, d, tmin, tmax, any_hit, stats);
     }

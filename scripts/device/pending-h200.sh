@@ -173,6 +173,23 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s62a)
+  # Session 62: packet traversal (`--packet`, trace_bvh4_packet.comp: the subgroup's rays walk
+  # the 4-wide tree together, a node at a time) against the lockstep loops. pkt is a build of
+  # the commit that adds it (its default kernels' SPIR-V is hd's); Sponza CameraMain quality 5,
+  # ROUNDS rounds (3) of hd and pkt lockstep and pkt --packet, interleaved; pkt's hit-for-hit
+  # tests (.device/test-traversal.gz, built with it: the packet variant among the others).
+  # Bundle: .device/bidir-pkt.gz beside s60a's hd (a stripped, gzipped release build).
+  device_line
+  unpack hd pkt
+  for r in $(seq "${ROUNDS:-3}"); do
+    for b in hd pkt; do
+      echo "== $b lockstep $(date +%T)"; sponza_q5 "$PWD/.device/bidir-$b"
+    done
+    echo "== pkt --packet $(date +%T)"; sponza_q5 "$PWD/.device/bidir-pkt" --packet
+  done
+  traversal_tests pkt
+  ;;
 s60b)
   # Ran in session 60 on an H100: pk and pb 5-20 % slower than hd, not kept (docs/traversal.md,
   # "One load fewer a node step, bought with decoding").

@@ -65,6 +65,9 @@ pub struct Options {
     /// 4-wide layout, lockstep loops (one ray per invocation or dynamic fetch): the leaf tests
     /// shared among the subgroup's lanes (`TraceOptions::share_leaves`).
     pub share_leaves: bool,
+    /// 4-wide layout, one ray per invocation: the subgroup's rays as one packet
+    /// (`TraceOptions::packet`).
+    pub packet: bool,
     /// Compressed wide layout: triangle postponing.
     pub postpone: bool,
     /// Binary layouts: the stack's top in registers, the rest in shared memory.
@@ -97,6 +100,7 @@ impl Default for Options {
             lockstep: true,
             refill_lanes: 0,
             share_leaves: false,
+            packet: false,
             postpone: false,
             short_stack: false,
             int_slabs: true,
@@ -153,6 +157,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     trace_opts.lockstep = opts.lockstep;
     trace_opts.refill_lanes = opts.refill_lanes;
     trace_opts.share_leaves = opts.share_leaves;
+    trace_opts.packet = opts.packet;
     trace_opts.postpone = opts.postpone;
     trace_opts.short_stack = opts.short_stack;
     trace_opts.int_slabs = opts.int_slabs;
@@ -292,6 +297,7 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         lockstep: opts.lockstep && opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
         refill_lanes: if opts.persistent.is_some() { opts.refill_lanes } else { 0 },
         share_leaves: opts.share_leaves,
+        packet: opts.packet,
         postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
         short_stack: opts.short_stack,
         int_slabs: opts.int_slabs,

@@ -125,6 +125,10 @@ pub struct TraversalArgs {
     /// triangles of those with one)
     #[arg(long)]
     pub share_leaves: bool,
+    /// 4-wide BVH, one ray per invocation: the subgroup's rays traverse as one packet, a node
+    /// at a time (glsl/common/traverse_bvh4_packet.glsl; for coherent rays)
+    #[arg(long)]
+    pub packet: bool,
     /// Compressed wide BVH: postpone triangle tests while few lanes have any (Ylitie et al.
     /// 2017, section 4).
     #[arg(long)]
@@ -282,6 +286,19 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         anyhow::bail!("--share-leaves: with --bvh bvh4 and its speculative lockstep loops, one ray per invocation or --refill N (not --persistent alone, --alpha, --no-speculative or --divergent-loops)");
     }
     o.share_leaves = a.share_leaves;
+    if a.packet
+        && (a.bvh != bidir::bvh::BvhLayout::Bvh4
+            || a.no_speculative
+            || a.divergent_loops
+            || a.alpha
+            || a.share_leaves
+            || a.persistent
+            || a.persistent_groups.is_some()
+            || a.refill.is_some())
+    {
+        anyhow::bail!("--packet: with --bvh bvh4, one ray per invocation (not --persistent, --refill, --alpha, --share-leaves, --no-speculative or --divergent-loops)");
+    }
+    o.packet = a.packet;
     let cam = bidir::gpu_data::gpu_camera(&loaded.camera);
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();

@@ -57,6 +57,10 @@ pub struct TraceOptions {
     /// without a leaf testing the next triangles of those with one (trace_bvh4_share.comp;
     /// glsl/common/traverse.glsl, TRAVERSAL_LEAVES_SHARED). Off by default.
     pub share_leaves: bool,
+    /// 4-wide layout, one ray per invocation, speculative lockstep loops, no alpha masks: the
+    /// subgroup's rays traverse as one packet, a node at a time (trace_bvh4_packet.comp;
+    /// glsl/common/traverse_bvh4_packet.glsl). Off by default.
+    pub packet: bool,
     /// 4-wide layout, one ray per invocation in lockstep loops (not persistent, no alpha masks):
     /// the kernel that keeps each ray's origin in shared memory for its leaf tests
     /// (trace_bvh4_lockstep.comp; glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL). None (the
@@ -104,6 +108,7 @@ impl TraceOptions {
             lockstep: true,
             refill_lanes: 0,
             share_leaves: false,
+            packet: false,
             shared_origin: None,
             postpone: false,
             short_stack: false,
@@ -251,6 +256,18 @@ impl Tracer {
             let msg = "shared leaf tests need the 4-wide layout's speculative lockstep loops (one ray per invocation or dynamic fetch), without alpha masks".to_string();
             return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
         }
+        if opts.packet
+            && (opts.layout != BvhLayout::Bvh4
+                || opts.persistent.is_some()
+                || !opts.lockstep
+                || !opts.speculative
+                || opts.share_leaves
+                || opts.alpha.is_some()
+                || opts.workgroup_size != abi::TRACE_WG_SIZE)
+        {
+            let msg = "packet traversal needs the 4-wide layout, one ray per invocation and the speculative lockstep loops, without alpha masks or shared leaf tests".to_string();
+            return Err(crate::vk::VkError::Kernel { kernel: "trace".into(), msg });
+        }
         trace_specs.push(Spec { id: abi::SPEC_INT_SLABS, value: opts.int_slabs as u32 });
         trace_specs.push(Spec { id: abi::SPEC_RAY_COUNT_BUFFER, value: opts.count_buffer as u32 });
         if opts.rays_per_invocation != 1 {
@@ -299,6 +316,8 @@ impl Tracer {
             (None, BvhLayout::Bvh2q) => &kernels::TRACE_BVH2Q,
             // Leaf tests shared among the lanes, per ray or with dynamic fetch (validated above).
             (None, BvhLayout::Bvh4) if opts.share_leaves => &kernels::TRACE_BVH4_SHARE,
+            // The subgroup's rays as one packet (validated above).
+            (None, BvhLayout::Bvh4) if opts.packet => &kernels::TRACE_BVH4_PACKET,
             // One ray per invocation in lockstep loops: the kernel whose leaf tests read the
             // origin from shared memory (glsl/common/traverse.glsl, TRACE_LOCKSTEP_KERNEL).
             (None, BvhLayout::Bvh4) if opts.persistent.is_none() && opts.lockstep && opts.speculative && shared_origin => {

@@ -43,6 +43,7 @@ pub struct Report {
     pub lockstep: bool,
     pub refill_lanes: u32,
     pub share_leaves: bool,
+    pub packet: bool,
     pub postpone: bool,
     pub short_stack: bool,
     pub int_slabs: bool,
@@ -90,6 +91,7 @@ impl Report {
             ("lockstep", Json::Bool(self.lockstep)),
             ("refill_lanes", Json::Int(self.refill_lanes as i64)),
             ("share_leaves", Json::Bool(self.share_leaves)),
+            ("packet", Json::Bool(self.packet)),
             ("postpone", Json::Bool(self.postpone)),
             ("short_stack", Json::Bool(self.short_stack)),
             ("int_slabs", Json::Bool(self.int_slabs)),
@@ -165,6 +167,7 @@ impl Report {
                 + if self.layout != BvhLayout::Cwbvh && self.speculative && !self.lockstep { ", divergent loops" } else { "" }
                 + &if self.refill_lanes > 0 { format!(", dynamic fetch at {} done lanes", self.refill_lanes) } else { String::new() }
                 + if self.share_leaves { ", leaf tests shared among lanes" } else { "" }
+                + if self.packet { ", packet traversal" } else { "" }
                 + if self.postpone { ", triangle postponing" } else { "" }
                 + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
                 + if !self.int_slabs { ", float slab test" } else { "" }
