@@ -59,7 +59,8 @@ pub struct TraceOptions {
     pub share_leaves: bool,
     /// 4-wide layout, one ray per invocation, speculative lockstep loops, no alpha masks: the
     /// subgroup's rays traverse as one packet, a node at a time (trace_bvh4_packet.comp;
-    /// glsl/common/traverse_bvh4_packet.glsl). Off by default.
+    /// glsl/common/traverse_bvh4_packet.glsl). Off by default: NVIDIA H100, Sponza, camera rays
+    /// 2.4 % slower than the lockstep loops, shadow rays 22 %, diffuse rays 3.4x (session 62).
     pub packet: bool,
     /// 4-wide layout, one ray per invocation in lockstep loops (not persistent, no alpha masks):
     /// the kernel that keeps each ray's origin in shared memory for its leaf tests
