@@ -768,12 +768,17 @@ fn queued_ray_counts_trace_only_the_queued_rays() {
         ("per-ray", base),
         ("per-ray, origin in shared memory", TraceOptions { shared_origin: Some(true), ..base }),
         ("per-ray, shared leaf tests", TraceOptions { share_leaves: true, ..base }),
+        ("packet", TraceOptions { packet: true, ..base }),
         ("persistent 3 groups", TraceOptions { persistent: Some(3), ..base }),
         ("dynamic fetch at 3 lanes", TraceOptions { persistent: Some(0), refill_lanes: 3, ..base }),
         ("dynamic fetch at 3 lanes, shared leaf tests", TraceOptions { persistent: Some(0), refill_lanes: 3, share_leaves: true, ..base }),
     ];
     // Shared leaf tests belong to lockstep loops: refused for plain persistent threads' batches.
     assert!(Tracer::with_options(&ctx, &TraceOptions { share_leaves: true, persistent: Some(3), ..base }).is_err());
+    // Packets are one ray per invocation over the 4-wide layout: refused with persistent threads
+    // and over the binary layout.
+    assert!(Tracer::with_options(&ctx, &TraceOptions { packet: true, persistent: Some(0), refill_lanes: 3, ..base }).is_err());
+    assert!(Tracer::with_options(&ctx, &TraceOptions { packet: true, layout: BvhLayout::Bvh2, ..base }).is_err());
     // Queued: 1,234 rays (the count at index 1; index 0 holds a decoy).
     let queued = 1_234usize;
     let counts = ctx.upload_buffer("test.counts", &[4_321u32, queued as u32]).unwrap();
