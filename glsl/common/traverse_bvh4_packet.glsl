@@ -7,8 +7,8 @@
 // tie between two triangles at one distance may fall the other way). What it buys over the
 // lockstep loops: one node address per step for the whole subgroup (one memory request instead
 // of one per distinct node), a stack whose top is the same in every lane (each lane keeps its
-// copy in local memory, as the other kernels do; a uniform index makes its stores and loads one
-// request each), no postponed leaves and no sorting per lane. What it costs: the union's extra
+// copy in local memory, as the other kernels do, at an index the lanes share), no postponed
+// leaves and no sorting per lane. What it costs: the union's extra
 // node steps and triangle tests, which coherent rays (camera rays in 8x4 pixel blocks) keep
 // small and incoherent ones do not. Not a default: NVIDIA H100, Sponza CameraMain, quality 5,
 // against the lockstep loops in the same start, camera rays 2.4 % slower (11 % more node steps,
