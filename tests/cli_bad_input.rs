@@ -189,6 +189,9 @@ fn numbers_out_of_range_are_rejected_with_the_flag() {
         &["render", "--integrator", "pt-nee", "--connection-candidates", "2", "--spp", "1"],
         &["--connection-candidates", "not pt-nee's"],
     );
+    fails(&["render", "--integrator", "bdpt", "--light-path-len", "0", "--spp", "1"], &["--light-path-len must be at least 1"]);
+    fails(&["bench", "render", "--spp", "0"], &["--spp and --runs must be at least 1", "--spp 0"]);
+    fails(&["bench", "render", "--runs", "0"], &["--spp and --runs must be at least 1", "--runs 0"]);
     fails(&["bench", "traversal", "--leaf-size", "99"], &["--leaf-size 99: must be in 1..=16"]);
     fails(&["bench", "traversal", "--bvh", "cwbvh", "--leaf-size", "4"], &["--leaf-size 4: must be in 1..=3"]);
     fails(&["bench", "traversal", "--bvh", "cwbvh", "--short-stack"], &["--short-stack: only with the binary layouts"]);

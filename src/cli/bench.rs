@@ -177,6 +177,9 @@ pub fn run(cmd: &BenchCommand, opts: &ContextOptions) -> anyhow::Result<()> {
 }
 
 fn render_cmd(a: &RenderBenchArgs, opts: &ContextOptions) -> anyhow::Result<()> {
+    if a.spp == 0 || a.runs == 0 {
+        anyhow::bail!("bench render: --spp and --runs must be at least 1 (got --spp {} --runs {})", a.spp, a.runs);
+    }
     if let Some(path) = &a.json {
         bidir::imaging::check_writable(path)?;
     }
@@ -189,7 +192,7 @@ fn render_cmd(a: &RenderBenchArgs, opts: &ContextOptions) -> anyhow::Result<()> 
     super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
     let loaded = a.scene.load()?;
     let ctx = Context::new(opts).context("cannot start Vulkan")?;
-    let o = bidir::bench::render::Options { spp: a.spp, warmup: a.warmup, runs: a.runs.max(1), count: a.count };
+    let o = bidir::bench::render::Options { spp: a.spp, warmup: a.warmup, runs: a.runs, count: a.count };
     let report = bidir::bench::render::run(&ctx, &loaded.scene, &loaded.camera, settings, &o)?;
     report.print();
     if let Some(path) = &a.json {

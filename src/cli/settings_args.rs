@@ -203,6 +203,9 @@ impl SettingsArgs {
             }
             s.rr_depth = rr;
         }
+        if self.light_path_len == 0 {
+            bail!("--light-path-len must be at least 1 (the light vertices a BDPT light path keeps)");
+        }
         s.light_path_len = self.light_path_len;
         s.light_path_ratio = self.light_paths;
         s.sample_slices = self.sample_slices;
