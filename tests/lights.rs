@@ -339,9 +339,10 @@ fn sky_flags_refuse_what_they_cannot_do() {
     assert!(run(&["render", "--sky", "turbidity=20;sun=0,1,0", o[0], o[1]]).contains("bad turbidity"));
 }
 
-/// Emitters too weak for their scene (DamagedHelmet's emissive texture) get the default
-/// environment as well, and a line saying so; a room lit by its lamp (the Cornell box), a scene
-/// of bright emissive cubes and the modified Sponza's sun and sky do not.
+/// Emitters too weak for their scene (DamagedHelmet's emissive texture, TransmissionTest's
+/// glowing labels) get the default environment as well, and a line saying so; a room lit by
+/// its lamp (the Cornell box), a scene of bright emissive cubes and the modified Sponza's sun
+/// and sky do not.
 #[test]
 fn weak_emitters_get_the_default_environment_too() {
     let threshold = bidir::scene::DIM_EMISSION_RATIO;
@@ -363,6 +364,7 @@ fn weak_emitters_get_the_default_environment_too() {
         ("Sponza --sponza-sun-sky", sponza, false),
         ("EmissiveStrengthTest", load("gltf-samples/EmissiveStrengthTest/EmissiveStrengthTest.glb"), false),
         ("DamagedHelmet", load(helmet), true),
+        ("TransmissionTest", load("gltf-samples/TransmissionTest/TransmissionTest.glb"), true),
     ] {
         let r = scene.emitted_light_ratio().unwrap();
         eprintln!("{what}: emitted light ratio {r:.4}");
