@@ -51,36 +51,14 @@ pub struct Options {
     /// Skip alpha-masked triangles where their texture is transparent, as the integrators do
     /// (trace_alpha.comp with the scene's materials, UVs and textures); default: geometry only.
     pub alpha: bool,
-    /// Persistent threads with this many workgroups (0: the device default); None: one
-    /// invocation per ray (see `TraceOptions::persistent`).
-    pub persistent: Option<u32>,
-    /// Binary layout: speculative traversal (default) or plain while-while.
-    pub speculative: bool,
-    /// Binary and 4-wide layouts, speculative: loops in lockstep over the subgroup (default;
-    /// `TraceOptions::lockstep`).
-    pub lockstep: bool,
-    /// 4-wide layout, persistent: dynamic fetch as soon as this many lanes are done (0:
-    /// batches; `TraceOptions::refill_lanes`).
-    pub refill_lanes: u32,
-    /// 4-wide layout, lockstep loops (one ray per invocation or dynamic fetch): the leaf tests
-    /// shared among the subgroup's lanes (`TraceOptions::share_leaves`).
-    pub share_leaves: bool,
-    /// 4-wide layout, one ray per invocation: the subgroup's rays as one packet
-    /// (`TraceOptions::packet`).
-    pub packet: bool,
-    /// Compressed wide layout: triangle postponing.
-    pub postpone: bool,
-    /// Binary layouts: the stack's top in registers, the rest in shared memory.
-    pub short_stack: bool,
-    /// The slab tests on the distances' bits as integers (default) or floats.
-    pub int_slabs: bool,
-    /// Rays each invocation traces (one-invocation-per-ray kernels; default 1).
-    pub rays_per_invocation: u32,
+    /// The trace kernels' variant: persistent threads, lockstep loops, dynamic fetch, shared
+    /// leaves, packets, the stack, the launch shape (`TraceOptions`, whose defaults are the
+    /// fastest kernels'). `run` takes its layout and triangle test from `build`, its alpha
+    /// masks from `alpha`.
+    pub trace: TraceOptions,
     /// Sort shadow and diffuse rays before tracing (`trace::RaySorter`: globally by
     /// direction octant and origin cell, or locally by direction); the sort is timed apart.
     pub sort: Option<SortKind>,
-    /// Invocations per workgroup of the trace kernel (see `TraceOptions::workgroup_size`).
-    pub workgroup_size: u32,
     /// Trace the same rays through the driver's ray-tracing pipeline too (`driver_rt.rs`);
     /// the context must have been created with `ContextOptions::ray_tracing`.
     pub driver_rt: bool,
@@ -95,18 +73,8 @@ impl Default for Options {
             build: BuildOptions::default(),
             light: None,
             alpha: false,
-            persistent: None,
-            speculative: true,
-            lockstep: true,
-            refill_lanes: 0,
-            share_leaves: false,
-            packet: false,
-            postpone: false,
-            short_stack: false,
-            int_slabs: true,
-            rays_per_invocation: 1,
+            trace: TraceOptions::new(BuildOptions::default().tri_test),
             sort: None,
-            workgroup_size: crate::gpu::abi::TRACE_WG_SIZE,
             driver_rt: false,
         }
     }
@@ -151,20 +119,12 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
         Some(s) => s.binds(),
         None => gbvh.binds(),
     };
-    let mut trace_opts = TraceOptions::new(opts.build.tri_test);
-    trace_opts.layout = opts.build.layout;
-    trace_opts.speculative = opts.speculative;
-    trace_opts.lockstep = opts.lockstep;
-    trace_opts.refill_lanes = opts.refill_lanes;
-    trace_opts.share_leaves = opts.share_leaves;
-    trace_opts.packet = opts.packet;
-    trace_opts.postpone = opts.postpone;
-    trace_opts.short_stack = opts.short_stack;
-    trace_opts.int_slabs = opts.int_slabs;
-    trace_opts.rays_per_invocation = opts.rays_per_invocation;
-    trace_opts.workgroup_size = opts.workgroup_size;
-    trace_opts.alpha = opts.alpha.then(|| SceneFeatures::of(scene));
-    trace_opts.persistent = opts.persistent;
+    let trace_opts = TraceOptions {
+        tri_test: opts.build.tri_test,
+        layout: opts.build.layout,
+        alpha: opts.alpha.then(|| SceneFeatures::of(scene)),
+        ..opts.trace
+    };
     let timing = Tracer::with_options(ctx, &trace_opts)?;
     let counting = Tracer::with_options(ctx, &TraceOptions { stats: true, ..trace_opts })?;
     let mut kernel_stats = Vec::new();
@@ -288,22 +248,17 @@ pub fn run(ctx: &Context, scene: &Scene, camera: &GpuCamera, opts: &Options) -> 
     Ok(Report {
         device: ctx.info().name.clone(),
         triangles: triangles.len(),
-        tri_test: opts.build.tri_test,
-        layout: opts.build.layout,
-        alpha: opts.alpha,
+        // The kernels as they ran: what does not apply to the layout or the launch off.
+        trace: TraceOptions {
+            persistent: timing.persistent_groups(),
+            speculative: trace_opts.speculative && trace_opts.layout != BvhLayout::Cwbvh,
+            lockstep: trace_opts.lockstep && trace_opts.speculative && trace_opts.layout != BvhLayout::Cwbvh,
+            refill_lanes: if trace_opts.persistent.is_some() { trace_opts.refill_lanes } else { 0 },
+            postpone: trace_opts.postpone && trace_opts.layout == BvhLayout::Cwbvh,
+            ..trace_opts
+        },
         alpha_materials: scene.materials.iter().filter(|m| m.alpha.is_some()).count(),
-        persistent_groups: timing.persistent_groups(),
-        speculative: opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
-        lockstep: opts.lockstep && opts.speculative && opts.build.layout != BvhLayout::Cwbvh,
-        refill_lanes: if opts.persistent.is_some() { opts.refill_lanes } else { 0 },
-        share_leaves: opts.share_leaves,
-        packet: opts.packet,
-        postpone: opts.postpone && opts.build.layout == BvhLayout::Cwbvh,
-        short_stack: opts.short_stack,
-        int_slabs: opts.int_slabs,
-        rays_per_invocation: opts.rays_per_invocation,
         sort: opts.sort,
-        workgroup_size: opts.workgroup_size,
         kernel_stats,
         bvh_build_ms: build_ms,
         bvh_nodes: bvh.node_count(),

@@ -239,15 +239,6 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     if ploc.is_some() && a.quality >= bidir::bvh::BEST_OF_QUALITY {
         anyhow::bail!("--ploc sets the search of one tree; quality {} builds its own candidates: leave out one of them", a.quality);
     }
-    if let Some(path) = &a.json {
-        bidir::imaging::check_writable(path)?;
-    }
-    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
-    let loaded = a.scene.load()?;
-    // The driver's registers, spills and shared memory of the timed kernels, where it reports
-    // them (printed with the timings).
-    let opts = ContextOptions { kernel_statistics: true, ray_tracing: a.driver_rt, ..opts.clone() };
-    let ctx = Context::new(&opts).context("cannot start Vulkan")?;
     let mut o = traversal::Options { kinds, warmup: a.warmup, repetitions: a.reps.max(5), ..Default::default() };
     o.build.tri_test = a.tri_test;
     o.build.quality = a.quality;
@@ -258,16 +249,17 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     o.build.layout = a.bvh;
     o.build.ploc = ploc;
     o.alpha = a.alpha;
-    o.speculative = !a.no_speculative;
-    o.lockstep = !a.divergent_loops;
-    o.postpone = a.postpone;
-    o.short_stack = a.short_stack;
-    o.int_slabs = !a.float_slabs;
-    o.rays_per_invocation = a.rays_per_invocation;
     o.sort = if a.sort { Some(bidir::trace::sort::SortKind::Cells) } else { a.sort_local };
-    o.workgroup_size = a.workgroup_size;
     o.driver_rt = a.driver_rt;
-    o.persistent = match (a.persistent || a.refill.is_some(), a.persistent_groups) {
+    let t = &mut o.trace;
+    t.speculative = !a.no_speculative;
+    t.lockstep = !a.divergent_loops;
+    t.postpone = a.postpone;
+    t.short_stack = a.short_stack;
+    t.int_slabs = !a.float_slabs;
+    t.rays_per_invocation = a.rays_per_invocation;
+    t.workgroup_size = a.workgroup_size;
+    t.persistent = match (a.persistent || a.refill.is_some(), a.persistent_groups) {
         (_, Some(0)) => anyhow::bail!("--persistent-groups must be at least 1"),
         (_, Some(n)) => Some(n),
         (true, None) => Some(0),
@@ -277,7 +269,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
         if !(1..=128).contains(&n) || a.bvh != bidir::bvh::BvhLayout::Bvh4 || a.no_speculative || a.divergent_loops {
             anyhow::bail!("--refill {n}: 1 to 128 lanes, with --bvh bvh4 and its speculative lockstep loops (not --no-speculative or --divergent-loops)");
         }
-        o.refill_lanes = n;
+        t.refill_lanes = n;
     }
     if a.share_leaves
         && (a.bvh != bidir::bvh::BvhLayout::Bvh4
@@ -288,7 +280,7 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     {
         anyhow::bail!("--share-leaves: with --bvh bvh4 and its speculative lockstep loops, one ray per invocation or --refill N (not --persistent alone, --alpha, --no-speculative or --divergent-loops)");
     }
-    o.share_leaves = a.share_leaves;
+    t.share_leaves = a.share_leaves;
     if a.packet
         && (a.bvh != bidir::bvh::BvhLayout::Bvh4
             || a.no_speculative
@@ -301,7 +293,16 @@ fn traversal_cmd(a: &TraversalArgs, opts: &ContextOptions) -> anyhow::Result<()>
     {
         anyhow::bail!("--packet: with --bvh bvh4, one ray per invocation (not --persistent, --refill, --alpha, --share-leaves, --no-speculative or --divergent-loops)");
     }
-    o.packet = a.packet;
+    t.packet = a.packet;
+    if let Some(path) = &a.json {
+        bidir::imaging::check_writable(path)?;
+    }
+    super::signals::on_interrupt(super::signals::FirstInterrupt::Abort)?;
+    let loaded = a.scene.load()?;
+    // The driver's registers, spills and shared memory of the timed kernels, where it reports
+    // them (printed with the timings).
+    let opts = ContextOptions { kernel_statistics: true, ray_tracing: a.driver_rt, ..opts.clone() };
+    let ctx = Context::new(&opts).context("cannot start Vulkan")?;
     let cam = bidir::gpu_data::gpu_camera(&loaded.camera);
     let report = traversal::run(&ctx, &loaded.scene, &cam, &o)?;
     report.print();

@@ -4,8 +4,9 @@
 use super::RayKind;
 use crate::bench::driver_rt::DriverKindResult;
 use crate::bench::json::Json;
-use crate::bvh::{BvhLayout, Collapse, TriTest};
+use crate::bvh::{BvhLayout, Collapse};
 use crate::trace::sort::SortKind;
+use crate::trace::TraceOptions;
 use glam::Vec3;
 
 /// One ray kind's measurement.
@@ -32,24 +33,13 @@ pub struct KindResult {
 pub struct Report {
     pub device: String,
     pub triangles: usize,
-    pub tri_test: TriTest,
-    pub layout: BvhLayout,
-    /// Alpha masks honoured (`Options::alpha`), and how many materials have one.
-    pub alpha: bool,
+    /// The trace kernels as they ran (`Options::trace` with the build's layout and test, the
+    /// scene's alpha features where masks were honoured, the persistent workgroups launched,
+    /// and what does not apply to the layout or launch off).
+    pub trace: TraceOptions,
+    /// Materials with an alpha mask (counted whether or not `trace.alpha` honoured them).
     pub alpha_materials: usize,
-    /// Workgroups of the persistent kernel (None: one invocation per ray).
-    pub persistent_groups: Option<u32>,
-    pub speculative: bool,
-    pub lockstep: bool,
-    pub refill_lanes: u32,
-    pub share_leaves: bool,
-    pub packet: bool,
-    pub postpone: bool,
-    pub short_stack: bool,
-    pub int_slabs: bool,
-    pub rays_per_invocation: u32,
     pub sort: Option<SortKind>,
-    pub workgroup_size: u32,
     /// The driver's compile statistics of the timed closest- and any-hit kernels ("name
     /// value; ..."), where it reports them (VK_KHR_pipeline_executable_properties).
     pub kernel_stats: Vec<(String, String)>,
@@ -78,26 +68,27 @@ pub struct Report {
 
 impl Report {
     pub fn to_json(&self) -> Json {
+        let t = &self.trace;
         Json::obj(vec![
             ("device", Json::Str(self.device.clone())),
             ("triangles", Json::Int(self.triangles as i64)),
-            ("tri_test", Json::Str(self.tri_test.name().into())),
-            ("bvh_layout", Json::Str(self.layout.name().into())),
-            ("alpha", Json::Bool(self.alpha)),
+            ("tri_test", Json::Str(t.tri_test.name().into())),
+            ("bvh_layout", Json::Str(t.layout.name().into())),
+            ("alpha", Json::Bool(t.alpha.is_some())),
             ("alpha_materials", Json::Int(self.alpha_materials as i64)),
-            ("persistent", Json::Bool(self.persistent_groups.is_some())),
-            ("persistent_groups", Json::Int(self.persistent_groups.unwrap_or(0) as i64)),
-            ("speculative", Json::Bool(self.speculative)),
-            ("lockstep", Json::Bool(self.lockstep)),
-            ("refill_lanes", Json::Int(self.refill_lanes as i64)),
-            ("share_leaves", Json::Bool(self.share_leaves)),
-            ("packet", Json::Bool(self.packet)),
-            ("postpone", Json::Bool(self.postpone)),
-            ("short_stack", Json::Bool(self.short_stack)),
-            ("int_slabs", Json::Bool(self.int_slabs)),
-            ("rays_per_invocation", Json::Int(self.rays_per_invocation as i64)),
+            ("persistent", Json::Bool(t.persistent.is_some())),
+            ("persistent_groups", Json::Int(t.persistent.unwrap_or(0) as i64)),
+            ("speculative", Json::Bool(t.speculative)),
+            ("lockstep", Json::Bool(t.lockstep)),
+            ("refill_lanes", Json::Int(t.refill_lanes as i64)),
+            ("share_leaves", Json::Bool(t.share_leaves)),
+            ("packet", Json::Bool(t.packet)),
+            ("postpone", Json::Bool(t.postpone)),
+            ("short_stack", Json::Bool(t.short_stack)),
+            ("int_slabs", Json::Bool(t.int_slabs)),
+            ("rays_per_invocation", Json::Int(t.rays_per_invocation as i64)),
             ("sort", Json::Str(self.sort.map_or("none".to_string(), |k| k.name()))),
-            ("workgroup_size", Json::Int(self.workgroup_size as i64)),
+            ("workgroup_size", Json::Int(t.workgroup_size as i64)),
             ("kernel_statistics", Json::obj(self.kernel_stats.iter().map(|(k, v)| (k.as_str(), Json::Str(v.clone()))).collect())),
             ("width", Json::Int(self.width as i64)),
             ("height", Json::Int(self.height as i64)),
@@ -156,27 +147,28 @@ impl Report {
     }
 
     pub fn print(&self) {
+        let t = &self.trace;
         println!(
             "device {} | {} triangles | {} test{} | {}x{} | {} {:.1} ms build{}, {} nodes of {} B, {} leaves, depth {}, {:.1} MiB{}",
             self.device,
             self.triangles,
-            self.tri_test.name(),
-            if self.alpha { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
-                + &self.persistent_groups.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
-                + if self.layout != BvhLayout::Cwbvh && !self.speculative { ", not speculative" } else { "" }
-                + if self.layout != BvhLayout::Cwbvh && self.speculative && !self.lockstep { ", divergent loops" } else { "" }
-                + &if self.refill_lanes > 0 { format!(", dynamic fetch at {} done lanes", self.refill_lanes) } else { String::new() }
-                + if self.share_leaves { ", leaf tests shared among lanes" } else { "" }
-                + if self.packet { ", packet traversal" } else { "" }
-                + if self.postpone { ", triangle postponing" } else { "" }
-                + if self.short_stack { ", short stack (registers + shared memory)" } else { "" }
-                + if !self.int_slabs { ", float slab test" } else { "" }
-                + &if self.rays_per_invocation > 1 { format!(", {} rays per invocation", self.rays_per_invocation) } else { String::new() }
+            t.tri_test.name(),
+            if t.alpha.is_some() { format!(", alpha masks ({} materials)", self.alpha_materials) } else { String::new() }
+                + &t.persistent.map_or(String::new(), |g| format!(", persistent threads ({g} groups)"))
+                + if t.layout != BvhLayout::Cwbvh && !t.speculative { ", not speculative" } else { "" }
+                + if t.layout != BvhLayout::Cwbvh && t.speculative && !t.lockstep { ", divergent loops" } else { "" }
+                + &if t.refill_lanes > 0 { format!(", dynamic fetch at {} done lanes", t.refill_lanes) } else { String::new() }
+                + if t.share_leaves { ", leaf tests shared among lanes" } else { "" }
+                + if t.packet { ", packet traversal" } else { "" }
+                + if t.postpone { ", triangle postponing" } else { "" }
+                + if t.short_stack { ", short stack (registers + shared memory)" } else { "" }
+                + if !t.int_slabs { ", float slab test" } else { "" }
+                + &if t.rays_per_invocation > 1 { format!(", {} rays per invocation", t.rays_per_invocation) } else { String::new() }
                 + &self.sort.map_or(String::new(), |k| format!(", secondary rays {}", k.describe()))
-                + &format!(", workgroups of {}", self.workgroup_size),
+                + &format!(", workgroups of {}", t.workgroup_size),
             self.width,
             self.height,
-            self.layout.name(),
+            t.layout.name(),
             self.bvh_build_ms,
             format!(" (quality {}", self.quality)
                 + &self.ploc.map_or(String::new(), |(d, k)| format!(", PLOC {d},{k}"))
@@ -184,7 +176,7 @@ impl Report {
                 + &self.collapse.map_or(String::new(), |c| format!(", {c} collapse"))
                 + ")",
             self.bvh_nodes,
-            self.layout.node_size(),
+            t.layout.node_size(),
             self.bvh_leaves,
             self.bvh_depth,
             self.bvh_bytes as f64 / (1 << 20) as f64,
