@@ -285,6 +285,160 @@ fn glb_with_embedded_image() {
     assert_eq!(l.scene.triangles, g.triangles);
 }
 
+/// One quantized attribute of `quantized_gltf`: glTF component type, normalised, the
+/// integer components (as i64, written at the type's size).
+struct Quantized {
+    component_type: u32,
+    normalized: bool,
+    values: Vec<i64>,
+}
+
+impl Quantized {
+    fn bytes(&self) -> Vec<u8> {
+        let mut out = Vec::new();
+        for &v in &self.values {
+            match self.component_type {
+                5120 | 5121 => out.push(v as u8),
+                5122 | 5123 => out.extend((v as u16).to_le_bytes()),
+                _ => out.extend((v as u32).to_le_bytes()),
+            }
+        }
+        // Each bufferView starts on a multiple of 4 bytes.
+        out.resize(out.len().next_multiple_of(4), 0);
+        out
+    }
+
+    /// Component `k` as glTF 2.0 §3.11 dequantizes it.
+    fn float(&self, k: usize) -> f32 {
+        let v = self.values[k] as f32;
+        if !self.normalized {
+            return v;
+        }
+        match self.component_type {
+            5120 => (v / 127.0).max(-1.0),
+            5121 => v / 255.0,
+            5122 => (v / 32767.0).max(-1.0),
+            _ => v / 65535.0,
+        }
+    }
+}
+
+/// A .gltf (and .bin) of one triangle pair whose POSITION, NORMAL and TEXCOORD_0 are the
+/// given integers, the node's `scale` and `translation` dequantizing the positions, requiring
+/// KHR_mesh_quantization.
+fn quantized_gltf(name: &str, pos: &Quantized, nrm: &Quantized, uv: &Quantized, scale: f32, translation: Vec3) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("bidir-quantized-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (mut bin, mut views, mut accessors) = (Vec::new(), Vec::new(), Vec::new());
+    for (q, ty, extra) in
+        [(pos, "VEC3", ", \"min\": [-32768, -32768, -32768], \"max\": [65535, 65535, 65535]"), (nrm, "VEC3", ""), (uv, "VEC2", "")]
+    {
+        let dims = if ty == "VEC3" { 3 } else { 2 };
+        let bytes = q.bytes();
+        views.push(format!(r#"{{"buffer": 0, "byteOffset": {}, "byteLength": {}}}"#, bin.len(), bytes.len()));
+        bin.extend(bytes);
+        accessors.push(format!(
+            r#"{{"bufferView": {}, "componentType": {}, "normalized": {}, "count": {}, "type": "{ty}"{extra}}}"#,
+            views.len() - 1,
+            q.component_type,
+            q.normalized,
+            q.values.len() / dims
+        ));
+    }
+    let indices: Vec<u8> = [0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes()).collect();
+    views.push(format!(r#"{{"buffer": 0, "byteOffset": {}, "byteLength": 12}}"#, bin.len()));
+    bin.extend(indices);
+    accessors.push(format!(r#"{{"bufferView": {}, "componentType": 5123, "count": 6, "type": "SCALAR"}}"#, views.len() - 1));
+    std::fs::write(dir.join(format!("{name}.bin")), &bin).unwrap();
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],
+  "buffers": [{{"uri": "{name}.bin", "byteLength": {}}}], "bufferViews": [{}], "accessors": [{}],
+  "materials": [{{"name": "m"}}],
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}}, "indices": 3, "material": 0}}]}}],
+  "nodes": [{{"mesh": 0, "scale": [{scale}, {scale}, {scale}], "translation": [{}, {}, {}]}}], "scenes": [{{"nodes": [0]}}], "scene": 0}}"#,
+        bin.len(),
+        views.join(", "),
+        accessors.join(", "),
+        translation.x,
+        translation.y,
+        translation.z
+    );
+    let path = dir.join(format!("{name}.gltf"));
+    std::fs::write(&path, json).unwrap();
+    path
+}
+
+/// KHR_mesh_quantization (gltfpack's output, among others): positions, normals and texture
+/// coordinates stored as integers of every allowed type, normalised or not, load as the floats
+/// glTF's dequantization rule and the node's transform give, with no warning; integer normals
+/// that are not normalised, and 32-bit integer positions, are errors naming the accessor.
+#[test]
+fn quantized_attributes_load_as_their_floats() {
+    let q = |component_type, normalized, values: &[i64]| Quantized { component_type, normalized, values: values.to_vec() };
+    // A unit square in the z = 0 plane as integers (corners 0 and `one`), its normal +z.
+    let cases = [
+        (
+            "i16",
+            q(5122, false, &[-1000, -1000, 0, 1000, -1000, 0, 1000, 1000, 0, -1000, 1000, 0]),
+            1000.0,
+            q(5120, true, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127]),
+            q(5123, true, &[0, 0, 65535, 0, 65535, 65535, 0, 65535]),
+        ),
+        (
+            "u8",
+            q(5121, true, &[0, 0, 0, 255, 0, 0, 255, 255, 0, 0, 255, 0]),
+            1.0,
+            q(5122, true, &[0, 0, 32767, 0, 0, 32767, 0, 0, 32767, 0, 0, 32767]),
+            q(5122, false, &[0, 0, 2, 0, 2, 2, 0, 2]),
+        ),
+        (
+            "u16",
+            q(5123, false, &[0, 0, 0, 4, 0, 0, 4, 4, 0, 0, 4, 0]),
+            4.0,
+            q(5120, true, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127]),
+            q(5120, true, &[0, 0, 127, 0, 127, 127, 0, 127]),
+        ),
+        (
+            "i8",
+            q(5120, true, &[-127, -127, 0, 127, -127, 0, 127, 127, 0, -127, 127, 0]),
+            1.0,
+            q(5120, true, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127]),
+            q(5121, false, &[0, 0, 1, 0, 1, 1, 0, 1]),
+        ),
+    ];
+    let translation = Vec3::new(0.5, -2.0, 3.0);
+    for (name, pos, one, nrm, uv) in &cases {
+        let path = quantized_gltf(name, pos, nrm, uv, 1.0 / one, translation);
+        let l = scene::load(&path, &LoadOptions { strict: true }).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(l.warnings.is_empty(), "{name}: {:?}", l.warnings);
+        let s = &l.scene;
+        assert_eq!(s.triangle_count(), 2, "{name}");
+        let (normals, uvs) = (s.normals.as_ref().expect("normals"), s.uvs.as_ref().expect("uvs"));
+        for i in 0..4 {
+            let want = Vec3::new(pos.float(3 * i), pos.float(3 * i + 1), pos.float(3 * i + 2)) / *one + translation;
+            assert!((s.positions[i] - want).length() < 1e-5, "{name}: vertex {i} at {} not {want}", s.positions[i]);
+            let n = Vec3::new(nrm.float(3 * i), nrm.float(3 * i + 1), nrm.float(3 * i + 2)).normalize();
+            assert!((normals[i] - n).length() < 1e-5, "{name}: normal {i} {} not {n}", normals[i]);
+            let t = Vec2::new(uv.float(2 * i), uv.float(2 * i + 1));
+            assert!((uvs[i] - t).length() < 1e-6, "{name}: uv {i} {} not {t}", uvs[i]);
+        }
+        // The square's side is the dequantized one.
+        assert!(((s.positions[1] - s.positions[0]).length() - (pos.float(3) - pos.float(0)) / one).abs() < 1e-5, "{name}");
+    }
+    let square = q(5122, false, &[0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]);
+    let uv = q(5121, true, &[0, 0, 255, 0, 255, 255, 0, 255]);
+    let raw_normals = q(5120, false, &[0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]);
+    let e = scene::load(&quantized_gltf("raw-normals", &square, &raw_normals, &uv, 1.0, Vec3::ZERO), &LoadOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("accessor 1 (NORMAL)") && e.contains("must be normalized"), "{e}");
+    let wide = q(5125, false, &[0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]);
+    let n = q(5120, true, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127]);
+    let e =
+        scene::load(&quantized_gltf("u32-positions", &wide, &n, &uv, 1.0, Vec3::ZERO), &LoadOptions::default()).unwrap_err().to_string();
+    assert!(e.contains("accessor 0 (POSITION)") && e.contains("component type U32"), "{e}");
+}
+
 #[test]
 fn required_material_extensions_only_warn_and_texture_transform_is_read() {
     let l = scene::load(&data("gltf/requires_texture_transform.gltf"), &LoadOptions::default()).unwrap();

@@ -4,19 +4,23 @@
 //! flattened: each node that references a mesh adds a copy of it transformed by the node's
 //! world matrix (positions by the matrix, normals by its inverse transpose, winding swapped
 //! when the determinant is negative), so instancing costs memory, not traversal. Each mesh is
-//! read once, however often it is instanced. Perspective cameras become [`Camera`]s.
+//! read once, however often it is instanced. Perspective cameras become [`Camera`]s,
+//! `KHR_lights_punctual` lights punctual lights (`lights.rs`).
 //!
-//! Textures are decoded on worker threads while the geometry is assembled, and only base
-//! colour textures are decoded at all (the model has no use for normal maps).
+//! Textures the materials use (`material.rs`: base colour, metallic-roughness, normal,
+//! emissive, transmission and the extensions' maps) are decoded on worker threads while the
+//! geometry is assembled. Vertex attributes are read by `accessor.rs`, floats or
+//! `KHR_mesh_quantization`'s integers (the node transforms and texture transforms that
+//! dequantize them are applied as for any mesh).
 //!
 //! Errors (geometry that cannot be read): invalid JSON or references, required geometry
-//! encodings (Draco, meshopt, quantization, GPU instancing) or texture formats, sparse
-//! accessors, accessors of the wrong type, out of range or non-finite, unreadable buffers.
-//! Texture coordinate sets and `KHR_texture_transform` are baked into the UVs per material
-//! (`uv_map.rs`).
+//! encodings (Draco, meshopt, GPU instancing) or texture formats, sparse accessors, accessors
+//! of the wrong type, out of range or non-finite, unreadable buffers. Texture coordinate sets
+//! and `KHR_texture_transform` are baked into the UVs per material (`uv_map.rs`).
 //!
-//! Warnings (ignored once, by name): other unsupported extensions (material extensions, lights; even when required), texture kinds, BLEND, non-triangle
-//! primitives, skins, morph targets, orthographic cameras, extra scenes.
+//! Warnings (ignored once, by name): other unsupported extensions (material extensions even
+//! when required), texture kinds, non-triangle primitives, vertex colours, skins, morph
+//! targets, orthographic cameras, extra scenes.
 
 mod accessor;
 mod files;
@@ -30,14 +34,14 @@ use ::gltf::mesh::{Mode, Semantic};
 use ::gltf::{Document, Node};
 use glam::{Mat4, Quat, Vec2, Vec3};
 
-use self::accessor::{read_indices, read_uv, read_vec3, read_vec4, AccessorError};
+use self::accessor::{read_indices, read_uv, read_vec3, read_vec4, AccessorError, Attribute};
 use super::builder::{Builder, Part, Transform};
 use super::texture::Requests;
 use super::warnings::Warnings;
 use super::{Camera, LoadOptions, Loaded, Material, Scene, SceneError};
 use crate::limits::{thousands, MAX_INSTANCES, MAX_TRIANGLES};
 
-/// Material extensions the loader reads.
+/// Extensions the loader reads.
 const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_transmission",
     "KHR_materials_ior",
@@ -46,7 +50,13 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_specular",
     "KHR_lights_punctual",
     "KHR_texture_transform",
+    "KHR_mesh_quantization",
 ];
+
+/// Supported extensions that the `gltf` crate's validation does not know, so that a file
+/// requiring one is taken out of its `extensionsRequired` before validation (the loader's
+/// own accessor reader, accessor.rs, reads quantized attributes).
+const READ_BY_THE_LOADER: &[&str] = &["KHR_mesh_quantization"];
 
 /// Loads a `.gltf` or `.glb` file with its buffers and base colour textures.
 pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {
@@ -174,7 +184,7 @@ fn node_element(node: &Node) -> String {
 /// Whether a file that *requires* extension `ext` can still be loaded, approximately: the
 /// extension changes materials, texture placement or lights, not whether the geometry can be
 /// read. Such requirements are warned about and removed before validation (which would
-/// otherwise reject them). Geometry encodings (Draco, meshopt, quantization, GPU instancing)
+/// otherwise reject them). Geometry encodings (Draco, meshopt, GPU instancing)
 /// and texture formats stay errors.
 fn degradable(ext: &str) -> bool {
     ext.starts_with("KHR_materials_") || ext == "KHR_texture_transform"
@@ -187,6 +197,10 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
     let json = doc.as_json();
     let mut relaxed = Vec::new();
     for (i, ext) in json.extensions_required.iter().enumerate() {
+        if READ_BY_THE_LOADER.contains(&ext.as_str()) {
+            relaxed.push(ext.clone());
+            continue;
+        }
         if SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
             continue;
         }
@@ -197,7 +211,6 @@ fn check_extensions(file: &Path, doc: &Document, w: &mut Warnings) -> Result<Vec
         let what = match ext.as_str() {
             "KHR_draco_mesh_compression" => "Draco mesh compression (KHR_draco_mesh_compression)".to_owned(),
             "EXT_meshopt_compression" => "meshopt compression (EXT_meshopt_compression)".to_owned(),
-            "KHR_mesh_quantization" => "quantized vertex attributes (KHR_mesh_quantization)".to_owned(),
             _ => format!("the required extension {ext}"),
         };
         return Err(SceneError::Unsupported { file: file.to_path_buf(), element: format!("extensionsRequired[{i}]"), what });
@@ -456,7 +469,7 @@ fn read_mesh(
             w.warn(format!("{}: {element}: no POSITION attribute; skipped", file.display()));
             continue;
         };
-        let positions = read_vec3(&pos_acc, buffers).map_err(|e| read_err(&pos_acc, "POSITION", e))?;
+        let positions = read_vec3(&pos_acc, buffers, Attribute::Position).map_err(|e| read_err(&pos_acc, "POSITION", e))?;
         let same_count = |acc: &::gltf::Accessor, what: &str| {
             if acc.count() != positions.len() {
                 Err(read_err(acc, what, AccessorError::Bad(format!("{} elements, but POSITION has {}", acc.count(), positions.len()))))
@@ -467,7 +480,7 @@ fn read_mesh(
         let normals = match prim.get(&Semantic::Normals) {
             Some(acc) => {
                 same_count(&acc, "NORMAL")?;
-                Some(read_vec3(&acc, buffers).map_err(|e| read_err(&acc, "NORMAL", e))?)
+                Some(read_vec3(&acc, buffers, Attribute::Normal).map_err(|e| read_err(&acc, "NORMAL", e))?)
             }
             None => None,
         };

@@ -5,7 +5,8 @@
 //! The transform (KHR_texture_transform): uv' = T(offset) R(rotation) S(scale) uv with
 //! R = [[cos, sin], [-sin, cos]]; its `texCoord` overrides the slot's. Slots of one material
 //! that disagree (another set or transform) are warned about once, and the first slot's (in the
-//! order base colour, metallic-roughness, emission, transmission, normal map) is used for all.
+//! order base colour, metallic-roughness, emission, transmission, specular, normal map) is
+//! used for all.
 
 use std::path::Path;
 
@@ -40,6 +41,25 @@ fn transform_matrix(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> Mat3 {
     Mat3::from_translation(Vec2::from(offset)) * r * Mat3::from_scale(Vec2::from(scale))
 }
 
+/// The normal map's slot: the `gltf` crate reads no KHR_texture_transform there, so it is read
+/// from the slot's extension JSON (the extension's defaults where a field is absent; a field
+/// of the wrong shape is taken as absent).
+fn of_normal(n: &::gltf::material::NormalTexture) -> UvMap {
+    let Some(t) = n.extension_value("KHR_texture_transform") else {
+        return UvMap { tex_coord: n.tex_coord(), transform: Mat3::IDENTITY };
+    };
+    let pair = |key: &str, default: [f32; 2]| match t.get(key).and_then(|v| v.as_array()).map(Vec::as_slice) {
+        Some([x, y]) => match (x.as_f64(), y.as_f64()) {
+            (Some(x), Some(y)) => [x as f32, y as f32],
+            _ => default,
+        },
+        _ => default,
+    };
+    let rotation = t.get("rotation").and_then(|v| v.as_f64()).unwrap_or(0.0) as f32;
+    let tex_coord = t.get("texCoord").and_then(|v| v.as_u64()).map_or(n.tex_coord(), |c| c.min(u32::MAX as u64) as u32);
+    UvMap { tex_coord, transform: transform_matrix(pair("offset", [0.0, 0.0]), rotation, pair("scale", [1.0, 1.0])) }
+}
+
 fn of_info(info: &::gltf::texture::Info) -> UvMap {
     match info.texture_transform() {
         Some(t) => {
@@ -61,7 +81,7 @@ pub(super) fn uv_maps(file: &Path, doc: &Document, w: &mut Warnings) -> Vec<UvMa
                 m.transmission().and_then(|t| t.transmission_texture()).map(|i| of_info(&i)),
                 m.specular().and_then(|s| s.specular_texture()).map(|i| of_info(&i)),
                 m.specular().and_then(|s| s.specular_color_texture()).map(|i| of_info(&i)),
-                m.normal_texture().map(|n| UvMap { tex_coord: n.tex_coord(), transform: Mat3::IDENTITY }),
+                m.normal_texture().map(|n| of_normal(&n)),
             ]
             .into_iter()
             .flatten()
@@ -105,5 +125,39 @@ mod tests {
         assert!((p - Vec2::new(3.5, 0.25)).length() < 1e-6, "{p}");
         let identity = transform_matrix([0.0, 0.0], 0.0, [1.0, 1.0]);
         assert_eq!(identity, Mat3::IDENTITY);
+    }
+
+    /// The UV maps of a document whose materials are `materials` (JSON), and its warnings.
+    fn maps_of(materials: &str) -> (Vec<UvMap>, Vec<String>) {
+        let json = format!(
+            r#"{{"asset": {{"version": "2.0"}}, "extensionsUsed": ["KHR_texture_transform"], "images": [{{"uri": "a.png"}}],
+                "textures": [{{"source": 0}}], "materials": {materials}}}"#
+        );
+        let doc = ::gltf::Gltf::from_slice(json.as_bytes()).unwrap().document;
+        let mut w = Warnings::default();
+        let maps = uv_maps(Path::new("t.gltf"), &doc, &mut w);
+        (maps, w.into_vec())
+    }
+
+    /// The normal map's KHR_texture_transform is read like the other slots' (the `gltf` crate
+    /// gives it no accessor): gltfpack puts its dequantizing transform on every slot, which
+    /// then agree, so no warning; a normal map alone gets its own transform and set.
+    #[test]
+    fn the_normal_maps_transform_is_read() {
+        let t = r#"{"KHR_texture_transform": {"offset": [0.25, 1.0], "scale": [16.0, 8.0]}}"#;
+        let (maps, warnings) = maps_of(&format!(
+            r#"[{{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0, "extensions": {t}}}}}, "normalTexture": {{"index": 0, "extensions": {t}}}}},
+               {{"normalTexture": {{"index": 0, "texCoord": 1, "extensions": {{"KHR_texture_transform": {{"rotation": 0.5, "texCoord": 0}}}}}}}},
+               {{"normalTexture": {{"index": 0, "texCoord": 1}}}}]"#
+        ));
+        assert!(warnings.is_empty(), "{warnings:?}");
+        assert_eq!(maps[0], UvMap { tex_coord: 0, transform: transform_matrix([0.25, 1.0], 0.0, [16.0, 8.0]) });
+        assert_eq!(maps[1], UvMap { tex_coord: 0, transform: transform_matrix([0.0, 0.0], 0.5, [1.0, 1.0]) });
+        assert_eq!(maps[2], UvMap { tex_coord: 1, transform: Mat3::IDENTITY });
+        // A normal map whose transform differs from the base colour's is still warned about.
+        let (_, warnings) = maps_of(&format!(
+            r#"[{{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0, "extensions": {t}}}}}, "normalTexture": {{"index": 0}}}}]"#
+        ));
+        assert_eq!(warnings.len(), 1, "{warnings:?}");
     }
 }
