@@ -80,6 +80,15 @@ vec3 sample_dielectric(vec3 d, vec3 n_f, float eta, float u, out float radiance_
 // in F0, so the two specular terms are one lobe with F0 = mix(coat_f0, baseColor, metallic)).
 // Reciprocal: F depends on |wo.h| = |wi.h| only. It is zero unless both directions lie above
 // the shading normal (as the diffuse lobe always was: docs/integrators.md).
+//
+// A clear coat (KHR_materials_clearcoat, where HAS_CLEARCOAT) is a smooth-to-rough dielectric
+// layer of ior 1.5 (F0 = 0.04) over all of that: its own GGX lobe of weight clearcoat and
+// F(0.04, wo.h), and the layers below seen through it twice, on the way in and on the way
+// out, each time weighted by its transmittance 1 - clearcoat F(0.04, cos) about the normal:
+//   f = T(wo) T(wi) f_base + clearcoat F(0.04, wo.h) D G2 / (4 |wo.n| |wi.n|).
+// glTF's own form (the extension's fresnel_coat) attenuates the base by T(wo) alone, which
+// is not reciprocal; the product is, and keeps a white base's albedo at most one (tests/
+// sampling_glossy.rs). The coat shares the shading normal (clearcoatNormalTexture is not read).
 struct Continuous {
     vec3 diffuse;   // Lambertian reflectance, weighted (0 for a metal)
     float pick;     // probability that choose_lobe takes the continuous part
@@ -89,17 +98,53 @@ struct Continuous {
     float coat;     // the diffuse lobe is weighted by 1 - coat F(coat_f0): 1 (glTF; its
                     // specularFactor with KHR_materials_specular) or 0 (the thesis)
     float alpha;    // GGX alpha = roughness^2
+    float clearcoat; // the clear coat's weight (0: none; times pick for its lobe)
+    float cc_alpha;  // the clear coat's GGX alpha
 };
 
-// Probability of sampling the GGX lobe rather than the diffuse one when leaving toward wo
-// (local frame): their albedo estimates at cos = wo.z (Schlick Fresnel at the normal).
+// F0 of the clear coat: ior 1.5, as KHR_materials_clearcoat fixes it.
+const float CLEARCOAT_F0 = 0.04;
+
+bool has_clearcoat(Continuous c) {
+    return HAS_CLEARCOAT != 0u && c.clearcoat > 0.0;
+}
+
+// The fraction of light the clear coat lets through at cos about the normal.
+float clearcoat_transmittance(Continuous c, float cos_n) {
+    return 1.0 - c.clearcoat * schlick(CLEARCOAT_F0, cos_n);
+}
+
+// Albedo estimates of the base's GGX lobe (x) and diffuse lobe (y) leaving toward cos_o
+// (Schlick Fresnel at the normal), below any clear coat.
+vec2 continuous_base_estimates(Continuous c, float cos_o) {
+    float fs = c.spec * dot(schlick(c.spec_f0, cos_o), vec3(0.2126, 0.7152, 0.0722));
+    float fd = dot(c.diffuse, vec3(0.2126, 0.7152, 0.0722)) * (1.0 - c.coat * schlick(c.coat_f0, cos_o));
+    return vec2(fs, fd);
+}
+
+// Probability of sampling the base's GGX lobe rather than the diffuse one when leaving
+// toward wo (local frame): their albedo estimates at cos = wo.z.
 float continuous_spec_probability(Continuous c, float cos_o) {
     if (HAS_GLOSSY == 0u || c.spec <= 0.0) {
         return 0.0;
     }
-    float fs = c.spec * dot(schlick(c.spec_f0, cos_o), vec3(0.2126, 0.7152, 0.0722));
-    float fd = dot(c.diffuse, vec3(0.2126, 0.7152, 0.0722)) * (1.0 - c.coat * schlick(c.coat_f0, cos_o));
-    return fs + fd > 0.0 ? fs / (fs + fd) : 1.0;
+    vec2 e = continuous_base_estimates(c, cos_o);
+    return e.x + e.y > 0.0 ? e.x / (e.x + e.y) : 1.0;
+}
+
+// Probabilities of sampling the clear coat's lobe (x) and the base's GGX lobe (y) leaving
+// toward cos_o; the diffuse lobe takes the rest. The coat's share is its albedo estimate,
+// clearcoat F(0.04, cos_o), against the base's seen through the coat.
+vec2 continuous_lobe_probabilities(Continuous c, float cos_o) {
+    float ps = continuous_spec_probability(c, cos_o);
+    if (!has_clearcoat(c)) {
+        return vec2(0.0, ps);
+    }
+    vec2 e = continuous_base_estimates(c, cos_o);
+    float e_base = (e.x + e.y) * clearcoat_transmittance(c, cos_o);
+    float e_coat = c.pick * c.clearcoat * schlick(CLEARCOAT_F0, cos_o);
+    float pc = e_coat + e_base > 0.0 ? e_coat / (e_coat + e_base) : 1.0;
+    return vec2(pc, (1.0 - pc) * ps);
 }
 
 // Solid-angle pdf of continuous_sample leaving toward wo and producing wi (local frame),
@@ -108,10 +153,13 @@ float continuous_pdf_w(Continuous c, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0 || wi.z <= 0.0) {
         return 0.0;
     }
-    float ps = continuous_spec_probability(c, wo.z);
-    float pdf = (1.0 - ps) * wi.z / PI;
-    if (ps > 0.0) {
-        pdf += ps * ggx_reflect_pdf_w(wo, wi, c.alpha);
+    vec2 p = continuous_lobe_probabilities(c, wo.z);
+    float pdf = (1.0 - p.x - p.y) * wi.z / PI;
+    if (p.y > 0.0) {
+        pdf += p.y * ggx_reflect_pdf_w(wo, wi, c.alpha);
+    }
+    if (p.x > 0.0) {
+        pdf += p.x * ggx_reflect_pdf_w(wo, wi, c.cc_alpha);
     }
     return pdf;
 }
@@ -129,7 +177,7 @@ vec3 to_local(vec3 n, vec3 v) {
 vec3 continuous_eval(Continuous c, vec3 ns, vec3 wo_w, vec3 wi_w, out float pdf_fwd_w, out float pdf_rev_w) {
     pdf_fwd_w = 0.0;
     pdf_rev_w = 0.0;
-    if (HAS_GLOSSY == 0u || c.spec <= 0.0) {
+    if (HAS_GLOSSY == 0u || (c.spec <= 0.0 && !has_clearcoat(c))) {
         float co = dot(ns, wo_w), ci = dot(ns, wi_w);
         if (co <= 0.0 || ci <= 0.0) {
             return vec3(0.0);
@@ -145,13 +193,18 @@ vec3 continuous_eval(Continuous c, vec3 ns, vec3 wo_w, vec3 wi_w, out float pdf_
     float cos_h = dot(wo, normalize(wo + wi));
     vec3 f = c.diffuse / PI * (1.0 - c.coat * schlick(c.coat_f0, cos_h));
     f += c.spec * schlick(c.spec_f0, cos_h) * ggx_brdf(wo, wi, c.alpha);
+    if (has_clearcoat(c)) {
+        f *= clearcoat_transmittance(c, wo.z) * clearcoat_transmittance(c, wi.z);
+        f += c.pick * c.clearcoat * schlick(CLEARCOAT_F0, cos_h) * ggx_brdf(wo, wi, c.cc_alpha);
+    }
     pdf_fwd_w = c.pick * continuous_pdf_w(c, wo, wi);
     pdf_rev_w = c.pick * continuous_pdf_w(c, wi, wo);
     return f;
 }
 
-// Samples wi for the continuous part leaving toward wo_w: the GGX lobe (a visible normal)
-// with probability continuous_spec_probability, else the cosine-weighted hemisphere.
+// Samples wi for the continuous part leaving toward wo_w: a GGX lobe (a visible normal; the
+// clear coat's or the base's) with continuous_lobe_probabilities, else the cosine-weighted
+// hemisphere.
 // `u_lobe` is only read where the scene has GGX lobes. False if nothing can be sampled
 // (wo below the shading normal, or a reflection below it).
 bool continuous_sample(Continuous c, vec3 ns, vec3 wo_w, float u_lobe, float u1, float u2, out vec3 wi_w) {
@@ -160,12 +213,13 @@ bool continuous_sample(Continuous c, vec3 ns, vec3 wo_w, float u_lobe, float u1,
     if (cos_o <= 0.0) {
         return false;
     }
-    float ps = continuous_spec_probability(c, cos_o);
+    vec2 p = continuous_lobe_probabilities(c, cos_o);
+    float ps = p.x + p.y;
     if (ps > 0.0 && u_lobe < ps) {
         vec3 t, b;
         onb(ns, t, b);
         vec3 wo = vec3(dot(wo_w, t), dot(wo_w, b), cos_o);
-        vec3 h = ggx_sample_visible_normal(wo, c.alpha, u1, u2);
+        vec3 h = ggx_sample_visible_normal(wo, u_lobe < p.x ? c.cc_alpha : c.alpha, u1, u2);
         vec3 wi = reflect(-wo, h);
         if (wi.z <= 0.0) {
             return false;

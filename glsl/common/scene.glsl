@@ -14,6 +14,7 @@ layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 0u;
 layout(constant_id = SPEC_HAS_EMISSION_TEXTURES) const uint HAS_EMISSION_TEXTURES = 0u;
 layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint HAS_NORMAL_MAPS = 0u;
 layout(constant_id = SPEC_HAS_ROUGH_GLASS) const uint HAS_ROUGH_GLASS = 0u;
+layout(constant_id = SPEC_HAS_CLEARCOAT) const uint HAS_CLEARCOAT = 0u;
 
 #define TRAVERSE_WITH_ALPHA
 #include "traverse.glsl"
@@ -284,6 +285,8 @@ Continuous continuous_at(GpuMaterial m, vec2 uv) {
     c.coat_f0 = 0.0;
     c.coat = 0.0;
     c.alpha = GGX_MIN_ALPHA;
+    c.clearcoat = 0.0;
+    c.cc_alpha = GGX_MIN_ALPHA;
     if (HAS_GLOSSY == 0u) {
         return c;
     }
@@ -315,6 +318,20 @@ Continuous continuous_at(GpuMaterial m, vec2 uv) {
         c.coat_f0 = max(f0.r, max(f0.g, f0.b));
         c.spec_f0 = f90 > 0.0 ? mix(specular * f0, albedo, metallic) / f90 : vec3(1.0);
         c.spec = c.pick * f90;
+        // KHR_materials_clearcoat: the coat's weight (x the red channel of its texture) and
+        // roughness (x the green channel of its texture).
+        if (HAS_CLEARCOAT != 0u && m.clearcoat > 0.0) {
+            float cc = m.clearcoat;
+            float cc_roughness = m.clearcoat_roughness;
+            if (HAS_TEXTURES != 0u && m.clearcoat_texture != 0u) {
+                cc *= sample_texture(m.clearcoat_texture - 1u, uv).r;
+            }
+            if (HAS_TEXTURES != 0u && m.clearcoat_roughness_texture != 0u) {
+                cc_roughness *= sample_texture(m.clearcoat_roughness_texture - 1u, uv).g;
+            }
+            c.clearcoat = cc;
+            c.cc_alpha = max(cc_roughness * cc_roughness, GGX_MIN_ALPHA);
+        }
     } else if (m.roughness > 0.0) {
         // The thesis' reflectivity, made rough: a conductor with F = 1.
         float r = HAS_MIRROR != 0u ? m.reflectivity : 0.0;

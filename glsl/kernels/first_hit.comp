@@ -24,9 +24,14 @@ layout(push_constant) uniform Push { FirstHitPush pc; };
 layout(constant_id = SPEC_FIRST_HIT_AOVS) const uint FIRST_HIT_AOVS = 1u;
 
 // Reflectance of the continuous part given that choose_lobe took it: the diffuse lobe under
-// its coat plus the GGX lobe's Schlick F0 (its albedo at normal incidence).
+// its coat plus the GGX lobe's Schlick F0 (its albedo at normal incidence), under any clear
+// coat (seen through it twice) plus the clear coat's own F0.
 vec3 continuous_albedo(Continuous c) {
     vec3 a = c.diffuse * (1.0 - c.coat * c.coat_f0) + c.spec * c.spec_f0;
+    if (has_clearcoat(c)) {
+        float t = 1.0 - c.clearcoat * CLEARCOAT_F0;
+        a = a * t * t + c.pick * c.clearcoat * CLEARCOAT_F0;
+    }
     return c.pick > 0.0 ? a / c.pick : vec3(0.0);
 }
 

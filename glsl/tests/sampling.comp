@@ -37,6 +37,7 @@ layout(constant_id = SPEC_HAS_MIRROR) const uint HAS_MIRROR = 0u;
 layout(constant_id = SPEC_HAS_GLASS) const uint HAS_GLASS = 1u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint HAS_GLOSSY = 1u;
 layout(constant_id = SPEC_HAS_ROUGH_GLASS) const uint HAS_ROUGH_GLASS = 1u;
+layout(constant_id = SPEC_HAS_CLEARCOAT) const uint HAS_CLEARCOAT = 1u;
 #include "bsdf.glsl"
 #include "lights.glsl"
 #include "env.glsl"
@@ -56,6 +57,8 @@ Continuous push_bsdf() {
     c.spec = pc.d.w;
     c.coat_f0 = pc.e.x;
     c.alpha = pc.e.y;
+    c.clearcoat = pc.e.z;
+    c.cc_alpha = max(pc.e.w, GGX_MIN_ALPHA);
     c.pick = 1.0;
     return c;
 }

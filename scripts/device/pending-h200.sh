@@ -173,6 +173,24 @@ ratio_lines() {
   echo "== $(basename "$1") 1 s pt-nee: $(at_time "$1" 1 $CB --integrator pt-nee) bdpt: $(at_time "$1" 1 $CB --integrator bdpt)"
 }
 case "${1:-speed}" in
+s63a)
+  # Session 63 for the next (no device was lent in session 63): what the clear coat
+  # (KHR_materials_clearcoat, SPEC_HAS_CLEARCOAT; GpuMaterial 128 -> 144 bytes) costs scenes
+  # without one. hd (s60a's build, before it) against cc (a build of the commit that adds it;
+  # its trace kernels are hd's), two rounds interleaved, GPU ms of pt-nee and bdpt on Sponza
+  # under sun and sky (64 spp), DamagedHelmet under env and sun (256 spp) and the Cornell box
+  # (1024 spp). Expected level within the runs' spread. Bundle: .device/bidir-cc.gz (a
+  # stripped, gzipped release build of the clear coat's commit) beside hd.
+  device_line
+  unpack hd cc
+  for r in 1 2; do
+    for b in hd cc; do
+      for i in pt-nee bdpt; do
+        echo "== $b $i sponza: $(gpu_ms "$PWD/.device/bidir-$b" $SP --integrator $i --spp 64) helmet: $(gpu_ms "$PWD/.device/bidir-$b" $HB --integrator $i --spp 256) cornell: $(gpu_ms "$PWD/.device/bidir-$b" $CB --integrator $i --spp 1024)"
+      done
+    done
+  done
+  ;;
 s62a)
   # Ran in session 62 on an H100 (ROUNDS=3): --packet 2.4 % slower than the lockstep loops on
   # primary rays, 22 % on shadow rays, 3.4x on diffuse rays; the tests passed (docs/traversal.md,

@@ -306,6 +306,9 @@ gpu_consts! {
     /// 1: some material has a volume (KHR_materials_volume): path segments inside closed
     /// meshes of it are attenuated (glsl/common/volume.glsl); 0 compiles it out.
     pub const SPEC_HAS_VOLUME: u32 = 21;
+    /// 1: some material has a clear coat (KHR_materials_clearcoat): a second GGX lobe over the
+    /// continuous part (glsl/common/bsdf.glsl); 0 compiles it out.
+    pub const SPEC_HAS_CLEARCOAT: u32 = 22;
 
     // ---- Vertex connection and merging (docs/integrators.md, src/render/vcm.rs) ------------
     /// 0: BDPT; else the VCM strategies in use, VCM_MERGE | VCM_CONNECT, and where merging
@@ -671,7 +674,7 @@ gpu_structs! {
 
     /// A material: diffuse albedo (glTF: base colour), emission, mirror and glass fractions,
     /// and the GGX parameters (glsl/common/scene.glsl, `continuous_at`).
-    pub struct GpuMaterial (128 bytes) {
+    pub struct GpuMaterial (144 bytes) {
         /// Linear albedo (base colour).
         pub albedo: Vec3,
         /// MASK: the alpha cutoff (> 0); 0 if not alpha-tested (BLEND: see `opacity`).
@@ -727,6 +730,14 @@ gpu_structs! {
         pub specular_f0: Vec3,
         /// KHR_materials_specular's specularFactor: the coat's F90 and weight (1 without).
         pub specular: f32,
+        /// KHR_materials_clearcoat's clearcoatFactor (0: no clear coat; SPEC_HAS_CLEARCOAT).
+        pub clearcoat: f32,
+        /// Its clearcoatRoughnessFactor (the coat's GGX alpha = roughness^2).
+        pub clearcoat_roughness: f32,
+        /// Texture whose R channel scales `clearcoat` + 1 (linear), 0 = none.
+        pub clearcoat_texture: u32,
+        /// Texture whose G channel scales `clearcoat_roughness` + 1 (linear), 0 = none.
+        pub clearcoat_roughness_texture: u32,
     }
 
     /// An emissive triangle for light sampling.
@@ -1119,7 +1130,7 @@ gpu_structs! {
         pub c: Vec4,
         /// Glossy: (specular F0 (rgb), specular weight).
         pub d: Vec4,
-        /// Glossy: (coat F0, alpha, 0, 0).
+        /// Glossy: (coat F0, alpha, clear coat, the clear coat's alpha).
         pub e: Vec4,
     }
 

@@ -27,6 +27,8 @@ pub struct SceneFeatures {
     pub rough_glass: bool,
     /// Absorbing volumes inside closed meshes (KHR_materials_volume).
     pub volume: bool,
+    /// Clear coats (KHR_materials_clearcoat): a second GGX lobe.
+    pub clearcoat: bool,
     /// Some material's lobe choice can take a continuous lobe or a delta (or rough-glass)
     /// one ([`Material::mixes_lobes`]); not a kernel specialisation of its own: VCM merges in
     /// the camera pass then (`VcmMode::merges_apart`).
@@ -48,6 +50,8 @@ impl SceneFeatures {
                     || m.specular_colour_texture.is_some()
                     || m.emission_texture.is_some()
                     || m.normal_texture.is_some()
+                    || m.clearcoat_texture.is_some()
+                    || m.clearcoat_roughness_texture.is_some()
             });
         SceneFeatures {
             normals: scene.normals.is_some(),
@@ -69,6 +73,7 @@ impl SceneFeatures {
             punctual: !scene.punctual_lights.is_empty(),
             rough_glass: m.iter().any(Material::has_rough_glass),
             volume: m.iter().any(Material::has_volume),
+            clearcoat: m.iter().any(Material::has_clearcoat),
             mixed_lobes: m.iter().any(Material::mixes_lobes),
         }
     }
@@ -87,6 +92,7 @@ impl SceneFeatures {
             normal_maps: true,
             rough_glass: true,
             volume: true,
+            clearcoat: true,
             mixed_lobes: true,
             ..self
         }
@@ -118,6 +124,7 @@ impl SceneFeatures {
             Spec { id: abi::SPEC_HAS_PUNCTUAL, value: self.punctual as u32 },
             Spec { id: abi::SPEC_HAS_ROUGH_GLASS, value: self.rough_glass as u32 },
             Spec { id: abi::SPEC_HAS_VOLUME, value: self.volume as u32 },
+            Spec { id: abi::SPEC_HAS_CLEARCOAT, value: self.clearcoat as u32 },
         ]
     }
 }

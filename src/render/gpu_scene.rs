@@ -237,6 +237,10 @@ pub fn gpu_material(m: &Material) -> GpuMaterial {
         specular_colour_texture: index(m.specular_colour_texture),
         specular_f0,
         specular: m.specular,
+        clearcoat: if m.has_clearcoat() { m.clearcoat } else { 0.0 },
+        clearcoat_roughness: m.clearcoat_roughness,
+        clearcoat_texture: index(m.clearcoat_texture),
+        clearcoat_roughness_texture: index(m.clearcoat_roughness_texture),
         model: match m.model {
             MaterialModel::Thesis => abi::MATERIAL_THESIS,
             MaterialModel::MetalRough => abi::MATERIAL_METAL_ROUGH,

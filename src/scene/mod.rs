@@ -172,6 +172,15 @@ pub struct Material {
     pub specular_texture: Option<u32>,
     /// sRGB texture whose RGB scales `specular_colour` (glTF specularColorTexture).
     pub specular_colour_texture: Option<u32>,
+    /// glTF KHR_materials_clearcoat (MetalRough): the clear coat's weight (0: none) and GGX
+    /// roughness, a dielectric layer of ior 1.5 over the continuous part (docs/integrators.md,
+    /// "Clear coat").
+    pub clearcoat: f32,
+    pub clearcoat_roughness: f32,
+    /// Linear textures whose red channel scales `clearcoat` (clearcoatTexture) and whose green
+    /// channel scales `clearcoat_roughness` (clearcoatRoughnessTexture).
+    pub clearcoat_texture: Option<u32>,
+    pub clearcoat_roughness_texture: Option<u32>,
 }
 
 impl Default for Material {
@@ -200,6 +209,10 @@ impl Default for Material {
             specular_colour: Vec3::ONE,
             specular_texture: None,
             specular_colour_texture: None,
+            clearcoat: 0.0,
+            clearcoat_roughness: 0.0,
+            clearcoat_texture: None,
+            clearcoat_roughness_texture: None,
         }
     }
 }
@@ -207,6 +220,11 @@ impl Default for Material {
 impl Material {
     pub fn is_emissive(&self) -> bool {
         self.emission.max_element() > 0.0
+    }
+
+    /// Whether the material has a clear coat (KHR_materials_clearcoat; glTF materials only).
+    pub fn has_clearcoat(&self) -> bool {
+        self.model == MaterialModel::MetalRough && self.clearcoat > 0.0
     }
 
     /// Whether the material has a GGX lobe (glTF metallic-roughness, or a rough mirror).
@@ -251,6 +269,9 @@ impl Material {
         {
             f.push("specular (KHR_materials_specular)");
         }
+        if self.has_clearcoat() {
+            f.push("clear coat (KHR_materials_clearcoat)");
+        }
         if self.has_volume() {
             f.push("volume (absorbing)");
         }
@@ -265,6 +286,8 @@ impl Material {
             (self.specular_texture.is_some(), "specular map"),
             (self.specular_colour_texture.is_some(), "specular colour map"),
             (self.normal_texture.is_some(), "normal map"),
+            (self.has_clearcoat() && self.clearcoat_texture.is_some(), "clear coat map"),
+            (self.has_clearcoat() && self.clearcoat_roughness_texture.is_some(), "clear coat roughness map"),
             (self.emission_texture.is_some() && self.is_emissive(), "emission map"),
             (self.alpha.is_some(), "alpha mask"),
             (self.blend.is_some(), "blend"),

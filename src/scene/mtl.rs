@@ -321,6 +321,10 @@ pub(crate) fn to_material(
         specular_colour: Vec3::ONE,
         specular_texture: None,
         specular_colour_texture: None,
+        clearcoat: 0.0,
+        clearcoat_roughness: 0.0,
+        clearcoat_texture: None,
+        clearcoat_roughness_texture: None,
     }
 }
 

@@ -106,7 +106,7 @@ pub struct Features {
 }
 
 /// Bytes of one material on the GPU (`gpu::abi::GpuMaterial`; a test in `render::gpu_scene` keeps them equal).
-pub const GPU_MATERIAL_BYTES: u64 = 128;
+pub const GPU_MATERIAL_BYTES: u64 = 144;
 
 fn has_diffuse(m: &Material) -> bool {
     match m.model {
@@ -294,7 +294,7 @@ mod tests {
             MaterialCounts { total: 2, diffuse: 1, mirror: 1, glass: 1, glossy: 0, emissive: 1, alpha_masked: 0, blended: 0, textured: 0 }
         );
         let g = s.gpu_bytes_estimate();
-        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 256));
-        assert_eq!(g.total(), 368);
+        assert_eq!((g.positions, g.normals, g.uvs, g.triangles, g.material_ids, g.materials), (80, 0, 0, 24, 8, 288));
+        assert_eq!(g.total(), 400);
     }
 }

@@ -285,8 +285,8 @@ finish(doc, buf, "bad/glb_truncated.glb", glb=True)
 
 
 def requires_transform(doc, buf, a):
-    doc["extensionsUsed"] = ["KHR_texture_transform", "KHR_materials_clearcoat"]
-    doc["extensionsRequired"] = ["KHR_texture_transform", "KHR_materials_clearcoat"]
+    doc["extensionsUsed"] = ["KHR_texture_transform", "KHR_materials_sheen"]
+    doc["extensionsRequired"] = ["KHR_texture_transform", "KHR_materials_sheen"]
 
 
 doc, buf = one_quad(requires_transform)

@@ -25,6 +25,11 @@
 //!   largest channel of that Fresnel (the extension's `max_value`); specularTexture (linear,
 //!   A) and specularColorTexture (sRGB, RGB) scale the factors. The glass fraction keeps the
 //!   exact Fresnel of its ior.
+//! - `KHR_materials_clearcoat` (read from the material's extension JSON, which the `gltf`
+//!   crate keeps but does not parse): clearcoatFactor × clearcoatTexture (linear, R) and
+//!   clearcoatRoughnessFactor × clearcoatRoughnessTexture (linear, G) → a dielectric coat of
+//!   ior 1.5 over the continuous part (glsl/common/bsdf.glsl); clearcoatNormalTexture is not
+//!   read (one warning): the coat shares the base's shading normal.
 //! - Texture coordinate sets and KHR_texture_transform: `uv_map.rs`; occlusion is ignored silently (a path tracer computes occlusion).
 
 use std::path::Path;
@@ -129,6 +134,53 @@ pub(super) fn convert<'a>(
             }
             None => (1.0, Vec3::ONE, None, None),
         };
+        let (clearcoat, clearcoat_roughness, clearcoat_texture, clearcoat_roughness_texture) = match m
+            .extension_value("KHR_materials_clearcoat")
+        {
+            Some(json) => {
+                let texture = |key: &str, requests: &mut Requests<'a>, w: &mut Warnings| -> Result<Option<u32>, SceneError> {
+                    let Some(info) = json.get(key) else { return Ok(None) };
+                    let found = info.get("index").and_then(|i| i.as_u64()).and_then(|i| doc.textures().nth(usize::try_from(i).ok()?));
+                    let Some(texture) = found else {
+                        return Err(SceneError::Gltf {
+                            file: file.to_path_buf(),
+                            element: element.clone(),
+                            msg: format!("KHR_materials_clearcoat's {key} has no valid texture index ({info})"),
+                        });
+                    };
+                    image_request(file, buffers, base, texture.source(), Role::Linear, requests, w)
+                };
+                let factor = |key: &str| json.get(key).map_or(Some(0.0), |v| v.as_f64().map(|f| f as f32));
+                let (Some(f), Some(r)) = (factor("clearcoatFactor"), factor("clearcoatRoughnessFactor")) else {
+                    return Err(SceneError::Gltf {
+                        file: file.to_path_buf(),
+                        element,
+                        msg: "KHR_materials_clearcoat's clearcoatFactor and clearcoatRoughnessFactor must be numbers".into(),
+                    });
+                };
+                if !(0.0..=1.0).contains(&f) || !(0.0..=1.0).contains(&r) {
+                    return Err(SceneError::Gltf {
+                        file: file.to_path_buf(),
+                        element,
+                        msg: format!("KHR_materials_clearcoat needs clearcoatFactor and clearcoatRoughnessFactor in [0, 1]; got {f}, {r}"),
+                    });
+                }
+                if json.get("clearcoatNormalTexture").is_some() {
+                    w.warn_once("gltf-clearcoat-normal", || {
+                        format!(
+                            "{}: {element}: clearcoatNormalTexture is not read; the clear coat uses the base's shading normal",
+                            file.display()
+                        )
+                    });
+                }
+                if f > 0.0 {
+                    (f, r, texture("clearcoatTexture", requests, w)?, texture("clearcoatRoughnessTexture", requests, w)?)
+                } else {
+                    (0.0, 0.0, None, None)
+                }
+            }
+            None => (0.0, 0.0, None, None),
+        };
         let material = Material {
             name,
             albedo,
@@ -153,6 +205,10 @@ pub(super) fn convert<'a>(
             specular_colour,
             specular_texture,
             specular_colour_texture,
+            clearcoat,
+            clearcoat_roughness,
+            clearcoat_texture,
+            clearcoat_roughness_texture,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
         if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {

@@ -51,12 +51,14 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_lights_punctual",
     "KHR_texture_transform",
     "KHR_mesh_quantization",
+    "KHR_materials_clearcoat",
 ];
 
 /// Supported extensions that the `gltf` crate's validation does not know, so that a file
 /// requiring one is taken out of its `extensionsRequired` before validation (the loader's
-/// own accessor reader, accessor.rs, reads quantized attributes).
-const READ_BY_THE_LOADER: &[&str] = &["KHR_mesh_quantization"];
+/// own accessor reader, accessor.rs, reads quantized attributes; material.rs reads the clear
+/// coat from the extension's JSON).
+const READ_BY_THE_LOADER: &[&str] = &["KHR_mesh_quantization", "KHR_materials_clearcoat"];
 
 /// Loads a `.gltf` or `.glb` file with its buffers and base colour textures.
 pub fn load_gltf(path: &Path, opts: &LoadOptions) -> Result<Loaded, SceneError> {
