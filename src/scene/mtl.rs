@@ -66,6 +66,10 @@ pub(crate) struct MtlEntry {
     pub map_ke: Option<(usize, String)>,
     pub norm: Option<(usize, String)>,
     pub map_pm: Option<(usize, String)>,
+    /// Clear coat weight and roughness (the PBR extension's `Pc`, `Pcr`, which Blender writes
+    /// for the Principled BSDF's coat).
+    pub pc: Option<f32>,
+    pub pcr: Option<f32>,
 }
 
 /// Keys read but not part of the material model: ignored without a word.
@@ -134,16 +138,18 @@ pub(crate) fn parse(file: &Path, text: &str, w: &mut Warnings) -> Result<Vec<Mtl
             "map_ke" => m.map_ke = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_pr" => m.map_pr = Some((line, texture_name(file, line, &args, w, &err)?)),
             "map_pm" => m.map_pm = Some((line, texture_name(file, line, &args, w, &err)?)),
-            "pr" | "pm" => {
+            "pr" | "pm" | "pc" | "pcr" => {
                 let v = scalar(&args, &err)?;
                 if !(0.0..=1.0).contains(&v) {
                     return Err(err(format!("`{key} {v}` must be in [0, 1]")));
                 }
-                if key_lc == "pr" {
-                    m.pr = Some(v);
-                } else {
-                    m.pm = Some(v);
-                }
+                let slot = match key_lc.as_str() {
+                    "pr" => &mut m.pr,
+                    "pm" => &mut m.pm,
+                    "pc" => &mut m.pc,
+                    _ => &mut m.pcr,
+                };
+                *slot = Some(v);
             }
             "emissivity" => m.emissivity = Some(scalar(&args, &err)?),
             "reflectivity" => m.reflectivity = Some(scalar(&args, &err)?),
@@ -289,7 +295,11 @@ pub(crate) fn to_material(
     // with F = 1, a rough dielectric with the thesis' IOR); otherwise the PBR keys make the
     // metallic-roughness model.
     let thesis = refl > 0.0 || refr > 0.0;
-    let pbr = !thesis && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some());
+    let coat = e.pc.filter(|&c| c > 0.0);
+    let pbr = !thesis && (e.pr.is_some() || e.pm.is_some() || roughness_texture.is_some() || metallic_texture.is_some() || coat.is_some());
+    if thesis && coat.is_some() {
+        w.warn(format!("{}: material '{}': Pc (clear coat) on a thesis mirror or glass is ignored", at(e.line), e.name));
+    }
     let (model, roughness, metallic) = if pbr {
         (MaterialModel::MetalRough, e.pr.unwrap_or(1.0), e.pm.unwrap_or(0.0))
     } else if thesis && roughness_texture.is_some() {
@@ -321,8 +331,8 @@ pub(crate) fn to_material(
         specular_colour: Vec3::ONE,
         specular_texture: None,
         specular_colour_texture: None,
-        clearcoat: 0.0,
-        clearcoat_roughness: 0.0,
+        clearcoat: if pbr { coat.unwrap_or(0.0) } else { 0.0 },
+        clearcoat_roughness: if pbr { e.pcr.unwrap_or(0.0) } else { 0.0 },
         clearcoat_texture: None,
         clearcoat_roughness_texture: None,
     }
@@ -370,6 +380,16 @@ mod tests {
         assert_eq!(material("newmtl Q\nPm 0.5\n").roughness, 1.0);
         let mut w = Warnings::default();
         assert!(parse(Path::new("m.mtl"), "newmtl X\nPr 1.5\n", &mut w).unwrap_err().to_string().contains("m.mtl:2"));
+        // Blender's coat: Pc and Pcr make a clear coat over glTF's model (Pc alone makes the
+        // model glTF's), and are out of range above 1; on a thesis mirror they are ignored.
+        let m = material("newmtl C\nKd 0.8 0.1 0.1\nPr 0.5\nPc 1\nPcr 0.03\n");
+        assert_eq!((m.model, m.clearcoat, m.clearcoat_roughness), (MaterialModel::MetalRough, 1.0, 0.03));
+        assert!(m.has_clearcoat() && m.describe().contains("clear coat"), "{}", m.describe());
+        let m = material("newmtl D\nPc 0.5\n");
+        assert_eq!((m.model, m.clearcoat, m.roughness), (MaterialModel::MetalRough, 0.5, 1.0));
+        assert!(!material("newmtl E\nillum 3\nPc 1\n").has_clearcoat());
+        assert!(!material("newmtl F\nPc 0\nPcr 0.2\n").has_clearcoat());
+        assert!(parse(Path::new("m.mtl"), "newmtl X\nPcr 2\n", &mut w).unwrap_err().to_string().contains("`Pcr 2` must be in [0, 1]"));
     }
 
     #[test]
