@@ -358,7 +358,13 @@ fn structure_aware_loader_fuzz() {
     let (obj, mtl) = (read("room/room.obj"), read("room/room.mtl"));
     let (tga, leaf, mask) = (read("room/floor_d.tga"), read("room/leaf.png"), read("room/mask_grey.png"));
     let (gltf_json, glb_bytes, bin) = (read("gltf/instanced.gltf"), read("gltf/instanced.glb"), read("gltf/instanced.bin"));
-    let gltf_doc: Value = serde_json::from_slice(&gltf_json).unwrap();
+    let mut gltf_doc: Value = serde_json::from_slice(&gltf_json).unwrap();
+    // A clear coat on the mirror, with both textures and a normal texture, so that mutations
+    // reach KHR_materials_clearcoat's reading (material.rs reads its JSON by hand).
+    gltf_doc["materials"][0]["extensions"] = serde_json::json!({"KHR_materials_clearcoat": {
+        "clearcoatFactor": 0.8, "clearcoatTexture": {"index": 0}, "clearcoatRoughnessFactor": 0.2,
+        "clearcoatRoughnessTexture": {"index": 0}, "clearcoatNormalTexture": {"index": 0}}});
+    gltf_doc["extensionsUsed"].as_array_mut().unwrap().push("KHR_materials_clearcoat".into());
 
     let mut rng = Pcg::new(seed);
     let mut findings = Vec::new();

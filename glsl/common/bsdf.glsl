@@ -87,7 +87,7 @@ vec3 sample_dielectric(vec3 d, vec3 n_f, float eta, float u, out float radiance_
 // out, each time weighted by its transmittance 1 - clearcoat F(0.04, cos) about the normal:
 //   f = T(wo) T(wi) f_base + clearcoat F(0.04, wo.h) D G2 / (4 |wo.n| |wi.n|).
 // glTF's own form (the extension's fresnel_coat) attenuates the base by T(wo) alone, which
-// is not reciprocal; the product is, and keeps a white base's albedo at most one (tests/
+// is not reciprocal; the product is, and adds no energy to the base's (tests/
 // sampling_glossy.rs). The coat shares the shading normal (clearcoatNormalTexture is not read).
 struct Continuous {
     vec3 diffuse;   // Lambertian reflectance, weighted (0 for a metal)

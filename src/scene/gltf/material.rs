@@ -134,52 +134,9 @@ pub(super) fn convert<'a>(
             }
             None => (1.0, Vec3::ONE, None, None),
         };
-        let (clearcoat, clearcoat_roughness, clearcoat_texture, clearcoat_roughness_texture) = match m
-            .extension_value("KHR_materials_clearcoat")
-        {
-            Some(json) => {
-                let texture = |key: &str, requests: &mut Requests<'a>, w: &mut Warnings| -> Result<Option<u32>, SceneError> {
-                    let Some(info) = json.get(key) else { return Ok(None) };
-                    let found = info.get("index").and_then(|i| i.as_u64()).and_then(|i| doc.textures().nth(usize::try_from(i).ok()?));
-                    let Some(texture) = found else {
-                        return Err(SceneError::Gltf {
-                            file: file.to_path_buf(),
-                            element: element.clone(),
-                            msg: format!("KHR_materials_clearcoat's {key} has no valid texture index ({info})"),
-                        });
-                    };
-                    image_request(file, buffers, base, texture.source(), Role::Linear, requests, w)
-                };
-                let factor = |key: &str| json.get(key).map_or(Some(0.0), |v| v.as_f64().map(|f| f as f32));
-                let (Some(f), Some(r)) = (factor("clearcoatFactor"), factor("clearcoatRoughnessFactor")) else {
-                    return Err(SceneError::Gltf {
-                        file: file.to_path_buf(),
-                        element,
-                        msg: "KHR_materials_clearcoat's clearcoatFactor and clearcoatRoughnessFactor must be numbers".into(),
-                    });
-                };
-                if !(0.0..=1.0).contains(&f) || !(0.0..=1.0).contains(&r) {
-                    return Err(SceneError::Gltf {
-                        file: file.to_path_buf(),
-                        element,
-                        msg: format!("KHR_materials_clearcoat needs clearcoatFactor and clearcoatRoughnessFactor in [0, 1]; got {f}, {r}"),
-                    });
-                }
-                if json.get("clearcoatNormalTexture").is_some() {
-                    w.warn_once("gltf-clearcoat-normal", || {
-                        format!(
-                            "{}: {element}: clearcoatNormalTexture is not read; the clear coat uses the base's shading normal",
-                            file.display()
-                        )
-                    });
-                }
-                if f > 0.0 {
-                    (f, r, texture("clearcoatTexture", requests, w)?, texture("clearcoatRoughnessTexture", requests, w)?)
-                } else {
-                    (0.0, 0.0, None, None)
-                }
-            }
-            None => (0.0, 0.0, None, None),
+        let coat = match m.extension_value("KHR_materials_clearcoat") {
+            Some(json) => clearcoat(file, doc, buffers, base, json, &element, requests, w)?,
+            None => Clearcoat::default(),
         };
         let material = Material {
             name,
@@ -205,10 +162,10 @@ pub(super) fn convert<'a>(
             specular_colour,
             specular_texture,
             specular_colour_texture,
-            clearcoat,
-            clearcoat_roughness,
-            clearcoat_texture,
-            clearcoat_roughness_texture,
+            clearcoat: coat.factor,
+            clearcoat_roughness: coat.roughness,
+            clearcoat_texture: coat.texture,
+            clearcoat_roughness_texture: coat.roughness_texture,
         };
         let finite = material.albedo.is_finite() && material.emission.is_finite() && material.ior.is_finite();
         if !finite || material.albedo.min_element() < 0.0 || material.emission.min_element() < 0.0 || material.ior <= 0.0 {
@@ -221,6 +178,59 @@ pub(super) fn convert<'a>(
         out.push(material);
     }
     Ok(out)
+}
+
+/// A material's KHR_materials_clearcoat: its weight and roughness, and the textures that scale
+/// them (requested only where the weight is above 0).
+#[derive(Default)]
+struct Clearcoat {
+    factor: f32,
+    roughness: f32,
+    texture: Option<u32>,
+    roughness_texture: Option<u32>,
+}
+
+/// Reads KHR_materials_clearcoat from the material's extension JSON (the `gltf` crate keeps it
+/// but has no accessor for it): factors in [0, 1] (else an error naming `element`), texture
+/// references to existing textures; clearcoatNormalTexture is warned about once.
+#[allow(clippy::too_many_arguments)]
+fn clearcoat<'a>(
+    file: &Path,
+    doc: &'a Document,
+    buffers: &'a [Vec<u8>],
+    base: &Path,
+    json: &::gltf::json::Value,
+    element: &str,
+    requests: &mut Requests<'a>,
+    w: &mut Warnings,
+) -> Result<Clearcoat, SceneError> {
+    let err = |msg: String| SceneError::Gltf { file: file.to_path_buf(), element: element.to_owned(), msg };
+    let factor = |key: &str| json.get(key).map_or(Some(0.0), |v| v.as_f64().map(|f| f as f32));
+    let (Some(factor), Some(roughness)) = (factor("clearcoatFactor"), factor("clearcoatRoughnessFactor")) else {
+        return Err(err("KHR_materials_clearcoat's clearcoatFactor and clearcoatRoughnessFactor must be numbers".into()));
+    };
+    if !(0.0..=1.0).contains(&factor) || !(0.0..=1.0).contains(&roughness) {
+        return Err(err(format!(
+            "KHR_materials_clearcoat needs clearcoatFactor and clearcoatRoughnessFactor in [0, 1]; got {factor}, {roughness}"
+        )));
+    }
+    if json.get("clearcoatNormalTexture").is_some() {
+        w.warn_once("gltf-clearcoat-normal", || {
+            format!("{}: {element}: clearcoatNormalTexture is not read; the clear coat uses the base's shading normal", file.display())
+        });
+    }
+    if factor <= 0.0 {
+        return Ok(Clearcoat::default());
+    }
+    let mut texture = |key: &str| -> Result<Option<u32>, SceneError> {
+        let Some(info) = json.get(key) else { return Ok(None) };
+        let found = info.get("index").and_then(|i| i.as_u64()).and_then(|i| doc.textures().nth(usize::try_from(i).ok()?));
+        let Some(t) = found else {
+            return Err(err(format!("KHR_materials_clearcoat's {key} has no valid texture index ({info})")));
+        };
+        image_request(file, buffers, base, t.source(), Role::Linear, requests, w)
+    };
+    Ok(Clearcoat { factor, roughness, texture: texture("clearcoatTexture")?, roughness_texture: texture("clearcoatRoughnessTexture")? })
 }
 
 /// KHR_materials_volume's absorption coefficient per unit length, −ln(colour) / distance per
