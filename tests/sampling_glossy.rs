@@ -225,9 +225,7 @@ fn clear_coat_never_gains_energy() {
         let out = kernel.run(bsdf.push(abi::SAMPLING_GLOSSY, N, 11, wo), 2, None);
         let w: Vec<f64> = out.chunks_exact(2).map(|s| s[1].x.max(s[1].y).max(s[1].z) as f64).collect();
         assert!(w.iter().all(|&x| x >= 0.0), "{bsdf:?}: negative weight");
-        let mean = w.iter().sum::<f64>() / w.len() as f64;
-        let var = w.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / (w.len() - 1) as f64;
-        (mean, (var / w.len() as f64).sqrt())
+        common::agree::mean_and_se(&w)
     };
     let base = Bsdf::gltf(Vec3::ONE, 0.0, 0.5);
     eprintln!("albedo of a white glTF dielectric (roughness 0.5), bare and under clear coats (weight, roughness):");
