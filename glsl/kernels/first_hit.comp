@@ -29,7 +29,7 @@ layout(constant_id = SPEC_FIRST_HIT_AOVS) const uint FIRST_HIT_AOVS = 1u;
 vec3 continuous_albedo(Continuous c) {
     vec3 a = c.diffuse * (1.0 - c.coat * c.coat_f0) + c.spec * c.spec_f0;
     if (has_clearcoat(c)) {
-        float t = 1.0 - c.clearcoat * CLEARCOAT_F0;
+        float t = clearcoat_transmittance(c, 1.0);
         a = a * t * t + c.pick * c.clearcoat * CLEARCOAT_F0;
     }
     return c.pick > 0.0 ? a / c.pick : vec3(0.0);

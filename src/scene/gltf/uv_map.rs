@@ -5,8 +5,8 @@
 //! The transform (KHR_texture_transform): uv' = T(offset) R(rotation) S(scale) uv with
 //! R = [[cos, sin], [-sin, cos]]; its `texCoord` overrides the slot's. Slots of one material
 //! that disagree (another set or transform) are warned about once, and the first slot's (in the
-//! order base colour, metallic-roughness, emission, transmission, specular, normal map) is
-//! used for all.
+//! order base colour, metallic-roughness, emission, transmission, specular, clear coat,
+//! normal map) is used for all.
 
 use std::path::Path;
 
@@ -41,12 +41,12 @@ fn transform_matrix(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> Mat3 {
     Mat3::from_translation(Vec2::from(offset)) * r * Mat3::from_scale(Vec2::from(scale))
 }
 
-/// The normal map's slot: the `gltf` crate reads no KHR_texture_transform there, so it is read
-/// from the slot's extension JSON (the extension's defaults where a field is absent; a field
-/// of the wrong shape is taken as absent).
-fn of_normal(n: &::gltf::material::NormalTexture) -> UvMap {
-    let Some(t) = n.extension_value("KHR_texture_transform") else {
-        return UvMap { tex_coord: n.tex_coord(), transform: Mat3::IDENTITY };
+/// A slot whose KHR_texture_transform the `gltf` crate does not parse, from the extension's
+/// JSON `t` (if any) and the slot's own set `tex_coord`: the extension's defaults where a field
+/// is absent; a field of the wrong shape is taken as absent.
+fn of_transform_json(t: Option<&::gltf::json::Value>, tex_coord: u32) -> UvMap {
+    let Some(t) = t else {
+        return UvMap { tex_coord, transform: Mat3::IDENTITY };
     };
     let pair = |key: &str, default: [f32; 2]| match t.get(key).and_then(|v| v.as_array()).map(Vec::as_slice) {
         Some([x, y]) => match (x.as_f64(), y.as_f64()) {
@@ -56,8 +56,21 @@ fn of_normal(n: &::gltf::material::NormalTexture) -> UvMap {
         _ => default,
     };
     let rotation = t.get("rotation").and_then(|v| v.as_f64()).unwrap_or(0.0) as f32;
-    let tex_coord = t.get("texCoord").and_then(|v| v.as_u64()).map_or(n.tex_coord(), |c| c.min(u32::MAX as u64) as u32);
+    let tex_coord = t.get("texCoord").and_then(|v| v.as_u64()).map_or(tex_coord, |c| c.min(u32::MAX as u64) as u32);
     UvMap { tex_coord, transform: transform_matrix(pair("offset", [0.0, 0.0]), rotation, pair("scale", [1.0, 1.0])) }
+}
+
+/// The normal map's slot (the `gltf` crate has no accessor for its transform).
+fn of_normal(n: &::gltf::material::NormalTexture) -> UvMap {
+    of_transform_json(n.extension_value("KHR_texture_transform"), n.tex_coord())
+}
+
+/// KHR_materials_clearcoat's texture slots (material.rs reads that extension from its JSON):
+/// the textureInfo objects under `key`s that are present.
+fn of_clearcoat(m: &::gltf::Material, key: &str) -> Option<UvMap> {
+    let info = m.extension_value("KHR_materials_clearcoat")?.get(key)?;
+    let tex_coord = info.get("texCoord").and_then(|v| v.as_u64()).map_or(0, |c| c.min(u32::MAX as u64) as u32);
+    Some(of_transform_json(info.get("extensions").and_then(|e| e.get("KHR_texture_transform")), tex_coord))
 }
 
 fn of_info(info: &::gltf::texture::Info) -> UvMap {
@@ -81,6 +94,8 @@ pub(super) fn uv_maps(file: &Path, doc: &Document, w: &mut Warnings) -> Vec<UvMa
                 m.transmission().and_then(|t| t.transmission_texture()).map(|i| of_info(&i)),
                 m.specular().and_then(|s| s.specular_texture()).map(|i| of_info(&i)),
                 m.specular().and_then(|s| s.specular_color_texture()).map(|i| of_info(&i)),
+                of_clearcoat(&m, "clearcoatTexture"),
+                of_clearcoat(&m, "clearcoatRoughnessTexture"),
                 m.normal_texture().map(|n| of_normal(&n)),
             ]
             .into_iter()
@@ -154,6 +169,16 @@ mod tests {
         assert_eq!(maps[0], UvMap { tex_coord: 0, transform: transform_matrix([0.25, 1.0], 0.0, [16.0, 8.0]) });
         assert_eq!(maps[1], UvMap { tex_coord: 0, transform: transform_matrix([0.0, 0.0], 0.5, [1.0, 1.0]) });
         assert_eq!(maps[2], UvMap { tex_coord: 1, transform: Mat3::IDENTITY });
+        // The clear coat's texture slots are read the same way: alone they give the map, and
+        // beside a base colour texture of the same transform they agree with it.
+        let (maps, warnings) = maps_of(&format!(
+            r#"[{{"extensions": {{"KHR_materials_clearcoat": {{"clearcoatFactor": 1, "clearcoatTexture": {{"index": 0, "texCoord": 1, "extensions": {t}}}}}}}}},
+               {{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0, "extensions": {t}}}}},
+                 "extensions": {{"KHR_materials_clearcoat": {{"clearcoatRoughnessTexture": {{"index": 0, "extensions": {t}}}}}}}}}]"#
+        ));
+        assert!(warnings.is_empty(), "{warnings:?}");
+        assert_eq!(maps[0], UvMap { tex_coord: 1, transform: transform_matrix([0.25, 1.0], 0.0, [16.0, 8.0]) });
+        assert_eq!(maps[1], UvMap { tex_coord: 0, transform: transform_matrix([0.25, 1.0], 0.0, [16.0, 8.0]) });
         // A normal map whose transform differs from the base colour's is still warned about.
         let (_, warnings) = maps_of(&format!(
             r#"[{{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0, "extensions": {t}}}}}, "normalTexture": {{"index": 0}}}}]"#
